@@ -1,0 +1,12 @@
+# core/: shared small things (seeded RNG, strict YAML reading, angles, errors).
+add_library(ari_core
+  src/core/rng.cpp
+  src/core/yaml_map.cpp)
+target_include_directories(ari_core PUBLIC include)
+target_link_libraries(ari_core PUBLIC Eigen3::Eigen yaml-cpp)
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_core
+    SOURCES test/core/test_rng.cpp test/core/test_yaml_map.cpp
+    LIBRARIES ari_core)
+endif()

@@ -1,0 +1,20 @@
+# ari_add_gtest(<name> SOURCES <files...> LIBRARIES <targets...>)
+# A gtest executable of ROS-free core tests, registered with catkin's run_tests.
+function(ari_add_gtest name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  catkin_add_gtest(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} ${ARG_LIBRARIES} gtest_main)
+endfunction()
+
+# ari_add_benchmark(<name> SOURCES <files...> LIBRARIES <targets...>)
+# A Google Benchmark executable under bench/; built with `make benchmarks`, never run by tests.
+function(ari_add_benchmark name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  add_executable(${name} EXCLUDE_FROM_ALL ${ARG_SOURCES})
+  target_link_libraries(${name} ${ARG_LIBRARIES} benchmark::benchmark)
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
+  if(NOT TARGET benchmarks)
+    add_custom_target(benchmarks)
+  endif()
+  add_dependencies(benchmarks ${name})
+endfunction()

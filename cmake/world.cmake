@@ -1,0 +1,1 @@
+# world/: the 2D multi-party world on Box2D, and world_node.

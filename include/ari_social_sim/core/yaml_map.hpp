@@ -1,0 +1,80 @@
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Core>
+#include <limits>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ari_social_sim::core {
+
+/// Allowed interval for a number read from a user's file; part of the error message on violation.
+struct Bounds {
+  double min{-std::numeric_limits<double>::infinity()};
+  double max{std::numeric_limits<double>::infinity()};
+  bool min_exclusive{false};
+
+  bool contains(double value) const;
+  std::string describe() const;
+};
+
+inline Bounds positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
+inline Bounds non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false}; }
+inline Bounds between(double min, double max) { return {min, max, false}; }
+
+/// Strict reader of one YAML mapping from a user's file or the parameter server.
+///
+/// Every read names its key; `finish()` rejects keys that were never read, so a typo cannot fall
+/// back to a default. Failures throw core::ConfigError with the source, the field path, the value
+/// found and the expectation, e.g.
+///   `worlds/flat.yaml: objects[2].size: expected 2 numbers, each > 0, got [1.0, -2.0]`.
+/// Supported value types: bool, int, unsigned, double, std::string, Eigen::Vector2d ([x, y]),
+/// std::vector<double>, std::vector<unsigned>, std::vector<std::string>.
+class YamlMap {
+ public:
+  /// `source` names the file or parameter namespace; `path` the position inside it ("" at the top).
+  YamlMap(YAML::Node node, std::string source, std::string path = "");
+
+  /// Parses a file. Throws ConfigError if it cannot be read, is not YAML, or is not a mapping.
+  static YamlMap load_file(const std::string& file_path);
+  /// Parses YAML text (tests, service payloads); `source` is used in messages.
+  static YamlMap parse(const std::string& text, const std::string& source);
+
+  bool has(const std::string& key) const;
+
+  template <class T>
+  T required(const std::string& key, const Bounds& bounds = {}) const;
+  template <class T>
+  T optional(const std::string& key, const T& fallback, const Bounds& bounds = {}) const;
+
+  /// A nested mapping under `key`.
+  YamlMap map(const std::string& key) const;
+  /// The mappings of a sequence under `key` (each named `key[i]` in messages). An absent key gives
+  /// an empty list only when `allow_missing` is true.
+  std::vector<YamlMap> list(const std::string& key, bool allow_missing = false) const;
+
+  /// Throws ConfigError naming every key of this mapping that no call above has read.
+  void finish() const;
+
+  /// Throws ConfigError about `key` (which need not exist) with the given expectation and value.
+  [[noreturn]] void fail(const std::string& key, const std::string& expectation,
+                         const std::string& got) const;
+
+  const std::string& source() const { return source_; }
+  /// `source: path.key`, the way messages name a field.
+  std::string field_name(const std::string& key) const;
+
+ private:
+  YAML::Node value_node(const std::string& key) const;
+  static std::string render(const YAML::Node& node);
+
+  YAML::Node node_;
+  std::string source_;
+  std::string path_;
+  mutable std::set<std::string> read_keys_;
+};
+
+}  // namespace ari_social_sim::core

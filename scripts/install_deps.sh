@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian bookworm package ari_social_sim needs to build, run, test and be looked at.
+# Safe to run again: apt-get skips what is already there.
+set -euo pipefail
+
+packages=(
+  # build
+  build-essential cmake ccache catkin python3-catkin-pkg ros-core-dev ros-base-dev
+  # ROS runtime and tools a user reaches for
+  rosbash python3-roslaunch python3-rostest librostest-dev python3-rosbag python3-rostopic
+  python3-rosservice python3-rosnode python3-rosparam python3-rosmsg python3-rosgraph
+  ros-robot-state-publisher tf2-tools python3-tf2-ros libtf2-ros-dev libtf2-geometry-msgs-dev
+  libactionlib-dev python3-actionlib libmove-base-msgs-dev python3-move-base-msgs
+  python3-std-msgs python3-geometry-msgs python3-nav-msgs python3-sensor-msgs
+  python3-visualization-msgs python3-actionlib-msgs python3-rosgraph-msgs python3-std-srvs
+  libstd-srvs-dev
+  # simulation cores
+  libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev
+  liburdfdom-dev liburdfdom-tools
+  # tests and benchmarks
+  libgtest-dev googletest libbenchmark-dev
+  # inspection
+  rviz xvfb xauth imagemagick
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "install_deps: installing ${#missing[@]} missing packages"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+echo "install_deps: all ${#packages[@]} packages present"
