@@ -1,1 +1,22 @@
-# world/: the 2D multi-party world on Box2D, and world_node.
+# world/: the 2D multi-party world on Box2D (seed section 3), and world_node.
+add_library(ari_world
+  src/world/ari.cpp
+  src/world/box2d_shapes.cpp
+  src/world/differential_drive.cpp
+  src/world/gaze_generator.cpp
+  src/world/group_navigation.cpp
+  src/world/group_report.cpp
+  src/world/head_pan_controller.cpp
+  src/world/human.cpp
+  src/world/human_navigation.cpp
+  src/world/map_sensor.cpp
+  src/world/object.cpp
+  src/world/occupancy_grid.cpp
+  src/world/scene.cpp
+  src/world/simulation.cpp
+  src/world/social_forces.cpp
+  src/world/speech_generator.cpp
+  src/world/types.cpp
+  src/world/world_file.cpp
+  src/world/world_snapshot.cpp)
+target_link_libraries(ari_world PUBLIC ari_core box2d::box2d)

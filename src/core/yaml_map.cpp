@@ -74,6 +74,8 @@ YamlMap YamlMap::parse(const std::string& text, const std::string& source) {
 
 bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
 
+std::string YamlMap::where() const { return path_.empty() ? source_ : source_ + ": " + path_; }
+
 std::string YamlMap::field_name(const std::string& key) const {
   return source_ + ": " + (path_.empty() ? key : path_ + "." + key);
 }
@@ -207,7 +209,22 @@ T YamlMap::required(const std::string& key, const Bounds& bounds) const {
     fail(key, "a value (the field is required)", "nothing");
   }
   const std::string range = bounds.describe();
-  if constexpr (std::is_same_v<T, Eigen::Vector2d>) {
+  if constexpr (std::is_same_v<T, std::vector<Eigen::Vector2d>>) {
+    T points;
+    bool ok = n.IsSequence();
+    for (size_t i = 0; ok && i < n.size(); ++i) {
+      std::vector<double> xy;
+      ok = read_list(n[i], xy) && xy.size() == 2 && bounds.contains(xy[0]) && bounds.contains(xy[1]);
+      if (ok) {
+        points.emplace_back(xy[0], xy[1]);
+      }
+    }
+    if (!ok) {
+      fail(key, "a list of points [[x, y], ...]" + (range.empty() ? "" : ", each " + range),
+           render(n));
+    }
+    return points;
+  } else if constexpr (std::is_same_v<T, Eigen::Vector2d>) {
     std::vector<double> values;
     if (!read_list(n, values) || values.size() != 2 || !bounds.contains(values[0]) ||
         !bounds.contains(values[1])) {
@@ -317,6 +334,7 @@ ARI_INSTANTIATE(Eigen::Vector2d)
 ARI_INSTANTIATE(std::vector<double>)
 ARI_INSTANTIATE(std::vector<unsigned>)
 ARI_INSTANTIATE(std::vector<std::string>)
+ARI_INSTANTIATE(std::vector<Eigen::Vector2d>)
 #undef ARI_INSTANTIATE
 
 }  // namespace ari_social_sim::core

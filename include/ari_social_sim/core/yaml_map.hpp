@@ -32,7 +32,8 @@ inline Bounds between(double min, double max) { return {min, max, false}; }
 /// found and the expectation, e.g.
 ///   `worlds/flat.yaml: objects[2].size: expected 2 numbers, each > 0, got [1.0, -2.0]`.
 /// Supported value types: bool, int, unsigned, double, std::string, Eigen::Vector2d ([x, y]),
-/// std::vector<double>, std::vector<unsigned>, std::vector<std::string>.
+/// std::vector<double>, std::vector<unsigned>, std::vector<std::string>,
+/// std::vector<Eigen::Vector2d> ([[x, y], ...]).
 class YamlMap {
  public:
   /// `source` names the file or parameter namespace; `path` the position inside it ("" at the top).
@@ -64,6 +65,8 @@ class YamlMap {
                          const std::string& got) const;
 
   const std::string& source() const { return source_; }
+  /// `source: path`, the way messages name this mapping (`source` at the top level).
+  std::string where() const;
   /// `source: path.key`, the way messages name a field.
   std::string field_name(const std::string& key) const;
 

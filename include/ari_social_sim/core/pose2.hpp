@@ -1,0 +1,23 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace ari_social_sim::core {
+
+/// A planar pose: position (m) and heading (rad, counter-clockwise from +x) in one frame.
+struct Pose2 {
+  Eigen::Vector2d position{Eigen::Vector2d::Zero()};
+  double theta{0.0};
+
+  /// Unit vector of the heading.
+  Eigen::Vector2d heading() const { return {std::cos(theta), std::sin(theta)}; }
+  /// A point given in this pose's frame, expressed in the parent frame.
+  Eigen::Vector2d transform(const Eigen::Vector2d& point_local) const {
+    const double c = std::cos(theta), s = std::sin(theta);
+    return position + Eigen::Vector2d(c * point_local.x() - s * point_local.y(),
+                                      s * point_local.x() + c * point_local.y());
+  }
+};
+
+}  // namespace ari_social_sim::core

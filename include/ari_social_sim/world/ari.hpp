@@ -1,0 +1,60 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "ari_social_sim/world/ari_limits.hpp"
+#include "ari_social_sim/world/differential_drive.hpp"
+#include "ari_social_sim/world/head_pan_controller.hpp"
+#include "ari_social_sim/world/object.hpp"
+#include "ari_social_sim/world/speech_generator.hpp"
+
+namespace ari_social_sim::world {
+
+/// ARI's footprint in base_footprint (specs/ari.md body height profile): the mobile base spans
+/// x -0.60..+0.16 m, y +-0.27 m; base_footprint sits on the wheel axle at the front.
+struct AriFootprint {
+  double rear_x_m{-0.60};
+  double front_x_m{0.16};
+  double half_width_m{0.27};
+
+  Eigen::Vector2d centre_local() const { return {0.5 * (rear_x_m + front_x_m), 0.0}; }
+};
+
+struct AriSpec {
+  ObjectId id{1};
+  core::Pose2 pose;  // base_footprint in the map frame
+  double head_pan_rad{0.0};
+  double words_per_minute{150.0};
+  AriLimits limits;
+  AriFootprint footprint;
+
+  /// Throws core::RequestError naming the first invalid field.
+  void validate() const;
+};
+
+/// ARI's 2D body (seed 3.5): base_footprint pose, body orientation and head pan, driven by twist
+/// and pan commands within ARI's limits; speaks with the same SpeechGenerator as humans.
+class Ari : public Object {
+ public:
+  explicit Ari(const AriSpec& spec);
+
+  const AriSpec& spec() const { return spec_; }
+  Eigen::Vector2d centre() const override { return pose_.transform(spec_.footprint.centre_local()); }
+
+  DifferentialDrive& drive() { return *drive_; }
+  const DifferentialDrive& drive() const { return *drive_; }
+  HeadPanController& head() { return *head_; }
+  const HeadPanController& head() const { return *head_; }
+  SpeechGenerator& speech() { return *speech_; }
+  const SpeechGenerator& speech() const { return *speech_; }
+
+  void apply_motion(const StepContext& context) override;
+
+ private:
+  AriSpec spec_;
+  DifferentialDrive* drive_;
+  HeadPanController* head_;
+  SpeechGenerator* speech_;
+};
+
+}  // namespace ari_social_sim::world

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "ari_social_sim/world/script.hpp"
+
+namespace ari_social_sim::world {
+
+class Human;
+
+/// A conversational group's parameters (seed 3.4.1).
+struct GroupSpec {
+  ObjectId id{kNoObject};
+  std::vector<ObjectId> members;
+  /// o: goal position of the o-space centre (m, map frame).
+  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
+  /// s (m); 0 = derived from the member count so that members stand `member_spacing_m` apart
+  /// (see ospace_radius_for), at least `min_ospace_radius_m`.
+  double ospace_radius_m{0.0};
+  double min_ospace_radius_m{0.6};
+  double member_spacing_m{1.0};
+  /// Delta_s (m): radius of a member's social space for the equality force (eq. 3.13-3.16).
+  double social_distance_m{3.0};
+  /// Members repel each other within spacing_factor x the chord between evenly spaced neighbours
+  /// (the group's personal distance Delta_p), so repulsion spreads them evenly around the o-space
+  /// with a spring that does not vanish at the even spacing.
+  double spacing_factor{1.15};
+
+  /// Throws core::RequestError naming the first invalid field.
+  void validate() const;
+};
+
+/// Seed 3.4.1 GroupNavigation script: moves its members with repulsion, equality and cohesion
+/// forces (eq. 3.9-3.18) into a circular F-formation around the o-space centre.
+class GroupNavigation : public Script {
+ public:
+  explicit GroupNavigation(const GroupSpec& spec);
+
+  void step(const StepContext& context) override;
+
+  ObjectId id() const { return spec_.id; }
+  const std::vector<ObjectId>& members() const { return spec_.members; }
+  const Eigen::Vector2d& centre() const { return spec_.centre; }
+  /// s (m) in use: the configured radius or the one derived from the member count.
+  double ospace_radius_m() const;
+  /// Delta_p (m) between members: spacing_factor x chord of evenly spaced members on the circle.
+  double member_personal_distance_m() const;
+
+  void add_member(ObjectId id) { spec_.members.push_back(id); }
+  void remove_member(ObjectId id);
+  void set_centre(const Eigen::Vector2d& centre) { spec_.centre = centre; }
+
+  /// Radius (m) at which `member_count` evenly spaced members stand `spacing_m` apart:
+  /// spacing = 2 s sin(pi / n), never below `min_radius_m`.
+  static double ospace_radius_for(size_t member_count, double spacing_m, double min_radius_m);
+
+ private:
+  GroupSpec spec_;
+  std::vector<Eigen::Vector2d> member_positions_;  // scratch
+  std::vector<Eigen::Vector2d> social_neighbours_;
+  std::vector<Eigen::Vector2d> others_;
+  std::vector<Eigen::Vector2d> outsiders_;
+};
+
+}  // namespace ari_social_sim::world

@@ -1,0 +1,108 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "ari_social_sim/world/gaze_generator.hpp"
+#include "ari_social_sim/world/object.hpp"
+#include "ari_social_sim/world/speech_generator.hpp"
+
+namespace ari_social_sim::world {
+
+/// Parameters of a human's movement (seed 3.3: step length, goal distance, personal distance).
+struct HumanMotionParams {
+  /// m/s under a unit force. The seed's step length is eta = walking_speed * step, so that motion
+  /// does not depend on the step size; a goal force of magnitude 1 walks at this speed.
+  double walking_speed_mps{1.0};
+  /// m/s; a longer step eta * |f| is shortened to this speed (people do not run to their group).
+  double max_speed_mps{1.3};
+  /// 1/s; the orientation moves by min(1, gain * step) of the remaining turn each step (eq. 3.4,
+  /// 3.12 with the step length of the rotation), a time constant of 1/gain.
+  double turn_gain_per_s{4.0};
+  /// Delta_G (m): within it the goal force fades and the human turns to the goal orientation.
+  double goal_distance_m{0.5};
+  /// Delta_p (m): radius of the personal area in which others repel (eq. 3.6).
+  double personal_distance_m{0.8};
+  /// m, radius of the body's collision circle.
+  double body_radius_m{0.2};
+};
+
+/// Everything needed to create a human. Defaults are the documented ones of docs/world.md.
+struct HumanSpec {
+  ObjectId id{kNoObject};
+  std::string name;
+  std::string role;
+  core::Pose2 pose;
+  double age_years{40.0};
+  Gender gender{Gender::kNonIdentified};
+  bool mask{false};
+  Emotion emotion{Emotion::kNeutral};
+  HumanMotionParams motion;
+  double words_per_minute{150.0};
+  std::optional<GazeModel> gaze;
+  /// When set, the human walks there with HumanNavigation from the start.
+  std::optional<core::Pose2> goal;
+
+  /// Throws core::RequestError naming the first invalid field (non-positive id, age outside
+  /// [0, 130], non-positive speeds or distances, invalid gaze model).
+  void validate() const;
+};
+
+/// How a human's movement is driven (seed 3.3.1).
+enum class MotionMode : uint8_t { kIdle = 0, kDirect = 1, kNavigation = 2, kGroup = 3 };
+
+class HumanNavigation;
+
+/// A simulated person (seed 3.3). Position comes from its Box2D circle; orientation is kept here
+/// (the body does not rotate) and changed only by the movement model.
+class Human : public Object {
+ public:
+  explicit Human(const HumanSpec& spec, core::Rng gaze_rng);
+
+  const HumanSpec& spec() const { return spec_; }
+  MotionMode motion_mode() const { return mode_; }
+
+  /// Direct velocity (map frame), held until another command.
+  void set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps);
+  /// Walks to a goal with HumanNavigation (eq. 3.1-3.7).
+  void set_goal(const core::Pose2& goal);
+  /// Stands still.
+  void stop();
+  /// Hands the movement to a GroupNavigation script (called by the script).
+  void join_group(ObjectId group_id);
+  /// Called by the group script when the human leaves it.
+  void leave_group();
+  ObjectId group_id() const { return group_id_; }
+
+  /// The movement planned for the next step by the navigation component or the group script:
+  /// a velocity (m/s, map frame) and a rotation (rad) to apply over the step.
+  void plan_motion(const Eigen::Vector2d& velocity_mps, double rotation_rad);
+  /// Sets the orientation directly (pose commands).
+  void set_orientation(double theta_rad);
+
+  const std::optional<core::Pose2>& goal() const;
+  SpeechGenerator& speech() { return *speech_; }
+  const SpeechGenerator& speech() const { return *speech_; }
+  GazeGenerator* gaze() { return gaze_; }
+  const GazeGenerator* gaze() const { return gaze_; }
+  /// Installs or replaces the gaze model.
+  void set_gaze_model(GazeModel model);
+
+  void apply_motion(const StepContext& context) override;
+  void sync_from_body(double dt_s) override;
+
+ private:
+  HumanSpec spec_;
+  MotionMode mode_{MotionMode::kIdle};
+  ObjectId group_id_{kNoObject};
+  Eigen::Vector2d direct_velocity_{Eigen::Vector2d::Zero()};
+  double direct_angular_velocity_{0.0};
+  Eigen::Vector2d planned_velocity_{Eigen::Vector2d::Zero()};
+  double planned_rotation_{0.0};
+  core::Rng gaze_rng_;
+  HumanNavigation* navigation_{nullptr};
+  SpeechGenerator* speech_{nullptr};
+  GazeGenerator* gaze_{nullptr};
+};
+
+}  // namespace ari_social_sim::world

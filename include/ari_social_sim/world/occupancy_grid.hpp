@@ -1,0 +1,29 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace ari_social_sim::world {
+
+/// A 2D occupancy grid in the ROS convention: row-major from the lower-left cell at `origin`,
+/// values 0 (free), 100 (occupied), -1 (unknown).
+struct OccupancyGrid {
+  static constexpr int8_t kFree = 0;
+  static constexpr int8_t kOccupied = 100;
+  static constexpr int8_t kUnknown = -1;
+
+  Eigen::Vector2d origin{Eigen::Vector2d::Zero()};  // m, lower-left corner of cell (0, 0)
+  double resolution_m{0.05};
+  int width{0};   // cells along x
+  int height{0};  // cells along y
+  std::vector<int8_t> cells;
+
+  int8_t at(int x, int y) const { return cells[static_cast<size_t>(y) * width + x]; }
+  /// Cell holding a point, or false when the point is outside the grid.
+  bool cell_of(const Eigen::Vector2d& point, int& x, int& y) const;
+  Eigen::Vector2d cell_centre(int x, int y) const;
+  size_t occupied_count() const;
+};
+
+}  // namespace ari_social_sim::world

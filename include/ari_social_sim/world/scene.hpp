@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/world/ari.hpp"
+#include "ari_social_sim/world/group_navigation.hpp"
+#include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/simulation.hpp"
+#include "ari_social_sim/world/world_description.hpp"
+
+namespace ari_social_sim::world {
+
+/// Who is in a world at the start of a run: the world file, the seed, ARI, humans and groups.
+/// Read from scenes/*.yaml (format in docs/world.md); the scenario files of later modules extend
+/// it with a script.
+struct Scene {
+  std::string path;        // the scene file, for messages
+  std::string world_path;  // resolved path of the world file
+  WorldDescription world;
+  uint64_t seed{0};
+  std::optional<AriSpec> ari;
+  std::vector<HumanSpec> humans;
+  std::vector<GroupSpec> groups;
+  /// Where each human and group was written (`scene.yaml: humans[2]`), for errors found later.
+  std::vector<std::string> human_fields;
+  std::vector<std::string> group_fields;
+};
+
+/// Reads a scene file; `world:` is resolved relative to the scene file's folder. Throws
+/// core::ConfigError naming the file, the entry and the field.
+Scene load_scene_file(const std::string& path);
+/// The same from a parsed mapping; `base_dir` resolves the world path.
+Scene parse_scene(const core::YamlMap& root, const std::string& base_dir);
+
+/// Builds the simulation a scene describes. Errors found only when placing bodies (overlapping
+/// spawn positions, unknown group members, ids used twice) throw core::ConfigError naming the
+/// scene file and entry.
+std::unique_ptr<Simulation> build_simulation(const Scene& scene, SimulationConfig config);
+
+}  // namespace ari_social_sim::world

@@ -1,0 +1,112 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "ari_social_sim/world/ari.hpp"
+#include "ari_social_sim/world/group_navigation.hpp"
+#include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/script.hpp"
+#include "ari_social_sim/world/world_description.hpp"
+
+class b2World;
+class b2Shape;
+
+namespace ari_social_sim::world {
+
+struct SimulationConfig {
+  double step_s{0.05};          // s of sim time per step
+  uint64_t seed{0};             // every random draw of the run derives from it
+  double map_resolution_m{0.05};
+
+  /// Throws core::ConfigError naming the field (step in (0, 1] s, resolution in [0.01, 1] m).
+  void validate() const;
+};
+
+/// Numeric trouble and silently-corrected input met while stepping, counted rather than thrown.
+struct StepDiagnostics {
+  uint64_t clamped_commands{0};  // ARI twist or pan commands beyond ARI's limits
+};
+
+/// The 2D multi-party world (seed 3.2): Objects with Components, Scripts and Processes on a Box2D
+/// world. Each step runs, in the seed's order: the objects' generator components (navigation,
+/// gaze, speech, ARI's drive) and their planned motion, the physics step, the sensor components,
+/// then the scripts (group navigation) and the processes.
+///
+/// Requests (add, remove, commands) validate their input and throw core::RequestError; step()
+/// never throws.
+class Simulation {
+ public:
+  Simulation(WorldDescription world, SimulationConfig config);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Adds a human. Throws if the spec is invalid, the id is taken, or the body would stand outside
+  /// the floor or overlap a wall, furniture, ARI or another human.
+  Human& add_human(const HumanSpec& spec);
+  void remove_human(ObjectId id);
+  /// Adds ARI (at most one). Same checks as add_human.
+  Ari& add_ari(const AriSpec& spec);
+  /// Creates a group of existing humans, each leaving any previous group.
+  GroupNavigation& add_group(const GroupSpec& spec);
+  void add_group_members(ObjectId group_id, const std::vector<ObjectId>& members);
+  void remove_group(ObjectId group_id);
+  /// Places a human or ARI directly; throws if the new pose overlaps anything.
+  void set_pose(ObjectId id, const core::Pose2& pose);
+  void add_process(std::unique_ptr<Process> process);
+  /// ARI's base twist (seed 3.5.5), held for ARI's command timeout. Out-of-limit values are
+  /// clamped as ARI's controller does and counted in diagnostics(). Throws without ARI.
+  void command_ari_twist(double linear_mps, double angular_rps);
+  /// ARI's head pan target (rad) or velocity (rad/s); clamped and counted likewise.
+  void command_ari_head_pan(double pan_rad);
+  void command_ari_head_pan_velocity(double pan_velocity_rps);
+  /// Smallest id >= `from` that no object uses.
+  ObjectId next_free_id(ObjectId from) const;
+
+  void step();
+
+  double time_s() const { return static_cast<double>(step_count_) * config_.step_s; }
+  uint64_t step_count() const { return step_count_; }
+  const SimulationConfig& config() const { return config_; }
+  const WorldDescription& world() const { return world_; }
+  const StepDiagnostics& diagnostics() const { return diagnostics_; }
+
+  Object* find_object(ObjectId id) const;
+  Human* find_human(ObjectId id) const;
+  GroupNavigation* find_group(ObjectId id) const;
+  Ari* ari() const { return ari_.get(); }
+  /// Humans ordered by id.
+  const std::vector<std::unique_ptr<Human>>& humans() const { return humans_; }
+  /// Groups ordered by id.
+  const std::vector<std::unique_ptr<GroupNavigation>>& groups() const { return groups_; }
+
+  /// Fills `out` with the centres of agents (humans and ARI) closer than `radius_m` to `point`,
+  /// except `exclude` and members of group `exclude_group`. Uses Box2D's broad phase.
+  void agent_centres_near(const Eigen::Vector2d& point, double radius_m, const Object* exclude,
+                          std::vector<Eigen::Vector2d>& out,
+                          ObjectId exclude_group = kNoObject) const;
+  /// How deep (m) an agent's body reaches into walls or furniture; <= 0 when clear.
+  double static_penetration_m(const Object& agent) const;
+
+ private:
+  void check_placement(const b2Shape& shape, const core::Pose2& pose, const Object* ignore,
+                       const std::string& what) const;
+  void register_object(Object& object);
+
+  WorldDescription world_;
+  SimulationConfig config_;
+  std::unique_ptr<b2World> physics_;
+  std::vector<std::unique_ptr<Object>> statics_;
+  std::vector<std::unique_ptr<Human>> humans_;
+  std::unique_ptr<Ari> ari_;
+  std::vector<std::unique_ptr<GroupNavigation>> groups_;
+  std::vector<std::unique_ptr<Process>> processes_;
+  std::unordered_map<ObjectId, Object*> objects_by_id_;
+  uint64_t step_count_{0};
+  StepDiagnostics diagnostics_;
+};
+
+}  // namespace ari_social_sim::world

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/world/object.hpp"
+
+namespace ari_social_sim::world {
+
+/// One finished (or interrupted) speech act in a speaker's history.
+struct SpeechRecord {
+  std::string act;
+  std::string content;
+  double start_s{0.0};
+  double end_s{0.0};
+  bool interrupted{false};
+};
+
+/// Seed 3.3.3: plays an utterance word by word at a words-per-minute rate and keeps the history of
+/// acts with their start and end times. Word i is current during
+/// [start + i * 60 / wpm, start + (i + 1) * 60 / wpm); the act ends at the first step at or after
+/// start + n * 60 / wpm, so an n-word act lasts n * 60 / wpm plus at most one step.
+class SpeechGenerator : public Component {
+ public:
+  explicit SpeechGenerator(double words_per_minute);
+
+  ComponentPhase phase() const override { return ComponentPhase::kGenerator; }
+  void step(Object& owner, const StepContext& context) override;
+
+  /// Starts an act now; an act in progress is cut off and recorded as interrupted. Throws
+  /// core::RequestError if the content has no words or the act is empty.
+  void say(const std::string& act, const std::string& content, double now_s);
+  /// Seconds an utterance of this content takes at this speaker's rate.
+  double duration_s(const std::string& content) const;
+
+  bool is_speaking() const { return !words_.empty(); }
+  const std::string& act() const { return act_; }
+  const std::string& content() const { return content_; }
+  /// The word being played; empty when silent.
+  const std::string& current_word() const;
+  size_t word_index() const { return word_index_; }
+  double start_s() const { return start_s_; }
+  /// The most recent act that finished (seed: previous_speech_act); empty before the first.
+  const SpeechRecord* previous() const { return history_.empty() ? nullptr : &history_.back(); }
+  const std::vector<SpeechRecord>& history() const { return history_; }
+  double words_per_minute() const { return words_per_minute_; }
+
+ private:
+  void finish(double end_s, bool interrupted);
+
+  double words_per_minute_;
+  std::string act_;
+  std::string content_;
+  std::vector<std::string> words_;
+  size_t word_index_{0};
+  double start_s_{0.0};
+  std::vector<SpeechRecord> history_;
+};
+
+}  // namespace ari_social_sim::world

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/types.hpp"
+
+namespace ari_social_sim::world {
+
+class Simulation;
+class SpeechGenerator;
+
+struct SpeechSnapshot {
+  std::string act;
+  std::string content;
+  std::string current_word;
+  uint32_t word_index{0};
+  bool is_speaking{false};
+  double start_s{0.0};
+  std::string previous_act;
+  std::string previous_content;
+};
+
+struct GazeSnapshot {
+  ObjectId target{kNoObject};
+  double direction_rad{0.0};
+  double since_s{0.0};
+};
+
+struct HumanSnapshot {
+  ObjectId id{kNoObject};
+  std::string name;
+  std::string role;
+  core::Pose2 pose;
+  Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};
+  double angular_velocity_rps{0.0};
+  double age_years{0.0};
+  Gender gender{Gender::kNonIdentified};
+  bool mask{false};
+  Emotion emotion{Emotion::kNeutral};
+  MotionMode motion_mode{MotionMode::kIdle};
+  std::optional<core::Pose2> goal;
+  ObjectId group_id{kNoObject};
+  GazeSnapshot gaze;
+  SpeechSnapshot speech;
+};
+
+struct AriSnapshot {
+  ObjectId id{kNoObject};
+  core::Pose2 pose;  // base_footprint
+  double linear_mps{0.0};
+  double angular_rps{0.0};
+  double head_pan_rad{0.0};
+  double head_pan_velocity_rps{0.0};
+  SpeechSnapshot speech;
+};
+
+struct GroupSnapshot {
+  ObjectId id{kNoObject};
+  std::vector<ObjectId> members;
+  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
+  double ospace_radius_m{0.0};
+};
+
+/// Every agent's ground truth after a step, as plain data: what /sim/world_state carries and what
+/// tests and the batch tool read.
+struct WorldSnapshot {
+  double time_s{0.0};
+  uint64_t step{0};
+  std::optional<AriSnapshot> ari;
+  std::vector<HumanSnapshot> humans;  // ordered by id
+  std::vector<GroupSnapshot> groups;  // ordered by id
+
+  static WorldSnapshot of(const Simulation& simulation);
+};
+
+SpeechSnapshot snapshot_of(const SpeechGenerator& speech);
+
+}  // namespace ari_social_sim::world

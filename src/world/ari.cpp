@@ -1,0 +1,41 @@
+#include "ari_social_sim/world/ari.hpp"
+
+#include <box2d/box2d.h>
+
+#include <cmath>
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::world {
+
+void AriSpec::validate() const {
+  if (id == kNoObject) {
+    throw core::RequestError("ari.id must be a positive integer");
+  }
+  if (std::abs(head_pan_rad) > limits.head_pan_limit_rad) {
+    throw core::RequestError("ari.head_pan must be within +-" +
+                             std::to_string(limits.head_pan_limit_rad) + " rad, got " +
+                             std::to_string(head_pan_rad));
+  }
+  if (!(words_per_minute > 0.0)) {
+    throw core::RequestError("ari.words_per_minute must be > 0");
+  }
+}
+
+Ari::Ari(const AriSpec& spec) : Object(spec.id, ObjectKind::kAri), spec_(spec) {
+  pose_ = spec.pose;
+  drive_ = &add_component(std::make_unique<DifferentialDrive>(spec.limits));
+  head_ = &add_component(std::make_unique<HeadPanController>(spec.limits, spec.head_pan_rad));
+  speech_ = &add_component(std::make_unique<SpeechGenerator>(spec.words_per_minute));
+}
+
+void Ari::apply_motion(const StepContext& context) {
+  // The body's centre of mass is placed at base_footprint, so Box2D rotates it about the wheel
+  // axle as a differential drive turns.
+  const double v = drive_->linear_mps();
+  body()->SetLinearVelocity(b2Vec2(static_cast<float>(v * std::cos(pose_.theta)),
+                                   static_cast<float>(v * std::sin(pose_.theta))));
+  body()->SetAngularVelocity(static_cast<float>(drive_->angular_rps()));
+}
+
+}  // namespace ari_social_sim::world

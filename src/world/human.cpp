@@ -1,0 +1,129 @@
+#include "ari_social_sim/world/human.hpp"
+
+#include <box2d/box2d.h>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/human_navigation.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+void require_positive(double value, const char* field) {
+  if (!(value > 0.0)) {
+    throw core::RequestError(std::string(field) + " must be > 0, got " + std::to_string(value));
+  }
+}
+
+}  // namespace
+
+void HumanSpec::validate() const {
+  if (id == kNoObject) {
+    throw core::RequestError("id must be a positive integer");
+  }
+  if (!(age_years >= 0.0 && age_years <= 130.0)) {
+    throw core::RequestError("age must be in [0, 130] years, got " + std::to_string(age_years));
+  }
+  require_positive(motion.walking_speed_mps, "walking_speed");
+  require_positive(motion.max_speed_mps, "max_speed");
+  require_positive(motion.turn_gain_per_s, "turn_gain");
+  require_positive(motion.goal_distance_m, "goal_distance");
+  require_positive(motion.personal_distance_m, "personal_distance");
+  require_positive(motion.body_radius_m, "body_radius");
+  require_positive(words_per_minute, "words_per_minute");
+  if (gaze) {
+    gaze->validate();
+  }
+}
+
+Human::Human(const HumanSpec& spec, core::Rng gaze_rng)
+    : Object(spec.id, ObjectKind::kHuman), spec_(spec), gaze_rng_(gaze_rng) {
+  pose_ = spec.pose;
+  navigation_ = &add_component(std::make_unique<HumanNavigation>());
+  speech_ = &add_component(std::make_unique<SpeechGenerator>(spec.words_per_minute));
+  if (spec.gaze) {
+    set_gaze_model(*spec.gaze);
+  }
+  if (spec.goal) {
+    set_goal(*spec.goal);
+  }
+}
+
+void Human::set_gaze_model(GazeModel model) {
+  if (gaze_ != nullptr) {
+    gaze_->set_model(std::move(model));
+    return;
+  }
+  gaze_ = &add_component(std::make_unique<GazeGenerator>(std::move(model), gaze_rng_));
+}
+
+const std::optional<core::Pose2>& Human::goal() const { return navigation_->goal(); }
+
+void Human::set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps) {
+  mode_ = MotionMode::kDirect;
+  navigation_->clear_goal();
+  direct_velocity_ = velocity_mps;
+  direct_angular_velocity_ = angular_velocity_rps;
+}
+
+void Human::set_goal(const core::Pose2& goal) {
+  mode_ = MotionMode::kNavigation;
+  navigation_->set_goal(goal);
+}
+
+void Human::stop() {
+  mode_ = MotionMode::kIdle;
+  navigation_->clear_goal();
+  planned_velocity_.setZero();
+  planned_rotation_ = 0.0;
+}
+
+void Human::join_group(ObjectId group_id) {
+  stop();
+  mode_ = MotionMode::kGroup;
+  group_id_ = group_id;
+}
+
+void Human::leave_group() {
+  group_id_ = kNoObject;
+  if (mode_ == MotionMode::kGroup) {
+    stop();
+  }
+}
+
+void Human::plan_motion(const Eigen::Vector2d& velocity_mps, double rotation_rad) {
+  planned_velocity_ = velocity_mps;
+  planned_rotation_ = rotation_rad;
+}
+
+void Human::set_orientation(double theta_rad) { pose_.theta = core::wrap_angle(theta_rad); }
+
+void Human::apply_motion(const StepContext& context) {
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
+  double rotation = 0.0;
+  switch (mode_) {
+    case MotionMode::kIdle:
+      break;
+    case MotionMode::kDirect:
+      velocity = direct_velocity_;
+      rotation = direct_angular_velocity_ * context.dt_s;
+      break;
+    case MotionMode::kNavigation:
+    case MotionMode::kGroup:
+      velocity = planned_velocity_;
+      rotation = planned_rotation_;
+      break;
+  }
+  body()->SetLinearVelocity(b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
+  pose_.theta = core::wrap_angle(pose_.theta + rotation);
+  angular_velocity_ = rotation / context.dt_s;
+}
+
+void Human::sync_from_body(double dt_s) {
+  const b2Vec2 position = body()->GetPosition();
+  pose_.position = {position.x, position.y};
+  const b2Vec2 velocity = body()->GetLinearVelocity();
+  velocity_ = {velocity.x, velocity.y};
+}
+
+}  // namespace ari_social_sim::world

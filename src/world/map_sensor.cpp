@@ -1,0 +1,61 @@
+#include "ari_social_sim/world/map_sensor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ari_social_sim/world/box2d_shapes.hpp"
+#include "ari_social_sim/world/simulation.hpp"
+
+namespace ari_social_sim::world {
+
+OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolution_m) {
+  OccupancyGrid grid;
+  grid.origin = world.origin;
+  grid.resolution_m = resolution_m;
+  grid.width = static_cast<int>(std::ceil(world.size.x() / resolution_m - 1e-9));
+  grid.height = static_cast<int>(std::ceil(world.size.y() / resolution_m - 1e-9));
+  grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, OccupancyGrid::kFree);
+
+  // Box2D pads polygons with a skin of b2_polygonRadius; the cell square is shrunk by the same
+  // amount so that a cell merely touching a wall is not counted as occupied.
+  const float half_cell = static_cast<float>(0.5 * resolution_m) - b2_polygonRadius;
+  b2PolygonShape cell;
+  cell.SetAsBox(std::max(half_cell, 1e-4f), std::max(half_cell, 1e-4f));
+
+  for (const StaticObject& object : world.objects) {
+    const StaticShape shape = make_static_shape(object);
+    b2AABB box;
+    shape.shape().ComputeAABB(&box, shape.transform, 0);
+    int x0, y0, x1, y1;
+    grid.cell_of({box.lowerBound.x, box.lowerBound.y}, x0, y0);
+    grid.cell_of({box.upperBound.x, box.upperBound.y}, x1, y1);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, grid.width - 1);
+    y1 = std::min(y1, grid.height - 1);
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        int8_t& value = grid.cells[static_cast<size_t>(y) * grid.width + x];
+        if (value == OccupancyGrid::kOccupied) {
+          continue;
+        }
+        const Eigen::Vector2d c = grid.cell_centre(x, y);
+        b2Transform cell_pose(b2Vec2(static_cast<float>(c.x()), static_cast<float>(c.y())),
+                              b2Rot(0.0f));
+        if (b2TestOverlap(&cell, 0, &shape.shape(), 0, cell_pose, shape.transform)) {
+          value = OccupancyGrid::kOccupied;
+        }
+      }
+    }
+  }
+  return grid;
+}
+
+void MapSensor::step(Object& owner, const StepContext& context) {
+  if (!has_map_) {
+    map_ = rasterize_static_map(context.simulation.world(), resolution_m_);
+    has_map_ = true;
+  }
+}
+
+}  // namespace ari_social_sim::world

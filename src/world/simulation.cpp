@@ -1,0 +1,446 @@
+#include "ari_social_sim/world/simulation.hpp"
+
+#include <box2d/b2_distance.h>
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/box2d_shapes.hpp"
+#include "ari_social_sim/world/map_sensor.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+// Box2D solver iterations: the manual's recommended values; agents are few and slow.
+constexpr int32 kVelocityIterations = 8;
+constexpr int32 kPositionIterations = 3;
+// ARI's mass (kg, specs/ari.md: base_link 43.4 kg plus wheels and head) so people yield to it.
+constexpr float kAriMassKg = 50.0f;
+constexpr float kHumanMassKg = 70.0f;
+// The first id handed out by next_free_id for humans spawned without one.
+constexpr ObjectId kFirstAutomaticAgentId = 10;
+
+b2Vec2 to_b2(const Eigen::Vector2d& v) {
+  return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
+}
+
+Object* object_of(b2Body* body) {
+  return reinterpret_cast<Object*>(body->GetUserData().pointer);
+}
+
+template <class T>
+T* find_sorted(const std::vector<std::unique_ptr<T>>& items, ObjectId id) {
+  auto it = std::lower_bound(items.begin(), items.end(), id,
+                             [](const std::unique_ptr<T>& item, ObjectId key) { return item->id() < key; });
+  return it != items.end() && (*it)->id() == id ? it->get() : nullptr;
+}
+
+template <class T>
+void insert_sorted(std::vector<std::unique_ptr<T>>& items, std::unique_ptr<T> item) {
+  auto it = std::lower_bound(
+      items.begin(), items.end(), item->id(),
+      [](const std::unique_ptr<T>& existing, ObjectId key) { return existing->id() < key; });
+  items.insert(it, std::move(item));
+}
+
+b2Body* make_agent_body(b2World& physics, const core::Pose2& pose, Object& owner) {
+  b2BodyDef def;
+  def.type = b2_dynamicBody;
+  def.position = to_b2(pose.position);
+  def.angle = static_cast<float>(pose.theta);
+  def.userData.pointer = reinterpret_cast<uintptr_t>(&owner);
+  return physics.CreateBody(&def);
+}
+
+}  // namespace
+
+void SimulationConfig::validate() const {
+  if (!(step_s > 0.0 && step_s <= 1.0)) {
+    throw core::ConfigError("step: expected a number in (0, 1] s, got " + std::to_string(step_s));
+  }
+  if (!(map_resolution_m >= 0.01 && map_resolution_m <= 1.0)) {
+    throw core::ConfigError("map_resolution: expected a number in [0.01, 1] m, got " +
+                            std::to_string(map_resolution_m));
+  }
+}
+
+Simulation::Simulation(WorldDescription world, SimulationConfig config)
+    : world_(std::move(world)), config_(config), physics_(std::make_unique<b2World>(b2Vec2(0, 0))) {
+  config_.validate();
+  for (const StaticObject& description : world_.objects) {
+    auto object = std::make_unique<Object>(description.id, ObjectKind::kStatic);
+    b2BodyDef def;
+    def.type = b2_staticBody;
+    def.userData.pointer = reinterpret_cast<uintptr_t>(object.get());
+    b2Body* body = physics_->CreateBody(&def);
+    const StaticShape shape = make_static_shape(description);
+    // Box and circle shapes are defined about the origin and placed by the body; polygons are
+    // given in map coordinates and keep the identity transform.
+    body->SetTransform(shape.transform.p, shape.transform.q.GetAngle());
+    body->CreateFixture(&shape.shape(), 0.0f);
+    object->attach_body(body);
+    object->sync_from_body(config_.step_s);
+    register_object(*object);
+    statics_.push_back(std::move(object));
+  }
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::register_object(Object& object) {
+  if (!objects_by_id_.emplace(object.id(), &object).second) {
+    throw core::RequestError("id " + std::to_string(object.id()) + " is already used");
+  }
+}
+
+ObjectId Simulation::next_free_id(ObjectId from) const {
+  ObjectId id = std::max<ObjectId>(from, kFirstAutomaticAgentId);
+  while (objects_by_id_.count(id) > 0) {
+    ++id;
+  }
+  return id;
+}
+
+Object* Simulation::find_object(ObjectId id) const {
+  const auto it = objects_by_id_.find(id);
+  return it == objects_by_id_.end() ? nullptr : it->second;
+}
+
+Human* Simulation::find_human(ObjectId id) const { return find_sorted(humans_, id); }
+
+GroupNavigation* Simulation::find_group(ObjectId id) const { return find_sorted(groups_, id); }
+
+void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
+                                 const Object* ignore, const std::string& what) const {
+  const b2Transform transform(to_b2(pose.position), b2Rot(static_cast<float>(pose.theta)));
+  b2AABB box;
+  shape.ComputeAABB(&box, transform, 0);
+  const Eigen::Vector2d lower(box.lowerBound.x, box.lowerBound.y);
+  const Eigen::Vector2d upper(box.upperBound.x, box.upperBound.y);
+  if (!world_.contains(lower) || !world_.contains(upper)) {
+    throw core::RequestError(what + " would stand outside the floor of world '" + world_.name + "'");
+  }
+  struct OverlapQuery : b2QueryCallback {
+    const b2Shape* shape;
+    b2Transform transform;
+    const Object* ignore;
+    const Object* hit{nullptr};
+    bool ReportFixture(b2Fixture* fixture) override {
+      const Object* other = object_of(fixture->GetBody());
+      if (other == ignore) {
+        return true;
+      }
+      if (b2TestOverlap(shape, 0, fixture->GetShape(), 0, transform,
+                        fixture->GetBody()->GetTransform())) {
+        hit = other;
+        return false;
+      }
+      return true;
+    }
+  } query;
+  query.shape = &shape;
+  query.transform = transform;
+  query.ignore = ignore;
+  physics_->QueryAABB(&query, box);
+  if (query.hit != nullptr) {
+    const char* kind = query.hit->kind() == ObjectKind::kStatic  ? "wall or furniture"
+                       : query.hit->kind() == ObjectKind::kHuman ? "human"
+                                                                 : "ARI";
+    throw core::RequestError(what + " would overlap " + kind + " " +
+                             std::to_string(query.hit->id()));
+  }
+}
+
+Human& Simulation::add_human(const HumanSpec& spec) {
+  spec.validate();
+  const std::string what = "human " + std::to_string(spec.id);
+  if (find_object(spec.id) != nullptr) {
+    throw core::RequestError(what + ": id is already used");
+  }
+  b2CircleShape circle;
+  circle.m_radius = static_cast<float>(spec.motion.body_radius_m);
+  check_placement(circle, spec.pose, nullptr, what + " at (" + std::to_string(spec.pose.position.x()) +
+                                                  ", " + std::to_string(spec.pose.position.y()) + ")");
+
+  auto human = std::make_unique<Human>(spec, core::Rng::for_stream(config_.seed, spec.id));
+  b2Body* body = make_agent_body(*physics_, spec.pose, *human);
+  body->SetFixedRotation(true);
+  b2FixtureDef fixture;
+  fixture.shape = &circle;
+  fixture.density = kHumanMassKg / (b2_pi * circle.m_radius * circle.m_radius);
+  fixture.friction = 0.0f;
+  body->CreateFixture(&fixture);
+  human->attach_body(body);
+  register_object(*human);
+  Human& ref = *human;
+  insert_sorted(humans_, std::move(human));
+  return ref;
+}
+
+void Simulation::remove_human(ObjectId id) {
+  Human* human = find_human(id);
+  if (human == nullptr) {
+    throw core::RequestError("no human with id " + std::to_string(id));
+  }
+  if (GroupNavigation* group = find_group(human->group_id())) {
+    group->remove_member(id);
+    if (group->members().empty()) {
+      remove_group(group->id());
+    }
+  }
+  physics_->DestroyBody(human->body());
+  objects_by_id_.erase(id);
+  humans_.erase(std::find_if(humans_.begin(), humans_.end(),
+                             [id](const std::unique_ptr<Human>& h) { return h->id() == id; }));
+}
+
+Ari& Simulation::add_ari(const AriSpec& spec) {
+  spec.validate();
+  if (ari_) {
+    throw core::RequestError("the world already has ARI (id " + std::to_string(ari_->id()) + ")");
+  }
+  if (find_object(spec.id) != nullptr) {
+    throw core::RequestError("ARI: id " + std::to_string(spec.id) + " is already used");
+  }
+  const AriFootprint& f = spec.footprint;
+  b2PolygonShape footprint;
+  footprint.SetAsBox(static_cast<float>(0.5 * (f.front_x_m - f.rear_x_m)),
+                     static_cast<float>(f.half_width_m), to_b2(f.centre_local()), 0.0f);
+  check_placement(footprint, spec.pose, nullptr, "ARI");
+
+  ari_ = std::make_unique<Ari>(spec);
+  b2Body* body = make_agent_body(*physics_, spec.pose, *ari_);
+  body->CreateFixture(&footprint, 1.0f);
+  // Mass centred on base_footprint (the wheel axle): the base turns about it like ARI does.
+  b2MassData mass;
+  body->GetMassData(&mass);
+  mass.I *= kAriMassKg / mass.mass;  // Box2D reports I about the body origin
+  mass.mass = kAriMassKg;
+  mass.center.SetZero();
+  body->SetMassData(&mass);
+  ari_->attach_body(body);
+  ari_->add_component(std::make_unique<MapSensor>(config_.map_resolution_m));
+  register_object(*ari_);
+  return *ari_;
+}
+
+GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
+  spec.validate();
+  if (find_group(spec.id) != nullptr) {
+    throw core::RequestError("group id " + std::to_string(spec.id) + " is already used");
+  }
+  for (ObjectId member : spec.members) {
+    if (find_human(member) == nullptr) {
+      throw core::RequestError("group " + std::to_string(spec.id) + ": no human with id " +
+                               std::to_string(member));
+    }
+  }
+  for (ObjectId member : spec.members) {
+    Human& human = *find_human(member);
+    if (GroupNavigation* previous = find_group(human.group_id())) {
+      previous->remove_member(member);
+    }
+    human.join_group(spec.id);
+  }
+  // Groups emptied by the move are dropped.
+  groups_.erase(std::remove_if(groups_.begin(), groups_.end(),
+                               [](const std::unique_ptr<GroupNavigation>& g) {
+                                 return g->members().empty();
+                               }),
+                groups_.end());
+  auto group = std::make_unique<GroupNavigation>(spec);
+  GroupNavigation& ref = *group;
+  insert_sorted(groups_, std::move(group));
+  return ref;
+}
+
+void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId>& members) {
+  GroupNavigation* group = find_group(group_id);
+  if (group == nullptr) {
+    throw core::RequestError("no group with id " + std::to_string(group_id));
+  }
+  for (ObjectId member : members) {
+    if (find_human(member) == nullptr) {
+      throw core::RequestError("group " + std::to_string(group_id) + ": no human with id " +
+                               std::to_string(member));
+    }
+  }
+  for (ObjectId member : members) {
+    Human& human = *find_human(member);
+    if (human.group_id() == group_id) {
+      continue;
+    }
+    if (GroupNavigation* previous = find_group(human.group_id())) {
+      previous->remove_member(member);
+      if (previous->members().empty()) {
+        remove_group(previous->id());
+      }
+    }
+    human.join_group(group_id);
+    group->add_member(member);
+  }
+}
+
+void Simulation::remove_group(ObjectId group_id) {
+  GroupNavigation* group = find_group(group_id);
+  if (group == nullptr) {
+    throw core::RequestError("no group with id " + std::to_string(group_id));
+  }
+  for (ObjectId member : group->members()) {
+    find_human(member)->leave_group();
+  }
+  groups_.erase(std::find_if(groups_.begin(), groups_.end(),
+                             [group_id](const std::unique_ptr<GroupNavigation>& g) {
+                               return g->id() == group_id;
+                             }));
+}
+
+void Simulation::set_pose(ObjectId id, const core::Pose2& pose) {
+  Object* object = find_object(id);
+  if (object == nullptr || object->kind() == ObjectKind::kStatic) {
+    throw core::RequestError("no human or ARI with id " + std::to_string(id));
+  }
+  b2Body* body = object->body();
+  check_placement(*body->GetFixtureList()->GetShape(), pose, object,
+                  "object " + std::to_string(id));
+  body->SetTransform(to_b2(pose.position), static_cast<float>(pose.theta));
+  body->SetLinearVelocity(b2Vec2(0, 0));
+  object->sync_from_body(config_.step_s);
+  if (object->kind() == ObjectKind::kHuman) {
+    static_cast<Human*>(object)->set_orientation(pose.theta);
+  }
+}
+
+void Simulation::add_process(std::unique_ptr<Process> process) {
+  processes_.push_back(std::move(process));
+}
+
+void Simulation::command_ari_twist(double linear_mps, double angular_rps) {
+  if (!ari_) {
+    throw core::RequestError("the world has no ARI");
+  }
+  diagnostics_.clamped_commands += ari_->drive().command(linear_mps, angular_rps, time_s());
+}
+
+void Simulation::command_ari_head_pan(double pan_rad) {
+  if (!ari_) {
+    throw core::RequestError("the world has no ARI");
+  }
+  diagnostics_.clamped_commands += ari_->head().command_position(pan_rad);
+}
+
+void Simulation::command_ari_head_pan_velocity(double pan_velocity_rps) {
+  if (!ari_) {
+    throw core::RequestError("the world has no ARI");
+  }
+  diagnostics_.clamped_commands += ari_->head().command_velocity(pan_velocity_rps);
+}
+
+void Simulation::agent_centres_near(const Eigen::Vector2d& point, double radius_m,
+                                    const Object* exclude, std::vector<Eigen::Vector2d>& out,
+                                    ObjectId exclude_group) const {
+  out.clear();
+  struct NeighbourQuery : b2QueryCallback {
+    Eigen::Vector2d point;
+    double radius_sq;
+    const Object* exclude;
+    ObjectId exclude_group;
+    std::vector<Eigen::Vector2d>* out;
+    bool ReportFixture(b2Fixture* fixture) override {
+      const Object* other = object_of(fixture->GetBody());
+      if (other == exclude || other->kind() == ObjectKind::kStatic) {
+        return true;
+      }
+      if (exclude_group != kNoObject && other->kind() == ObjectKind::kHuman &&
+          static_cast<const Human*>(other)->group_id() == exclude_group) {
+        return true;
+      }
+      const Eigen::Vector2d centre = other->centre();
+      if ((centre - point).squaredNorm() < radius_sq) {
+        out->push_back(centre);
+      }
+      return true;
+    }
+  } query;
+  query.point = point;
+  query.radius_sq = radius_m * radius_m;
+  query.exclude = exclude;
+  query.exclude_group = exclude_group;
+  query.out = &out;
+  b2AABB box;
+  box.lowerBound = to_b2(point - Eigen::Vector2d::Constant(radius_m));
+  box.upperBound = to_b2(point + Eigen::Vector2d::Constant(radius_m));
+  physics_->QueryAABB(&query, box);
+}
+
+double Simulation::static_penetration_m(const Object& agent) const {
+  double deepest = -std::numeric_limits<double>::infinity();
+  const b2Fixture* own = agent.body()->GetFixtureList();
+  for (const std::unique_ptr<Object>& object : statics_) {
+    const b2Fixture* fixture = object->body()->GetFixtureList();
+    b2DistanceInput input;
+    input.proxyA.Set(own->GetShape(), 0);
+    input.proxyB.Set(fixture->GetShape(), 0);
+    input.transformA = agent.body()->GetTransform();
+    input.transformB = object->body()->GetTransform();
+    // Distance between the cores; the agent's radius (circle) counts as its extent.
+    input.useRadii = false;
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput output;
+    b2Distance(&output, &cache, &input);
+    const double extent =
+        own->GetShape()->GetType() == b2Shape::e_circle ? own->GetShape()->m_radius : 0.0;
+    deepest = std::max(deepest, extent - static_cast<double>(output.distance));
+  }
+  return deepest;
+}
+
+void Simulation::step() {
+  const StepContext context{*this, time_s(), config_.step_s};
+
+  // 1. Objects and their generator components, then the motion they planned.
+  for (const std::unique_ptr<Human>& human : humans_) {
+    human->step_components(ComponentPhase::kGenerator, context);
+  }
+  if (ari_) {
+    ari_->step_components(ComponentPhase::kGenerator, context);
+  }
+  for (const std::unique_ptr<Human>& human : humans_) {
+    human->apply_motion(context);
+  }
+  if (ari_) {
+    ari_->apply_motion(context);
+  }
+
+  // 2. Physics: positions, collisions with walls, furniture and each other.
+  physics_->Step(static_cast<float>(config_.step_s), kVelocityIterations, kPositionIterations);
+  for (const std::unique_ptr<Human>& human : humans_) {
+    human->sync_from_body(config_.step_s);
+  }
+  if (ari_) {
+    ari_->sync_from_body(config_.step_s);
+  }
+
+  // 3. Sensor components.
+  for (const std::unique_ptr<Human>& human : humans_) {
+    human->step_components(ComponentPhase::kSensor, context);
+  }
+  if (ari_) {
+    ari_->step_components(ComponentPhase::kSensor, context);
+  }
+
+  // 4. Scripts, then processes.
+  for (const std::unique_ptr<GroupNavigation>& group : groups_) {
+    group->step(context);
+  }
+  ++step_count_;
+  for (const std::unique_ptr<Process>& process : processes_) {
+    process->step(*this, context);
+  }
+}
+
+}  // namespace ari_social_sim::world

@@ -1,0 +1,83 @@
+#include "ari_social_sim/world/speech_generator.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+// Tolerance (s) for comparing sim times built from step counts with word boundaries.
+constexpr double kTimeEpsilon = 1e-9;
+
+std::vector<std::string> split_words(const std::string& content) {
+  std::istringstream in(content);
+  std::vector<std::string> words;
+  std::string word;
+  while (in >> word) {
+    words.push_back(word);
+  }
+  return words;
+}
+
+const std::string kSilence;
+
+}  // namespace
+
+SpeechGenerator::SpeechGenerator(double words_per_minute) : words_per_minute_(words_per_minute) {
+  ARI_CHECK(words_per_minute > 0.0);
+}
+
+double SpeechGenerator::duration_s(const std::string& content) const {
+  return static_cast<double>(split_words(content).size()) * 60.0 / words_per_minute_;
+}
+
+void SpeechGenerator::say(const std::string& act, const std::string& content, double now_s) {
+  std::vector<std::string> words = split_words(content);
+  if (words.empty()) {
+    throw core::RequestError("say: content has no words");
+  }
+  if (act.empty()) {
+    throw core::RequestError("say: act is empty (e.g. QUESTION:TIME)");
+  }
+  if (is_speaking()) {
+    finish(now_s, true);
+  }
+  act_ = act;
+  content_ = content;
+  words_ = std::move(words);
+  word_index_ = 0;
+  start_s_ = now_s;
+}
+
+const std::string& SpeechGenerator::current_word() const {
+  return words_.empty() ? kSilence : words_[word_index_];
+}
+
+void SpeechGenerator::step(Object& owner, const StepContext& context) {
+  if (!is_speaking()) {
+    return;
+  }
+  const double seconds_per_word = 60.0 / words_per_minute_;
+  // The step runs at time_s and the world afterwards stands at time_s + dt_s.
+  const double now_s = context.time_s + context.dt_s;
+  const double end_s = start_s_ + static_cast<double>(words_.size()) * seconds_per_word;
+  if (now_s + kTimeEpsilon >= end_s) {
+    finish(now_s, false);
+    return;
+  }
+  word_index_ = static_cast<size_t>(std::floor((now_s - start_s_) / seconds_per_word + kTimeEpsilon));
+}
+
+void SpeechGenerator::finish(double end_s, bool interrupted) {
+  history_.push_back({act_, content_, start_s_, end_s, interrupted});
+  act_.clear();
+  content_.clear();
+  words_.clear();
+  word_index_ = 0;
+  start_s_ = 0.0;
+}
+
+}  // namespace ari_social_sim::world

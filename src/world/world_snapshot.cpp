@@ -1,0 +1,69 @@
+#include "ari_social_sim/world/world_snapshot.hpp"
+
+#include "ari_social_sim/world/simulation.hpp"
+
+namespace ari_social_sim::world {
+
+SpeechSnapshot snapshot_of(const SpeechGenerator& speech) {
+  SpeechSnapshot snapshot;
+  snapshot.act = speech.act();
+  snapshot.content = speech.content();
+  snapshot.current_word = speech.current_word();
+  snapshot.word_index = static_cast<uint32_t>(speech.word_index());
+  snapshot.is_speaking = speech.is_speaking();
+  snapshot.start_s = speech.start_s();
+  if (const SpeechRecord* previous = speech.previous()) {
+    snapshot.previous_act = previous->act;
+    snapshot.previous_content = previous->content;
+  }
+  return snapshot;
+}
+
+WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
+  WorldSnapshot snapshot;
+  snapshot.time_s = simulation.time_s();
+  snapshot.step = simulation.step_count();
+  if (const Ari* ari = simulation.ari()) {
+    AriSnapshot a;
+    a.id = ari->id();
+    a.pose = ari->pose();
+    a.linear_mps = ari->drive().linear_mps();
+    a.angular_rps = ari->drive().angular_rps();
+    a.head_pan_rad = ari->head().pan_rad();
+    a.head_pan_velocity_rps = ari->head().pan_velocity_rps();
+    a.speech = snapshot_of(ari->speech());
+    snapshot.ari = a;
+  }
+  snapshot.humans.reserve(simulation.humans().size());
+  for (const std::unique_ptr<Human>& human : simulation.humans()) {
+    HumanSnapshot h;
+    const HumanSpec& spec = human->spec();
+    h.id = human->id();
+    h.name = spec.name;
+    h.role = spec.role;
+    h.pose = human->pose();
+    h.velocity_mps = human->velocity();
+    h.angular_velocity_rps = human->angular_velocity();
+    h.age_years = spec.age_years;
+    h.gender = spec.gender;
+    h.mask = spec.mask;
+    h.emotion = spec.emotion;
+    h.motion_mode = human->motion_mode();
+    h.goal = human->goal();
+    h.group_id = human->group_id();
+    if (const GazeGenerator* gaze = human->gaze()) {
+      h.gaze = {gaze->target(), gaze->direction_rad(), gaze->since_s()};
+    } else {
+      h.gaze.direction_rad = human->pose().theta;
+    }
+    h.speech = snapshot_of(human->speech());
+    snapshot.humans.push_back(std::move(h));
+  }
+  for (const std::unique_ptr<GroupNavigation>& group : simulation.groups()) {
+    snapshot.groups.push_back(
+        {group->id(), group->members(), group->centre(), group->ospace_radius_m()});
+  }
+  return snapshot;
+}
+
+}  // namespace ari_social_sim::world
