@@ -20,3 +20,18 @@ add_library(ari_world
   src/world/world_file.cpp
   src/world/world_snapshot.cpp)
 target_link_libraries(ari_world PUBLIC ari_core box2d::box2d)
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_world
+    SOURCES
+      test/world/test_gaze_generator.cpp
+      test/world/test_group_navigation.cpp
+      test/world/test_map_sensor.cpp
+      test/world/test_scene.cpp
+      test/world/test_simulation.cpp
+      test/world/test_social_forces.cpp
+      test/world/test_speech_generator.cpp
+      test/world/test_world_file.cpp
+    LIBRARIES ari_world)
+  target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()

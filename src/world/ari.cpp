@@ -22,11 +22,13 @@ void AriSpec::validate() const {
   }
 }
 
-Ari::Ari(const AriSpec& spec) : Object(spec.id, ObjectKind::kAri), spec_(spec) {
+Ari::Ari(const AriSpec& spec, double map_resolution_m)
+    : Object(spec.id, ObjectKind::kAri), spec_(spec) {
   pose_ = spec.pose;
   drive_ = &add_component(std::make_unique<DifferentialDrive>(spec.limits));
   head_ = &add_component(std::make_unique<HeadPanController>(spec.limits, spec.head_pan_rad));
   speech_ = &add_component(std::make_unique<SpeechGenerator>(spec.words_per_minute));
+  map_sensor_ = &add_component(std::make_unique<MapSensor>(map_resolution_m));
 }
 
 void Ari::apply_motion(const StepContext& context) {

@@ -27,10 +27,10 @@ void GroupSpec::validate() const {
     throw core::RequestError("ospace_radius must be >= 0 (0 = automatic)");
   }
   if (!(min_ospace_radius_m > 0.0 && member_spacing_m > 0.0 && social_distance_m > 0.0 &&
-        spacing_factor >= 1.0)) {
+        spacing_factor >= 1.0 && spacing_factor < 1.6 && step_speed_mps > 0.0)) {
     throw core::RequestError(
-        "group parameters need min_ospace_radius, member_spacing, social_distance > 0 and "
-        "spacing_factor >= 1");
+        "group parameters need min_ospace_radius, member_spacing, social_distance, step_speed > 0 "
+        "and spacing_factor in [1, 1.6)");
   }
 }
 
@@ -61,6 +61,19 @@ double GroupNavigation::member_personal_distance_m() const {
          std::sin(core::kPi / static_cast<double>(n));
 }
 
+double GroupNavigation::cohesion_radius_m() const {
+  const size_t n = spec_.members.size();
+  const double s = ospace_radius_m();
+  if (n < 2) {
+    return s;
+  }
+  // With evenly spaced members the repulsion of the two neighbours pushes each member outward by
+  // (Delta_p - chord)^2; cohesion toward s minus that amount balances it exactly on the circle s.
+  const double chord = 2.0 * s * std::sin(core::kPi / static_cast<double>(n));
+  const double excess = std::max(0.0, member_personal_distance_m() - chord);
+  return std::max(0.0, s - excess * excess);
+}
+
 void GroupNavigation::remove_member(ObjectId id) {
   spec_.members.erase(std::remove(spec_.members.begin(), spec_.members.end(), id),
                       spec_.members.end());
@@ -75,6 +88,7 @@ void GroupNavigation::step(const StepContext& context) {
   const double s = ospace_radius_m();
   const double member_personal_distance = member_personal_distance_m();
   const int group_size = static_cast<int>(spec_.members.size());
+  const double cohesion_radius = cohesion_radius_m();
 
   for (size_t i = 0; i < spec_.members.size(); ++i) {
     Human& human = *simulation.find_human(spec_.members[i]);
@@ -103,7 +117,7 @@ void GroupNavigation::step(const StepContext& context) {
         social_forces::repulsion_force(p, others_, member_personal_distance) +
         social_forces::repulsion_force(p, outsiders_, params.personal_distance_m) +
         social_forces::equality_force(p, social_neighbours_) +
-        social_forces::cohesion_force(p, spec_.centre, s, group_size,
+        social_forces::cohesion_force(p, spec_.centre, cohesion_radius, group_size,
                                       static_cast<int>(social_neighbours_.size()));
     // Eq. 3.10: the orientation vectors are summed and the member turns toward their direction.
     const Eigen::Vector2d facing = social_forces::equality_orientation(p, social_neighbours_) +
@@ -117,7 +131,9 @@ void GroupNavigation::step(const StepContext& context) {
       turn = core::angle_difference(std::atan2(to_centre.y(), to_centre.x()), human.pose().theta);
     }
     // Eq. 3.11-3.12.
-    human.plan_motion(step_motion(force, params).velocity_mps,
+    HumanMotionParams group_params = params;
+    group_params.walking_speed_mps = spec_.step_speed_mps;
+    human.plan_motion(step_motion(force, group_params).velocity_mps,
                       rotation_step(turn, params, context.dt_s));
   }
 }

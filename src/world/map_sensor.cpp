@@ -16,14 +16,21 @@ OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolut
   grid.height = static_cast<int>(std::ceil(world.size.y() / resolution_m - 1e-9));
   grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, OccupancyGrid::kFree);
 
-  // Box2D pads polygons with a skin of b2_polygonRadius; the cell square is shrunk by the same
-  // amount so that a cell merely touching a wall is not counted as occupied.
-  const float half_cell = static_cast<float>(0.5 * resolution_m) - b2_polygonRadius;
-  b2PolygonShape cell;
-  cell.SetAsBox(std::max(half_cell, 1e-4f), std::max(half_cell, 1e-4f));
+  // Box2D pads every polygon with a skin of b2_polygonRadius. The cell square is shrunk by the
+  // skins in play (its own, and the obstacle's unless it is a circle) so that a cell merely
+  // touching an obstacle is not counted as occupied.
+  auto cell_square = [resolution_m](int skins) {
+    const float half = static_cast<float>(0.5 * resolution_m) - skins * b2_polygonRadius - 1e-4f;
+    b2PolygonShape square;
+    square.SetAsBox(std::max(half, 1e-4f), std::max(half, 1e-4f));
+    return square;
+  };
+  const b2PolygonShape cell_near_polygon = cell_square(2);
+  const b2PolygonShape cell_near_circle = cell_square(1);
 
   for (const StaticObject& object : world.objects) {
     const StaticShape shape = make_static_shape(object);
+    const b2PolygonShape& cell = shape.is_circle ? cell_near_circle : cell_near_polygon;
     b2AABB box;
     shape.shape().ComputeAABB(&box, shape.transform, 0);
     int x0, y0, x1, y1;

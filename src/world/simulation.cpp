@@ -9,7 +9,6 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
-#include "ari_social_sim/world/map_sensor.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -168,6 +167,8 @@ Human& Simulation::add_human(const HumanSpec& spec) {
   auto human = std::make_unique<Human>(spec, core::Rng::for_stream(config_.seed, spec.id));
   b2Body* body = make_agent_body(*physics_, spec.pose, *human);
   body->SetFixedRotation(true);
+  // Continuous collision between people: two walkers meeting head on must not sink into each other.
+  body->SetBullet(true);
   b2FixtureDef fixture;
   fixture.shape = &circle;
   fixture.density = kHumanMassKg / (b2_pi * circle.m_radius * circle.m_radius);
@@ -211,7 +212,7 @@ Ari& Simulation::add_ari(const AriSpec& spec) {
                      static_cast<float>(f.half_width_m), to_b2(f.centre_local()), 0.0f);
   check_placement(footprint, spec.pose, nullptr, "ARI");
 
-  ari_ = std::make_unique<Ari>(spec);
+  ari_ = std::make_unique<Ari>(spec, config_.map_resolution_m);
   b2Body* body = make_agent_body(*physics_, spec.pose, *ari_);
   body->CreateFixture(&footprint, 1.0f);
   // Mass centred on base_footprint (the wheel axle): the base turns about it like ARI does.
@@ -222,7 +223,6 @@ Ari& Simulation::add_ari(const AriSpec& spec) {
   mass.center.SetZero();
   body->SetMassData(&mass);
   ari_->attach_body(body);
-  ari_->add_component(std::make_unique<MapSensor>(config_.map_resolution_m));
   register_object(*ari_);
   return *ari_;
 }

@@ -5,6 +5,7 @@
 #include "ari_social_sim/world/ari_limits.hpp"
 #include "ari_social_sim/world/differential_drive.hpp"
 #include "ari_social_sim/world/head_pan_controller.hpp"
+#include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/object.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
 
@@ -36,7 +37,8 @@ struct AriSpec {
 /// and pan commands within ARI's limits; speaks with the same SpeechGenerator as humans.
 class Ari : public Object {
  public:
-  explicit Ari(const AriSpec& spec);
+  /// `map_resolution_m` is the cell size of ARI's MapSensor.
+  Ari(const AriSpec& spec, double map_resolution_m);
 
   const AriSpec& spec() const { return spec_; }
   Eigen::Vector2d centre() const override { return pose_.transform(spec_.footprint.centre_local()); }
@@ -47,6 +49,7 @@ class Ari : public Object {
   const HeadPanController& head() const { return *head_; }
   SpeechGenerator& speech() { return *speech_; }
   const SpeechGenerator& speech() const { return *speech_; }
+  const MapSensor& map_sensor() const { return *map_sensor_; }
 
   void apply_motion(const StepContext& context) override;
 
@@ -55,6 +58,7 @@ class Ari : public Object {
   DifferentialDrive* drive_;
   HeadPanController* head_;
   SpeechGenerator* speech_;
+  MapSensor* map_sensor_;
 };
 
 }  // namespace ari_social_sim::world

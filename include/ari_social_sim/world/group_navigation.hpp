@@ -19,13 +19,18 @@ struct GroupSpec {
   /// (see ospace_radius_for), at least `min_ospace_radius_m`.
   double ospace_radius_m{0.0};
   double min_ospace_radius_m{0.6};
-  double member_spacing_m{1.0};
+  double member_spacing_m{1.1};
   /// Delta_s (m): radius of a member's social space for the equality force (eq. 3.13-3.16).
   double social_distance_m{3.0};
   /// Members repel each other within spacing_factor x the chord between evenly spaced neighbours
   /// (the group's personal distance Delta_p), so repulsion spreads them evenly around the o-space
-  /// with a spring that does not vanish at the even spacing.
-  double spacing_factor{1.15};
+  /// with a spring that does not vanish at the even spacing. Below the golden ratio (1.618), only
+  /// adjacent members of a group of up to 5 repel each other at even spacing.
+  double spacing_factor{1.5};
+  /// eta / step (m/s per unit force): the group's own step length (seed 3.4.1 lists it among the
+  /// script's properties). Faster than walking alone, so members settle within ~30 s; each step is
+  /// still capped at the member's max_speed.
+  double step_speed_mps{2.0};
 
   /// Throws core::RequestError naming the first invalid field.
   void validate() const;
@@ -46,6 +51,9 @@ class GroupNavigation : public Script {
   double ospace_radius_m() const;
   /// Delta_p (m) between members: spacing_factor x chord of evenly spaced members on the circle.
   double member_personal_distance_m() const;
+  /// Radius (m) the cohesion force (eq. 3.17) pulls toward: s less the outward push of the
+  /// members' mutual repulsion at even spacing, so that the formation settles on s itself.
+  double cohesion_radius_m() const;
 
   void add_member(ObjectId id) { spec_.members.push_back(id); }
   void remove_member(ObjectId id);

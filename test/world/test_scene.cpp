@@ -1,0 +1,106 @@
+#include "ari_social_sim/world/scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+const std::string kWorlds = std::string(ARI_SOURCE_DIR) + "/worlds/";
+
+std::string write_scene(const std::string& body) {
+  const std::string path = ::testing::TempDir() + "scene_under_test.yaml";
+  std::ofstream(path) << "world: " << kWorlds << "room_6x6.yaml\nseed: 3\n" << body;
+  return path;
+}
+
+// Loading and building the scene fails with a message naming the file and every fragment.
+void expect_rejected(const std::string& body, const std::vector<std::string>& fragments) {
+  const std::string path = write_scene(body);
+  try {
+    build_simulation(load_scene_file(path), SimulationConfig{});
+    FAIL() << "accepted:\n" << body;
+  } catch (const core::ConfigError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    for (const std::string& fragment : fragments) {
+      EXPECT_NE(message.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << message;
+    }
+  }
+}
+
+TEST(Scene, BuildsHumansGroupsAndAri) {
+  const Scene scene = load_scene_file(write_scene(
+      "ari: {position: [1, 1], orientation: 0.5}\n"
+      "humans:\n"
+      "  - {id: 10, position: [3, 3], age: 70, gender: female, mask: true, emotion: angry}\n"
+      "  - {id: 11, position: [4, 3], gaze: {mean_duration: 2, targets: [{id: 10, probability: 1}]}}\n"
+      "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3.5]}\n"));
+  EXPECT_EQ(scene.seed, 3u);
+  const auto simulation = build_simulation(scene, SimulationConfig{});
+  ASSERT_NE(simulation->ari(), nullptr);
+  EXPECT_DOUBLE_EQ(simulation->ari()->pose().theta, 0.5);
+  const Human& human = *simulation->find_human(10);
+  EXPECT_EQ(human.spec().gender, Gender::kFemale);
+  EXPECT_TRUE(human.spec().mask);
+  EXPECT_EQ(human.spec().emotion, Emotion::kAngry);
+  EXPECT_EQ(human.group_id(), 1u);
+  EXPECT_EQ(simulation->config().seed, 3u);
+}
+
+TEST(Scene, OverlappingSpawnPositionsNameBothHumans) {
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3]}\n  - {id: 11, position: [3.1, 3]}\n",
+                  {"humans[1]", "human 11", "overlap", "human 10"});
+}
+
+TEST(Scene, SpawnInsideAWallIsRejected) {
+  expect_rejected("humans:\n  - {id: 10, position: [0.05, 3]}\n",
+                  {"humans[0]", "overlap", "wall or furniture"});
+}
+
+TEST(Scene, UnknownGenderAndMissingPositionAreNamed) {
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3], gender: robot}\n",
+                  {"humans[0].gender", "female, male or non-identified", "robot"});
+  expect_rejected("humans:\n  - {id: 10}\n", {"humans[0].position", "required"});
+}
+
+TEST(Scene, GazeProbabilitiesMustSumToOneAndNameObjects) {
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
+                  "[{id: 11, probability: 0.5}]}}\n",
+                  {"humans[0].gaze.targets", "summing to 1"});
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
+                  "[{id: 99, probability: 1.0}]}}\n",
+                  {"humans[0].gaze.targets", "99"});
+}
+
+TEST(Scene, GroupOfUnknownHumanIsRejected) {
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3]}\ngroups:\n  - {id: 1, members: [10, 12], centre: [3, 3]}\n",
+                  {"groups[0]", "no human with id 12"});
+}
+
+TEST(Scene, MissingWorldFileIsNamed) {
+  const std::string path = ::testing::TempDir() + "scene_bad_world.yaml";
+  std::ofstream(path) << "world: nowhere.yaml\nseed: 1\n";
+  try {
+    load_scene_file(path);
+    FAIL();
+  } catch (const core::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": world"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nowhere.yaml"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Scene, ShippedScenesBuild) {
+  for (const char* name : {"waiting_room", "flat_group_formation"}) {
+    const Scene scene = load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/" + name + ".yaml");
+    const auto simulation = build_simulation(scene, SimulationConfig{});
+    EXPECT_GE(simulation->humans().size(), 3u) << name;
+    EXPECT_GE(simulation->groups().size(), 1u) << name;
+  }
+}
+
+}  // namespace
+}  // namespace ari_social_sim::world

@@ -1,0 +1,65 @@
+#include "ari_social_sim/world/speech_generator.hpp"
+
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/simulation.hpp"
+#include "scene_builders.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+// Seed 3.3.3: a 10-word utterance at 120 wpm lasts 10 x 0.5 s = 5.0 s, played word by word.
+TEST(SpeechGenerator, TenWordsAt120WpmLastFiveSecondsWordByWord) {
+  Simulation simulation(test::square_room(6.0), SimulationConfig{0.05, 1, 0.05});
+  HumanSpec spec;
+  spec.id = 10;
+  spec.pose.position = {3.0, 3.0};
+  spec.words_per_minute = 120.0;
+  Human& human = simulation.add_human(spec);
+  simulation.step();  // start at t = 0.05 s, off the origin on purpose
+  const double start = simulation.time_s();
+  human.speech().say("INFORM:TEST", "one two three four five six seven eight nine ten", start);
+  EXPECT_DOUBLE_EQ(human.speech().duration_s("one two three four five six seven eight nine ten"),
+                   5.0);
+
+  std::vector<std::string> heard;
+  while (human.speech().is_speaking()) {
+    simulation.step();
+    const std::string& word = human.speech().current_word();
+    if (!word.empty() && (heard.empty() || heard.back() != word)) {
+      heard.push_back(word);
+    }
+    ASSERT_LT(simulation.time_s(), start + 10.0);
+  }
+  const std::vector<std::string> expected{"one", "two", "three", "four", "five",
+                                          "six", "seven", "eight", "nine", "ten"};
+  EXPECT_EQ(heard, expected);
+  const SpeechRecord& record = human.speech().history().at(0);
+  EXPECT_EQ(record.act, "INFORM:TEST");
+  EXPECT_DOUBLE_EQ(record.start_s, start);
+  EXPECT_GE(record.end_s - record.start_s, 5.0 - 1e-9);
+  EXPECT_LE(record.end_s - record.start_s, 5.0 + 0.05 + 1e-9);
+  EXPECT_FALSE(record.interrupted);
+  EXPECT_EQ(human.speech().previous()->act, "INFORM:TEST");
+}
+
+TEST(SpeechGenerator, SayingAgainInterruptsAndRecordsTheCutOffAct) {
+  SpeechGenerator speech(150.0);
+  speech.say("A", "first utterance here", 1.0);
+  speech.say("B", "second", 1.2);
+  ASSERT_EQ(speech.history().size(), 1u);
+  EXPECT_TRUE(speech.history()[0].interrupted);
+  EXPECT_DOUBLE_EQ(speech.history()[0].end_s, 1.2);
+  EXPECT_EQ(speech.act(), "B");
+}
+
+TEST(SpeechGenerator, EmptyContentOrActIsRejected) {
+  SpeechGenerator speech(150.0);
+  EXPECT_THROW(speech.say("A", "   ", 0.0), core::RequestError);
+  EXPECT_THROW(speech.say("", "hello", 0.0), core::RequestError);
+  EXPECT_FALSE(speech.is_speaking());
+}
+
+}  // namespace
+}  // namespace ari_social_sim::world

@@ -1,0 +1,102 @@
+#include "ari_social_sim/world/world_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+// Writes `text` to a file named after the test and returns its path.
+std::string write_file(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Loading `text` fails with a message naming the file and every fragment.
+void expect_rejected(const std::string& text, const std::vector<std::string>& fragments) {
+  const std::string path = write_file("world_under_test.yaml", text);
+  try {
+    load_world_file(path);
+    FAIL() << "accepted:\n" << text;
+  } catch (const core::ConfigError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    for (const std::string& fragment : fragments) {
+      EXPECT_NE(message.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << message;
+    }
+  }
+}
+
+constexpr const char* kHeader = "name: test\norigin: [0, 0]\nsize: [5, 5]\nobjects:\n";
+
+TEST(WorldFile, ReadsEveryShapeType) {
+  const std::string path = write_file("good_world.yaml", std::string(kHeader) +
+      "  - {type: wall, from: [0, 0], to: [4, 0], thickness: 0.2}\n"
+      "  - {type: box, id: 7, name: couch, position: [2, 3], orientation: 0.5, size: [2, 0.8]}\n"
+      "  - {type: circle, position: [1, 1], radius: 0.4}\n"
+      "  - {type: polygon, points: [[3, 3], [4, 3], [4, 4]]}\n");
+  const WorldDescription world = load_world_file(path);
+  ASSERT_EQ(world.objects.size(), 4u);
+  // Wall from (0,0) to (4,0): centre (2, 0), length 4, thickness 0.2.
+  EXPECT_EQ(world.objects[0].type, ShapeType::kWall);
+  EXPECT_DOUBLE_EQ(world.objects[0].pose.position.x(), 2.0);
+  EXPECT_DOUBLE_EQ(world.objects[0].size.x(), 4.0);
+  EXPECT_DOUBLE_EQ(world.objects[0].size.y(), 0.2);
+  EXPECT_EQ(world.objects[1].id, 7u);
+  EXPECT_EQ(world.objects[1].name, "couch");
+  // Automatic ids start at 1000 and skip explicit ones.
+  EXPECT_EQ(world.objects[0].id, 1000u);
+  EXPECT_DOUBLE_EQ(world.objects[2].radius_m, 0.4);
+  EXPECT_EQ(world.objects[3].points.size(), 3u);
+}
+
+TEST(WorldFile, UnknownTypeNamesTheEntry) {
+  expect_rejected(std::string(kHeader) + "  - {type: sofa, position: [1, 1]}\n",
+                  {"objects[0].type", "wall, box, circle, polygon", "sofa"});
+}
+
+TEST(WorldFile, MissingFieldNamesTheField) {
+  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1]}\n",
+                  {"objects[0].radius", "required"});
+}
+
+TEST(WorldFile, WrongTypeNamesFieldAndValue) {
+  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: big}\n",
+                  {"objects[0].radius", "a number", "big"});
+}
+
+TEST(WorldFile, NegativeSizeNamesFieldAndBound) {
+  expect_rejected(std::string(kHeader) + "  - {type: box, position: [1, 1], size: [1, -2]}\n",
+                  {"objects[0].size", "> 0", "-2"});
+  expect_rejected("name: test\nsize: [5, -5]\nobjects: []\n", {"size", "> 0"});
+}
+
+TEST(WorldFile, UnknownFieldIsNotIgnored) {
+  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: 1, colour: red}\n",
+                  {"objects[0]", "unknown field", "colour"});
+}
+
+TEST(WorldFile, NonConvexPolygonAndDuplicateIdsAreRejected) {
+  expect_rejected(std::string(kHeader) + "  - {type: polygon, points: [[0,0],[2,0],[1,0.5],[2,2],[0,2]]}\n",
+                  {"objects[0].points", "convex"});
+  expect_rejected(std::string(kHeader) + "  - {type: circle, id: 3, position: [1, 1], radius: 1}\n"
+                                         "  - {type: circle, id: 3, position: [3, 3], radius: 1}\n",
+                  {"objects[1].id", "3"});
+}
+
+TEST(WorldFile, ShippedWorldsLoad) {
+  for (const char* name : {"room_6x6", "two_room_flat", "hospital_waiting_room"}) {
+    const WorldDescription world =
+        load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/" + name + ".yaml");
+    EXPECT_EQ(world.name, name);
+    EXPECT_GE(world.objects.size(), 4u);
+  }
+}
+
+}  // namespace
+}  // namespace ari_social_sim::world
