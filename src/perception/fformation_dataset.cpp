@@ -34,6 +34,7 @@ class CsvReader {
       throw core::ConfigError(path_ + ": cannot open the file");
     }
     if (!next_line()) {
+      line_number_ = 1;
       fail_at(1, "expected the header \"" + join(columns_) + "\", got an empty file");
     }
     split();
@@ -215,6 +216,23 @@ std::vector<FrameId> read_fformation_frames(const std::string& path) {
     frames.push_back(frame);
   }
   return frames;
+}
+
+GroupTable detect_fformation_groups(const FeatureTable& features, const GcffParams& params) {
+  GcffDetector detector(params);
+  GcffResult result;
+  GroupTable table;
+  for (const auto& [frame, persons] : features) {
+    detector.detect(persons, result);
+    Grouping& groups = table[frame];
+    for (const GcffGroup& group : result.groups) {
+      std::vector<std::string>& ids = groups.emplace_back();
+      for (const size_t member : group.members) {
+        ids.push_back(persons[member].id);
+      }
+    }
+  }
+  return table;
 }
 
 }  // namespace ari_social_sim::perception

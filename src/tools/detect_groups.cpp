@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -120,23 +119,16 @@ std::optional<Options> parse_options(int argc, char** argv) {
   return options;
 }
 
-// The groups of every frame, members by person id, in detection order.
-perception::GroupTable detect_all(const perception::FeatureTable& features,
-                                  const perception::GcffParams& params) {
-  perception::GcffDetector detector(params);
-  perception::GcffResult result;
-  perception::GroupTable table;
-  for (const auto& [frame, persons] : features) {
-    detector.detect(persons, result);
-    perception::Grouping& groups = table[frame];
-    for (const perception::GcffGroup& group : result.groups) {
-      std::vector<std::string>& ids = groups.emplace_back();
-      for (const size_t member : group.members) {
-        ids.push_back(persons[member].id);
+void write_groups(const perception::GroupTable& detected) {
+  std::string out = "frame,group,person_id\n";
+  for (const auto& [frame, groups] : detected) {
+    for (size_t g = 0; g < groups.size(); ++g) {
+      for (const std::string& person : groups[g]) {
+        out += std::to_string(frame) + "," + std::to_string(g) + "," + person + "\n";
       }
     }
   }
-  return table;
+  std::fwrite(out.data(), 1, out.size(), stdout);
 }
 
 int run(const Options& options) {
@@ -144,27 +136,20 @@ int run(const Options& options) {
   params.stride = *options.stride;
   params.mdl = *options.mdl;
   params.validate();
+  // Every input is read before the detection, so that a bad file fails before any output.
   const perception::FeatureTable features = perception::read_fformation_features(options.features);
-
-  if (options.ground_truth.empty()) {
-    const perception::GroupTable detected = detect_all(features, params);
-    std::string out = "frame,group,person_id\n";
-    for (const auto& [frame, groups] : detected) {
-      for (size_t g = 0; g < groups.size(); ++g) {
-        for (const std::string& person : groups[g]) {
-          out += std::to_string(frame) + "," + std::to_string(g) + "," + person + "\n";
-        }
-      }
-    }
-    std::fwrite(out.data(), 1, out.size(), stdout);
-    return 0;
+  perception::GroupTable truth;
+  std::vector<perception::FrameId> frames;
+  if (!options.ground_truth.empty()) {
+    truth = perception::read_fformation_groups(options.ground_truth);
+    frames = perception::read_fformation_frames(options.frames);
   }
 
-  // Read every input before the (slower) detection so that a bad file fails fast.
-  const perception::GroupTable truth = perception::read_fformation_groups(options.ground_truth);
-  const std::vector<perception::FrameId> frames =
-      perception::read_fformation_frames(options.frames);
-  const perception::GroupTable detected = detect_all(features, params);
+  const perception::GroupTable detected = perception::detect_fformation_groups(features, params);
+  if (options.ground_truth.empty()) {
+    write_groups(detected);
+    return 0;
+  }
   const perception::EvaluationScore score =
       perception::evaluate_groups(detected, truth, frames, options.threshold);
   std::printf("precision %.3f recall %.3f f1 %.3f\n", score.precision, score.recall, score.f1);

@@ -31,4 +31,9 @@ GroupTable read_fformation_groups(const std::string& path);
 /// Reads `frame`: the annotated frames, in file order; a repeated frame is an error.
 std::vector<FrameId> read_fformation_frames(const std::string& path);
 
+/// Runs GCFF on every frame of `features`: the detected groups (two or more people) by person id,
+/// members in input order, with an entry for every frame. Throws core::ConfigError for invalid
+/// `params`.
+GroupTable detect_fformation_groups(const FeatureTable& features, const GcffParams& params);
+
 }  // namespace ari_social_sim::perception
