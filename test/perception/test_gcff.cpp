@@ -1,11 +1,38 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <string>
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
+
+// Counts heap allocations while `g_count_allocations` is set (Drake's limit_malloc idea, minimal):
+// the replacement operator new serves the whole test binary, counting only inside a window.
+namespace {
+bool g_count_allocations = false;
+int g_allocations = 0;
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (g_count_allocations) {
+    ++g_allocations;
+  }
+  if (void* memory = std::malloc(size == 0 ? 1 : size)) {
+    return memory;
+  }
+  throw std::bad_alloc();
+}
+// Kept out of line: once inlined, GCC sees free() on memory from operator new and warns
+// (-Wmismatched-new-delete) although both are ours.
+__attribute__((noinline)) void operator delete(void* memory) noexcept {
+  std::free(memory);
+}
+__attribute__((noinline)) void operator delete(void* memory, std::size_t) noexcept {
+  std::free(memory);
+}
 
 namespace ari_social_sim::perception {
 namespace {
@@ -210,6 +237,35 @@ TEST(GcffDetector, ReusedDetectorAndResultMatchFreshOnes) {
     EXPECT_EQ(result.groups[g].centre, fresh.groups[g].centre);
   }
   EXPECT_EQ(result.groups[0].members, (std::vector<size_t>{0, 1, 2}));
+}
+
+TEST(GcffDetector, WarmDetectionsDoNotAllocate) {
+  // Twelve people in four triangles; after a first call has sized the buffers, detecting the same
+  // frame again (as a node does at each tick) touches the heap zero times.
+  std::vector<GcffPerson> persons;
+  for (int g = 0; g < 4; ++g) {
+    for (int k = 0; k < 3; ++k) {
+      const double bearing = 2.0 * kPi * k / 3.0;
+      persons.push_back(person(std::to_string(3 * g + k), 4.0 * g + 0.7 * std::cos(bearing),
+                               0.7 * std::sin(bearing), bearing + kPi));
+    }
+  }
+  GcffDetector detector(metric_params());
+  GcffResult result;
+  detector.detect(persons, result);
+  ASSERT_EQ(result.groups.size(), 4u);
+  g_allocations = 0;
+  g_count_allocations = true;
+  const GcffResult copy = detector.detect(persons);  // the by-value overload does allocate
+  const int counted = g_allocations;
+  g_allocations = 0;
+  for (int i = 0; i < 100; ++i) {
+    detector.detect(persons, result);
+  }
+  g_count_allocations = false;
+  EXPECT_GT(counted, 0);
+  EXPECT_EQ(g_allocations, 0);
+  EXPECT_EQ(result.groups.size(), copy.groups.size());
 }
 
 }  // namespace
