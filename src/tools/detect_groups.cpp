@@ -84,10 +84,13 @@ std::optional<Options> parse_options(int argc, char** argv) {
     if (option == "--help" || option == "-h") {
       return std::nullopt;
     }
+    const bool known = option == "--features" || option == "--stride" || option == "--mdl" ||
+                       option == "--evaluate" || option == "--frames" || option == "--threshold";
+    if (!known) {
+      throw core::ConfigError("unknown option \"" + option + "\"");
+    }
     if (a + 1 >= argc) {
-      throw core::ConfigError(option.rfind("--", 0) == 0
-                                  ? option + ": expected a value"
-                                  : "unexpected argument \"" + option + "\"");
+      throw core::ConfigError(option + ": expected a value");
     }
     const std::string value = argv[++a];
     if (option == "--features") {
@@ -103,8 +106,6 @@ std::optional<Options> parse_options(int argc, char** argv) {
     } else if (option == "--threshold") {
       options.threshold = parse_threshold(value);
       threshold_given = true;
-    } else {
-      throw core::ConfigError("unknown option \"" + option + "\"");
     }
   }
   if (options.features.empty() || !options.stride || !options.mdl) {

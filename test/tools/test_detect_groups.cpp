@@ -84,6 +84,8 @@ TEST(DetectGroups, BadArgumentsExitWithTwo) {
   };
   expect_usage_error(run("--features " + features + " --stride 30"), "--mdl");
   expect_usage_error(run("--features " + features + " --stride x --mdl 1"), "--stride");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl"),
+                     "--mdl: expected a value");
   expect_usage_error(run("--features " + features + " --stride 30 --mdl -1"), "mdl");
   expect_usage_error(run("--features " + features + " --stride 30 --mdl 1 --frobnicate 3"),
                      "--frobnicate");
