@@ -22,6 +22,7 @@ struct GcffParams {
   /// 6000-8000 cm^2. Also bounds the neighbourhood of the visibility term.
   double mdl{0.8};
 
+  /// Calls visitor(name, field) for each field, for loaders driven by field names.
   template <class V>
   void visit(V& visitor) {
     visitor("stride", stride);
@@ -46,6 +47,7 @@ struct GcffGroup {
   Eigen::Vector2d centre{0.0, 0.0};  ///< O-space centre: mean of the members' candidate centres.
 };
 
+/// What GcffDetector::detect finds in one frame.
 struct GcffResult {
   /// Label per input person, 0..K-1 in order of the labels' first hypothesis; people sharing a
   /// label form a group when there are two or more of them, otherwise they stand alone.
