@@ -1,0 +1,61 @@
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/perception/gcff.hpp"
+
+namespace {
+
+using namespace ari_social_sim;
+
+// A seeded crowd in metres: circles of 1-4 people (singletons included) 0.6-0.9 m around random
+// centres in a square holding about one person per 4 m^2, each facing their circle's centre
+// within ~10 degrees.
+std::vector<perception::GcffPerson> make_crowd(size_t count, uint64_t seed) {
+  core::Rng rng(seed);
+  const double side_m = 2.0 * std::sqrt(static_cast<double>(count));
+  std::vector<perception::GcffPerson> persons;
+  while (persons.size() < count) {
+    const size_t size = std::min<size_t>(count - persons.size(), 1 + rng.uniform_index(4));
+    const double centre_x = rng.uniform(0.0, side_m);
+    const double centre_y = rng.uniform(0.0, side_m);
+    const double radius_m = rng.uniform(0.6, 0.9);
+    const double phase = rng.uniform(0.0, 2.0 * core::kPi);
+    for (size_t k = 0; k < size; ++k) {
+      const double bearing = phase + 2.0 * core::kPi * static_cast<double>(k) / size;
+      persons.push_back(
+          {"p" + std::to_string(persons.size()), centre_x + radius_m * std::cos(bearing),
+           centre_y + radius_m * std::sin(bearing), bearing + core::kPi + rng.normal(0.0, 0.17)});
+    }
+  }
+  return persons;
+}
+
+// One frame of GCFF with the simulator's parameters (stride 0.6 m, mdl 0.8 m^2), detector and
+// result reused as a perception node would; items = frames.
+void BM_GcffDetect(benchmark::State& state) {
+  const std::vector<perception::GcffPerson> persons =
+      make_crowd(static_cast<size_t>(state.range(0)), 7);
+  perception::GcffParams params;
+  params.stride = 0.6;
+  params.mdl = 0.8;
+  perception::GcffDetector detector(params);
+  perception::GcffResult result;
+  detector.detect(persons, result);  // warm-up: sizes the buffers
+  for (auto _ : state) {
+    detector.detect(persons, result);
+    benchmark::DoNotOptimize(result.labels.data());
+  }
+  state.counters["groups"] = static_cast<double>(result.groups.size());
+  state.counters["outer_iterations"] = result.iterations;
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_GcffDetect)->ArgName("people")->Arg(5)->Arg(20)->Arg(50);
+
+}  // namespace
+
+BENCHMARK_MAIN();

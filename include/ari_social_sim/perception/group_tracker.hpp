@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/perception/grouping.hpp"
+
+namespace ari_social_sim::perception {
+
+/// Gives the groups detected frame after frame ids that stay the same while their membership
+/// persists, for the ROS4HRI `hri_msgs/Group.group_id` (a string).
+///
+/// Each update matches the new groups to the previous frame's groups greedily by the number of
+/// members they share: the pair sharing most members first (ties: the older id, then the earlier
+/// new group), each group used at most once, pairs sharing nobody never matched. A matched group
+/// keeps the previous id, so a group that gains or loses members keeps its id, a group that splits
+/// leaves it to the part with most of its members, and groups that merge take the id of the one
+/// contributing most. Unmatched groups get a fresh id "g<n>" from a counter (n = 1, 2, ...; a
+/// valid identifier, never reused). Only the previous frame is remembered: a group missing for
+/// one frame comes back with a new id.
+class GroupTracker {
+ public:
+  /// Ids for `groups` (each a list of person ids), in the same order.
+  std::vector<std::string> update(const Grouping& groups);
+
+  /// Forgets the previous frame; the counter goes on, so ids stay unique.
+  void clear() { tracks_.clear(); }
+
+ private:
+  struct Track {
+    std::string id;
+    uint64_t serial{0};                ///< Creation order: lower is older.
+    std::vector<std::string> members;  ///< Sorted.
+  };
+
+  std::vector<Track> tracks_;
+  uint64_t next_serial_{1};
+};
+
+}  // namespace ari_social_sim::perception

@@ -1,0 +1,103 @@
+// Runs the detect_groups program as a user would, through the shell.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct ProgramRun {
+  int status{-1};
+  std::string out;
+  std::string err;
+};
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string temp_path(const std::string& name) {
+  return ::testing::TempDir() + "detect_groups_" + name;
+}
+
+// Runs detect_groups with `arguments` (shell syntax), capturing its output and exit status.
+ProgramRun run(const std::string& arguments) {
+  const std::string out = temp_path("stdout.txt");
+  const std::string err = temp_path("stderr.txt");
+  const std::string command =
+      std::string(ARI_DETECT_GROUPS_BIN) + " " + arguments + " >" + out + " 2>" + err;
+  const int raw = std::system(command.c_str());
+  ProgramRun result;
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  result.out = read_all(out);
+  result.err = read_all(err);
+  return result;
+}
+
+std::string data_file(const std::string& name) {
+  return std::string(ARI_FFORMATION_DIR) + "/" + name;
+}
+
+TEST(DetectGroups, HelpDocumentsTheOptions) {
+  const ProgramRun help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  for (const char* option : {"--features", "--stride", "--mdl", "--evaluate", "--frames",
+                             "--threshold", "frame,group,person_id"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+  }
+}
+
+TEST(DetectGroups, WritesGroupsAsCsv) {
+  // Frame 7: ann and bob face each other 1.2 m apart, cy stands alone facing away; frame 8: cy.
+  const std::string features = temp_path("features.csv");
+  std::ofstream(features) << "frame,person_id,x,y,theta\n"
+                             "7,ann,0,0,0\n7,cy,5,5,0\n7,bob,1.2,0,3.141593\n8,cy,5,5,0\n";
+  const ProgramRun result = run("--features " + features + " --stride 0.6 --mdl 0.8");
+  EXPECT_EQ(result.status, 0) << result.err;
+  EXPECT_EQ(result.out, "frame,group,person_id\n7,0,ann\n7,0,bob\n");
+}
+
+TEST(DetectGroups, EvaluatesAgainstGroundTruth) {
+  const std::string arguments =
+      "--features " + data_file("Synth_features.csv") + " --stride 30 --mdl 6000 --evaluate " +
+      data_file("Synth_groups.csv") + " --frames " + data_file("Synth_frames.csv");
+  const ProgramRun two_thirds = run(arguments);
+  EXPECT_EQ(two_thirds.status, 0) << two_thirds.err;
+  EXPECT_EQ(two_thirds.out, "precision 0.967 recall 0.980 f1 0.973\n");
+  const ProgramRun all = run(arguments + " --threshold 1");
+  EXPECT_EQ(all.out, "precision 0.908 recall 0.910 f1 0.909\n");
+}
+
+TEST(DetectGroups, BadArgumentsExitWithTwo) {
+  const std::string features = data_file("Synth_features.csv");
+  const auto expect_usage_error = [](const ProgramRun& result, const std::string& fragment) {
+    EXPECT_EQ(result.status, 2);
+    EXPECT_TRUE(result.out.empty());
+    EXPECT_NE(result.err.find(fragment), std::string::npos) << result.err;
+  };
+  expect_usage_error(run("--features " + features + " --stride 30"), "--mdl");
+  expect_usage_error(run("--features " + features + " --stride x --mdl 1"), "--stride");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl"),
+                     "--mdl: expected a value");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl -1"), "mdl");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl 1 --frobnicate 3"),
+                     "--frobnicate");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl 1 --threshold 0.5"),
+                     "--threshold");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl 1 --evaluate " + features),
+                     "--frames");
+  expect_usage_error(run("--features /nonexistent.csv --stride 30 --mdl 1"),
+                     "/nonexistent.csv: cannot open");
+  // Ground truth given as features: the header is wrong, named with file, line and column.
+  expect_usage_error(run("--features " + data_file("Synth_groups.csv") + " --stride 30 --mdl 1"),
+                     "Synth_groups.csv:1:1:");
+}
+
+}  // namespace
