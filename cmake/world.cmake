@@ -18,6 +18,7 @@ add_library(ari_world
   src/world/speech_generator.cpp
   src/world/types.cpp
   src/world/world_file.cpp
+  src/world/world_run_config.cpp
   src/world/world_snapshot.cpp)
 target_link_libraries(ari_world PUBLIC ari_core box2d::box2d)
 
@@ -32,6 +33,19 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_social_forces.cpp
       test/world/test_speech_generator.cpp
       test/world/test_world_file.cpp
+      test/world/test_world_run_config.cpp
     LIBRARIES ari_world)
   target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
+
+# world_node: thin ROS adapter over the world core.
+add_library(ari_world_conversions
+  src/nodes/conversions/world_markers.cpp
+  src/nodes/conversions/world_state.cpp
+  src/nodes/ros_params.cpp)
+target_include_directories(ari_world_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
+target_link_libraries(ari_world_conversions PUBLIC ari_world ${catkin_LIBRARIES})
+add_dependencies(ari_world_conversions ${PROJECT_NAME}_generate_messages_cpp)
+
+add_executable(world_node src/nodes/world_node.cpp)
+target_link_libraries(world_node ari_world_conversions)

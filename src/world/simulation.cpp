@@ -186,12 +186,7 @@ void Simulation::remove_human(ObjectId id) {
   if (human == nullptr) {
     throw core::RequestError("no human with id " + std::to_string(id));
   }
-  if (GroupNavigation* group = find_group(human->group_id())) {
-    group->remove_member(id);
-    if (group->members().empty()) {
-      remove_group(group->id());
-    }
-  }
+  release_from_group(id);
   physics_->DestroyBody(human->body());
   objects_by_id_.erase(id);
   humans_.erase(std::find_if(humans_.begin(), humans_.end(),
@@ -296,6 +291,22 @@ void Simulation::remove_group(ObjectId group_id) {
                              [group_id](const std::unique_ptr<GroupNavigation>& g) {
                                return g->id() == group_id;
                              }));
+}
+
+void Simulation::release_from_group(ObjectId human_id) {
+  Human* human = find_human(human_id);
+  if (human == nullptr) {
+    throw core::RequestError("no human with id " + std::to_string(human_id));
+  }
+  GroupNavigation* group = find_group(human->group_id());
+  if (group == nullptr) {
+    return;
+  }
+  group->remove_member(human_id);
+  human->leave_group();
+  if (group->members().empty()) {
+    remove_group(group->id());
+  }
 }
 
 void Simulation::set_pose(ObjectId id, const core::Pose2& pose) {

@@ -54,6 +54,8 @@ class Simulation {
   GroupNavigation& add_group(const GroupSpec& spec);
   void add_group_members(ObjectId group_id, const std::vector<ObjectId>& members);
   void remove_group(ObjectId group_id);
+  /// Takes a human out of its group (if any) so a goal, velocity or pose command can drive it.
+  void release_from_group(ObjectId human_id);
   /// Places a human or ARI directly; throws if the new pose overlaps anything.
   void set_pose(ObjectId id, const core::Pose2& pose);
   void add_process(std::unique_ptr<Process> process);

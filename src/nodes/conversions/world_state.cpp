@@ -1,0 +1,99 @@
+#include "world_state.hpp"
+
+namespace ari_social_sim::nodes {
+namespace {
+
+geometry_msgs::Pose2D to_msg(const core::Pose2& pose) {
+  geometry_msgs::Pose2D msg;
+  msg.x = pose.position.x();
+  msg.y = pose.position.y();
+  msg.theta = pose.theta;
+  return msg;
+}
+
+SpeechState to_msg(const world::SpeechSnapshot& speech) {
+  SpeechState msg;
+  msg.act = speech.act;
+  msg.content = speech.content;
+  msg.current_word = speech.current_word;
+  msg.word_index = speech.word_index;
+  msg.is_speaking = speech.is_speaking;
+  msg.start_time = speech.start_s;
+  msg.previous_act = speech.previous_act;
+  msg.previous_content = speech.previous_content;
+  return msg;
+}
+
+}  // namespace
+
+WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id) {
+  WorldState msg;
+  msg.header.stamp = ros::Time(snapshot.time_s);
+  msg.header.frame_id = frame_id;
+  msg.step = snapshot.step;
+  msg.has_ari = snapshot.ari.has_value();
+  if (snapshot.ari) {
+    const world::AriSnapshot& ari = *snapshot.ari;
+    msg.ari.id = ari.id;
+    msg.ari.pose = to_msg(ari.pose);
+    msg.ari.linear_velocity = ari.linear_mps;
+    msg.ari.angular_velocity = ari.angular_rps;
+    msg.ari.head_pan = ari.head_pan_rad;
+    msg.ari.head_pan_velocity = ari.head_pan_velocity_rps;
+    msg.ari.speech = to_msg(ari.speech);
+  }
+  msg.humans.reserve(snapshot.humans.size());
+  for (const world::HumanSnapshot& human : snapshot.humans) {
+    HumanState h;
+    h.id = human.id;
+    h.name = human.name;
+    h.role = human.role;
+    h.pose = to_msg(human.pose);
+    h.velocity.linear.x = human.velocity_mps.x();
+    h.velocity.linear.y = human.velocity_mps.y();
+    h.velocity.angular.z = human.angular_velocity_rps;
+    h.age = static_cast<float>(human.age_years);
+    h.gender = static_cast<uint8_t>(human.gender);
+    h.mask = human.mask;
+    h.emotion = static_cast<uint8_t>(human.emotion);
+    h.motion_mode = static_cast<uint8_t>(human.motion_mode);
+    h.has_goal = human.goal.has_value();
+    if (human.goal) {
+      h.goal = to_msg(*human.goal);
+    }
+    h.group_id = human.group_id;
+    h.gaze.target_id = human.gaze.target;
+    h.gaze.direction = human.gaze.direction_rad;
+    h.gaze.since = human.gaze.since_s;
+    h.speech = to_msg(human.speech);
+    msg.humans.push_back(std::move(h));
+  }
+  for (const world::GroupSnapshot& group : snapshot.groups) {
+    GroupState g;
+    g.id = group.id;
+    g.members = group.members;
+    g.centre.x = group.centre.x();
+    g.centre.y = group.centre.y();
+    g.ospace_radius = group.ospace_radius_m;
+    msg.groups.push_back(std::move(g));
+  }
+  return msg;
+}
+
+nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
+                               double stamp_s) {
+  nav_msgs::OccupancyGrid msg;
+  msg.header.stamp = ros::Time(stamp_s);
+  msg.header.frame_id = frame_id;
+  msg.info.map_load_time = msg.header.stamp;
+  msg.info.resolution = static_cast<float>(grid.resolution_m);
+  msg.info.width = static_cast<uint32_t>(grid.width);
+  msg.info.height = static_cast<uint32_t>(grid.height);
+  msg.info.origin.position.x = grid.origin.x();
+  msg.info.origin.position.y = grid.origin.y();
+  msg.info.origin.orientation.w = 1.0;
+  msg.data = grid.cells;
+  return msg;
+}
+
+}  // namespace ari_social_sim::nodes

@@ -1,0 +1,461 @@
+// world_node: the 2D multi-party world as a ROS node that owns simulated time.
+// Reads parameters, builds the world core, wires topics and services, converts at the edges.
+
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
+#include <std_srvs/SetBool.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <trajectory_msgs/JointTrajectory.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "ari_social_sim/AddGroupMembers.h"
+#include "ari_social_sim/CreateGroup.h"
+#include "ari_social_sim/RemoveHuman.h"
+#include "ari_social_sim/Say.h"
+#include "ari_social_sim/SetGazeTargets.h"
+#include "ari_social_sim/SetGoal.h"
+#include "ari_social_sim/SetGroupCentre.h"
+#include "ari_social_sim/SetPose.h"
+#include "ari_social_sim/SetVelocity.h"
+#include "ari_social_sim/SpawnHuman.h"
+#include "ari_social_sim/StepSimulation.h"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/group_report.hpp"
+#include "ari_social_sim/world/map_sensor.hpp"
+#include "ari_social_sim/world/scene.hpp"
+#include "ari_social_sim/world/world_run_config.hpp"
+#include "ari_social_sim/world/world_snapshot.hpp"
+#include "conversions/world_markers.hpp"
+#include "conversions/world_state.hpp"
+#include "ros_params.hpp"
+
+namespace ari_social_sim::nodes {
+namespace {
+
+constexpr char kMapFrame[] = "map";
+constexpr char kOdomFrame[] = "odom";
+constexpr char kBaseFrame[] = "base_footprint";
+constexpr char kHeadPanJoint[] = "head_1_joint";
+
+core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) { return {{pose.x, pose.y}, pose.theta}; }
+
+geometry_msgs::Quaternion yaw_quaternion(double theta) {
+  geometry_msgs::Quaternion q;
+  q.z = std::sin(0.5 * theta);
+  q.w = std::cos(0.5 * theta);
+  return q;
+}
+
+// Runs a service body; a core::Error becomes success = false with its text, as ROS users expect
+// from a request the server understood but could not honour.
+template <class Response, class Body>
+bool answer(Response& response, Body body) {
+  try {
+    body();
+    response.success = true;
+  } catch (const core::Error& e) {
+    response.success = false;
+    response.message = e.what();
+    ROS_WARN("%s", e.what());
+  }
+  return true;
+}
+
+class WorldNode {
+ public:
+  WorldNode(const world::WorldRunConfig& config, world::Scene scene)
+      : config_(config), scene_(std::move(scene)) {
+    rebuild();
+    map_ = world::rasterize_static_map(scene_.world, config_.map_resolution_m);
+    paused_ = config_.start_paused;
+
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10);
+    map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
+    marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
+    odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
+    cmd_vel_sub_ = nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
+    head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
+
+    services_.push_back(nh_.advertiseService("/sim/spawn_human", &WorldNode::spawn_human, this));
+    services_.push_back(nh_.advertiseService("/sim/remove_human", &WorldNode::remove_human, this));
+    services_.push_back(nh_.advertiseService("/sim/set_goal", &WorldNode::set_goal, this));
+    services_.push_back(nh_.advertiseService("/sim/set_velocity", &WorldNode::set_velocity, this));
+    services_.push_back(nh_.advertiseService("/sim/set_pose", &WorldNode::set_pose, this));
+    services_.push_back(nh_.advertiseService("/sim/create_group", &WorldNode::create_group, this));
+    services_.push_back(
+        nh_.advertiseService("/sim/add_group_members", &WorldNode::add_group_members, this));
+    services_.push_back(
+        nh_.advertiseService("/sim/set_group_centre", &WorldNode::set_group_centre, this));
+    services_.push_back(nh_.advertiseService("/sim/say", &WorldNode::say, this));
+    services_.push_back(
+        nh_.advertiseService("/sim/set_gaze_targets", &WorldNode::set_gaze_targets, this));
+    services_.push_back(nh_.advertiseService("/sim/reset", &WorldNode::reset, this));
+    services_.push_back(nh_.advertiseService("/sim/pause", &WorldNode::pause, this));
+    services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));
+
+    // In 2D mode the base pose is exact, so map and odom coincide.
+    geometry_msgs::TransformStamped map_to_odom;
+    map_to_odom.header.frame_id = kMapFrame;
+    map_to_odom.child_frame_id = kOdomFrame;
+    map_to_odom.transform.rotation.w = 1.0;
+    static_tf_.sendTransform(map_to_odom);
+    publish_map();
+    publish_state();
+  }
+
+  /// Steps until shutdown or the configured duration, pacing sim time at the real-time factor.
+  void run() {
+    ros::WallTime start = ros::WallTime::now();
+    double start_sim_s = simulation_->time_s();
+    while (ros::ok()) {
+      ros::spinOnce();
+      if (paused_) {
+        ros::WallDuration(0.01).sleep();
+        start = ros::WallTime::now();
+        start_sim_s = simulation_->time_s();
+        continue;
+      }
+      step_once();
+      if (config_.duration_s > 0.0 && simulation_->time_s() >= config_.duration_s - 1e-9) {
+        report();
+        return;
+      }
+      if (config_.real_time_factor > 0.0) {
+        const double wall_due = (simulation_->time_s() - start_sim_s) / config_.real_time_factor;
+        const ros::WallTime due = start + ros::WallDuration(wall_due);
+        const ros::WallTime now = ros::WallTime::now();
+        if (due > now) {
+          (due - now).sleep();
+        }
+      }
+    }
+  }
+
+ private:
+  void rebuild() {
+    world::SimulationConfig sim_config;
+    sim_config.step_s = config_.step_s;
+    sim_config.map_resolution_m = config_.map_resolution_m;
+    simulation_ = world::build_simulation(scene_, sim_config);
+    reported_clamps_ = 0;
+  }
+
+  void step_once() {
+    simulation_->step();
+    publish_state();
+  }
+
+  void publish_state() {
+    const world::WorldSnapshot snapshot = world::WorldSnapshot::of(*simulation_);
+    const ros::Time stamp(snapshot.time_s);
+    rosgraph_msgs::Clock clock;
+    clock.clock = stamp;
+    clock_pub_.publish(clock);
+    state_pub_.publish(to_msg(snapshot, kMapFrame));
+    if (snapshot.ari) {
+      publish_base(*snapshot.ari, stamp);
+    }
+    const ros::WallTime now = ros::WallTime::now();
+    if (marker_pub_.getNumSubscribers() > 0 &&
+        (now - last_markers_).toSec() >= 1.0 / config_.marker_rate_hz) {
+      last_markers_ = now;
+      marker_pub_.publish(world_markers(snapshot, scene_.world, kMapFrame));
+    }
+    const uint64_t clamps = simulation_->diagnostics().clamped_commands;
+    if (clamps > reported_clamps_) {
+      ROS_WARN_THROTTLE(5.0, "ARI commands beyond its limits were clamped (%lu so far)",
+                        static_cast<unsigned long>(clamps));
+      reported_clamps_ = clamps;
+    }
+  }
+
+  void publish_base(const world::AriSnapshot& ari, const ros::Time& stamp) {
+    geometry_msgs::TransformStamped odom_to_base;
+    odom_to_base.header.stamp = stamp;
+    odom_to_base.header.frame_id = kOdomFrame;
+    odom_to_base.child_frame_id = kBaseFrame;
+    odom_to_base.transform.translation.x = ari.pose.position.x();
+    odom_to_base.transform.translation.y = ari.pose.position.y();
+    odom_to_base.transform.rotation = yaw_quaternion(ari.pose.theta);
+    tf_.sendTransform(odom_to_base);
+
+    nav_msgs::Odometry odom;
+    odom.header = odom_to_base.header;
+    odom.child_frame_id = kBaseFrame;
+    odom.pose.pose.position.x = ari.pose.position.x();
+    odom.pose.pose.position.y = ari.pose.position.y();
+    odom.pose.pose.orientation = odom_to_base.transform.rotation;
+    odom.twist.twist.linear.x = ari.linear_mps;
+    odom.twist.twist.angular.z = ari.angular_rps;
+    odom_pub_.publish(odom);
+  }
+
+  void publish_map() {
+    map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s()));
+  }
+
+  void report() {
+    std::cout << "\nworld_node: finished " << scene_.path << " at t = " << simulation_->time_s()
+              << " s\n";
+    for (const auto& human : simulation_->humans()) {
+      std::printf("  human %u %-8s at (%.2f, %.2f), heading %.1f deg\n", human->id(),
+                  human->spec().name.c_str(), human->pose().position.x(),
+                  human->pose().position.y(), human->pose().theta * 180.0 / M_PI);
+    }
+    for (const auto& group : simulation_->groups()) {
+      std::cout << world::GroupReport::of(*simulation_, *group).to_text();
+    }
+    std::cout << std::flush;
+  }
+
+  void on_cmd_vel(const geometry_msgs::Twist& twist) {
+    if (simulation_->ari() == nullptr) {
+      ROS_WARN_THROTTLE(5.0, "cmd_vel received but the scene has no ARI");
+      return;
+    }
+    simulation_->command_ari_twist(twist.linear.x, twist.angular.z);
+  }
+
+  void on_head_command(const trajectory_msgs::JointTrajectory& trajectory) {
+    const auto joint = std::find(trajectory.joint_names.begin(), trajectory.joint_names.end(),
+                                 kHeadPanJoint);
+    if (simulation_->ari() == nullptr || joint == trajectory.joint_names.end() ||
+        trajectory.points.empty()) {
+      ROS_WARN_THROTTLE(5.0, "head command ignored: needs ARI and a point for %s", kHeadPanJoint);
+      return;
+    }
+    const size_t index = static_cast<size_t>(joint - trajectory.joint_names.begin());
+    const trajectory_msgs::JointTrajectoryPoint& last = trajectory.points.back();
+    if (index >= last.positions.size()) {
+      ROS_WARN_THROTTLE(5.0, "head command ignored: no position for %s", kHeadPanJoint);
+      return;
+    }
+    simulation_->command_ari_head_pan(last.positions[index]);
+  }
+
+  world::Human& human(uint32_t id) {
+    world::Human* found = simulation_->find_human(id);
+    if (found == nullptr) {
+      throw core::RequestError("no human with id " + std::to_string(id));
+    }
+    return *found;
+  }
+
+  bool spawn_human(SpawnHuman::Request& req, SpawnHuman::Response& res) {
+    return answer(res, [&] {
+      world::HumanSpec spec;
+      spec.id = req.id == 0 ? simulation_->next_free_id(10) : req.id;
+      spec.name = req.name;
+      spec.role = req.role;
+      spec.pose = from_msg(req.pose);
+      if (req.age != 0.0f) {
+        spec.age_years = req.age;
+      }
+      if (!req.gender.empty()) {
+        const auto gender = world::parse_gender(req.gender);
+        if (!gender) {
+          throw core::RequestError("gender: expected female, male or non-identified, got '" +
+                                   req.gender + "'");
+        }
+        spec.gender = *gender;
+      }
+      spec.mask = req.mask;
+      if (!req.emotion.empty()) {
+        const auto emotion = world::parse_emotion(req.emotion);
+        if (!emotion) {
+          throw core::RequestError(
+              "emotion: expected neutral, happy, angry or disturbed, got '" + req.emotion + "'");
+        }
+        spec.emotion = *emotion;
+      }
+      res.id = simulation_->add_human(spec).id();
+    });
+  }
+
+  bool remove_human(RemoveHuman::Request& req, RemoveHuman::Response& res) {
+    return answer(res, [&] { simulation_->remove_human(req.id); });
+  }
+
+  bool set_goal(SetGoal::Request& req, SetGoal::Response& res) {
+    return answer(res, [&] {
+      world::Human& h = human(req.id);
+      simulation_->release_from_group(req.id);
+      h.set_goal(from_msg(req.goal));
+    });
+  }
+
+  bool set_velocity(SetVelocity::Request& req, SetVelocity::Response& res) {
+    return answer(res, [&] {
+      world::Human& h = human(req.id);
+      if (!std::isfinite(req.vx) || !std::isfinite(req.vy) || !std::isfinite(req.omega)) {
+        throw core::RequestError("velocity must be finite");
+      }
+      simulation_->release_from_group(req.id);
+      h.set_velocity({req.vx, req.vy}, req.omega);
+    });
+  }
+
+  bool set_pose(SetPose::Request& req, SetPose::Response& res) {
+    return answer(res, [&] {
+      if (simulation_->find_human(req.id) != nullptr) {
+        simulation_->release_from_group(req.id);
+      }
+      simulation_->set_pose(req.id, from_msg(req.pose));
+      publish_state();
+    });
+  }
+
+  bool create_group(CreateGroup::Request& req, CreateGroup::Response& res) {
+    return answer(res, [&] {
+      world::GroupSpec spec;
+      spec.id = req.id;
+      if (spec.id == 0) {
+        spec.id = simulation_->groups().empty() ? 1 : simulation_->groups().back()->id() + 1;
+      }
+      spec.members = req.members;
+      spec.centre = {req.centre.x, req.centre.y};
+      spec.ospace_radius_m = req.ospace_radius;
+      res.id = simulation_->add_group(spec).id();
+    });
+  }
+
+  bool add_group_members(AddGroupMembers::Request& req, AddGroupMembers::Response& res) {
+    return answer(res, [&] { simulation_->add_group_members(req.group_id, req.members); });
+  }
+
+  bool set_group_centre(SetGroupCentre::Request& req, SetGroupCentre::Response& res) {
+    return answer(res, [&] {
+      world::GroupNavigation* group = simulation_->find_group(req.group_id);
+      if (group == nullptr) {
+        throw core::RequestError("no group with id " + std::to_string(req.group_id));
+      }
+      group->set_centre({req.centre.x, req.centre.y});
+    });
+  }
+
+  bool say(Say::Request& req, Say::Response& res) {
+    return answer(res, [&] {
+      world::SpeechGenerator* speech = nullptr;
+      if (simulation_->ari() != nullptr && simulation_->ari()->id() == req.speaker_id) {
+        speech = &simulation_->ari()->speech();
+      } else {
+        speech = &human(req.speaker_id).speech();
+      }
+      speech->say(req.act, req.content, simulation_->time_s());
+      res.duration = speech->duration_s(req.content);
+    });
+  }
+
+  bool set_gaze_targets(SetGazeTargets::Request& req, SetGazeTargets::Response& res) {
+    return answer(res, [&] {
+      world::Human& h = human(req.id);
+      if (req.targets.size() != req.probabilities.size()) {
+        throw core::RequestError("targets and probabilities must have the same length");
+      }
+      world::GazeModel model;
+      for (size_t i = 0; i < req.targets.size(); ++i) {
+        if (simulation_->find_object(req.targets[i]) == nullptr || req.targets[i] == req.id) {
+          throw core::RequestError("gaze target " + std::to_string(req.targets[i]) +
+                                   " is not another object of the world");
+        }
+        model.targets.push_back({req.targets[i], req.probabilities[i]});
+      }
+      model.mean_duration_s = req.mean_duration;
+      model.validate();
+      h.set_gaze_model(model);
+    });
+  }
+
+  bool reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+    return answer(res, [&] {
+      rebuild();
+      publish_state();
+      res.message = "reset to " + scene_.path;
+    });
+  }
+
+  bool pause(std_srvs::SetBool::Request& req, std_srvs::SetBool::Response& res) {
+    paused_ = req.data;
+    res.success = true;
+    res.message = paused_ ? "paused" : "running";
+    return true;
+  }
+
+  bool step_service(StepSimulation::Request& req, StepSimulation::Response& res) {
+    return answer(res, [&] {
+      if (!paused_) {
+        throw core::RequestError("step needs a paused simulation (call /sim/pause true first)");
+      }
+      if (req.steps == 0) {
+        throw core::RequestError("steps must be >= 1");
+      }
+      for (uint32_t i = 0; i < req.steps; ++i) {
+        step_once();
+      }
+      res.sim_time = simulation_->time_s();
+    });
+  }
+
+  world::WorldRunConfig config_;
+  world::Scene scene_;
+  std::unique_ptr<world::Simulation> simulation_;
+  world::OccupancyGrid map_;
+  bool paused_{false};
+  uint64_t reported_clamps_{0};
+  ros::WallTime last_markers_;
+
+  ros::NodeHandle nh_;
+  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_;
+  ros::Subscriber cmd_vel_sub_, head_sub_;
+  std::vector<ros::ServiceServer> services_;
+  tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;
+};
+
+}  // namespace
+}  // namespace ari_social_sim::nodes
+
+int main(int argc, char** argv) {
+  using namespace ari_social_sim;
+  ros::init(argc, argv, "world_node");
+  ros::NodeHandle private_handle("~");
+  world::WorldRunConfig config;
+  world::Scene scene;
+  try {
+    config = world::WorldRunConfig::from_yaml(nodes::read_private_params(private_handle));
+    if (config.scene.empty()) {
+      config.scene = ros::package::getPath("ari_social_sim") + "/scenes/waiting_room.yaml";
+    }
+    scene = world::load_scene_file(config.scene);
+    if (config.seed >= 0) {
+      scene.seed = static_cast<uint64_t>(config.seed);
+    }
+    // Build once here so a scene that cannot be placed stops the node before it advertises.
+    world::SimulationConfig check;
+    check.step_s = config.step_s;
+    check.map_resolution_m = config.map_resolution_m;
+    world::build_simulation(scene, check);
+  } catch (const core::Error& e) {
+    ROS_FATAL("%s", e.what());
+    return 2;
+  }
+  ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s",
+           scene.path.c_str(), scene.world.name.c_str(), static_cast<unsigned long>(scene.seed),
+           config.step_s,
+           config.real_time_factor > 0 ? std::to_string(config.real_time_factor).c_str()
+                                       : "as fast as possible");
+  nodes::WorldNode node(config, std::move(scene));
+  node.run();
+  return 0;
+}

@@ -1,0 +1,46 @@
+#include "ari_social_sim/world/world_run_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+WorldRunConfig parse(const std::string& text) {
+  return WorldRunConfig::from_yaml(core::YamlMap::parse(text, "world_node parameters"));
+}
+
+void expect_rejected(const std::string& text, const std::vector<std::string>& fragments) {
+  try {
+    parse(text);
+    FAIL() << "accepted: " << text;
+  } catch (const core::ConfigError& e) {
+    for (const std::string& fragment : fragments) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(WorldRunConfig, DefaultsAreValidAndFieldsAreRead) {
+  const WorldRunConfig defaults = parse("{}");
+  EXPECT_DOUBLE_EQ(defaults.step_s, 0.05);
+  EXPECT_DOUBLE_EQ(defaults.real_time_factor, 1.0);
+  EXPECT_EQ(defaults.seed, -1);
+  const WorldRunConfig config = parse("{step: 0.02, real_time_factor: 0, seed: 4, duration: 40}");
+  EXPECT_DOUBLE_EQ(config.step_s, 0.02);
+  EXPECT_DOUBLE_EQ(config.real_time_factor, 0.0);
+  EXPECT_EQ(config.seed, 4);
+  EXPECT_DOUBLE_EQ(config.duration_s, 40.0);
+}
+
+TEST(WorldRunConfig, EachBadParameterIsNamed) {
+  expect_rejected("{step: -0.1}", {"world_node parameters: step", "(0, 1]", "-0.1"});
+  expect_rejected("{step: fast}", {"step", "a number", "fast"});
+  expect_rejected("{marker_rate: 100}", {"marker_rate", "(0, 30]"});
+  expect_rejected("{real_time_factor: -2}", {"real_time_factor", ">= 0"});
+  expect_rejected("{stepp: 0.1}", {"unknown field", "stepp"});
+}
+
+}  // namespace
+}  // namespace ari_social_sim::world
