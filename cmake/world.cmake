@@ -35,3 +35,11 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ari_world)
   target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_world
+    SOURCES bench/bench_world.cpp
+    LIBRARIES ari_world)
+  # The scenes are the world tests' own (test/world/scene_builders.hpp).
+  target_include_directories(bench_world PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+endif()
