@@ -49,3 +49,11 @@ add_dependencies(ari_world_conversions ${PROJECT_NAME}_generate_messages_cpp)
 
 add_executable(world_node src/nodes/world_node.cpp)
 target_link_libraries(world_node ari_world_conversions)
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_world
+    SOURCES bench/bench_world.cpp
+    LIBRARIES ari_world)
+  # The scenes are the world tests' own (test/world/scene_builders.hpp).
+  target_include_directories(bench_world PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+endif()
