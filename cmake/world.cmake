@@ -57,3 +57,11 @@ if(benchmark_FOUND)
   # The scenes are the world tests' own (test/world/scene_builders.hpp).
   target_include_directories(bench_world PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 endif()
+
+if(CATKIN_ENABLE_TESTING)
+  add_rostest(test/integration/world_node.test DEPENDENCIES world_node)
+  ari_add_gtest(test_world_state_determinism
+    SOURCES test/nodes/test_world_state_determinism.cpp
+    LIBRARIES ari_world_conversions)
+  target_compile_definitions(test_world_state_determinism PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()

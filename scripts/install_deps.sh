@@ -13,6 +13,7 @@ packages=(
   libactionlib-dev python3-actionlib libmove-base-msgs-dev python3-move-base-msgs
   python3-std-msgs python3-geometry-msgs python3-nav-msgs python3-sensor-msgs
   python3-visualization-msgs python3-actionlib-msgs python3-rosgraph-msgs python3-std-srvs
+  python3-trajectory-msgs python3-rospy
   libstd-srvs-dev
   # simulation cores
   libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev

@@ -2,6 +2,8 @@
 
 #include <box2d/box2d.h>
 
+#include "ari_social_sim/core/angles.hpp"
+
 namespace ari_social_sim::world {
 
 void Object::step_components(ComponentPhase phase, const StepContext& context) {
@@ -15,7 +17,7 @@ void Object::step_components(ComponentPhase phase, const StepContext& context) {
 void Object::sync_from_body(double dt_s) {
   const b2Vec2 position = body_->GetPosition();
   pose_.position = {position.x, position.y};
-  pose_.theta = body_->GetAngle();
+  pose_.theta = core::wrap_angle(body_->GetAngle());
   const b2Vec2 velocity = body_->GetLinearVelocity();
   velocity_ = {velocity.x, velocity.y};
   angular_velocity_ = body_->GetAngularVelocity();

@@ -16,7 +16,7 @@ namespace {
 // Box2D solver iterations: the manual's recommended values; agents are few and slow.
 constexpr int32 kVelocityIterations = 8;
 constexpr int32 kPositionIterations = 3;
-// ARI's mass (kg, specs/ari.md: base_link 43.4 kg plus wheels and head) so people yield to it.
+// ARI's mass (kg, specs/ari.md: base_link 43.4 kg plus wheels and head) and a person's.
 constexpr float kAriMassKg = 50.0f;
 constexpr float kHumanMassKg = 70.0f;
 // The first id handed out by next_free_id for humans spawned without one.
@@ -45,6 +45,17 @@ void insert_sorted(std::vector<std::unique_ptr<T>>& items, std::unique_ptr<T> it
   items.insert(it, std::move(item));
 }
 
+// A wall or piece of furniture. Its pose is the description's (a polygon's is its centroid), not
+// the body's: polygons are given in map coordinates on a body at the origin.
+class StaticBody : public Object {
+ public:
+  explicit StaticBody(const StaticObject& description)
+      : Object(description.id, ObjectKind::kStatic) {
+    pose_ = description.pose;
+  }
+  void sync_from_body(double dt_s) override {}
+};
+
 b2Body* make_agent_body(b2World& physics, const core::Pose2& pose, Object& owner) {
   b2BodyDef def;
   def.type = b2_dynamicBody;
@@ -70,7 +81,7 @@ Simulation::Simulation(WorldDescription world, SimulationConfig config)
     : world_(std::move(world)), config_(config), physics_(std::make_unique<b2World>(b2Vec2(0, 0))) {
   config_.validate();
   for (const StaticObject& description : world_.objects) {
-    auto object = std::make_unique<Object>(description.id, ObjectKind::kStatic);
+    auto object = std::make_unique<StaticBody>(description);
     b2BodyDef def;
     def.type = b2_staticBody;
     def.userData.pointer = reinterpret_cast<uintptr_t>(object.get());
@@ -81,7 +92,6 @@ Simulation::Simulation(WorldDescription world, SimulationConfig config)
     body->SetTransform(shape.transform.p, shape.transform.q.GetAngle());
     body->CreateFixture(&shape.shape(), 0.0f);
     object->attach_body(body);
-    object->sync_from_body(config_.step_s);
     register_object(*object);
     statics_.push_back(std::move(object));
   }

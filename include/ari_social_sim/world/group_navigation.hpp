@@ -24,8 +24,8 @@ struct GroupSpec {
   double social_distance_m{3.0};
   /// Members repel each other within spacing_factor x the chord between evenly spaced neighbours
   /// (the group's personal distance Delta_p), so repulsion spreads them evenly around the o-space
-  /// with a spring that does not vanish at the even spacing. Below the golden ratio (1.618), only
-  /// adjacent members of a group of up to 5 repel each other at even spacing.
+  /// with a spring that does not vanish at the even spacing. The outward push at even spacing is
+  /// (Delta_p - chord)^2 whichever members are in range, and cohesion_radius_m() balances it.
   double spacing_factor{1.5};
   /// eta / step (m/s per unit force): the group's own step length (seed 3.4.1 lists it among the
   /// script's properties). Faster than walking alone, so members settle within ~30 s; each step is

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Builds ari_social_sim with Debian's catkin into _build/ (devel space: _build/devel).
+# Catkin needs Debian's /usr/bin/python3 (it has catkin_pkg); put it first whatever else is on PATH.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH=/usr/bin:$PATH
+cmake -S . -B _build -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
+  -DCMAKE_BUILD_TYPE=Release -Wno-dev > /tmp/ari_social_sim_configure.log 2>&1 \
+  || { cat /tmp/ari_social_sim_configure.log; exit 1; }
+cmake --build _build -j"$(nproc)" "$@"
+echo "build: done (source _build/devel/setup.bash to use the package)"
