@@ -1,0 +1,26 @@
+# dialogue/: the Conversational Content Generator (multi-party user simulation), its tools, tests
+# and benchmark. The MPGT corpus sits beside the repository (CI clones shared/ next to it).
+set(ARI_MPGT_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/dialogue/mpgt")
+set(ARI_DIALOGUE_CONFIG_DIR "${CMAKE_CURRENT_SOURCE_DIR}/config/dialogue")
+
+add_library(ari_dialogue
+  src/dialogue/dialogue_act.cpp
+  src/dialogue/goal.cpp
+  src/dialogue/mpgt_corpus.cpp)
+target_include_directories(ari_dialogue PUBLIC include)
+target_link_libraries(ari_dialogue PUBLIC ari_core)
+target_compile_definitions(ari_dialogue PRIVATE
+  ARI_MPGT_DIR="${ARI_MPGT_DIR}"
+  ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_dialogue
+    SOURCES
+      test/dialogue/test_dialogue_act.cpp
+      test/dialogue/test_goal.cpp
+      test/dialogue/test_mpgt_corpus.cpp
+    LIBRARIES ari_dialogue)
+  target_compile_definitions(test_dialogue PRIVATE
+    ARI_MPGT_DIR="${ARI_MPGT_DIR}"
+    ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+endif()
