@@ -6,12 +6,19 @@ set(ARI_DIALOGUE_CONFIG_DIR "${CMAKE_CURRENT_SOURCE_DIR}/config/dialogue")
 add_library(ari_dialogue
   src/dialogue/dialogue_act.cpp
   src/dialogue/goal.cpp
-  src/dialogue/mpgt_corpus.cpp)
+  src/dialogue/mpgt_corpus.cpp
+  src/dialogue/domain.cpp
+  src/dialogue/user_model.cpp
+  src/dialogue/model_fitting.cpp
+  src/dialogue/dialogue_stats.cpp)
 target_include_directories(ari_dialogue PUBLIC include)
 target_link_libraries(ari_dialogue PUBLIC ari_core)
 target_compile_definitions(ari_dialogue PRIVATE
   ARI_MPGT_DIR="${ARI_MPGT_DIR}"
   ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+
+add_executable(fit_dialogue_model src/tools/fit_dialogue_model.cpp)
+target_link_libraries(fit_dialogue_model ari_dialogue)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_dialogue

@@ -184,6 +184,19 @@ std::vector<DialogueAct> parse_acts(const std::string& text, const std::string& 
   return acts;
 }
 
+std::vector<std::string> parse_path(const std::string& text, const std::string& source) {
+  const std::string trimmed = trim(text);
+  if (trimmed.empty()) {
+    return {};
+  }
+  try {
+    return parse_act("request(" + trimmed + ")", source).path();
+  } catch (const core::ConfigError&) {
+    throw core::ConfigError(source + ": expected a slot path such as toilet or "
+                            "cafe(opening_times), got '" + text + "'");
+  }
+}
+
 std::string acts_to_string(const std::vector<DialogueAct>& acts) {
   std::string text;
   for (const DialogueAct& act : acts) {

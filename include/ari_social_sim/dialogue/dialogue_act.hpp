@@ -44,6 +44,10 @@ DialogueAct parse_act(const std::string& text, const std::string& source);
 std::vector<DialogueAct> parse_acts(const std::string& text, const std::string& source,
                                     bool repair = false, int* repairs = nullptr);
 
+/// Parses a bare slot path such as `cafe(opening_times)` into [cafe, opening_times]; "" gives an
+/// empty path. Throws core::ConfigError naming `source` when malformed.
+std::vector<std::string> parse_path(const std::string& text, const std::string& source);
+
 /// Acts joined the MPGT way: `greet(); inform(ari(name))`.
 std::string acts_to_string(const std::vector<DialogueAct>& acts);
 
