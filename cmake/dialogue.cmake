@@ -10,7 +10,18 @@ add_library(ari_dialogue
   src/dialogue/domain.cpp
   src/dialogue/user_model.cpp
   src/dialogue/model_fitting.cpp
-  src/dialogue/dialogue_stats.cpp)
+  src/dialogue/dialogue_stats.cpp
+  src/dialogue/error_model.cpp
+  src/dialogue/turn_timing.cpp
+  src/dialogue/nlg.cpp
+  src/dialogue/agenda.cpp
+  src/dialogue/user_simulation.cpp
+  src/dialogue/reward.cpp
+  src/dialogue/dialogue_config.cpp
+  src/dialogue/dialogue_env.cpp
+  src/dialogue/rule_policy.cpp
+  src/dialogue/dialogue_runner.cpp
+  src/dialogue/json_lines.cpp)
 target_include_directories(ari_dialogue PUBLIC include)
 target_link_libraries(ari_dialogue PUBLIC ari_core)
 target_compile_definitions(ari_dialogue PRIVATE
@@ -19,6 +30,8 @@ target_compile_definitions(ari_dialogue PRIVATE
 
 add_executable(fit_dialogue_model src/tools/fit_dialogue_model.cpp)
 target_link_libraries(fit_dialogue_model ari_dialogue)
+add_executable(dialogue_corpus src/tools/dialogue_corpus.cpp)
+target_link_libraries(dialogue_corpus ari_dialogue)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_dialogue
