@@ -53,8 +53,9 @@ StepResult DialogueEnv::step(const RobotAction& action) {
     robot_said_bye = std::any_of(action.acts.begin(), action.acts.end(),
                                  [](const DialogueAct& a) { return a.intent == "bye"; });
   }
-  // The humans finished in their previous turn: ARI's reply (or silence) ends the dialogue.
-  if (robot_said_bye) {
+  // ARI's bye ends the dialogue once the humans have finished (a human with goals left speaks
+  // up instead); after the humans finished, ARI's reply (or silence) ends it.
+  if (robot_said_bye && users_.finished()) {
     users_.farewell(transcript_, rng_);
     terminated = true;
   } else if (humans_finished_) {
