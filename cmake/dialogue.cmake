@@ -39,6 +39,21 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_dialogue_act.cpp
       test/dialogue/test_goal.cpp
       test/dialogue/test_mpgt_corpus.cpp
+      test/dialogue/test_domain.cpp
+      test/dialogue/test_user_model.cpp
+      test/dialogue/test_model_fitting.cpp
+      test/dialogue/test_dialogue_stats.cpp
+      test/dialogue/test_error_model.cpp
+      test/dialogue/test_turn_timing.cpp
+      test/dialogue/test_nlg.cpp
+      test/dialogue/test_agenda.cpp
+      test/dialogue/test_reward.cpp
+      test/dialogue/test_json_lines.cpp
+      test/dialogue/test_dialogue_config.cpp
+      test/dialogue/test_user_simulation.cpp
+      test/dialogue/test_rule_policy.cpp
+      test/dialogue/test_dialogue_env.cpp
+      test/dialogue/test_dialogue_runner.cpp
     LIBRARIES ari_dialogue)
   target_compile_definitions(test_dialogue PRIVATE
     ARI_MPGT_DIR="${ARI_MPGT_DIR}"

@@ -148,7 +148,6 @@ void UserSimulation::hear_robot(Utterance& robot) {
   bool focus_handled = false;
   for (const DialogueAct& act : robot.acts) {
     if (const auto target = domain_.goal_of_answer(act)) {
-      bool matched = false;
       for (size_t i = 0; i < agenda_.goals().size(); ++i) {
         TrackedGoal& g = agenda_.goals()[i];
         if (g.goal.same_target(*target) &&
@@ -156,11 +155,11 @@ void UserSimulation::hear_robot(Utterance& robot) {
           g.status = GoalStatus::kResolved;
           g.satisfied = true;
           robot.goals.push_back(GoalLabel{GoalLabelKind::kAnswered, g.goal});
-          matched = true;
           focus_handled = focus_handled || static_cast<int>(i) == focus;
         }
       }
-      wrong_answer = wrong_answer || !matched;
+      // Informing about anything but the question just asked is a wrong answer to the asker.
+      wrong_answer = true;
     } else if (act.intent == "cant-help" && focus >= 0 && !focus_handled) {
       // The user takes a cant-help as the answer; it is the right one only when ARI cannot know.
       TrackedGoal& g = agenda_.goals()[focus];

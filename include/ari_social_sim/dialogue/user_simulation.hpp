@@ -61,6 +61,9 @@ class UserSimulation {
   /// Reply to ARI's bye: one human says bye with P = farewell_probability.
   void farewell(std::vector<Utterance>& transcript, core::Rng& rng);
 
+  /// Replaces the sampled goals (scripted scenarios, tests); call after reset.
+  void set_agenda(Agenda agenda) { agenda_ = std::move(agenda); }
+
   /// Every goal is resolved, closed or failed, or every human has left.
   bool finished() const;
   const Agenda& agenda() const { return agenda_; }
