@@ -59,3 +59,9 @@ if(CATKIN_ENABLE_TESTING)
     ARI_MPGT_DIR="${ARI_MPGT_DIR}"
     ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
 endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_dialogue SOURCES bench/bench_dialogue.cpp LIBRARIES ari_dialogue)
+  target_compile_definitions(bench_dialogue PRIVATE
+    ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+endif()
