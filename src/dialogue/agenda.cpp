@@ -111,9 +111,8 @@ void Agenda::mark_stated(int index) {
 }
 
 bool Agenda::done(const std::string& role) const {
-  return std::none_of(goals_.begin(), goals_.end(), [&role](const TrackedGoal& g) {
-    return is_open(g.status) && owns(g, role);
-  });
+  return std::none_of(goals_.begin(), goals_.end(),
+                      [&role](const TrackedGoal& g) { return is_open(g.status) && owns(g, role); });
 }
 
 bool Agenda::all_done() const {

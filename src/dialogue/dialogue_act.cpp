@@ -3,21 +3,13 @@
 #include <algorithm>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
 
 bool is_name_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-}
-
-std::string trim(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) {
-    return "";
-  }
-  const size_t last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
 }
 
 // Reads `name ( name ( ... ) )` from one act's text. The chain form is all MPGT uses: one argument
@@ -151,10 +143,11 @@ bool DialogueAct::operator==(const DialogueAct& other) const {
 
 const std::vector<std::string>& mpgt_intents() {
   static const std::vector<std::string> kIntents = {
-      "request",       "inform",  "thank",        "affirm",         "cant-help",  "acknowledge",
-      "greet",         "offer-help", "bye",       "incomplete-da",  "suggest",    "disaffirm",
-      "give-feedback", "r-confirm", "p-repet",    "accept-sugg",    "call-nurse", "r-repet",
-      "p-confirm",     "change-volume", "youre-welcome", "cant-hear", "r-paraph", "p-paraph"};
+      "request",       "inform",     "thank",         "affirm",    "cant-help",
+      "acknowledge",   "greet",      "offer-help",    "bye",       "incomplete-da",
+      "suggest",       "disaffirm",  "give-feedback", "r-confirm", "p-repet",
+      "accept-sugg",   "call-nurse", "r-repet",       "p-confirm", "change-volume",
+      "youre-welcome", "cant-hear",  "r-paraph",      "p-paraph"};
   return kIntents;
 }
 
@@ -168,8 +161,8 @@ DialogueAct parse_act(const std::string& text, const std::string& source) {
   return read_one(trim(text), source, false, repairs);
 }
 
-std::vector<DialogueAct> parse_acts(const std::string& text, const std::string& source,
-                                    bool repair, int* repairs) {
+std::vector<DialogueAct> parse_acts(const std::string& text, const std::string& source, bool repair,
+                                    int* repairs) {
   std::vector<DialogueAct> acts;
   int count = 0;
   for (const std::string& part : split_top_level(text)) {
@@ -192,8 +185,10 @@ std::vector<std::string> parse_path(const std::string& text, const std::string& 
   try {
     return parse_act("request(" + trimmed + ")", source).path();
   } catch (const core::ConfigError&) {
-    throw core::ConfigError(source + ": expected a slot path such as toilet or "
-                            "cafe(opening_times), got '" + text + "'");
+    throw core::ConfigError(source +
+                            ": expected a slot path such as toilet or "
+                            "cafe(opening_times), got '" +
+                            text + "'");
   }
 }
 

@@ -20,7 +20,9 @@ std::string resolve(const std::string& base_dir, const std::string& path) {
 
 }  // namespace
 
-std::string default_dialogue_config_dir() { return ARI_DIALOGUE_CONFIG_DIR; }
+std::string default_dialogue_config_dir() {
+  return ARI_DIALOGUE_CONFIG_DIR;
+}
 
 DialogueConfig DialogueConfig::defaults(const std::string& config_dir) {
   DialogueConfig config;
@@ -70,10 +72,10 @@ std::unique_ptr<DialogueSetup> DialogueSetup::create(const DialogueConfig& confi
   }
   setup->corpus =
       load_mpgt_corpus(config.corpus_dir.empty() ? default_mpgt_dir() : config.corpus_dir);
-  setup->nlg = std::make_unique<Nlg>(NlgTemplates::load(config.templates_file), &setup->corpus,
-                                     config.nlg);
-  setup->errors = std::make_unique<ErrorModel>(config.errors, setup->domain,
-                                               setup->nlg->vocabulary());
+  setup->nlg =
+      std::make_unique<Nlg>(NlgTemplates::load(config.templates_file), &setup->corpus, config.nlg);
+  setup->errors =
+      std::make_unique<ErrorModel>(config.errors, setup->domain, setup->nlg->vocabulary());
   setup->timing = std::make_unique<TurnTiming>(config.timing);
   return setup;
 }

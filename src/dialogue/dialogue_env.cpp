@@ -46,7 +46,8 @@ StepResult DialogueEnv::step(const RobotAction& action) {
     }
     u.acts = action.acts;
     u.text = setup_.nlg->realise(true, u.acts, rng_);
-    u.start_s = transcript_.empty() ? 0.0 : setup_.timing->next_start(transcript_.back().end_s, rng_);
+    u.start_s =
+        transcript_.empty() ? 0.0 : setup_.timing->next_start(transcript_.back().end_s, rng_);
     u.end_s = u.start_s + setup_.timing->duration(u.text);
     transcript_.push_back(std::move(u));
     users_.hear_robot(transcript_.back());
@@ -64,7 +65,8 @@ StepResult DialogueEnv::step(const RobotAction& action) {
     users_.respond(transcript_, rng_);
     humans_finished_ = users_.finished();
   }
-  const bool truncated = !terminated && robot_turns_ >= static_cast<int>(setup_.config.reward.max_turns);
+  const bool truncated =
+      !terminated && robot_turns_ >= static_cast<int>(setup_.config.reward.max_turns);
   over_ = terminated || truncated;
   const DialogueOutcome outcome = judge(users_.agenda(), truncated);
   StepResult result;

@@ -72,9 +72,9 @@ DialogueStats compute_stats(const std::vector<CorpusDialogue>& dialogues) {
   }
   normalise(stats.first_intents);
   normalise(stats.all_intents);
-  stats.human_to_human_share =
-      stats.utterances == 0 ? 0.0
-                            : static_cast<double>(human_to_human) / static_cast<double>(stats.utterances);
+  stats.human_to_human_share = stats.utterances == 0 ? 0.0
+                                                     : static_cast<double>(human_to_human) /
+                                                           static_cast<double>(stats.utterances);
   std::sort(stats.lengths.begin(), stats.lengths.end());
   return stats;
 }

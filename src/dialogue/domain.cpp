@@ -56,8 +56,8 @@ std::optional<std::vector<std::string>> match_pattern(const DialogueAct& pattern
   }
   const std::vector<std::string> path = act.path();
   const size_t prefix = pattern.slots.size() - 1;
-  if (path.size() < prefix || !std::equal(pattern.slots.begin(), pattern.slots.end() - 1,
-                                          path.begin())) {
+  if (path.size() < prefix ||
+      !std::equal(pattern.slots.begin(), pattern.slots.end() - 1, path.begin())) {
     return std::nullopt;
   }
   return std::vector<std::string>(path.begin() + prefix, path.end());
@@ -82,8 +82,8 @@ Domain Domain::parse(const core::YamlMap& map) {
       entry.fail("ask", "at least one act pattern", "[]");
     }
     for (size_t i = 0; i < ask.size(); ++i) {
-      spec.ask.push_back(read_pattern(entry, "ask", ask[i],
-                                      entry.field_name("ask[" + std::to_string(i) + "]")));
+      spec.ask.push_back(
+          read_pattern(entry, "ask", ask[i], entry.field_name("ask[" + std::to_string(i) + "]")));
     }
     spec.answer = read_pattern(entry, "answer", entry.required<std::string>("answer"),
                                entry.field_name("answer"));

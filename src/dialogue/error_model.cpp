@@ -3,28 +3,11 @@
 #include <algorithm>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/config_fields.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
-
-std::vector<std::string> split_words(const std::string& text) {
-  std::vector<std::string> words;
-  std::string word;
-  for (char c : text) {
-    if (c == ' ') {
-      if (!word.empty()) {
-        words.push_back(std::move(word));
-        word.clear();
-      }
-    } else {
-      word += c;
-    }
-  }
-  if (!word.empty()) {
-    words.push_back(std::move(word));
-  }
-  return words;
-}
 
 const std::string& pick(const std::vector<std::string>& names, core::Rng& rng) {
   return names[rng.uniform_index(names.size())];
@@ -33,14 +16,7 @@ const std::string& pick(const std::vector<std::string>& names, core::Rng& rng) {
 }  // namespace
 
 void ErrorModelConfig::validate() const {
-  auto check = [](const char* name, double value) {
-    if (!(value >= 0.0 && value <= 1.0)) {
-      throw core::ConfigError(std::string("ErrorModelConfig: ") + name +
-                              ": expected a number in [0, 1], got " + std::to_string(value));
-    }
-  };
-  ErrorModelConfig copy = *this;
-  copy.visit(check);
+  check_bounds(*this, "ErrorModelConfig");
   if (intent_share + slot_share > 1.0) {
     throw core::ConfigError("ErrorModelConfig: intent_share + slot_share: expected <= 1, got " +
                             std::to_string(intent_share + slot_share));
@@ -48,18 +24,7 @@ void ErrorModelConfig::validate() const {
 }
 
 ErrorModelConfig ErrorModelConfig::from_yaml(const core::YamlMap& map) {
-  ErrorModelConfig config;
-  auto read = [&map](const char* name, double& value) {
-    value = map.optional<double>(name, value, core::between(0.0, 1.0));
-  };
-  config.visit(read);
-  if (config.intent_share + config.slot_share > 1.0) {
-    map.fail("slot_share", "intent_share + slot_share <= 1",
-             std::to_string(config.intent_share + config.slot_share));
-  }
-  map.finish();
-  config.validate();
-  return config;
+  return read_config<ErrorModelConfig>(map);
 }
 
 ErrorModel::ErrorModel(ErrorModelConfig config, const Domain& domain,

@@ -4,17 +4,10 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/dialogue_act.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
-
-std::string trim(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) {
-    return "";
-  }
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
 
 std::string kind_text(GoalLabelKind kind) {
   switch (kind) {

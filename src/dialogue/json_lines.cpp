@@ -70,19 +70,20 @@ std::string utterance_json(int dialogue, const Utterance& u) {
   for (const GoalLabel& label : u.goals) {
     goals.push_back(label.to_string());
   }
-  std::string out = "{\"dialogue\":" + std::to_string(dialogue) +
-                    ",\"turn\":" + std::to_string(u.turn) + ",\"speaker\":" + json_string(u.speaker) +
-                    ",\"addressee\":" + addressee_value(u.addressees) +
-                    ",\"text\":" + json_string(u.text) + ",\"acts\":" + act_list(u.acts) +
-                    ",\"goals\":" + string_list(goals) + ",\"start_s\":" + fixed3(u.start_s) +
-                    ",\"end_s\":" + fixed3(u.end_s);
+  std::string out =
+      "{\"dialogue\":" + std::to_string(dialogue) + ",\"turn\":" + std::to_string(u.turn) +
+      ",\"speaker\":" + json_string(u.speaker) + ",\"addressee\":" + addressee_value(u.addressees) +
+      ",\"text\":" + json_string(u.text) + ",\"acts\":" + act_list(u.acts) +
+      ",\"goals\":" + string_list(goals) + ",\"start_s\":" + fixed3(u.start_s) +
+      ",\"end_s\":" + fixed3(u.end_s);
   if (!u.is_robot()) {
     const Perception& h = u.heard;
     out += ",\"heard\":{\"dropped\":" + std::string(h.dropped ? "true" : "false");
     if (!h.dropped) {
       out += ",\"speaker\":" + json_string(h.speaker) +
-             ",\"addressee\":" + addressee_value(h.addressees) + ",\"text\":" + json_string(h.text) +
-             ",\"acts\":" + act_list(h.acts) + ",\"confidence\":" + fixed3(h.confidence);
+             ",\"addressee\":" + addressee_value(h.addressees) +
+             ",\"text\":" + json_string(h.text) + ",\"acts\":" + act_list(h.acts) +
+             ",\"confidence\":" + fixed3(h.confidence);
     }
     out += "}";
   }

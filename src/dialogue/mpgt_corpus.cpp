@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 #ifndef ARI_MPGT_DIR
 #define ARI_MPGT_DIR "../shared/dialogue/mpgt"
@@ -13,14 +14,6 @@
 
 namespace ari_social_sim::dialogue {
 namespace {
-
-std::string trim(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) {
-    return "";
-  }
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
 
 // Number N of `convoN.txt`, or -1 for any other file name.
 int conversation_number(const std::string& file_name) {
@@ -52,7 +45,9 @@ size_t MpgtCorpus::utterance_count() const {
   return count;
 }
 
-std::string default_mpgt_dir() { return ARI_MPGT_DIR; }
+std::string default_mpgt_dir() {
+  return ARI_MPGT_DIR;
+}
 
 CorpusDialogue parse_mpgt_dialogue(const std::string& text, const std::string& name) {
   // Line format: `Speaker: utterance # act; act @ G(...); AG(...)`; `#` and `@` are optional.

@@ -132,8 +132,7 @@ std::string Nlg::from_template(bool robot, const DialogueAct* act, core::Rng& rn
   return replace_all(act->intent, "-", " ") + " " + surface(act->path()) + ".";
 }
 
-std::string Nlg::realise(bool robot, const std::vector<DialogueAct>& acts,
-                         core::Rng& rng) const {
+std::string Nlg::realise(bool robot, const std::vector<DialogueAct>& acts, core::Rng& rng) const {
   const auto& index = robot ? corpus_robot_ : corpus_human_;
   if (mode_ == NlgMode::kRetrieval) {
     const auto found = index.find(acts.empty() ? std::string(kNone) : acts_to_string(acts));

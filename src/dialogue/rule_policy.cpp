@@ -5,7 +5,9 @@
 namespace ari_social_sim::dialogue {
 namespace {
 
-DialogueAct bare(const std::string& intent) { return DialogueAct{intent, {}, ""}; }
+DialogueAct bare(const std::string& intent) {
+  return DialogueAct{intent, {}, ""};
+}
 
 void add_unique(std::vector<DialogueAct>& acts, const DialogueAct& act) {
   if (std::find(acts.begin(), acts.end(), act) == acts.end()) {

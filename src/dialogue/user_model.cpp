@@ -114,7 +114,9 @@ std::vector<long> rounded(const std::vector<double>& probabilities) {
   return units;
 }
 
-std::string quoted(const std::string& name) { return "\"" + name + "\""; }
+std::string quoted(const std::string& name) {
+  return "\"" + name + "\"";
+}
 
 void write_list(std::ostream& out, const std::vector<std::string>& names) {
   out << "[";

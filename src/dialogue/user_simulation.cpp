@@ -8,7 +8,9 @@
 namespace ari_social_sim::dialogue {
 namespace {
 
-DialogueAct bare(const std::string& intent) { return DialogueAct{intent, {}, ""}; }
+DialogueAct bare(const std::string& intent) {
+  return DialogueAct{intent, {}, ""};
+}
 
 bool addressed_to_robot(const Utterance& u) {
   return std::find(u.addressees.begin(), u.addressees.end(), kRobot) != u.addressees.end();
@@ -47,8 +49,8 @@ void UserSimulationConfig::validate() const {
   }
   for (double p : {reask_probability, farewell_probability}) {
     if (!(p >= 0.0 && p <= 1.0)) {
-      throw core::ConfigError(where +
-                              "reask_probability, farewell_probability: expected numbers in [0, 1]");
+      throw core::ConfigError(
+          where + "reask_probability, farewell_probability: expected numbers in [0, 1]");
     }
   }
 }
@@ -93,8 +95,8 @@ void UserSimulation::reset(core::Rng& rng) {
   humans_.clear();
   for (const std::string& role : config_.roles) {
     const unsigned span = config_.max_patience - config_.min_patience + 1;
-    humans_.push_back(HumanAgent{
-        role, static_cast<int>(config_.min_patience + rng.uniform_index(span)), false});
+    humans_.push_back(
+        HumanAgent{role, static_cast<int>(config_.min_patience + rng.uniform_index(span)), false});
   }
   last_addresser_ = -1;
   relay_goal_ = -1;
@@ -272,9 +274,8 @@ UserSimulation::Draft UserSimulation::state_goal(size_t speaker, const Utterance
   const std::vector<DialogueAct> asks = domain_.ask_acts(goal.goal);
   draft.acts.push_back(asks[rng.uniform_index(asks.size())]);
   draft.goals.push_back(GoalLabel{GoalLabelKind::kStated, goal.goal});
-  const bool to_other =
-      !relayed && other >= 0 &&
-      rng.bernoulli(role_models_[speaker]->to_other_probability("request"));
+  const bool to_other = !relayed && other >= 0 &&
+                        rng.bernoulli(role_models_[speaker]->to_other_probability("request"));
   if (to_other) {
     relay_goal_ = index;
     draft.to_other = 1;
@@ -289,8 +290,8 @@ UserSimulation::Draft UserSimulation::state_goal(size_t speaker, const Utterance
 UserSimulation::Draft UserSimulation::realise(size_t speaker, const std::string& intent,
                                               const Utterance* previous, core::Rng& rng) {
   const HumanAgent& human = humans_[speaker];
-  const bool from_other = previous != nullptr && !previous->is_robot() &&
-                          previous->speaker != human.role;
+  const bool from_other =
+      previous != nullptr && !previous->is_robot() && previous->speaker != human.role;
   Draft draft;
   if (intent == "request") {
     return state_goal(speaker, previous, rng);
@@ -395,8 +396,8 @@ void UserSimulation::respond(std::vector<Utterance>& transcript, core::Rng& rng)
   if (std::all_of(humans_.begin(), humans_.end(), [](const HumanAgent& h) { return h.left; })) {
     return;
   }
-  size_t speaker = transcript.empty() ? rng.uniform_index(humans_.size())
-                                      : pick_responder(transcript, rng);
+  size_t speaker =
+      transcript.empty() ? rng.uniform_index(humans_.size()) : pick_responder(transcript, rng);
   for (unsigned run = 0; run < config_.max_human_run; ++run) {
     const Utterance* previous = transcript.empty() ? nullptr : &transcript.back();
     const std::string intent = context_row(speaker, previous).sample(rng);

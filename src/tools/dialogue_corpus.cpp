@@ -83,7 +83,8 @@ Options parse_options(int argc, char** argv) {
     }
   }
   if (!have_dialogues || !have_seed || (options.out.empty() && !options.compare)) {
-    throw core::ConfigError("command line: --dialogues, --seed and --out (or --compare) are required");
+    throw core::ConfigError(
+        "command line: --dialogues, --seed and --out (or --compare) are required");
   }
   return options;
 }
@@ -134,9 +135,8 @@ std::string comparison(const Options& options, const std::vector<EpisodeRecord>&
       << number(js_divergence(sim.first_intents, real.first_intents)) << " | 0 |\n";
   out << "| JS divergence, all human intents | "
       << number(js_divergence(sim.all_intents, real.all_intents)) << " | 0 |\n";
-  out << "| human-to-human share of utterances (heuristic) | "
-      << percent(sim.human_to_human_share) << " | " << percent(real.human_to_human_share)
-      << " |\n";
+  out << "| human-to-human share of utterances (heuristic) | " << percent(sim.human_to_human_share)
+      << " | " << percent(real.human_to_human_share) << " |\n";
   out << "| human-to-human share of utterances (ground truth) | "
       << percent(true_human_to_human_share(episodes)) << " | n/a |\n";
   out << "| human share of utterances | "
@@ -159,9 +159,8 @@ std::string comparison(const Options& options, const std::vector<EpisodeRecord>&
   for (const auto& entry : keys) {
     const auto s = sim.first_intents.find(entry.first);
     const auto r = real.first_intents.find(entry.first);
-    out << "| " << entry.first << " | "
-        << percent(s == sim.first_intents.end() ? 0.0 : s->second) << " | "
-        << percent(r == real.first_intents.end() ? 0.0 : r->second) << " |\n";
+    out << "| " << entry.first << " | " << percent(s == sim.first_intents.end() ? 0.0 : s->second)
+        << " | " << percent(r == real.first_intents.end() ? 0.0 : r->second) << " |\n";
   }
   return out.str();
 }

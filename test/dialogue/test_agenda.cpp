@@ -1,7 +1,6 @@
-#include "ari_social_sim/dialogue/agenda.hpp"
-
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/dialogue/agenda.hpp"
 #include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {

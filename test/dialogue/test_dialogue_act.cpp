@@ -1,8 +1,7 @@
-#include "ari_social_sim/dialogue/dialogue_act.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/dialogue_act.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -37,12 +36,10 @@ TEST(DialogueAct, RoundTripsEveryShape) {
 
 TEST(DialogueAct, SplitsOnSemicolonAndTopLevelComma) {
   // convo5: "inform(location(cafe)), inform(beverage(hot_drink))" -> 2 acts; plus greet() -> 3.
-  const auto acts =
-      parse_acts("greet(); inform(location(cafe)), inform(beverage(hot_drink))", "t");
+  const auto acts = parse_acts("greet(); inform(location(cafe)), inform(beverage(hot_drink))", "t");
   ASSERT_EQ(acts.size(), 3u);
   EXPECT_EQ(acts[2].value, "hot_drink");
-  EXPECT_EQ(acts_to_string(acts),
-            "greet(); inform(location(cafe)); inform(beverage(hot_drink))");
+  EXPECT_EQ(acts_to_string(acts), "greet(); inform(location(cafe)); inform(beverage(hot_drink))");
 }
 
 TEST(DialogueAct, RepairModeFixesBracketsAndCountsThem) {

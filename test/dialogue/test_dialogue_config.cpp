@@ -1,10 +1,9 @@
-#include "ari_social_sim/dialogue/dialogue_config.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 
+#include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
@@ -45,8 +44,7 @@ TEST(DialogueConfig, RoleMissingFromTheModelNamesFileAndRole) {
 }
 
 TEST(DialogueConfig, UserSettingsAreValidated) {
-  const std::string path =
-      write_temp("users.yaml", "users: {min_patience: 6, max_patience: 4}\n");
+  const std::string path = write_temp("users.yaml", "users: {min_patience: 6, max_patience: 4}\n");
   expect_config_error([&] { DialogueConfig::load(path); },
                       {"users.yaml: users.max_patience", "min_patience (6)", "4"});
 }

@@ -1,7 +1,6 @@
-#include "ari_social_sim/dialogue/dialogue_env.hpp"
-
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/dialogue/dialogue_env.hpp"
 #include "ari_social_sim/dialogue/rule_policy.hpp"
 #include "test_helpers.hpp"
 

@@ -1,9 +1,8 @@
-#include "ari_social_sim/dialogue/dialogue_runner.hpp"
-
 #include <gtest/gtest.h>
 
 #include <functional>
 
+#include "ari_social_sim/dialogue/dialogue_runner.hpp"
 #include "ari_social_sim/dialogue/json_lines.hpp"
 #include "test_helpers.hpp"
 

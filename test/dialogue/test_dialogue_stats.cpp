@@ -1,6 +1,6 @@
-#include "ari_social_sim/dialogue/dialogue_stats.hpp"
-
 #include <gtest/gtest.h>
+
+#include "ari_social_sim/dialogue/dialogue_stats.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {

@@ -1,15 +1,14 @@
-#include "ari_social_sim/dialogue/goal.hpp"
-
 #include <gtest/gtest.h>
+
+#include "ari_social_sim/dialogue/goal.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
 
 TEST(Goal, ParsesMpgtLabelsWithSeatCodes) {
   int skipped = 0;
-  const auto labels =
-      parse_mpgt_goal_labels("G(LP+RC, go-to(lifts)); AG(RC, get-info(cafe(opening_times)))",
-                             &skipped);
+  const auto labels = parse_mpgt_goal_labels(
+      "G(LP+RC, go-to(lifts)); AG(RC, get-info(cafe(opening_times)))", &skipped);
   ASSERT_EQ(labels.size(), 2u);
   EXPECT_EQ(skipped, 0);
   EXPECT_EQ(labels[0].kind, GoalLabelKind::kStated);

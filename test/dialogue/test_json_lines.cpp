@@ -1,6 +1,6 @@
-#include "ari_social_sim/dialogue/json_lines.hpp"
-
 #include <gtest/gtest.h>
+
+#include "ari_social_sim/dialogue/json_lines.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {

@@ -1,22 +1,21 @@
-#include "ari_social_sim/dialogue/model_fitting.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/model_fitting.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
 
 TEST(ModelFitting, CountsContextsOfATinyCorpus) {
   MpgtCorpus corpus;
-  corpus.dialogues.push_back(parse_mpgt_dialogue(
-      "ARI: Hello. # greet()\n"
-      "LP: Where is the cafe? # request(location(cafe)) @ G(LP, go-to(cafe))\n"
-      "ARI: Ground floor. # inform(location(cafe)) @ AG(LP, go-to(cafe))\n"
-      "LP: Shall we go? # suggest(going-to(cafe))\n"
-      "RC: Yes. # affirm()\n"
-      "RC: Thank you. # thank()\n",
-      "tiny"));
+  corpus.dialogues.push_back(
+      parse_mpgt_dialogue("ARI: Hello. # greet()\n"
+                          "LP: Where is the cafe? # request(location(cafe)) @ G(LP, go-to(cafe))\n"
+                          "ARI: Ground floor. # inform(location(cafe)) @ AG(LP, go-to(cafe))\n"
+                          "LP: Shall we go? # suggest(going-to(cafe))\n"
+                          "RC: Yes. # affirm()\n"
+                          "RC: Thank you. # thank()\n",
+                          "tiny"));
   FitOptions options;
   options.min_row_count = 1;
   options.prior_weight = 0.0;
@@ -47,8 +46,9 @@ TEST(ModelFitting, MpgtFitMatchesSpecsSection22) {
   const auto& c = model.roles.at("companion").after_robot.row("greet");
   const auto& p = model.roles.at("patient").after_robot.row("greet");
   EXPECT_EQ(c.count + p.count, 25);
-  EXPECT_NEAR((c.probability_of("request") * c.count + p.probability_of("request") * p.count) / 25.0,
-              0.60, 1e-9);
+  EXPECT_NEAR(
+      (c.probability_of("request") * c.count + p.probability_of("request") * p.count) / 25.0, 0.60,
+      1e-9);
   // 21 of 29 conversations open with ARI.
   EXPECT_NEAR(model.robot_opens, 21.0 / 29.0, 1e-9);
 }

@@ -1,10 +1,9 @@
-#include "ari_social_sim/dialogue/mpgt_corpus.hpp"
-
 #include <gtest/gtest.h>
 
 #include <map>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/mpgt_corpus.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {

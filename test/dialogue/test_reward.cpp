@@ -1,16 +1,15 @@
-#include "ari_social_sim/dialogue/reward.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/reward.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
 
 TEST(Reward, CompleteAndSuccessAreJudgedSeparately) {
-  Agenda agenda({TrackedGoal{Goal{{"patient"}, "go-to", {"toilet"}}, GoalStatus::kClosed, 1, 0, true},
-                 TrackedGoal{Goal{{"companion"}, "go-to", {"cafe"}}, GoalStatus::kResolved, 1, 1,
-                             false}});
+  Agenda agenda(
+      {TrackedGoal{Goal{{"patient"}, "go-to", {"toilet"}}, GoalStatus::kClosed, 1, 0, true},
+       TrackedGoal{Goal{{"companion"}, "go-to", {"cafe"}}, GoalStatus::kResolved, 1, 1, false}});
   // Every goal resolved, one with a wrong cant-help: complete, not success.
   DialogueOutcome outcome = judge(agenda, false);
   EXPECT_TRUE(outcome.complete);

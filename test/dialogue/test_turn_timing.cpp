@@ -1,8 +1,7 @@
-#include "ari_social_sim/dialogue/turn_timing.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/turn_timing.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {

@@ -1,9 +1,8 @@
-#include "ari_social_sim/dialogue/user_model.hpp"
-
 #include <gtest/gtest.h>
 
 #include <sstream>
 
+#include "ari_social_sim/dialogue/user_model.hpp"
 #include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
@@ -76,7 +75,7 @@ TEST(UserModel, MissingRoleNamesFileAndRole) {
 
 TEST(UserModel, MissingAnyRowIsAnError) {
   const std::string text = replace_once(model_text(role_text("patient", "[0.8, 0.2]")),
-                                       "{after: '*', next: [none]", "{after: none, next: [none]");
+                                        "{after: '*', next: [none]", "{after: none, next: [none]");
   expect_config_error([&] { UserModel::parse(core::YamlMap::parse(text, "m.yaml")); },
                       {"m.yaml", "roles[0].after_other", "after: '*'"});
 }

@@ -1,8 +1,7 @@
-#include "ari_social_sim/dialogue/user_simulation.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
+#include "ari_social_sim/dialogue/user_simulation.hpp"
 #include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
@@ -63,7 +62,7 @@ TEST_F(UserSimulationTest, CantHelpIsRightOnlyWhereAriCannotKnow) {
   Utterance decline = robot("cant-help()");
   users_.hear_robot(decline);
   EXPECT_TRUE(agenda.goals()[0].satisfied);  // appt(time): ari_knows false
-  users_.hear_robot(decline);  // now the toilets are the focus
+  users_.hear_robot(decline);                // now the toilets are the focus
   EXPECT_EQ(agenda.goals()[1].status, GoalStatus::kResolved);
   EXPECT_FALSE(agenda.goals()[1].satisfied);  // ARI knows the toilets
 }

@@ -9,9 +9,9 @@ namespace ari_social_sim::dialogue {
 /// an intent, a nested slot path (outermost first) and an optional value, the innermost argument
 /// of a path with at least two levels. Examples:
 ///   `request(location(toilet))`             -> intent request, slots [location], value toilet
-///   `request(cafe(opening_times(opening_time)))` -> slots [cafe, opening_times], value opening_time
-///   `request(food)`                          -> slots [food], no value
-///   `thank()`                                -> no slots, no value
+///   `request(cafe(opening_times(opening_time)))` -> slots [cafe, opening_times], value
+///   opening_time `request(food)`                          -> slots [food], no value `thank()` ->
+///   no slots, no value
 struct DialogueAct {
   std::string intent;
   std::vector<std::string> slots;

@@ -22,8 +22,8 @@ struct DialogueStats {
   size_t dialogues{0};
   size_t utterances{0};
   size_t human_utterances{0};
-  Distribution first_intents;     ///< first intent (or none) of human utterances
-  Distribution all_intents;       ///< every act of human utterances
+  Distribution first_intents;      ///< first intent (or none) of human utterances
+  Distribution all_intents;        ///< every act of human utterances
   double human_to_human_share{0};  ///< by is_human_to_human, over all utterances
   std::vector<size_t> lengths;     ///< utterances per dialogue, sorted
 

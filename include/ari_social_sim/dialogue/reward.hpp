@@ -13,6 +13,14 @@ struct RewardConfig {
   double failure_penalty{40.0};  ///< max_turns
   double turn_cost{1.0};         ///< per robot turn
 
+  template <class V>
+  void visit(V& v) {
+    v("max_turns", max_turns, core::positive());
+    v("success_reward", success_reward, core::non_negative());
+    v("failure_penalty", failure_penalty, core::non_negative());
+    v("turn_cost", turn_cost, core::non_negative());
+  }
+
   /// Throws core::ConfigError naming the field when max_turns is 0 or a value is negative.
   void validate() const;
   static RewardConfig from_yaml(const core::YamlMap& map);

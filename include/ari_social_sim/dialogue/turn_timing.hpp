@@ -15,6 +15,14 @@ struct TurnTimingConfig {
   double seconds_per_word{0.4};
   double min_duration_s{0.4};  ///< even "Ok." takes a moment
 
+  template <class V>
+  void visit(V& v) {
+    v("gap_mean_s", gap_mean_s, core::non_negative());
+    v("gap_sd_s", gap_sd_s, core::non_negative());
+    v("seconds_per_word", seconds_per_word, core::positive());
+    v("min_duration_s", min_duration_s, core::non_negative());
+  }
+
   /// Throws core::ConfigError naming the field when a value is negative or seconds_per_word is 0.
   void validate() const;
   static TurnTimingConfig from_yaml(const core::YamlMap& map);
