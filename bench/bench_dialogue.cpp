@@ -1,0 +1,81 @@
+// Benchmarks of the dialogue simulation in standalone mode (no ROS): whole dialogues of the rule
+// policy, with and without writing JSON lines, and the error layer alone.
+#include <benchmark/benchmark.h>
+
+#include "ari_social_sim/dialogue/dialogue_runner.hpp"
+#include "ari_social_sim/dialogue/json_lines.hpp"
+
+namespace {
+
+using namespace ari_social_sim::dialogue;
+
+const DialogueSetup& shared_setup(NlgMode mode) {
+  static const auto retrieval = [] {
+    DialogueConfig config = DialogueConfig::defaults(ARI_DIALOGUE_CONFIG_DIR);
+    config.nlg = NlgMode::kRetrieval;
+    return DialogueSetup::create(config);
+  }();
+  static const auto templates = [] {
+    DialogueConfig config = DialogueConfig::defaults(ARI_DIALOGUE_CONFIG_DIR);
+    config.nlg = NlgMode::kTemplate;
+    return DialogueSetup::create(config);
+  }();
+  return mode == NlgMode::kRetrieval ? *retrieval : *templates;
+}
+
+// One rule-policy dialogue per iteration, seeds 0, 1, 2, ... as dialogue_corpus --seed 0 uses.
+void BM_RuleDialogue(benchmark::State& state) {
+  const DialogueSetup& setup = shared_setup(static_cast<NlgMode>(state.range(0)));
+  DialogueEnv env(setup);
+  RulePolicy policy(setup.domain);
+  uint64_t index = 0;
+  int64_t utterances = 0;
+  for (auto _ : state) {
+    const EpisodeRecord record = run_episode(env, policy, episode_seed(0, index++));
+    utterances += static_cast<int64_t>(record.utterances.size());
+    benchmark::DoNotOptimize(record.total_reward);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["utterances/s"] =
+      benchmark::Counter(static_cast<double>(utterances), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_RuleDialogue)->ArgName("template0_retrieval1")->Arg(0)->Arg(1);
+
+// As dialogue_corpus: the dialogue plus its JSON lines.
+void BM_RuleDialogueJsonl(benchmark::State& state) {
+  const DialogueSetup& setup = shared_setup(NlgMode::kRetrieval);
+  DialogueEnv env(setup);
+  RulePolicy policy(setup.domain);
+  uint64_t index = 0;
+  size_t bytes = 0;
+  for (auto _ : state) {
+    const EpisodeRecord record = run_episode(env, policy, episode_seed(0, index));
+    for (const Utterance& u : record.utterances) {
+      bytes += utterance_json(static_cast<int>(index), u).size() + 1;
+    }
+    ++index;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetBytesProcessed(static_cast<int64_t>(bytes));
+}
+BENCHMARK(BM_RuleDialogueJsonl);
+
+void BM_ErrorModelApply(benchmark::State& state) {
+  const DialogueSetup& setup = shared_setup(NlgMode::kRetrieval);
+  Utterance u;
+  u.speaker = "patient";
+  u.addressees = {kRobot};
+  u.text = "Can you tell me where the toilets are please";
+  u.acts = {parse_act("request(location(toilet))", "bench")};
+  const std::vector<std::string> humans{"patient", "companion"};
+  ari_social_sim::core::Rng rng(1);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(setup.errors->apply(u, humans, rng));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ErrorModelApply);
+
+}  // namespace
+
+BENCHMARK_MAIN();

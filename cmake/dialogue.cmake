@@ -1,0 +1,67 @@
+# dialogue/: the Conversational Content Generator (multi-party user simulation), its tools, tests
+# and benchmark. The MPGT corpus sits beside the repository (CI clones shared/ next to it).
+set(ARI_MPGT_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/dialogue/mpgt")
+set(ARI_DIALOGUE_CONFIG_DIR "${CMAKE_CURRENT_SOURCE_DIR}/config/dialogue")
+
+add_library(ari_dialogue
+  src/dialogue/dialogue_act.cpp
+  src/dialogue/goal.cpp
+  src/dialogue/mpgt_corpus.cpp
+  src/dialogue/domain.cpp
+  src/dialogue/user_model.cpp
+  src/dialogue/model_fitting.cpp
+  src/dialogue/dialogue_stats.cpp
+  src/dialogue/error_model.cpp
+  src/dialogue/turn_timing.cpp
+  src/dialogue/nlg.cpp
+  src/dialogue/agenda.cpp
+  src/dialogue/user_simulation.cpp
+  src/dialogue/reward.cpp
+  src/dialogue/dialogue_config.cpp
+  src/dialogue/dialogue_env.cpp
+  src/dialogue/rule_policy.cpp
+  src/dialogue/dialogue_runner.cpp
+  src/dialogue/json_lines.cpp)
+target_include_directories(ari_dialogue PUBLIC include)
+target_link_libraries(ari_dialogue PUBLIC ari_core)
+target_compile_definitions(ari_dialogue PRIVATE
+  ARI_MPGT_DIR="${ARI_MPGT_DIR}"
+  ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+
+add_executable(fit_dialogue_model src/tools/fit_dialogue_model.cpp)
+target_link_libraries(fit_dialogue_model ari_dialogue)
+add_executable(dialogue_corpus src/tools/dialogue_corpus.cpp)
+target_link_libraries(dialogue_corpus ari_dialogue)
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_dialogue
+    SOURCES
+      test/dialogue/test_dialogue_act.cpp
+      test/dialogue/test_goal.cpp
+      test/dialogue/test_mpgt_corpus.cpp
+      test/dialogue/test_domain.cpp
+      test/dialogue/test_user_model.cpp
+      test/dialogue/test_model_fitting.cpp
+      test/dialogue/test_dialogue_stats.cpp
+      test/dialogue/test_error_model.cpp
+      test/dialogue/test_turn_timing.cpp
+      test/dialogue/test_nlg.cpp
+      test/dialogue/test_agenda.cpp
+      test/dialogue/test_reward.cpp
+      test/dialogue/test_json_lines.cpp
+      test/dialogue/test_dialogue_config.cpp
+      test/dialogue/test_user_simulation.cpp
+      test/dialogue/test_rule_policy.cpp
+      test/dialogue/test_dialogue_env.cpp
+      test/dialogue/test_dialogue_runner.cpp
+    LIBRARIES ari_dialogue)
+  target_compile_definitions(test_dialogue PRIVATE
+    ARI_MPGT_DIR="${ARI_MPGT_DIR}"
+    ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_dialogue SOURCES bench/bench_dialogue.cpp LIBRARIES ari_dialogue)
+  target_compile_definitions(bench_dialogue PRIVATE
+    ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+endif()

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/dialogue/mpgt_corpus.hpp"
+
+namespace ari_social_sim::dialogue {
+
+/// The addressee heuristic for MPGT, which does not label addressees: a human utterance is
+/// addressed to the other human when the next utterance is by another human (neither ARI nor the
+/// same speaker) and its text does not name ARI. On MPGT it labels 174 of 768 utterances (22.7 %,
+/// close to the ~22 % reported for SPRING recordings, specs/dialogue.md section 6).
+bool is_human_to_human(const CorpusDialogue& dialogue, size_t index);
+
+/// Normalised counts; keys in name order.
+using Distribution = std::map<std::string, double>;
+
+/// Figures compared between generated dialogues and the corpus (docs/dialogue.md).
+struct DialogueStats {
+  size_t dialogues{0};
+  size_t utterances{0};
+  size_t human_utterances{0};
+  Distribution first_intents;      ///< first intent (or none) of human utterances
+  Distribution all_intents;        ///< every act of human utterances
+  double human_to_human_share{0};  ///< by is_human_to_human, over all utterances
+  std::vector<size_t> lengths;     ///< utterances per dialogue, sorted
+
+  double mean_length() const;
+  /// Length at quantile q in [0, 1] (nearest rank).
+  size_t length_quantile(double q) const;
+};
+
+DialogueStats compute_stats(const std::vector<CorpusDialogue>& dialogues);
+
+/// Jensen-Shannon divergence with base-2 logarithms, in [0, 1]; keys missing on one side count 0.
+double js_divergence(const Distribution& p, const Distribution& q);
+
+}  // namespace ari_social_sim::dialogue

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/dialogue/dialogue_act.hpp"
+#include "ari_social_sim/dialogue/mpgt_corpus.hpp"
+
+namespace ari_social_sim::dialogue {
+
+/// How acts become text: templates per act (config/dialogue/nlg_templates.yaml), or retrieval of
+/// a real MPGT utterance with the same acts, falling back to templates when the corpus has none.
+enum class NlgMode { kTemplate, kRetrieval };
+
+/// `template` or `retrieval`; throws core::ConfigError naming `field` otherwise.
+NlgMode parse_nlg_mode(const std::string& text, const std::string& field);
+
+/// Templates keyed by act pattern and speaker side, with surface words for slot names.
+struct NlgTemplates {
+  std::map<std::string, std::vector<std::string>> human;  ///< key -> texts
+  std::map<std::string, std::vector<std::string>> robot;
+  std::map<std::string, std::string> words;  ///< name -> surface text (cafe -> cafeteria)
+
+  /// Reads a template file. Keys are acts (`thank()`), patterns with `*` for the innermost name
+  /// (`request(location(*))`) or `none`; texts may use {object}. Throws core::ConfigError naming
+  /// the file and entry on an unknown intent, a bad speaker or an empty text list.
+  static NlgTemplates load(const std::string& file_path);
+  static NlgTemplates parse(const core::YamlMap& map);
+};
+
+/// Realises acts as text. Stateless apart from its constant tables; draws from the caller's Rng.
+class Nlg {
+ public:
+  /// `corpus` may be null in template mode; it is indexed once here.
+  Nlg(NlgTemplates templates, const MpgtCorpus* corpus, NlgMode mode);
+
+  /// Text for `acts` (empty acts: an unannotated utterance) said by ARI or by a human.
+  std::string realise(bool robot, const std::vector<DialogueAct>& acts, core::Rng& rng) const;
+
+  NlgMode mode() const { return mode_; }
+  /// Every word of the template texts and of the retrieval index, for ASR substitutions.
+  std::vector<std::string> vocabulary() const;
+
+ private:
+  std::string from_template(bool robot, const DialogueAct* act, core::Rng& rng) const;
+  std::string surface(const std::vector<std::string>& names) const;
+
+  NlgTemplates templates_;
+  NlgMode mode_;
+  // Retrieval index: acts string (`none` for unannotated) -> real utterances.
+  std::map<std::string, std::vector<std::string>> corpus_human_;
+  std::map<std::string, std::vector<std::string>> corpus_robot_;
+};
+
+}  // namespace ari_social_sim::dialogue

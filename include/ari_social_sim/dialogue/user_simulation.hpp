@@ -1,0 +1,106 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/dialogue/agenda.hpp"
+#include "ari_social_sim/dialogue/domain.hpp"
+#include "ari_social_sim/dialogue/error_model.hpp"
+#include "ari_social_sim/dialogue/nlg.hpp"
+#include "ari_social_sim/dialogue/turn_timing.hpp"
+#include "ari_social_sim/dialogue/user_model.hpp"
+#include "ari_social_sim/dialogue/utterance.hpp"
+
+namespace ari_social_sim::dialogue {
+
+/// Behaviour knobs of the simulated humans that the corpus does not pin down.
+struct UserSimulationConfig {
+  std::vector<std::string> roles{"patient", "companion"};  ///< one simulated human per role
+  unsigned min_patience{3};  ///< bad robot answers tolerated (PyDial benchmark: 4-6 turns)
+  unsigned max_patience{5};
+  unsigned max_asks{3};              ///< statements of one goal to ARI before it counts as failed
+  unsigned max_human_run{6};         ///< human utterances in a row before ARI gets the floor
+  double reask_probability{0.7};     ///< P(re-asking an unanswered goal rather than moving on)
+  double farewell_probability{0.5};  ///< P(a human answers ARI's bye)
+
+  /// Throws core::ConfigError naming the field (no roles, a role twice, min > max patience, ...).
+  void validate() const;
+  static UserSimulationConfig from_yaml(const core::YamlMap& map);
+};
+
+/// One simulated human.
+struct HumanAgent {
+  std::string role;
+  int patience{0};
+  bool left{false};  ///< said bye
+};
+
+/// The simulated humans of one dialogue: goals in agendas and a shared pool, responses drawn from
+/// the fitted P(user act | context) per role, goals stated to ARI or to the other human, relayed
+/// or answered by the other human, patience, turn-taking with gaps, NLG and the error layer.
+/// Holds references to constant parts that must outlive it.
+class UserSimulation {
+ public:
+  /// Throws core::ConfigError when the model lacks a table for a configured role.
+  UserSimulation(UserSimulationConfig config, const Domain& domain, const UserModel& model,
+                 const std::string& model_source, const Nlg& nlg, const ErrorModel& errors,
+                 const TurnTiming& timing);
+
+  /// New goals and humans; the transcript is the caller's.
+  void reset(core::Rng& rng);
+  /// The humans speak first (ARI did not open the dialogue).
+  void open(std::vector<Utterance>& transcript, core::Rng& rng);
+  /// Updates goals and patience from ARI's utterance (the last of `transcript`) and labels the
+  /// goals it answers (AG).
+  void hear_robot(Utterance& robot);
+  /// The humans' turn after ARI's utterance or, when the last utterance is a human's, after ARI
+  /// stayed silent. Appends at least one utterance unless every human has left.
+  void respond(std::vector<Utterance>& transcript, core::Rng& rng);
+  /// Reply to ARI's bye: one human says bye with P = farewell_probability.
+  void farewell(std::vector<Utterance>& transcript, core::Rng& rng);
+
+  /// Replaces the sampled goals (scripted scenarios, tests); call after reset.
+  void set_agenda(Agenda agenda) { agenda_ = std::move(agenda); }
+
+  /// Every goal is resolved, closed or failed, or every human has left.
+  bool finished() const;
+  const Agenda& agenda() const { return agenda_; }
+  const std::vector<HumanAgent>& humans() const { return humans_; }
+  const UserSimulationConfig& config() const { return config_; }
+
+ private:
+  struct Draft {
+    std::vector<DialogueAct> acts;
+    std::vector<GoalLabel> goals;
+    int to_other{-1};  ///< -1: decide from the model; 0: to ARI; 1: to the other human
+  };
+
+  size_t pick_responder(const std::vector<Utterance>& transcript, core::Rng& rng) const;
+  const IntentDistribution& context_row(size_t speaker, const Utterance* previous) const;
+  Draft realise(size_t speaker, const std::string& intent, const Utterance* previous,
+                core::Rng& rng);
+  Draft state_goal(size_t speaker, const Utterance* previous, core::Rng& rng);
+  Draft close_or_leave(size_t speaker);
+  int other_human(size_t speaker) const;
+  void penalise(int goal_index);
+  Utterance& append(std::vector<Utterance>& transcript, size_t speaker, Draft draft,
+                    std::vector<std::string> addressees, core::Rng& rng);
+
+  UserSimulationConfig config_;
+  const Domain& domain_;
+  const UserModel& model_;
+  std::vector<const RoleModel*> role_models_;
+  const Nlg& nlg_;
+  const ErrorModel& errors_;
+  const TurnTiming& timing_;
+
+  Agenda agenda_;
+  std::vector<HumanAgent> humans_;
+  int last_addresser_{-1};  ///< human who last spoke to ARI
+  int relay_goal_{-1};      ///< goal stated to the other human, waiting to be relayed or answered
+  std::vector<DialogueAct> last_robot_acts_;
+};
+
+}  // namespace ari_social_sim::dialogue

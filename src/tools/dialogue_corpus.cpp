@@ -1,0 +1,221 @@
+// dialogue_corpus: runs N dialogues of the built-in rule-based robot policy against the simulated
+// patient and companion and writes one JSON object per utterance (JSON lines).
+//
+//   dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE] [--corpus DIR]
+//                   [--nlg template|retrieval] [--compare] [--report FILE.md]
+//
+// --config defaults to <source>/config/dialogue/simulation.yaml; --corpus (the MPGT corpus used by
+// retrieval NLG and --compare) to <source>/../shared/dialogue/mpgt. --compare prints the
+// comparison with MPGT (intent JS divergence, human-to-human share, lengths, complete and success
+// rates) as Markdown, also to --report when given. Exit code 2 on bad input.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/dialogue_runner.hpp"
+#include "ari_social_sim/dialogue/dialogue_stats.hpp"
+#include "ari_social_sim/dialogue/json_lines.hpp"
+
+namespace {
+
+using namespace ari_social_sim;
+using namespace ari_social_sim::dialogue;
+
+struct Options {
+  unsigned long dialogues{0};
+  unsigned long long seed{0};
+  std::string out;
+  std::string config = default_dialogue_config_dir() + "/simulation.yaml";
+  std::string corpus;
+  std::string nlg;
+  std::string report;
+  bool compare{false};
+};
+
+void print_usage() {
+  std::cerr << "usage: dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE]\n"
+               "                       [--corpus DIR] [--nlg template|retrieval] [--compare]\n"
+               "                       [--report FILE.md]\n"
+            << "  --config defaults to " << default_dialogue_config_dir() << "/simulation.yaml\n"
+            << "  --corpus defaults to " << default_mpgt_dir() << "\n";
+}
+
+Options parse_options(int argc, char** argv) {
+  Options options;
+  bool have_dialogues = false;
+  bool have_seed = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--compare") {
+      options.compare = true;
+      continue;
+    }
+    if (i + 1 >= argc) {
+      throw core::ConfigError("command line: " + arg + ": expected a value after it");
+    }
+    const std::string value = argv[++i];
+    try {
+      if (arg == "--dialogues") {
+        options.dialogues = std::stoul(value);
+        have_dialogues = true;
+      } else if (arg == "--seed") {
+        options.seed = std::stoull(value);
+        have_seed = true;
+      } else if (arg == "--out") {
+        options.out = value;
+      } else if (arg == "--config") {
+        options.config = value;
+      } else if (arg == "--corpus") {
+        options.corpus = value;
+      } else if (arg == "--nlg") {
+        options.nlg = value;
+      } else if (arg == "--report") {
+        options.report = value;
+      } else {
+        throw core::ConfigError("command line: unknown option " + arg);
+      }
+    } catch (const std::logic_error&) {
+      throw core::ConfigError("command line: " + arg + ": expected a non-negative integer, got '" +
+                              value + "'");
+    }
+  }
+  if (!have_dialogues || !have_seed || (options.out.empty() && !options.compare)) {
+    throw core::ConfigError(
+        "command line: --dialogues, --seed and --out (or --compare) are required");
+  }
+  return options;
+}
+
+std::string percent(double share) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * share);
+  return text;
+}
+
+std::string number(double value, int decimals = 3) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  return text;
+}
+
+std::string lengths_text(const DialogueStats& s) {
+  return number(s.mean_length(), 1) + " / " + std::to_string(s.length_quantile(0.0)) + " / " +
+         std::to_string(s.length_quantile(0.25)) + " / " + std::to_string(s.length_quantile(0.5)) +
+         " / " + std::to_string(s.length_quantile(0.75)) + " / " +
+         std::to_string(s.length_quantile(1.0));
+}
+
+std::string comparison(const Options& options, const std::vector<EpisodeRecord>& episodes,
+                       const MpgtCorpus& corpus) {
+  std::vector<CorpusDialogue> generated;
+  double complete = 0;
+  double success = 0;
+  double truncated = 0;
+  double reward = 0;
+  double robot_turns = 0;
+  for (const EpisodeRecord& e : episodes) {
+    generated.push_back(to_corpus_dialogue(e.utterances));
+    complete += e.outcome.complete ? 1 : 0;
+    success += e.outcome.success ? 1 : 0;
+    truncated += e.truncated ? 1 : 0;
+    reward += e.total_reward;
+    robot_turns += e.robot_turns;
+  }
+  const double n = static_cast<double>(std::max<size_t>(episodes.size(), 1));
+  const DialogueStats sim = compute_stats(generated);
+  const DialogueStats real = compute_stats(corpus.dialogues);
+  std::ostringstream out;
+  out << "Generated: " << episodes.size() << " dialogues, seed " << options.seed
+      << "; corpus: MPGT, " << real.dialogues << " conversations.\n\n";
+  out << "| figure | generated | MPGT |\n|---|---|---|\n";
+  out << "| JS divergence, first human intent (incl. none) | "
+      << number(js_divergence(sim.first_intents, real.first_intents)) << " | 0 |\n";
+  out << "| JS divergence, all human intents | "
+      << number(js_divergence(sim.all_intents, real.all_intents)) << " | 0 |\n";
+  out << "| human-to-human share of utterances (heuristic) | " << percent(sim.human_to_human_share)
+      << " | " << percent(real.human_to_human_share) << " |\n";
+  out << "| human-to-human share of utterances (ground truth) | "
+      << percent(true_human_to_human_share(episodes)) << " | n/a |\n";
+  out << "| human share of utterances | "
+      << percent(static_cast<double>(sim.human_utterances) / std::max<size_t>(sim.utterances, 1))
+      << " | "
+      << percent(static_cast<double>(real.human_utterances) / std::max<size_t>(real.utterances, 1))
+      << " |\n";
+  out << "| length, mean / min / q25 / median / q75 / max | " << lengths_text(sim) << " | "
+      << lengths_text(real) << " |\n";
+  out << "| rule policy: complete | " << percent(complete / n) << " | |\n";
+  out << "| rule policy: success | " << percent(success / n) << " | |\n";
+  out << "| rule policy: truncated | " << percent(truncated / n) << " | |\n";
+  out << "| rule policy: mean reward / robot turns | " << number(reward / n, 1) << " / "
+      << number(robot_turns / n, 1) << " | |\n";
+  out << "\nFirst human intent distribution:\n\n| intent | generated | MPGT |\n|---|---|---|\n";
+  Distribution keys = real.first_intents;
+  for (const auto& entry : sim.first_intents) {
+    keys[entry.first] += 0.0;
+  }
+  for (const auto& entry : keys) {
+    const auto s = sim.first_intents.find(entry.first);
+    const auto r = real.first_intents.find(entry.first);
+    out << "| " << entry.first << " | " << percent(s == sim.first_intents.end() ? 0.0 : s->second)
+        << " | " << percent(r == real.first_intents.end() ? 0.0 : r->second) << " |\n";
+  }
+  return out.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      print_usage();
+      return 0;
+    }
+  }
+  try {
+    const Options options = parse_options(argc, argv);
+    DialogueConfig config = DialogueConfig::load(options.config);
+    if (!options.corpus.empty()) {
+      config.corpus_dir = options.corpus;
+    }
+    if (!options.nlg.empty()) {
+      config.nlg = parse_nlg_mode(options.nlg, "command line: --nlg");
+    }
+    const auto setup = DialogueSetup::create(config);
+    DialogueEnv env(*setup);
+    RulePolicy policy(setup->domain);
+    std::ofstream out;
+    if (!options.out.empty()) {
+      out.open(options.out);
+      if (!out) {
+        throw core::ConfigError(options.out + ": cannot write the file");
+      }
+    }
+    std::vector<EpisodeRecord> episodes;
+    for (unsigned long d = 0; d < options.dialogues; ++d) {
+      EpisodeRecord episode = run_episode(env, policy, episode_seed(options.seed, d));
+      if (out.is_open()) {
+        for (const Utterance& u : episode.utterances) {
+          out << utterance_json(static_cast<int>(d), u) << '\n';
+        }
+      }
+      if (options.compare) {
+        episodes.push_back(std::move(episode));
+      }
+    }
+    if (options.compare) {
+      const std::string text = comparison(options, episodes, setup->corpus);
+      std::cout << text;
+      if (!options.report.empty()) {
+        std::ofstream report(options.report);
+        report << text;
+      }
+    }
+  } catch (const core::Error& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,65 @@
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/dialogue/nlg.hpp"
+#include "test_helpers.hpp"
+
+namespace ari_social_sim::dialogue {
+namespace {
+
+using testing::config_path;
+using testing::expect_config_error;
+
+const char* kTemplates = R"yaml(
+words:
+  - {name: cafe, text: cafeteria}
+templates:
+  - {act: "request(location(*))", speaker: human, texts: ["Where is the {object}?"]}
+  - {act: "thank()", speaker: any, texts: ["Thanks."]}
+  - {act: "none", speaker: human, texts: ["Hmm."]}
+)yaml";
+
+TEST(Nlg, TemplatesFillTheObject) {
+  const Nlg nlg(NlgTemplates::parse(core::YamlMap::parse(kTemplates, "t.yaml")), nullptr,
+                NlgMode::kTemplate);
+  core::Rng rng(1);
+  EXPECT_EQ(nlg.realise(false, {parse_act("request(location(cafe))", "t")}, rng),
+            "Where is the cafeteria?");
+  EXPECT_EQ(nlg.realise(false, {parse_act("request(location(room_17))", "t")}, rng),
+            "Where is the room 17?");
+  EXPECT_EQ(nlg.realise(true, {parse_act("thank()", "t")}, rng), "Thanks.");
+  EXPECT_EQ(nlg.realise(false, {}, rng), "Hmm.");
+  // Two acts: two texts joined.
+  EXPECT_EQ(nlg.realise(false, parse_acts("thank(); request(location(cafe))", "t"), rng),
+            "Thanks. Where is the cafeteria?");
+}
+
+TEST(Nlg, RetrievalReturnsRealUtterances) {
+  const MpgtCorpus corpus = load_mpgt_corpus(ARI_MPGT_DIR);
+  const Nlg nlg(NlgTemplates::load(config_path("nlg_templates.yaml")), &corpus,
+                NlgMode::kRetrieval);
+  core::Rng rng(4);
+  // MPGT has one robot line for p-confirm(cafe(opening_times)): "Yes, you're right." (convo1).
+  EXPECT_EQ(nlg.realise(true, {parse_act("p-confirm(cafe(opening_times))", "t")}, rng),
+            "Yes, you're right.");
+  const std::string text = nlg.realise(true, {parse_act("inform(location(toilet))", "t")}, rng);
+  EXPECT_NE(text.find("corridor at the end of the room"), std::string::npos) << text;
+}
+
+TEST(Nlg, BadTemplatesNameFileAndEntry) {
+  expect_config_error(
+      [] {
+        NlgTemplates::parse(core::YamlMap::parse(
+            "templates:\n  - {act: \"thnak()\", speaker: human, texts: [x]}\n", "n.yaml"));
+      },
+      {"n.yaml: templates[0].act", "unknown intent 'thnak'"});
+  expect_config_error(
+      [] {
+        NlgTemplates::parse(core::YamlMap::parse(
+            "templates:\n  - {act: \"thank()\", speaker: robto, texts: [x]}\n", "n.yaml"));
+      },
+      {"n.yaml: templates[0].speaker", "robto"});
+  EXPECT_THROW(parse_nlg_mode("neural", "nlg"), core::ConfigError);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::dialogue
