@@ -6,5 +6,7 @@ cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 bash scripts/build.sh
 export PATH=/usr/bin:$PATH
+set +u  # catkin's setup scripts read unset variables
 source _build/devel/setup.bash
+set -u
 exec roslaunch ari_social_sim group_formation.launch "$@"

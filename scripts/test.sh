@@ -6,7 +6,9 @@ cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 bash scripts/build.sh
 export PATH=/usr/bin:$PATH
+set +u  # catkin's setup scripts read unset variables
 source _build/devel/setup.bash
+set -u
 rm -rf _build/test_results
 cmake --build _build --target tests -j"$(nproc)"
 # run_tests keeps going past failures; the summary below decides.

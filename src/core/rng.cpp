@@ -16,7 +16,9 @@ uint64_t splitmix64(uint64_t& x) {
   return z ^ (z >> 31);
 }
 
-uint64_t rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+uint64_t rotl(uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
 
 }  // namespace
 
@@ -49,7 +51,9 @@ double Rng::uniform() {
   return static_cast<double>(next_u64() >> 11) * 0x1.0p-53;
 }
 
-double Rng::uniform(double low, double high) { return low + (high - low) * uniform(); }
+double Rng::uniform(double low, double high) {
+  return low + (high - low) * uniform();
+}
 
 uint64_t Rng::uniform_index(uint64_t count) {
   ARI_CHECK(count > 0);
@@ -74,7 +78,9 @@ double Rng::normal(double mean, double stddev) {
   return mean + stddev * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
 }
 
-bool Rng::bernoulli(double probability) { return uniform() < probability; }
+bool Rng::bernoulli(double probability) {
+  return uniform() < probability;
+}
 
 size_t Rng::categorical(const std::vector<double>& weights) {
   ARI_CHECK(!weights.empty());

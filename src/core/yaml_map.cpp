@@ -14,7 +14,9 @@ std::string number_text(double value) {
   return out.str();
 }
 
-bool is_scalar(const YAML::Node& node) { return node.IsScalar(); }
+bool is_scalar(const YAML::Node& node) {
+  return node.IsScalar();
+}
 
 }  // namespace
 
@@ -72,9 +74,13 @@ YamlMap YamlMap::parse(const std::string& text, const std::string& source) {
   return YamlMap(root, source);
 }
 
-bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+bool YamlMap::has(const std::string& key) const {
+  return static_cast<bool>(node_[key]);
+}
 
-std::string YamlMap::where() const { return path_.empty() ? source_ : source_ + ": " + path_; }
+std::string YamlMap::where() const {
+  return path_.empty() ? source_ : source_ + ": " + path_;
+}
 
 std::string YamlMap::field_name(const std::string& key) const {
   return source_ + ": " + (path_.empty() ? key : path_ + "." + key);
@@ -214,7 +220,8 @@ T YamlMap::required(const std::string& key, const Bounds& bounds) const {
     bool ok = n.IsSequence();
     for (size_t i = 0; ok && i < n.size(); ++i) {
       std::vector<double> xy;
-      ok = read_list(n[i], xy) && xy.size() == 2 && bounds.contains(xy[0]) && bounds.contains(xy[1]);
+      ok =
+          read_list(n[i], xy) && xy.size() == 2 && bounds.contains(xy[0]) && bounds.contains(xy[1]);
       if (ok) {
         points.emplace_back(xy[0], xy[1]);
       }
@@ -322,8 +329,8 @@ void YamlMap::finish() const {
   }
 }
 
-#define ARI_INSTANTIATE(T)                                                          \
-  template T YamlMap::required<T>(const std::string&, const Bounds&) const;         \
+#define ARI_INSTANTIATE(T)                                                  \
+  template T YamlMap::required<T>(const std::string&, const Bounds&) const; \
   template T YamlMap::optional<T>(const std::string&, const T&, const Bounds&) const;
 ARI_INSTANTIATE(double)
 ARI_INSTANTIATE(int)

@@ -47,7 +47,9 @@ constexpr char kOdomFrame[] = "odom";
 constexpr char kBaseFrame[] = "base_footprint";
 constexpr char kHeadPanJoint[] = "head_1_joint";
 
-core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) { return {{pose.x, pose.y}, pose.theta}; }
+core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
+  return {{pose.x, pose.y}, pose.theta};
+}
 
 geometry_msgs::Quaternion yaw_quaternion(double theta) {
   geometry_msgs::Quaternion q;
@@ -84,7 +86,8 @@ class WorldNode {
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
     odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
-    cmd_vel_sub_ = nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
+    cmd_vel_sub_ =
+        nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
     head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
 
     services_.push_back(nh_.advertiseService("/sim/spawn_human", &WorldNode::spawn_human, this));
@@ -201,9 +204,7 @@ class WorldNode {
     odom_pub_.publish(odom);
   }
 
-  void publish_map() {
-    map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s()));
-  }
+  void publish_map() { map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s())); }
 
   void report() {
     std::cout << "\nworld_node: finished " << scene_.path << " at t = " << simulation_->time_s()
@@ -228,8 +229,8 @@ class WorldNode {
   }
 
   void on_head_command(const trajectory_msgs::JointTrajectory& trajectory) {
-    const auto joint = std::find(trajectory.joint_names.begin(), trajectory.joint_names.end(),
-                                 kHeadPanJoint);
+    const auto joint =
+        std::find(trajectory.joint_names.begin(), trajectory.joint_names.end(), kHeadPanJoint);
     if (simulation_->ari() == nullptr || joint == trajectory.joint_names.end() ||
         trajectory.points.empty()) {
       ROS_WARN_THROTTLE(5.0, "head command ignored: needs ARI and a point for %s", kHeadPanJoint);
@@ -274,8 +275,8 @@ class WorldNode {
       if (!req.emotion.empty()) {
         const auto emotion = world::parse_emotion(req.emotion);
         if (!emotion) {
-          throw core::RequestError(
-              "emotion: expected neutral, happy, angry or disturbed, got '" + req.emotion + "'");
+          throw core::RequestError("emotion: expected neutral, happy, angry or disturbed, got '" +
+                                   req.emotion + "'");
         }
         spec.emotion = *emotion;
       }

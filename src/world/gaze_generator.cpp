@@ -88,7 +88,8 @@ void GazeGenerator::step(Object& owner, const StepContext& context) {
     draw(owner, context, now_s);
     // Next change counts from the sampled time, not the step it was noticed at, so step
     // quantisation does not lengthen the mean dwell.
-    *next_change_s_ = (target_lost ? now_s : *next_change_s_) + rng_.exponential(model_.mean_duration_s);
+    *next_change_s_ =
+        (target_lost ? now_s : *next_change_s_) + rng_.exponential(model_.mean_duration_s);
   }
   const Object* target = target_ == kNoObject ? nullptr : context.simulation.find_object(target_);
   if (target != nullptr) {

@@ -108,8 +108,7 @@ void GroupNavigation::step(const StepContext& context) {
       }
     }
     // Agents outside the group keep the member's own personal distance.
-    simulation.agent_centres_near(p, params.personal_distance_m, &human, outsiders_,
-                                  spec_.id);
+    simulation.agent_centres_near(p, params.personal_distance_m, &human, outsiders_, spec_.id);
 
     // Eq. 3.9: repulsion (members at the group's spacing, others at the personal distance),
     // equality and cohesion.

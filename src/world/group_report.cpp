@@ -53,8 +53,9 @@ GroupReport GroupReport::of(const Simulation& simulation, const GroupNavigation&
   }
   for (size_t i = 0; i < report.members.size(); ++i) {
     for (size_t j = i + 1; j < report.members.size(); ++j) {
-      report.distances.push_back({report.members[i].id, report.members[j].id,
-                                  (report.members[i].position - report.members[j].position).norm()});
+      report.distances.push_back(
+          {report.members[i].id, report.members[j].id,
+           (report.members[i].position - report.members[j].position).norm()});
     }
   }
   return report;

@@ -7,8 +7,8 @@ namespace ari_social_sim::world {
 
 bool HeadPanController::command_velocity(double pan_velocity_rps) {
   has_target_ = false;
-  commanded_velocity_rps_ = std::clamp(pan_velocity_rps, -limits_.head_pan_max_speed_rps,
-                                       limits_.head_pan_max_speed_rps);
+  commanded_velocity_rps_ =
+      std::clamp(pan_velocity_rps, -limits_.head_pan_max_speed_rps, limits_.head_pan_max_speed_rps);
   return commanded_velocity_rps_ != pan_velocity_rps;
 }
 

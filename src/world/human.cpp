@@ -57,7 +57,9 @@ void Human::set_gaze_model(GazeModel model) {
   gaze_ = &add_component(std::make_unique<GazeGenerator>(std::move(model), gaze_rng_));
 }
 
-const std::optional<core::Pose2>& Human::goal() const { return navigation_->goal(); }
+const std::optional<core::Pose2>& Human::goal() const {
+  return navigation_->goal();
+}
 
 void Human::set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps) {
   mode_ = MotionMode::kDirect;
@@ -96,7 +98,9 @@ void Human::plan_motion(const Eigen::Vector2d& velocity_mps, double rotation_rad
   planned_rotation_ = rotation_rad;
 }
 
-void Human::set_orientation(double theta_rad) { pose_.theta = core::wrap_angle(theta_rad); }
+void Human::set_orientation(double theta_rad) {
+  pose_.theta = core::wrap_angle(theta_rad);
+}
 
 void Human::apply_motion(const StepContext& context) {
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
@@ -114,7 +118,8 @@ void Human::apply_motion(const StepContext& context) {
       rotation = planned_rotation_;
       break;
   }
-  body()->SetLinearVelocity(b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
+  body()->SetLinearVelocity(
+      b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
   pose_.theta = core::wrap_angle(pose_.theta + rotation);
   angular_velocity_ = rotation / context.dt_s;
 }

@@ -92,7 +92,8 @@ HumanSpec read_human(const core::YamlMap& entry) {
   if (entry.has("motion")) {
     const core::YamlMap m = entry.map("motion");
     HumanMotionParams& p = spec.motion;
-    p.walking_speed_mps = m.optional<double>("walking_speed", p.walking_speed_mps, core::positive());
+    p.walking_speed_mps =
+        m.optional<double>("walking_speed", p.walking_speed_mps, core::positive());
     p.max_speed_mps = m.optional<double>("max_speed", p.max_speed_mps, core::positive());
     p.turn_gain_per_s = m.optional<double>("turn_gain", p.turn_gain_per_s, core::positive());
     p.goal_distance_m = m.optional<double>("goal_distance", p.goal_distance_m, core::positive());
@@ -132,7 +133,8 @@ AriSpec read_ari(const core::YamlMap& entry) {
   spec.id = entry.optional<unsigned>("id", spec.id, core::positive());
   spec.pose = read_pose(entry);
   spec.head_pan_rad = entry.optional<double>(
-      "head_pan", 0.0, core::between(-spec.limits.head_pan_limit_rad, spec.limits.head_pan_limit_rad));
+      "head_pan", 0.0,
+      core::between(-spec.limits.head_pan_limit_rad, spec.limits.head_pan_limit_rad));
   spec.words_per_minute =
       entry.optional<double>("words_per_minute", spec.words_per_minute, core::positive());
   entry.finish();
@@ -210,8 +212,10 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, SimulationConfi
     }
     for (const GazeTarget& target : scene.humans[i].gaze->targets) {
       if (simulation->find_object(target.id) == nullptr || target.id == scene.humans[i].id) {
-        throw core::ConfigError(scene.human_fields[i] + ".gaze.targets: expected ids of other "
-                                "objects in the scene, got " + std::to_string(target.id));
+        throw core::ConfigError(scene.human_fields[i] +
+                                ".gaze.targets: expected ids of other "
+                                "objects in the scene, got " +
+                                std::to_string(target.id));
       }
     }
   }

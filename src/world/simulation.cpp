@@ -32,8 +32,9 @@ Object* object_of(b2Body* body) {
 
 template <class T>
 T* find_sorted(const std::vector<std::unique_ptr<T>>& items, ObjectId id) {
-  auto it = std::lower_bound(items.begin(), items.end(), id,
-                             [](const std::unique_ptr<T>& item, ObjectId key) { return item->id() < key; });
+  auto it = std::lower_bound(
+      items.begin(), items.end(), id,
+      [](const std::unique_ptr<T>& item, ObjectId key) { return item->id() < key; });
   return it != items.end() && (*it)->id() == id ? it->get() : nullptr;
 }
 
@@ -118,9 +119,13 @@ Object* Simulation::find_object(ObjectId id) const {
   return it == objects_by_id_.end() ? nullptr : it->second;
 }
 
-Human* Simulation::find_human(ObjectId id) const { return find_sorted(humans_, id); }
+Human* Simulation::find_human(ObjectId id) const {
+  return find_sorted(humans_, id);
+}
 
-GroupNavigation* Simulation::find_group(ObjectId id) const { return find_sorted(groups_, id); }
+GroupNavigation* Simulation::find_group(ObjectId id) const {
+  return find_sorted(groups_, id);
+}
 
 void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
                                  const Object* ignore, const std::string& what) const {
@@ -130,7 +135,8 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
   const Eigen::Vector2d lower(box.lowerBound.x, box.lowerBound.y);
   const Eigen::Vector2d upper(box.upperBound.x, box.upperBound.y);
   if (!world_.contains(lower) || !world_.contains(upper)) {
-    throw core::RequestError(what + " would stand outside the floor of world '" + world_.name + "'");
+    throw core::RequestError(what + " would stand outside the floor of world '" + world_.name +
+                             "'");
   }
   struct OverlapQuery : b2QueryCallback {
     const b2Shape* shape;
@@ -171,8 +177,9 @@ Human& Simulation::add_human(const HumanSpec& spec) {
   }
   b2CircleShape circle;
   circle.m_radius = static_cast<float>(spec.motion.body_radius_m);
-  check_placement(circle, spec.pose, nullptr, what + " at (" + std::to_string(spec.pose.position.x()) +
-                                                  ", " + std::to_string(spec.pose.position.y()) + ")");
+  check_placement(circle, spec.pose, nullptr,
+                  what + " at (" + std::to_string(spec.pose.position.x()) + ", " +
+                      std::to_string(spec.pose.position.y()) + ")");
 
   auto human = std::make_unique<Human>(spec, core::Rng::for_stream(config_.seed, spec.id));
   b2Body* body = make_agent_body(*physics_, spec.pose, *human);
@@ -251,10 +258,9 @@ GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
     human.join_group(spec.id);
   }
   // Groups emptied by the move are dropped.
-  groups_.erase(std::remove_if(groups_.begin(), groups_.end(),
-                               [](const std::unique_ptr<GroupNavigation>& g) {
-                                 return g->members().empty();
-                               }),
+  groups_.erase(std::remove_if(
+                    groups_.begin(), groups_.end(),
+                    [](const std::unique_ptr<GroupNavigation>& g) { return g->members().empty(); }),
                 groups_.end());
   auto group = std::make_unique<GroupNavigation>(spec);
   GroupNavigation& ref = *group;
@@ -297,10 +303,9 @@ void Simulation::remove_group(ObjectId group_id) {
   for (ObjectId member : group->members()) {
     find_human(member)->leave_group();
   }
-  groups_.erase(std::find_if(groups_.begin(), groups_.end(),
-                             [group_id](const std::unique_ptr<GroupNavigation>& g) {
-                               return g->id() == group_id;
-                             }));
+  groups_.erase(std::find_if(
+      groups_.begin(), groups_.end(),
+      [group_id](const std::unique_ptr<GroupNavigation>& g) { return g->id() == group_id; }));
 }
 
 void Simulation::release_from_group(ObjectId human_id) {

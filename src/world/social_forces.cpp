@@ -82,8 +82,8 @@ Vector2 equality_orientation(const Vector2& p, const Positions& social_neighbour
   return sum;
 }
 
-Vector2 cohesion_force(const Vector2& p, const Vector2& o, double ospace_radius_m,
-                       int group_size, int social_neighbour_count) {
+Vector2 cohesion_force(const Vector2& p, const Vector2& o, double ospace_radius_m, int group_size,
+                       int social_neighbour_count) {
   const double distance = (o - p).norm();
   if (distance < kEpsilon) {
     return Vector2::Zero();

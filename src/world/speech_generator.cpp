@@ -68,7 +68,8 @@ void SpeechGenerator::step(Object& owner, const StepContext& context) {
     finish(now_s, false);
     return;
   }
-  word_index_ = static_cast<size_t>(std::floor((now_s - start_s_) / seconds_per_word + kTimeEpsilon));
+  word_index_ =
+      static_cast<size_t>(std::floor((now_s - start_s_) / seconds_per_word + kTimeEpsilon));
 }
 
 void SpeechGenerator::finish(double end_s, bool interrupted) {

@@ -3,17 +3,24 @@
 namespace ari_social_sim::world {
 
 std::optional<Gender> parse_gender(const std::string& text) {
-  if (text == "female") return Gender::kFemale;
-  if (text == "male") return Gender::kMale;
-  if (text == "non-identified") return Gender::kNonIdentified;
+  if (text == "female")
+    return Gender::kFemale;
+  if (text == "male")
+    return Gender::kMale;
+  if (text == "non-identified")
+    return Gender::kNonIdentified;
   return std::nullopt;
 }
 
 std::optional<Emotion> parse_emotion(const std::string& text) {
-  if (text == "neutral") return Emotion::kNeutral;
-  if (text == "happy") return Emotion::kHappy;
-  if (text == "angry") return Emotion::kAngry;
-  if (text == "disturbed") return Emotion::kDisturbed;
+  if (text == "neutral")
+    return Emotion::kNeutral;
+  if (text == "happy")
+    return Emotion::kHappy;
+  if (text == "angry")
+    return Emotion::kAngry;
+  if (text == "disturbed")
+    return Emotion::kDisturbed;
   return std::nullopt;
 }
 

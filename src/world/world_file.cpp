@@ -68,10 +68,10 @@ StaticObject parse_object(const core::YamlMap& entry) {
     object.points = entry.required<std::vector<Eigen::Vector2d>>("points");
     // Box2D takes convex polygons of at most 8 vertices; larger furniture is several objects.
     if (object.points.size() < 3 || object.points.size() > 8 || !is_convex(object.points)) {
-      entry.fail("points", "3 to 8 vertices of a convex polygon",
-                 std::to_string(object.points.size()) + " vertices" +
-                     (object.points.size() >= 3 && object.points.size() <= 8 ? ", not convex"
-                                                                              : ""));
+      entry.fail(
+          "points", "3 to 8 vertices of a convex polygon",
+          std::to_string(object.points.size()) + " vertices" +
+              (object.points.size() >= 3 && object.points.size() <= 8 ? ", not convex" : ""));
     }
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
     for (const Eigen::Vector2d& p : object.points) {

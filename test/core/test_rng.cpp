@@ -1,8 +1,8 @@
-#include "ari_social_sim/core/rng.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "ari_social_sim/core/rng.hpp"
 
 namespace ari_social_sim::core {
 namespace {

@@ -1,8 +1,7 @@
-#include "ari_social_sim/core/yaml_map.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/yaml_map.hpp"
 
 namespace ari_social_sim::core {
 namespace {
@@ -36,8 +35,7 @@ TEST(YamlMap, ErrorsNameSourceFieldValueAndExpectation) {
   const YamlMap item = map.list("objects")[0];
   expect_config_error([&] { item.required<Eigen::Vector2d>("size", positive()); },
                       {"w.yaml", "objects[0].size", "> 0", "[1.0, -2.0]"});
-  expect_config_error([&] { item.required<double>("radius"); },
-                      {"objects[0].radius", "required"});
+  expect_config_error([&] { item.required<double>("radius"); }, {"objects[0].radius", "required"});
   expect_config_error([&] { YamlMap::parse("a: abc", "f.yaml").required<double>("a"); },
                       {"f.yaml: a", "a number", "abc"});
 }

@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
 namespace ari_social_sim::world::test {

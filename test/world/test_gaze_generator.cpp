@@ -1,11 +1,10 @@
-#include "ari_social_sim/world/gaze_generator.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "scene_builders.hpp"
 

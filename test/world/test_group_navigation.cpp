@@ -1,9 +1,8 @@
-#include "ari_social_sim/world/group_navigation.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/group_report.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "scene_builders.hpp"
@@ -30,7 +29,8 @@ TEST(GroupNavigation, CohesionRadiusBalancesTheSpacingPush) {
   const GroupNavigation& group = simulation.add_group(spec);
   EXPECT_NEAR(group.member_personal_distance_m(), 1.5 * std::sqrt(3.0), 1e-9);
   EXPECT_NEAR(group.cohesion_radius_m(), 0.25, 1e-9);
-  EXPECT_NEAR(GroupNavigation::ospace_radius_for(5, 1.0, 0.6), 1.0 / (2 * std::sin(M_PI / 5)), 1e-9);
+  EXPECT_NEAR(GroupNavigation::ospace_radius_for(5, 1.0, 0.6), 1.0 / (2 * std::sin(M_PI / 5)),
+              1e-9);
 }
 
 TEST(GroupNavigation, Eq3_9To3_12OneStepOfIsolatedMembers) {

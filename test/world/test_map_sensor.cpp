@@ -1,7 +1,6 @@
-#include "ari_social_sim/world/map_sensor.hpp"
-
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "scene_builders.hpp"
 

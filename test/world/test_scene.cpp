@@ -1,10 +1,9 @@
-#include "ari_social_sim/world/scene.hpp"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/scene.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -27,7 +26,8 @@ void expect_rejected(const std::string& body, const std::vector<std::string>& fr
     const std::string message = e.what();
     EXPECT_NE(message.find(path), std::string::npos) << message;
     for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << message;
+      EXPECT_NE(message.find(fragment), std::string::npos)
+          << "'" << fragment << "' not in: " << message;
     }
   }
 }
@@ -37,7 +37,8 @@ TEST(Scene, BuildsHumansGroupsAndAri) {
       "ari: {position: [1, 1], orientation: 0.5}\n"
       "humans:\n"
       "  - {id: 10, position: [3, 3], age: 70, gender: female, mask: true, emotion: angry}\n"
-      "  - {id: 11, position: [4, 3], gaze: {mean_duration: 2, targets: [{id: 10, probability: 1}]}}\n"
+      "  - {id: 11, position: [4, 3], gaze: {mean_duration: 2, targets: [{id: 10, probability: "
+      "1}]}}\n"
       "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3.5]}\n"));
   EXPECT_EQ(scene.seed, 3u);
   const auto simulation = build_simulation(scene, SimulationConfig{});
@@ -68,17 +69,21 @@ TEST(Scene, UnknownGenderAndMissingPositionAreNamed) {
 }
 
 TEST(Scene, GazeProbabilitiesMustSumToOneAndNameObjects) {
-  expect_rejected("humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
-                  "[{id: 11, probability: 0.5}]}}\n",
-                  {"humans[0].gaze.targets", "summing to 1"});
-  expect_rejected("humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
-                  "[{id: 99, probability: 1.0}]}}\n",
-                  {"humans[0].gaze.targets", "99"});
+  expect_rejected(
+      "humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
+      "[{id: 11, probability: 0.5}]}}\n",
+      {"humans[0].gaze.targets", "summing to 1"});
+  expect_rejected(
+      "humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
+      "[{id: 99, probability: 1.0}]}}\n",
+      {"humans[0].gaze.targets", "99"});
 }
 
 TEST(Scene, GroupOfUnknownHumanIsRejected) {
-  expect_rejected("humans:\n  - {id: 10, position: [3, 3]}\ngroups:\n  - {id: 1, members: [10, 12], centre: [3, 3]}\n",
-                  {"groups[0]", "no human with id 12"});
+  expect_rejected(
+      "humans:\n  - {id: 10, position: [3, 3]}\ngroups:\n  - {id: 1, members: [10, 12], centre: "
+      "[3, 3]}\n",
+      {"groups[0]", "no human with id 12"});
 }
 
 TEST(Scene, MissingWorldFileIsNamed) {

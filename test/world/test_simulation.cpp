@@ -1,11 +1,10 @@
-#include "ari_social_sim/world/simulation.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 #include "scene_builders.hpp"
 
@@ -41,7 +40,8 @@ uint64_t hash_of(const WorldSnapshot& s) {
 }
 
 std::unique_ptr<Simulation> crowd(uint64_t seed) {
-  auto simulation = std::make_unique<Simulation>(test::square_room(8.0), SimulationConfig{0.05, seed, 0.05});
+  auto simulation =
+      std::make_unique<Simulation>(test::square_room(8.0), SimulationConfig{0.05, seed, 0.05});
   core::Rng layout(99);  // the same people in every run; only the simulation seed differs
   const std::vector<ObjectId> ids = test::add_random_humans(*simulation, 8, 8.0, 0.5, layout);
   for (ObjectId id : ids) {
@@ -107,8 +107,8 @@ TEST(Simulation, RepulsionKeepsWalkersApartWhenCrossing) {
     simulation.step();
     closest = std::min(closest, (a.pose().position - b.pose().position).norm());
   }
-  // Head on, the seed's repulsion has no sideways part: the walkers meet, and the contact (bodies of
-  // radius 0.2 m, Box2D slop 5 mm) slides them past each other without passing through; both
+  // Head on, the seed's repulsion has no sideways part: the walkers meet, and the contact (bodies
+  // of radius 0.2 m, Box2D slop 5 mm) slides them past each other without passing through; both
   // arrive.
   EXPECT_GT(closest, 0.4 - 0.015);
   EXPECT_LT((a.pose().position - Eigen::Vector2d(7.0, 4.0)).norm(), 0.1);

@@ -1,16 +1,15 @@
-#include "ari_social_sim/world/social_forces.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "ari_social_sim/world/social_forces.hpp"
 #include "ari_social_sim/world/step_motion.hpp"
 
 namespace ari_social_sim::world {
 namespace {
 
-using social_forces::Positions;
 using Eigen::Vector2d;
+using social_forces::Positions;
 
 constexpr double kTol = 1e-9;
 

@@ -1,9 +1,8 @@
-#include "ari_social_sim/world/speech_generator.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/simulation.hpp"
+#include "ari_social_sim/world/speech_generator.hpp"
 #include "scene_builders.hpp"
 
 namespace ari_social_sim::world {
@@ -32,7 +31,7 @@ TEST(SpeechGenerator, TenWordsAt120WpmLastFiveSecondsWordByWord) {
     }
     ASSERT_LT(simulation.time_s(), start + 10.0);
   }
-  const std::vector<std::string> expected{"one", "two", "three", "four", "five",
+  const std::vector<std::string> expected{"one", "two",   "three", "four", "five",
                                           "six", "seven", "eight", "nine", "ten"};
   EXPECT_EQ(heard, expected);
   const SpeechRecord& record = human.speech().history().at(0);

@@ -1,11 +1,10 @@
-#include "ari_social_sim/world/world_file.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/world_file.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -27,7 +26,8 @@ void expect_rejected(const std::string& text, const std::vector<std::string>& fr
     const std::string message = e.what();
     EXPECT_NE(message.find(path), std::string::npos) << message;
     for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << message;
+      EXPECT_NE(message.find(fragment), std::string::npos)
+          << "'" << fragment << "' not in: " << message;
     }
   }
 }
@@ -35,11 +35,13 @@ void expect_rejected(const std::string& text, const std::vector<std::string>& fr
 constexpr const char* kHeader = "name: test\norigin: [0, 0]\nsize: [5, 5]\nobjects:\n";
 
 TEST(WorldFile, ReadsEveryShapeType) {
-  const std::string path = write_file("good_world.yaml", std::string(kHeader) +
-      "  - {type: wall, from: [0, 0], to: [4, 0], thickness: 0.2}\n"
-      "  - {type: box, id: 7, name: couch, position: [2, 3], orientation: 0.5, size: [2, 0.8]}\n"
-      "  - {type: circle, position: [1, 1], radius: 0.4}\n"
-      "  - {type: polygon, points: [[3, 3], [4, 3], [4, 4]]}\n");
+  const std::string path = write_file(
+      "good_world.yaml", std::string(kHeader) +
+                             "  - {type: wall, from: [0, 0], to: [4, 0], thickness: 0.2}\n"
+                             "  - {type: box, id: 7, name: couch, position: [2, 3], orientation: "
+                             "0.5, size: [2, 0.8]}\n"
+                             "  - {type: circle, position: [1, 1], radius: 0.4}\n"
+                             "  - {type: polygon, points: [[3, 3], [4, 3], [4, 4]]}\n");
   const WorldDescription world = load_world_file(path);
   ASSERT_EQ(world.objects.size(), 4u);
   // Wall from (0,0) to (4,0): centre (2, 0), length 4, thickness 0.2.
@@ -77,15 +79,18 @@ TEST(WorldFile, NegativeSizeNamesFieldAndBound) {
 }
 
 TEST(WorldFile, UnknownFieldIsNotIgnored) {
-  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: 1, colour: red}\n",
-                  {"objects[0]", "unknown field", "colour"});
+  expect_rejected(
+      std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: 1, colour: red}\n",
+      {"objects[0]", "unknown field", "colour"});
 }
 
 TEST(WorldFile, NonConvexPolygonAndDuplicateIdsAreRejected) {
-  expect_rejected(std::string(kHeader) + "  - {type: polygon, points: [[0,0],[2,0],[1,0.5],[2,2],[0,2]]}\n",
-                  {"objects[0].points", "convex"});
-  expect_rejected(std::string(kHeader) + "  - {type: circle, id: 3, position: [1, 1], radius: 1}\n"
-                                         "  - {type: circle, id: 3, position: [3, 3], radius: 1}\n",
+  expect_rejected(
+      std::string(kHeader) + "  - {type: polygon, points: [[0,0],[2,0],[1,0.5],[2,2],[0,2]]}\n",
+      {"objects[0].points", "convex"});
+  expect_rejected(std::string(kHeader) +
+                      "  - {type: circle, id: 3, position: [1, 1], radius: 1}\n"
+                      "  - {type: circle, id: 3, position: [3, 3], radius: 1}\n",
                   {"objects[1].id", "3"});
 }
 

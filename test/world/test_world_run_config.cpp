@@ -1,8 +1,7 @@
-#include "ari_social_sim/world/world_run_config.hpp"
-
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/world_run_config.hpp"
 
 namespace ari_social_sim::world {
 namespace {

@@ -17,7 +17,11 @@ inline double angle_difference(double to_rad, double from_rad) {
   return wrap_angle(to_rad - from_rad);
 }
 
-inline double deg_to_rad(double deg) { return deg * kPi / 180.0; }
-inline double rad_to_deg(double rad) { return rad * 180.0 / kPi; }
+inline double deg_to_rad(double deg) {
+  return deg * kPi / 180.0;
+}
+inline double rad_to_deg(double rad) {
+  return rad * 180.0 / kPi;
+}
 
 }  // namespace ari_social_sim::core

@@ -6,12 +6,12 @@
 // Two strengths of internal check (input from callers is validated with exceptions instead):
 //  - ARI_CHECK: an invariant that must hold in every build; failing it is a bug, so abort loudly.
 //  - ARI_DCHECK: an assumption on a hot path, checked in debug builds only.
-#define ARI_CHECK(condition)                                                                \
-  do {                                                                                      \
-    if (!(condition)) {                                                                     \
+#define ARI_CHECK(condition)                                                                 \
+  do {                                                                                       \
+    if (!(condition)) {                                                                      \
       std::fprintf(stderr, "%s:%d: ARI_CHECK(%s) failed\n", __FILE__, __LINE__, #condition); \
-      std::abort();                                                                         \
-    }                                                                                       \
+      std::abort();                                                                          \
+    }                                                                                        \
   } while (false)
 
 #ifdef NDEBUG

@@ -21,9 +21,15 @@ struct Bounds {
   std::string describe() const;
 };
 
-inline Bounds positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
-inline Bounds non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false}; }
-inline Bounds between(double min, double max) { return {min, max, false}; }
+inline Bounds positive() {
+  return {0.0, std::numeric_limits<double>::infinity(), true};
+}
+inline Bounds non_negative() {
+  return {0.0, std::numeric_limits<double>::infinity(), false};
+}
+inline Bounds between(double min, double max) {
+  return {min, max, false};
+}
 
 /// Strict reader of one YAML mapping from a user's file or the parameter server.
 ///

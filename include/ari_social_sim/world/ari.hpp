@@ -41,7 +41,9 @@ class Ari : public Object {
   Ari(const AriSpec& spec, double map_resolution_m);
 
   const AriSpec& spec() const { return spec_; }
-  Eigen::Vector2d centre() const override { return pose_.transform(spec_.footprint.centre_local()); }
+  Eigen::Vector2d centre() const override {
+    return pose_.transform(spec_.footprint.centre_local());
+  }
 
   DifferentialDrive& drive() { return *drive_; }
   const DifferentialDrive& drive() const { return *drive_; }

@@ -19,10 +19,10 @@ struct GazeTarget {
 struct GazeDirections {
   enum class Distribution { kUniform, kNormal };
   Distribution distribution{Distribution::kUniform};
-  double low_rad{-0.5};   // uniform: lower bound
-  double high_rad{0.5};   // uniform: upper bound
-  double mean_rad{0.0};   // normal: mean
-  double stddev_rad{0.3}; // normal: standard deviation
+  double low_rad{-0.5};    // uniform: lower bound
+  double high_rad{0.5};    // uniform: upper bound
+  double mean_rad{0.0};    // normal: mean
+  double stddev_rad{0.3};  // normal: standard deviation
 };
 
 /// Seed 3.3.2: either targets with probabilities summing to 1, or a distribution of directions.

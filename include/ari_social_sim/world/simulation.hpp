@@ -17,8 +17,8 @@ class b2Shape;
 namespace ari_social_sim::world {
 
 struct SimulationConfig {
-  double step_s{0.05};          // s of sim time per step
-  uint64_t seed{0};             // every random draw of the run derives from it
+  double step_s{0.05};  // s of sim time per step
+  uint64_t seed{0};     // every random draw of the run derives from it
   double map_resolution_m{0.05};
 
   /// Throws core::ConfigError naming the field (step in (0, 1] s, resolution in [0.01, 1] m).

@@ -42,8 +42,8 @@ Vector2 equality_orientation(const Vector2& p, const Positions& social_neighbour
 
 /// Eq. 3.17: f = alpha (1 - s / |o - p|) (o - p), alpha = N_a / (N_s + 1); pulls the agent onto
 /// the o-space circle of radius s around o. Zero at o.
-Vector2 cohesion_force(const Vector2& p, const Vector2& o, double ospace_radius_m,
-                       int group_size, int social_neighbour_count);
+Vector2 cohesion_force(const Vector2& p, const Vector2& o, double ospace_radius_m, int group_size,
+                       int social_neighbour_count);
 
 /// Eq. 3.18: orientation vector sum (p_i - p) over all members of the group.
 Vector2 cohesion_orientation(const Vector2& p, const Positions& members);

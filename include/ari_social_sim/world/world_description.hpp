@@ -17,9 +17,9 @@ struct StaticObject {
   ObjectId id{kNoObject};
   std::string name;
   ShapeType type{ShapeType::kBox};
-  core::Pose2 pose;                   // centre and orientation (boxes, walls, circles)
-  Eigen::Vector2d size{0.0, 0.0};     // m, full length x width (boxes, walls)
-  double radius_m{0.0};               // circles
+  core::Pose2 pose;                     // centre and orientation (boxes, walls, circles)
+  Eigen::Vector2d size{0.0, 0.0};       // m, full length x width (boxes, walls)
+  double radius_m{0.0};                 // circles
   std::vector<Eigen::Vector2d> points;  // convex polygon vertices in the map frame, 3 to 8
 };
 

@@ -57,7 +57,8 @@ class MarkerBuilder {
   void arrow(const std::string& ns, int id, double x, double y, double z, double theta,
              double length, const std_msgs::ColorRGBA& colour) {
     Marker& m = add(ns, id, Marker::ARROW, colour);
-    m.points = {point(x, y, z), point(x + length * std::cos(theta), y + length * std::sin(theta), z)};
+    m.points = {point(x, y, z),
+                point(x + length * std::cos(theta), y + length * std::sin(theta), z)};
     m.scale.x = 0.04;
     m.scale.y = 0.08;
     m.scale.z = 0.1;
