@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "expect_config_error.hpp"
 #include "ari_social_sim/world/scene.hpp"
 
 namespace ari_social_sim::world {
@@ -19,17 +20,8 @@ std::string write_scene(const std::string& body) {
 // Loading and building the scene fails with a message naming the file and every fragment.
 void expect_rejected(const std::string& body, const std::vector<std::string>& fragments) {
   const std::string path = write_scene(body);
-  try {
-    build_simulation(load_scene_file(path), SimulationConfig{});
-    FAIL() << "accepted:\n" << body;
-  } catch (const core::ConfigError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path), std::string::npos) << message;
-    for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos)
-          << "'" << fragment << "' not in: " << message;
-    }
-  }
+  test::expect_config_error(
+      [&] { build_simulation(load_scene_file(path), SimulationConfig{}); }, path, fragments);
 }
 
 TEST(Scene, BuildsHumansGroupsAndAri) {

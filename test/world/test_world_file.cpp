@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "ari_social_sim/core/error.hpp"
+#include "expect_config_error.hpp"
 #include "ari_social_sim/world/world_file.hpp"
 
 namespace ari_social_sim::world {
@@ -19,17 +19,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 // Loading `text` fails with a message naming the file and every fragment.
 void expect_rejected(const std::string& text, const std::vector<std::string>& fragments) {
   const std::string path = write_file("world_under_test.yaml", text);
-  try {
-    load_world_file(path);
-    FAIL() << "accepted:\n" << text;
-  } catch (const core::ConfigError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(path), std::string::npos) << message;
-    for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos)
-          << "'" << fragment << "' not in: " << message;
-    }
-  }
+  test::expect_config_error([&] { load_world_file(path); }, path, fragments);
 }
 
 constexpr const char* kHeader = "name: test\norigin: [0, 0]\nsize: [5, 5]\nobjects:\n";
