@@ -3,8 +3,8 @@
 #include <fstream>
 
 #include "ari_social_sim/core/error.hpp"
-#include "expect_config_error.hpp"
 #include "ari_social_sim/world/scene.hpp"
+#include "expect_config_error.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -20,8 +20,8 @@ std::string write_scene(const std::string& body) {
 // Loading and building the scene fails with a message naming the file and every fragment.
 void expect_rejected(const std::string& body, const std::vector<std::string>& fragments) {
   const std::string path = write_scene(body);
-  test::expect_config_error(
-      [&] { build_simulation(load_scene_file(path), SimulationConfig{}); }, path, fragments);
+  test::expect_config_error([&] { build_simulation(load_scene_file(path), SimulationConfig{}); },
+                            path, fragments);
 }
 
 TEST(Scene, BuildsHumansGroupsAndAri) {

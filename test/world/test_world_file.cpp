@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <fstream>
 
-#include "expect_config_error.hpp"
 #include "ari_social_sim/world/world_file.hpp"
+#include "expect_config_error.hpp"
 
 namespace ari_social_sim::world {
 namespace {
