@@ -4,6 +4,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH=/usr/bin:$PATH
+# catkin snapshots the environment for run_tests at configure time and only puts the devel
+# space's Python folder on PYTHONPATH if it already exists; on a fresh clone it does not yet,
+# and rostest's Python nodes could not import the generated messages.
+mkdir -p _build/devel/lib/python3/dist-packages
 cmake -S . -B _build -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
   -DCMAKE_BUILD_TYPE=Release -Wno-dev > /tmp/ari_social_sim_configure.log 2>&1 \
   || { cat /tmp/ari_social_sim_configure.log; exit 1; }
