@@ -1,0 +1,23 @@
+# physics/ cameras and mapping: headless rendering (EGL + OpenGL, llvmpipe without a GPU), ARI's
+# camera models and rig, and OctoMap mapping from depth images. ROS-free.
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(octomap REQUIRED)
+
+add_library(ari_rendering
+  src/physics/camera_model.cpp
+  src/physics/egl_context.cpp
+  src/physics/render_mesh.cpp
+  src/physics/renderer.cpp
+  src/physics/world_scene.cpp)
+target_include_directories(ari_rendering PUBLIC ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(ari_rendering PUBLIC ari_world ${OpenCV_LIBS} PRIVATE OpenGL::OpenGL OpenGL::EGL)
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_cameras
+    SOURCES
+      test/physics/test_camera_model.cpp
+      test/physics/test_renderer.cpp
+    LIBRARIES ari_rendering)
+  target_compile_definitions(test_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
