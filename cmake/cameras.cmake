@@ -36,3 +36,6 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ari_rendering ari_mapping)
   target_compile_definitions(test_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
+
+add_executable(render_cameras src/tools/render_cameras.cpp)
+target_link_libraries(render_cameras ari_rendering)

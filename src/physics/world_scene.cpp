@@ -97,7 +97,7 @@ std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription&
 }
 
 void append_person(const core::Pose2& body, double face_direction_rad, size_t shirt_index,
-                   const PersonShape& shape, std::vector<RenderPrimitive>& out) {
+                   const PersonFigure& shape, std::vector<RenderPrimitive>& out) {
   const Eigen::Vector3f& shirt = kShirtColours[shirt_index % kShirtColours.size()];
   out.push_back(
       solid(PrimitiveShape::kCylinder, planar(body.position, 0.5 * shape.body_height_m, body.theta),

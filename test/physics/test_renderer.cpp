@@ -91,7 +91,7 @@ TEST(Renderer, PersonAppearsWhereTheProjectionPutsThem) {
   const Eigen::Vector2d position(3.0, 0.6);
   const double facing = std::atan2(-position.y(), -position.x());
   std::vector<RenderPrimitive> people;
-  PersonShape shape;
+  PersonFigure shape;
   append_person(core::Pose2{position, facing}, facing, 0, shape, people);
   renderer.set_dynamic_primitives(people);
 

@@ -12,7 +12,7 @@ namespace ari_social_sim::physics {
 
 /// A person as the cameras see them: a body cylinder (elliptic: deeper than wide, turned with the
 /// body), a head sphere and a face plate with two eyes on the side the head faces.
-struct PersonShape {
+struct PersonFigure {
   double body_width_m{0.42};   // across the shoulders
   double body_depth_m{0.26};   // chest to back
   double body_height_m{1.45};  // floor to the base of the neck
@@ -25,7 +25,7 @@ struct PersonShape {
 struct SceneStyle {
   double wall_height_m{2.5};
   double furniture_height_m{0.75};
-  PersonShape person;
+  PersonFigure person;
 
   /// Reads the optional keys wall_height_m, furniture_height_m, person_height_m (top of the head);
   /// unknown keys and non-positive values throw core::ConfigError naming the field.
@@ -39,7 +39,7 @@ std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription&
 /// Appends one person standing at `body` (map frame) with the head turned to face_direction_rad.
 /// `shirt_index` picks the body colour so that neighbours look different.
 void append_person(const core::Pose2& body, double face_direction_rad, size_t shirt_index,
-                   const PersonShape& shape, std::vector<RenderPrimitive>& out);
+                   const PersonFigure& shape, std::vector<RenderPrimitive>& out);
 
 /// Appends every human of a ground-truth snapshot; the face turns with the gaze direction.
 void append_people(const std::vector<world::HumanSnapshot>& humans, const SceneStyle& style,
