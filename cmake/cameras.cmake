@@ -39,3 +39,10 @@ endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)
 target_link_libraries(render_cameras ari_rendering)
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_cameras
+    SOURCES bench/bench_cameras.cpp
+    LIBRARIES ari_rendering ari_mapping)
+  target_compile_definitions(bench_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
