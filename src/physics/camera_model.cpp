@@ -7,10 +7,15 @@
 namespace ari_social_sim::physics {
 namespace {
 
-CameraInfo info_with_intrinsics(int width, int height, double fx, double fy, double cx, double cy) {
+// An undistorted camera's info: zero distortion coefficients of the named model, R identity and
+// P = [K | 0].
+CameraInfo ideal_info(int width, int height, double fx, double fy, double cx, double cy,
+                      const char* distortion_model, size_t coefficient_count) {
   CameraInfo info;
   info.width = width;
   info.height = height;
+  info.distortion_model = distortion_model;
+  info.D.assign(coefficient_count, 0.0);
   info.K = {fx, 0.0, cx, 0.0, fy, cy, 0.0, 0.0, 1.0};
   info.R = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
   info.P = {fx, 0.0, cx, 0.0, 0.0, fy, cy, 0.0, 0.0, 0.0, 1.0, 0.0};
@@ -94,19 +99,13 @@ std::optional<Eigen::Vector3d> FisheyeModel::unproject(double u, double v) const
 }
 
 CameraInfo camera_info_of(const PinholeModel& model) {
-  CameraInfo info =
-      info_with_intrinsics(model.width, model.height, model.fx, model.fy, model.cx, model.cy);
-  info.distortion_model = "plumb_bob";
-  info.D.assign(5, 0.0);
-  return info;
+  return ideal_info(model.width, model.height, model.fx, model.fy, model.cx, model.cy, "plumb_bob",
+                    5);
 }
 
 CameraInfo camera_info_of(const FisheyeModel& model) {
-  CameraInfo info =
-      info_with_intrinsics(model.width, model.height, model.f, model.f, model.cx, model.cy);
-  info.distortion_model = "equidistant";
-  info.D.assign(4, 0.0);
-  return info;
+  return ideal_info(model.width, model.height, model.f, model.f, model.cx, model.cy, "equidistant",
+                    4);
 }
 
 }  // namespace ari_social_sim::physics

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <opencv2/core/mat.hpp>
 
 #include "ari_social_sim/physics/render_primitive.hpp"
 
@@ -30,6 +31,22 @@ inline RenderPrimitive box(const Eigen::Vector3d& centre, const Eigen::Vector3d&
   primitive.size = size;
   primitive.colour = colour;
   return primitive;
+}
+
+/// Mean pixel (u, v) of the RGB pixels that pass `selected`, and how many there were.
+template <class Predicate>
+std::pair<Eigen::Vector2d, int> centroid_of(const cv::Mat& rgb, Predicate selected) {
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  int count = 0;
+  for (int v = 0; v < rgb.rows; ++v) {
+    for (int u = 0; u < rgb.cols; ++u) {
+      if (selected(rgb.at<cv::Vec3b>(v, u))) {
+        sum += Eigen::Vector2d(u, v);
+        ++count;
+      }
+    }
+  }
+  return {count > 0 ? Eigen::Vector2d(sum / count) : sum, count};
 }
 
 }  // namespace ari_social_sim::physics::test

@@ -4,6 +4,7 @@
 
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/world/world_file.hpp"
+#include "render_test_scenes.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -93,31 +94,22 @@ TEST(CameraRig, PersonInFrontOfAriAppearsWhereCameraInfoProjectsThem) {
 
   // Skin (head and face plate) by its hue: green and blue at fixed fractions of red, which no
   // wall, floor, furniture or shirt colour has.
-  double sum_u = 0.0, sum_v = 0.0;
-  int count = 0;
-  for (int v = 0; v < frame.colour.rows; ++v) {
-    for (int u = 0; u < frame.colour.cols; ++u) {
-      const cv::Vec3b rgb = frame.colour.at<cv::Vec3b>(v, u);
-      const double g = rgb[1] / std::max(1.0, double(rgb[0]));
-      const double b = rgb[2] / std::max(1.0, double(rgb[0]));
-      if (rgb[0] > 60 && g > 0.76 && g < 0.9 && b > 0.58 && b < 0.76) {
-        sum_u += u;
-        sum_v += v;
-        ++count;
-      }
-    }
-  }
+  const auto [centroid, count] = test::centroid_of(frame.colour, [](const cv::Vec3b& rgb) {
+    const double g = rgb[1] / std::max(1.0, double(rgb[0]));
+    const double b = rgb[2] / std::max(1.0, double(rgb[0]));
+    return rgb[0] > 60 && g > 0.76 && g < 0.9 && b > 0.58 && b < 0.76;
+  });
   const CameraInfo& info = rig.info(kHead);
   const Eigen::Vector3d head_optical =
       X_world_optical.inverse() *
       Eigen::Vector3d(position.x(), position.y(), style.person.head_centre_height_m);
   const double u = info.K[0] * head_optical.x() / head_optical.z() + info.K[2];
   const double v = info.K[4] * head_optical.y() / head_optical.z() + info.K[5];
-  std::printf("head at (%.2f, %.2f) px, projected (%.2f, %.2f) px, %d skin pixels\n", sum_u / count,
-              sum_v / count, u, v, count);
+  std::printf("head at (%.2f, %.2f) px, projected (%.2f, %.2f) px, %d skin pixels\n", centroid.x(),
+              centroid.y(), u, v, count);
   ASSERT_GT(count, 3000);  // a 0.22 m head at 2.5 m: about 47 px across
-  EXPECT_NEAR(sum_u / count, u, 3.0);
-  EXPECT_NEAR(sum_v / count, v, 3.0);
+  EXPECT_NEAR(centroid.x(), u, 3.0);
+  EXPECT_NEAR(centroid.y(), v, 3.0);
 }
 
 TEST(CameraRig, FramesAreDueAtEachCamerasRate) {

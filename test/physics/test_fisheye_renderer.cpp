@@ -53,22 +53,12 @@ TEST(FisheyeRenderer, KnownDirectionsLandWhereTheModelProjectsThem) {
 
     cv::Mat image;
     fisheye.render(renderer, X_world_optical, image);
-    double sum_u = 0.0, sum_v = 0.0;
-    int count = 0;
-    for (int v = 0; v < image.rows; ++v) {
-      for (int u = 0; u < image.cols; ++u) {
-        const cv::Vec3b rgb = image.at<cv::Vec3b>(v, u);
-        if (rgb[0] > 100 && rgb[1] < 60 && rgb[2] < 60) {
-          sum_u += u;
-          sum_v += v;
-          ++count;
-        }
-      }
-    }
+    const auto [centroid, count] = test::centroid_of(
+        image, [](const cv::Vec3b& rgb) { return rgb[0] > 100 && rgb[1] < 60 && rgb[2] < 60; });
     const Eigen::Vector2d expected = *model.project(ray_optical);
     ASSERT_GT(count, 20) << "ball at azimuth " << d.azimuth_deg << ", theta " << d.theta_deg;
-    EXPECT_NEAR(sum_u / count, expected.x(), 3.0) << "theta " << d.theta_deg;
-    EXPECT_NEAR(sum_v / count, expected.y(), 3.0) << "theta " << d.theta_deg;
+    EXPECT_NEAR(centroid.x(), expected.x(), 3.0) << "theta " << d.theta_deg;
+    EXPECT_NEAR(centroid.y(), expected.y(), 3.0) << "theta " << d.theta_deg;
     // Outside the lens circle the image is black.
     EXPECT_EQ(image.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 0));
   }

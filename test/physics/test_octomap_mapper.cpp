@@ -19,18 +19,26 @@ int8_t cell_at(const world::OccupancyGrid& grid, double x, double y) {
   return grid.at(cx, cy);
 }
 
+// A mapper that has seen one depth image reading `depth_m` on every pixel, taken by a level camera
+// 1 m up facing +x.
+OctomapMapper mapper_after_uniform_depth(const PinholeModel& model, float depth_m,
+                                         const MappingConfig& config) {
+  const cv::Mat depth(model.height, model.width, CV_32FC1, cv::Scalar(depth_m));
+  OctomapMapper mapper(config);
+  mapper.insert_depth(depth, model, test::level_camera_facing_x({0.0, 0.0, 1.0}));
+  return mapper;
+}
+
 // A synthetic depth image of a wall 2 m ahead: free space up to it, occupied at it, unknown
 // behind it.
 TEST(OctomapMapper, WallAheadIsOccupiedWithFreeSpaceBeforeIt) {
-  const PinholeModel model = PinholeModel::from_horizontal_fov(160, 120, 1.0);
-  const cv::Mat depth(120, 160, CV_32FC1, cv::Scalar(2.0f));
   // Every pixel: at 2 m the pixels are 2 / 146.4 = 0.014 m apart, so every cell gets rays (a
   // stride of 4 would leave 0.055 m gaps, wider than a cell).
   MappingConfig config;
   config.pixel_stride = 1;
-  OctomapMapper mapper(config);
-  // A level camera 1 m up facing +x: the wall plane is x = 2.0 (inside voxel [2.0, 2.05)).
-  mapper.insert_depth(depth, model, test::level_camera_facing_x({0.0, 0.0, 1.0}));
+  // The wall plane is x = 2.0 (inside voxel [2.0, 2.05)).
+  const OctomapMapper mapper =
+      mapper_after_uniform_depth(PinholeModel::from_horizontal_fov(160, 120, 1.0), 2.0f, config);
   const world::OccupancyGrid grid = mapper.project_to_grid({-1.0, -2.0}, 80, 80);
   EXPECT_EQ(cell_at(grid, 2.02, 0.0), world::OccupancyGrid::kOccupied);
   EXPECT_EQ(cell_at(grid, 1.0, 0.0), world::OccupancyGrid::kFree);
@@ -49,12 +57,10 @@ TEST(OctomapMapper, WallAheadIsOccupiedWithFreeSpaceBeforeIt) {
 }
 
 TEST(OctomapMapper, RangesBeyondMaxRangeClearWithoutMarking) {
-  const PinholeModel model = PinholeModel::from_horizontal_fov(80, 60, 0.5);
-  const cv::Mat depth(60, 80, CV_32FC1, cv::Scalar(9.0f));
   MappingConfig config;
   config.max_range_m = 4.0;
-  OctomapMapper mapper(config);
-  mapper.insert_depth(depth, model, test::level_camera_facing_x({0.0, 0.0, 1.0}));
+  const OctomapMapper mapper =
+      mapper_after_uniform_depth(PinholeModel::from_horizontal_fov(80, 60, 0.5), 9.0f, config);
   EXPECT_TRUE(mapper.occupied_voxels().empty());
   const world::OccupancyGrid grid = mapper.project_to_grid({-1.0, -2.0}, 200, 80);
   EXPECT_EQ(cell_at(grid, 3.5, 0.0), world::OccupancyGrid::kFree);
@@ -62,10 +68,8 @@ TEST(OctomapMapper, RangesBeyondMaxRangeClearWithoutMarking) {
 }
 
 TEST(OctomapMapper, SavesAReadableBinaryOctomap) {
-  const PinholeModel model = PinholeModel::from_horizontal_fov(160, 120, 1.0);
-  const cv::Mat depth(120, 160, CV_32FC1, cv::Scalar(2.0f));
-  OctomapMapper mapper(MappingConfig{});
-  mapper.insert_depth(depth, model, test::level_camera_facing_x({0.0, 0.0, 1.0}));
+  OctomapMapper mapper =
+      mapper_after_uniform_depth(PinholeModel::from_horizontal_fov(160, 120, 1.0), 2.0f, {});
   const std::string path = ::testing::TempDir() + "/test_map.bt";
   mapper.save_binary(path);
   octomap::OcTree loaded(0.1);

@@ -100,23 +100,13 @@ TEST(Renderer, PersonAppearsWhereTheProjectionPutsThem) {
   renderer.render(model, X_world_optical, ViewOptions{}, image);
   // Skin pixels (head and face plate; the eyes are dark) are the only ones redder than blue: the
   // background is blue-grey and the shirt blue.
-  double sum_u = 0.0, sum_v = 0.0;
-  int count = 0;
-  for (int v = 0; v < image.colour.rows; ++v) {
-    for (int u = 0; u < image.colour.cols; ++u) {
-      const cv::Vec3b rgb = image.colour.at<cv::Vec3b>(v, u);
-      if (rgb[0] > rgb[2] + 20) {
-        sum_u += u;
-        sum_v += v;
-        ++count;
-      }
-    }
-  }
+  const auto [centroid, count] =
+      test::centroid_of(image.colour, [](const cv::Vec3b& rgb) { return rgb[0] > rgb[2] + 20; });
   ASSERT_GT(count, 1000);
   const Eigen::Vector3d head_world(position.x(), position.y(), shape.head_centre_height_m);
   const Eigen::Vector2d expected = *model.project(X_world_optical.inverse() * head_world);
-  EXPECT_NEAR(sum_u / count, expected.x(), 3.0);
-  EXPECT_NEAR(sum_v / count, expected.y(), 3.0);
+  EXPECT_NEAR(centroid.x(), expected.x(), 3.0);
+  EXPECT_NEAR(centroid.y(), expected.y(), 3.0);
 }
 
 }  // namespace
