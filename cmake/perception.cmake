@@ -19,8 +19,10 @@ add_library(ari_perception
   src/perception/image_regions.cpp
   src/perception/perception_config.cpp
   src/perception/perception_pipeline.cpp
+  src/perception/perception_run_config.cpp
   src/perception/person_registry.cpp
   src/perception/pose_noise.cpp
+  src/perception/sound_map.cpp
   src/perception/speech_listener.cpp
   src/perception/track_ids.cpp
   src/perception/transient_ids.cpp
@@ -33,6 +35,16 @@ target_link_libraries(ari_perception PUBLIC ari_core ari_world)
 add_executable(detect_groups src/tools/detect_groups.cpp)
 target_link_libraries(detect_groups ari_perception)
 install(TARGETS detect_groups RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# hri_perception_node: thin ROS adapter over the perception core (ROS4HRI topics, tf, markers).
+add_library(ari_perception_conversions
+  src/nodes/conversions/hri_messages.cpp
+  src/nodes/conversions/perception_markers.cpp)
+target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
+
+add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
+target_link_libraries(hri_perception_node ari_perception_conversions)
+install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
   # The development sets live in shared/ beside the repository (specs/algorithms.md 1.7).
@@ -67,6 +79,9 @@ if(CATKIN_ENABLE_TESTING)
     ARI_FFORMATION_DIR="${ari_fformation_dir}"
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
+  add_rostest(test/integration/hri_wire.test DEPENDENCIES world_node hri_perception_node)
+  add_rostest(test/integration/hri_perception.test DEPENDENCIES world_node hri_perception_node)
+
   ari_add_gtest(test_detect_groups SOURCES test/tools/test_detect_groups.cpp)
   target_compile_definitions(test_detect_groups PRIVATE
     ARI_FFORMATION_DIR="${ari_fformation_dir}"
@@ -78,4 +93,6 @@ if(benchmark_FOUND)
   ari_add_benchmark(bench_perception
     SOURCES bench/bench_perception.cpp
     LIBRARIES ari_perception)
+  # The scenes are the perception tests' own (test/perception/perception_scenes.hpp).
+  target_include_directories(bench_perception PRIVATE ${PROJECT_SOURCE_DIR}/test/perception)
 endif()

@@ -23,7 +23,7 @@ PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
       faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),
       speech_(config_, ids_, core::Rng::for_stream(config.seed, kSpeechStream)),
       persons_(config_.persons, config_.engagement),
-      groups_(config_.groups.gcff) {}
+      groups_(config_.groups) {}
 
 void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
   sight_map_ = std::move(grid);

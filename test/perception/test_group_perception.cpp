@@ -16,7 +16,7 @@ PerceivedBody facing(world::ObjectId human, double x, double y, double cx, doubl
 }
 
 TEST(GroupPerception, GroupsOfPersonsWithStableIds) {
-  GroupPerception groups(GcffParams{0.6, 0.8});
+  GroupPerception groups(GroupConfig{});
   // Three around (2, 2) at 0.7 m, two face to face around (6, 0), one alone looking away.
   std::vector<PerceivedBody> bodies = {
       facing(10, 2.7, 2.0, 2.0, 2.0),  facing(11, 1.65, 2.6, 2.0, 2.0),

@@ -271,11 +271,15 @@ struct EngagementConfig {
 /// GCFF on the perceived bodies (metres).
 struct GroupConfig {
   GcffParams gcff{0.6, 0.8};
+  /// A group not seen is remembered this many frames, so that one whose members were missed
+  /// for a moment keeps its id (GroupTracker).
+  int id_memory_frames{30};
 
   template <class V>
   void visit(V& v) {
     v.field("stride", gcff.stride, core::positive());
     v.field("mdl", gcff.mdl, core::positive());
+    v.field("id_memory_frames", id_memory_frames, core::between(0.0, 10000.0));
   }
 };
 
