@@ -68,8 +68,10 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_image_regions.cpp
       test/perception/test_perception_config.cpp
       test/perception/test_perception_pipeline.cpp
+      test/perception/test_perception_run_config.cpp
       test/perception/test_person_registry.cpp
       test/perception/test_pose_noise.cpp
+      test/perception/test_sound_map.cpp
       test/perception/test_speech_listener.cpp
       test/perception/test_track_ids.cpp
       test/perception/test_transient_ids.cpp

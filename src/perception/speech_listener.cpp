@@ -107,7 +107,8 @@ void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSenso
     voice.active = true;
     voice.last_active_s = now;
     if (utterance.transcript.size() != before) {
-      voice.results.push_back({join_words(utterance.transcript), "", confidence});
+      voice.transcript = join_words(utterance.transcript);
+      voice.results.push_back({voice.transcript, "", confidence});
     }
   }
 
@@ -127,6 +128,7 @@ void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSenso
       perceived.position = humans[found->second].pose.position;
       perceived.is_speaking = voice.active;
       perceived.speech = std::move(voice.results);
+      perceived.transcript = voice.transcript;
       voices.push_back(std::move(perceived));
     }
     ++it;

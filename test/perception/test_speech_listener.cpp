@@ -64,6 +64,7 @@ TEST_F(SpeechListenerTest, AnUtteranceInRangeArrivesWordByWordThenFinal) {
   EXPECT_EQ(voices[0].speech[0].final_text, kContent);
   EXPECT_TRUE(voices[0].speech[0].incremental.empty());
   EXPECT_DOUBLE_EQ(voices[0].speech[0].confidence, 1.0);
+  EXPECT_EQ(voices[0].transcript, kContent);
   EXPECT_EQ(incrementals, (std::vector<std::string>{"where", "where is", "where is the",
                                                     "where is the radiology", kContent}));
   // The voice stays tracked for voice_timeout (2 s) after its last word, then goes.

@@ -86,7 +86,9 @@ struct PerceivedVoice {
   std::string person_id;
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};  ///< Sound source.
   bool is_speaking{false};
-  std::vector<SpeechResult> speech;  ///< In order; often empty.
+  std::vector<SpeechResult> speech;  ///< This frame's results, in order; often empty.
+  /// The transcript of the utterance going on, or of the last one after it ended.
+  std::string transcript;
 };
 
 /// A permanent person as the person manager reports it: tracked while a face, body or voice of

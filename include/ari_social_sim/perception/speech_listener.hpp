@@ -52,6 +52,7 @@ class SpeechListener {
     double last_active_s{0.0};
     bool active{false};  ///< An utterance attributed to it goes on.
     std::vector<SpeechResult> results;
+    std::string transcript;
   };
 
   VoiceTrack& voice_of(world::ObjectId human);

@@ -52,7 +52,8 @@ visualization_msgs::MarkerArray perception_markers(const perception::PerceptionF
   }
 
   const std_msgs::ColorRGBA body = rgba(0.2f, 0.45f, 1.0f, 0.8f);
-  const std_msgs::ColorRGBA label = rgba(0.75f, 0.9f, 1.0f);
+  // Labels dark enough to read on the light floor of /map.
+  const std_msgs::ColorRGBA label = rgba(0.0f, 0.1f, 0.5f);
   int id = 0;
   for (const perception::PerceivedBody& perceived : frame.bodies) {
     const double x = perceived.X_map_body.position.x(), y = perceived.X_map_body.position.y();
@@ -63,7 +64,7 @@ visualization_msgs::MarkerArray perception_markers(const perception::PerceptionF
     b.arrow("perception/bodies/heading", id, x, y, 1.05, perceived.X_map_body.theta, 0.5,
             rgba(0.05f, 0.15f, 0.6f));
     b.text("perception/bodies/label", id, x, y, 1.95,
-           "body " + perceived.body_id + " / " + perceived.person_id, 0.15, label);
+           perceived.body_id + " / " + perceived.person_id, 0.2, label);
     ++id;
   }
   id = 0;
@@ -78,19 +79,18 @@ visualization_msgs::MarkerArray perception_markers(const perception::PerceptionF
     std::snprintf(text, sizeof text, "face %s: %.0f y, %s, %s%s", face.face_id.c_str(),
                   face.age_years, gender_text(face.gender),
                   perception::expression_of(face.emotion).name, face.mask ? ", mask" : "");
-    b.text("perception/faces/label", id, x, y, 2.15, text, 0.15, rgba(1.0f, 0.9f, 0.5f));
+    b.text("perception/faces/label", id, x, y, 2.2, text, 0.2, rgba(0.6f, 0.25f, 0.0f));
     ++id;
   }
   id = 0;
   for (const perception::PerceivedVoice& voice : frame.voices) {
-    if (voice.speech.empty()) {
+    if (voice.transcript.empty()) {
       continue;
     }
-    const perception::SpeechResult& latest = voice.speech.back();
     const std::string words =
-        latest.final_text.empty() ? latest.incremental + " ..." : "\"" + latest.final_text + "\"";
-    b.text("perception/speech", id++, voice.position.x(), voice.position.y(), 2.4,
-           "voice " + voice.voice_id + ": " + words, 0.16, rgba(0.6f, 1.0f, 0.6f));
+        voice.is_speaking ? voice.transcript + " ..." : "\"" + voice.transcript + "\"";
+    b.text("perception/speech", id++, voice.position.x(), voice.position.y(), 2.5,
+           "voice " + voice.voice_id + ": " + words, 0.2, rgba(0.0f, 0.4f, 0.0f));
   }
   id = 0;
   for (const perception::PersonReport& person : frame.persons) {
@@ -113,7 +113,7 @@ visualization_msgs::MarkerArray perception_markers(const perception::PerceptionF
     b.circle("perception/groups", id, group.centre.x(), group.centre.y(), 0.05, 0.35, 0.05,
              rgba(0.3f, 1.0f, 1.0f));
     b.text("perception/groups/label", id, group.centre.x(), group.centre.y(), 0.4,
-           "group " + group.group_id, 0.17, rgba(0.3f, 1.0f, 1.0f));
+           "group " + group.group_id, 0.22, rgba(0.0f, 0.4f, 0.45f));
     ++id;
   }
   return array;
