@@ -8,8 +8,6 @@ world_node playing test/integration/perception_scene.yaml (everyone standing sti
   - an utterance in range arrives word by word, then final; one through a wall does not arrive.
 Also the contract around them: person ids human<N>, latched attributes, candidate matches, gaze,
 tf frames body_<id> / face_<id> / gaze_<id> / person_<id>."""
-import math
-import threading
 import time
 import unittest
 
@@ -21,38 +19,9 @@ from std_msgs.msg import Bool, String
 from ari_social_sim.msg import (Expression, Gaze, IdsList, IdsMatch, LiveSpeech,
                                 SoftBiometrics, WorldState)
 from ari_social_sim.srv import Say
+from topic_collector import Collector
 
 BEHIND_WALL, BEHIND_ARI, FACING_AWAY, FACING_ARI, SPEAKER = 10, 11, 12, 13, 14
-
-
-class Collector:
-    """Every message of a topic, with a lock."""
-
-    def __init__(self, topic, msg_type, queue_size=100):
-        self.messages = []
-        self._lock = threading.Lock()
-        rospy.Subscriber(topic, msg_type, self._on_msg, queue_size=queue_size)
-
-    def _on_msg(self, msg):
-        with self._lock:
-            self.messages.append(msg)
-
-    def all(self):
-        with self._lock:
-            return list(self.messages)
-
-    def last(self):
-        with self._lock:
-            return self.messages[-1] if self.messages else None
-
-    def wait(self, predicate, timeout=30.0, what="a message"):
-        limit = time.monotonic() + timeout
-        while time.monotonic() < limit:
-            for msg in reversed(self.all()):
-                if predicate(msg):
-                    return msg
-            time.sleep(0.05)
-        raise AssertionError("timed out waiting for " + what)
 
 
 def person(human_id):

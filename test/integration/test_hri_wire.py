@@ -5,16 +5,16 @@ the upstream type hri_msgs/IdsList with its upstream MD5 (specs/ros4hri.md 2), r
 subscriber declaring another MD5 must receive nothing (the negative control; in its own process,
 since rospy shares one connection among a node's subscribers to a topic)."""
 import struct
-import threading
+import sys
 import time
 import unittest
-
-import sys
 
 import genpy
 import rospy
 import rostest
 from std_msgs.msg import Header
+
+from topic_collector import Collector
 
 UPSTREAM_IDS_LIST_MD5 = "84a63f55b5676f78b625e8a8bb809fe5"
 UPSTREAM_IDS_LIST_TEXT = """std_msgs/Header header
@@ -71,32 +71,17 @@ class WrongMd5IdsList(UpstreamIdsList):
     _md5sum = "0123456789abcdef0123456789abcdef"
 
 
-class Received:
-    def __init__(self, topic, msg_type):
-        self.messages = []
-        self._lock = threading.Lock()
-        self.subscriber = rospy.Subscriber(topic, msg_type, self._on_msg, queue_size=50)
-
-    def _on_msg(self, msg):
-        with self._lock:
-            self.messages.append(msg)
-
-    def snapshot(self):
-        with self._lock:
-            return list(self.messages)
-
-
 class UpstreamSubscriber(unittest.TestCase):
     def test_upstream_md5_subscriber_receives_tracked_bodies(self):
         rospy.init_node("hri_wire_test")
-        upstream = Received("/humans/bodies/tracked", UpstreamIdsList)
+        upstream = Collector("/humans/bodies/tracked", UpstreamIdsList)
         deadline = time.monotonic() + 60.0
         while time.monotonic() < deadline:
-            messages = upstream.snapshot()
+            messages = upstream.all()
             if len(messages) >= 20 and any(m.ids for m in messages):
                 break
             time.sleep(0.1)
-        messages = upstream.snapshot()
+        messages = upstream.all()
         self.assertGreaterEqual(len(messages), 20, "too few /humans/bodies/tracked messages")
         with_ids = [m for m in messages if m.ids]
         self.assertTrue(with_ids, "no body ever tracked in the default scene")
@@ -115,7 +100,7 @@ class UpstreamSubscriber(unittest.TestCase):
 class WrongMd5Subscriber(unittest.TestCase):
     def test_wrong_md5_subscriber_is_refused(self):
         rospy.init_node("hri_wire_wrong_md5_test")
-        wrong = Received("/humans/bodies/tracked", WrongMd5IdsList)
+        wrong = Collector("/humans/bodies/tracked", WrongMd5IdsList)
         deadline = time.monotonic() + 30.0
         while time.monotonic() < deadline:
             if "/humans/bodies/tracked" in dict(rospy.get_published_topics()):
@@ -123,7 +108,7 @@ class WrongMd5Subscriber(unittest.TestCase):
             time.sleep(0.1)
         self.assertIn("/humans/bodies/tracked", dict(rospy.get_published_topics()))
         time.sleep(10.0)  # hri_perception_node publishes 20 lists a second meanwhile
-        self.assertEqual(wrong.snapshot(), [])
+        self.assertEqual(wrong.all(), [])
 
 
 if __name__ == "__main__":

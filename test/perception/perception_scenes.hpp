@@ -9,7 +9,10 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/perception/ari_sensors.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
+#include "ari_social_sim/perception/transient_ids.hpp"
+#include "ari_social_sim/perception/visibility.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/world_description.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
@@ -88,6 +91,33 @@ inline PerceptionConfig config_without_errors(unsigned seed = 1) {
   config.seed = seed;
   return config.without_errors();
 }
+
+/// A tracker (BodyTracker, FaceTracker) run on one snapshot at a time, with its own ids.
+template <class Tracker, class Observation>
+class TrackerHarness {
+ public:
+  explicit TrackerHarness(const PerceptionConfig& config)
+      : config_(config), ids_(core::Rng(1)), tracker_(config_, ids_, core::Rng(2)) {}
+
+  /// This snapshot's observations, 0.05 s after the previous one; `grid` blocks sight.
+  std::vector<Observation> perceive(const world::WorldSnapshot& snapshot,
+                                    const world::OccupancyGrid* grid = nullptr) {
+    people_.clear();
+    for (const world::HumanSnapshot& human : snapshot.humans) {
+      people_.push_back(human.pose.position);
+    }
+    std::vector<Observation> observations;
+    tracker_.update(snapshot, AriSensors::of(*snapshot.ari, config_),
+                    {grid, 50, &people_, config_.occlusion.person_radius_m}, 0.05, observations);
+    return observations;
+  }
+
+ private:
+  PerceptionConfig config_;
+  TransientIds ids_;
+  Tracker tracker_;
+  std::vector<Eigen::Vector2d> people_;
+};
 
 /// A crowd of `count` humans in front of ARI (origin, facing +x): circles of 1-4 people 0.6-0.9
 /// m around centres spread over x 1..9 m, y -4..4 m, each facing their circle's centre and

@@ -11,30 +11,17 @@ namespace {
 using test::human_at;
 using test::snapshot_with_ari;
 
-// A body tracker over one snapshot at a time, with an optional static map.
 class BodyTrackerTest : public ::testing::Test {
  protected:
   void make(const PerceptionConfig& config) {
-    config_ = config;
-    ids_ = std::make_unique<TransientIds>(core::Rng(1));
-    tracker_ = std::make_unique<BodyTracker>(config_, *ids_, core::Rng(2));
+    harness_ = std::make_unique<test::TrackerHarness<BodyTracker, PerceivedBody>>(config);
   }
   std::vector<PerceivedBody> perceive(const world::WorldSnapshot& snapshot,
                                       const world::OccupancyGrid* grid = nullptr) {
-    people_.clear();
-    for (const world::HumanSnapshot& human : snapshot.humans) {
-      people_.push_back(human.pose.position);
-    }
-    std::vector<PerceivedBody> bodies;
-    tracker_->update(snapshot, AriSensors::of(*snapshot.ari, config_), {grid, 50, &people_, 0.2},
-                     0.05, bodies);
-    return bodies;
+    return harness_->perceive(snapshot, grid);
   }
 
-  PerceptionConfig config_;
-  std::unique_ptr<TransientIds> ids_;
-  std::unique_ptr<BodyTracker> tracker_;
-  std::vector<Eigen::Vector2d> people_;
+  std::unique_ptr<test::TrackerHarness<BodyTracker, PerceivedBody>> harness_;
 };
 
 TEST_F(BodyTrackerTest, WithoutErrorsBodiesAreTheGroundTruth) {

@@ -18,25 +18,14 @@ using test::snapshot_with_ari;
 class FaceTrackerTest : public ::testing::Test {
  protected:
   void make(const PerceptionConfig& config) {
-    config_ = config;
-    ids_ = std::make_unique<TransientIds>(core::Rng(1));
-    tracker_ = std::make_unique<FaceTracker>(config_, *ids_, core::Rng(3));
+    harness_ = std::make_unique<test::TrackerHarness<FaceTracker, PerceivedFace>>(config);
   }
-  std::vector<PerceivedFace> perceive(const world::WorldSnapshot& snapshot) {
-    people_.clear();
-    for (const world::HumanSnapshot& human : snapshot.humans) {
-      people_.push_back(human.pose.position);
-    }
-    std::vector<PerceivedFace> faces;
-    tracker_->update(snapshot, AriSensors::of(*snapshot.ari, config_), {nullptr, 50, &people_, 0.2},
-                     0.05, faces);
-    return faces;
+  std::vector<PerceivedFace> perceive(const world::WorldSnapshot& snapshot,
+                                      const world::OccupancyGrid* grid = nullptr) {
+    return harness_->perceive(snapshot, grid);
   }
 
-  PerceptionConfig config_;
-  std::unique_ptr<TransientIds> ids_;
-  std::unique_ptr<FaceTracker> tracker_;
-  std::vector<Eigen::Vector2d> people_;
+  std::unique_ptr<test::TrackerHarness<FaceTracker, PerceivedFace>> harness_;
 };
 
 TEST_F(FaceTrackerTest, AFaceTurnedToARIReportsTheTruth) {

@@ -1,25 +1,17 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
-
+#include "../world/expect_config_error.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
 
-// Expects `body` to throw core::ConfigError whose message holds every fragment.
+// Expects `body` to throw core::ConfigError naming p.yaml and every fragment.
 template <class F>
-void expect_config_error(F body, const std::vector<std::string>& fragments) {
-  try {
-    body();
-    FAIL() << "no ConfigError thrown";
-  } catch (const core::ConfigError& e) {
-    for (const std::string& fragment : fragments) {
-      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos)
-          << "'" << fragment << "' missing from: " << e.what();
-    }
-  }
+void expect_config_error(F body, const std::vector<std::string>& fragments,
+                         const std::string& source = "p.yaml") {
+  world::test::expect_config_error(body, source, fragments);
 }
 
 PerceptionConfig parse(const std::string& text) {
@@ -137,7 +129,7 @@ TEST(PerceptionConfig, WithoutErrorsZeroesEveryErrorModelOnly) {
 
 TEST(PerceptionConfig, MissingFileIsNamed) {
   expect_config_error([] { PerceptionConfig::load_file("/nonexistent/perception.yaml"); },
-                      {"/nonexistent/perception.yaml", "cannot open"});
+                      {"cannot open"}, "/nonexistent/perception.yaml");
 }
 
 }  // namespace

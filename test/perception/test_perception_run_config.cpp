@@ -22,9 +22,9 @@ TEST(PerceptionRunConfig, NoParametersGiveTheDefaults) {
 }
 
 TEST(PerceptionRunConfig, ReadsEveryParameter) {
-  const PerceptionRunConfig config =
-      parse("{config: a.yaml, seed: 4, errors_enabled: false, world: w.yaml, max_rate: 15, "
-            "id_linger: 0.5, marker_rate: 5}");
+  const PerceptionRunConfig config = parse(
+      "{config: a.yaml, seed: 4, errors_enabled: false, world: w.yaml, max_rate: 15, "
+      "id_linger: 0.5, marker_rate: 5}");
   EXPECT_EQ(config.config, "a.yaml");
   EXPECT_EQ(config.seed, 4);
   EXPECT_EQ(config.errors_enabled, std::optional<bool>(false));
