@@ -8,7 +8,7 @@ namespace {
 
 TEST(Pose2, RelativeToIsTheInverseOfTransform) {
   const Pose2 frame{{2.0, 1.0}, kPi / 2};  // at (2, 1), facing +y
-  const Pose2 pose{{2.0, 3.0}, kPi};        // 2 m ahead of it, facing -x (its left)
+  const Pose2 pose{{2.0, 3.0}, kPi};       // 2 m ahead of it, facing -x (its left)
   const Pose2 local = pose.relative_to(frame);
   EXPECT_NEAR(local.position.x(), 2.0, 1e-12);
   EXPECT_NEAR(local.position.y(), 0.0, 1e-12);
