@@ -1,0 +1,43 @@
+# physics/: ARI on Bullet (URDF -> btMultiBody, joint trajectory controllers, diff drive, IMU),
+# ari_physics_node, tests and benchmark. Bullet is Debian's double-precision build.
+find_package(urdfdom REQUIRED)
+set(ari_bullet_libraries BulletDynamics-float64 BulletCollision-float64 LinearMath-float64)
+
+add_library(ari_physics
+  src/physics/ari_controllers.cpp
+  src/physics/ari_physics.cpp
+  src/physics/diff_drive_controller.cpp
+  src/physics/imu_model.cpp
+  src/physics/joint_trajectory.cpp
+  src/physics/multibody_layout.cpp
+  src/physics/person_shape.cpp
+  src/physics/physics_config.cpp
+  src/physics/physics_run_config.cpp
+  src/physics/point_head.cpp
+  src/physics/robot_model.cpp
+  src/physics/static_scene.cpp
+  src/physics/trajectory_controller.cpp
+  src/physics/wheel_odometry.cpp)
+target_include_directories(ari_physics PUBLIC include)
+target_include_directories(ari_physics SYSTEM PRIVATE /usr/include/bullet ${urdfdom_INCLUDE_DIRS})
+target_compile_definitions(ari_physics PUBLIC BT_USE_DOUBLE_PRECISION)
+target_link_libraries(ari_physics PUBLIC ari_world ${urdfdom_LIBRARIES} ${ari_bullet_libraries})
+
+set(ari_urdf "${PROJECT_SOURCE_DIR}/urdf/ari.urdf")
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_physics
+    SOURCES
+      test/physics/test_robot_model.cpp
+      test/physics/test_multibody_layout.cpp
+      test/physics/test_ari_physics.cpp
+    LIBRARIES ari_physics)
+  target_compile_definitions(test_physics PRIVATE ARI_URDF="${ari_urdf}"
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_physics SOURCES bench/bench_physics.cpp LIBRARIES ari_physics)
+  target_compile_definitions(bench_physics PRIVATE ARI_URDF="${ari_urdf}"
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
