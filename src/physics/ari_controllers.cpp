@@ -28,4 +28,15 @@ std::vector<PassiveJoint> ari_passive_joints() {
   return joints;
 }
 
+std::vector<std::string> ari_kinematic_joints() {
+  std::vector<std::string> joints;
+  for (const std::string side : {"left", "right"}) {
+    joints.push_back("hand_" + side + "_fingers_joint");
+    joints.push_back("hand_" + side + "_virtual_1_joint");
+    joints.push_back("hand_" + side + "_virtual_2_joint");
+    joints.push_back("caster_" + side + "_joint");
+  }
+  return joints;
+}
+
 }  // namespace ari_social_sim::physics

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <unordered_map>
 
 #include "ari_social_sim/core/check.hpp"
@@ -101,7 +102,9 @@ struct AriPhysics::Engine {
   }
   void add_static(btCollisionShape* shape, const Eigen::Isometry3d& X, int group, int mask,
                   double friction);
-  const std::vector<Eigen::Isometry3d>& body_poses();
+  const std::vector<Eigen::Isometry3d>& link_poses();
+  double joint_position(size_t joint) const;
+  double joint_velocity(size_t joint) const;
   Eigen::Vector3d point_velocity(const Eigen::Vector3d& point_map) const;
   void save_good_state();
   bool state_is_finite() const;
@@ -127,12 +130,16 @@ struct AriPhysics::Engine {
   btCollisionShape* person_shape{nullptr};  // shared by every person
 
   std::vector<std::string> joint_names;        // every movable joint, URDF order
-  std::vector<int> joint_link;                 // its multibody link
-  std::vector<btMultiBodyJointMotor*> motors;  // nullptr for free-spinning joints (casters)
+  std::vector<int> joint_model_index;          // its index in model.joints()
+  std::vector<int> joint_link;                 // its multibody link; -1 if kinematic
+  std::vector<double> kinematic_position;      // rad, joints with no multibody link
+  std::vector<double> kinematic_velocity;      // rad/s
+  std::vector<btMultiBodyJointMotor*> motors;  // nullptr for kinematic joints
   std::unordered_map<std::string, size_t> joint_by_name;
   std::vector<std::unique_ptr<TrajectoryController>> controllers;
   std::vector<ControlledJoints> controlled;
   std::vector<Passive> passive;
+  std::vector<size_t> casters;  // kinematic joints that roll with the base
   size_t left_wheel{0};
   size_t right_wheel{0};
   DriveGeometry geometry;
@@ -148,7 +155,8 @@ struct AriPhysics::Engine {
   uint64_t steps{0};
   PhysicsDiagnostics diagnostics;
 
-  // Scratch of btMultiBody::forwardKinematics and the body poses it gives, valid for one step.
+  // Scratch of btMultiBody::forwardKinematics and the link poses computed from it, valid for
+  // one step.
   btAlignedObjectArray<btQuaternion> scratch_rotations;
   btAlignedObjectArray<btVector3> scratch_origins;
   std::vector<Eigen::Isometry3d> poses;
@@ -162,7 +170,11 @@ struct AriPhysics::Engine {
 AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDescription& world,
                            const core::Pose2& start, const PhysicsConfig& config)
     : model(robot_model),
-      layout(MultibodyLayout::of(robot_model)),
+      layout(MultibodyLayout::of(robot_model,
+                                 [] {
+                                   const std::vector<std::string> names = ari_kinematic_joints();
+                                   return std::set<std::string>(names.begin(), names.end());
+                                 }())),
       scene(StaticScene::from_world(world)),
       person_config(config.person),
       step_s(config.step_s) {
@@ -283,10 +295,23 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
         to_bt(Eigen::Vector3d(X_parentcom_joint.translation())),
         to_bt(Eigen::Vector3d(-X_com_joint.translation())),
         /*disableParentCollision=*/true);
+  }
+  for (size_t j = 0; j < model.joints().size(); ++j) {
+    const RobotJoint& joint = model.joints()[j];
+    if (!joint.is_movable()) {
+      continue;
+    }
+    const int body = layout.body_of_joint(static_cast<int>(j));
     joint_by_name[joint.name] = joint_names.size();
     joint_names.push_back(joint.name);
-    joint_link.push_back(k - 1);
+    joint_model_index.push_back(static_cast<int>(j));
+    joint_link.push_back(body < 0 ? -1 : body - 1);
+    if (layout.is_kinematic(static_cast<int>(j)) && joint.type == JointType::kContinuous) {
+      casters.push_back(joint_names.size() - 1);
+    }
   }
+  kinematic_position.assign(joint_names.size(), 0.0);
+  kinematic_velocity.assign(joint_names.size(), 0.0);
   robot->finalizeMultiDof();
   robot->setLinearDamping(0.0);
   robot->setAngularDamping(0.0);
@@ -294,7 +319,7 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   robot->setUseGyroTerm(true);
   dynamics->addMultiBody(robot.get());
 
-  // Collision shapes: each body's URDF collision primitives in its principal frame. Bodies on
+  // Collision shapes: each body's URDF collision primitives in its principal frame. Links on
   // continuous joints roll (wheels, casters): a sphere of the cylinder's radius gives one clean
   // contact point with the floor instead of a cylinder rim's chattering ones.
   robot->forwardKinematics(scratch_rotations, scratch_origins);
@@ -307,9 +332,13 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
       const Eigen::Isometry3d X_com_link =
           body.X_reference_com.inverse() *
           layout.placements()[static_cast<size_t>(link)].X_reference_link;
+      const int parent_joint = model.links()[static_cast<size_t>(link)].parent_joint;
+      const bool link_rolls =
+          parent_joint >= 0 &&
+          model.joints()[static_cast<size_t>(parent_joint)].type == JointType::kContinuous;
       for (const LinkShape& primitive : model.links()[static_cast<size_t>(link)].collisions) {
         std::unique_ptr<btCollisionShape> shape;
-        if (rolls || primitive.type == LinkShape::Type::kSphere) {
+        if (link_rolls || primitive.type == LinkShape::Type::kSphere) {
           shape = std::make_unique<btSphereShape>(primitive.type == LinkShape::Type::kBox
                                                       ? 0.5 * primitive.box_size_m.minCoeff()
                                                       : primitive.radius_m);
@@ -319,7 +348,7 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
           shape = std::make_unique<btCylinderShapeZ>(
               btVector3(primitive.radius_m, primitive.radius_m, 0.5 * primitive.length_m));
         }
-        shape->setMargin(std::min(kMargin, shape->getMargin()));
+        shape->setMargin(std::min<btScalar>(kMargin, shape->getMargin()));
         compound->addChildShape(to_bt(X_com_link * primitive.X_link_shape), own(std::move(shape)));
       }
     }
@@ -332,8 +361,9 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
         body.joint >= 0 ? model.joints()[static_cast<size_t>(body.joint)].name : "";
     const bool driven =
         joint_name == drive_joints.left_wheel || joint_name == drive_joints.right_wheel;
-    collider->setFriction(!rolls ? config.body_friction
-                                 : (driven ? config.wheel_friction : config.caster_friction));
+    // The base carries the casters, so its friction is theirs: its shell slides along walls.
+    collider->setFriction(driven ? config.wheel_friction
+                                 : (k == 0 ? config.caster_friction : config.body_friction));
     const btTransform X_world_com =
         k == 0 ? robot->getBaseWorldTransform()
                : robot->getLink(static_cast<int>(k) - 1).m_cachedWorldTransform;
@@ -341,7 +371,9 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
     if (rolls) {
       dynamics->addCollisionObject(collider.get(), kRobotRoller, kFloor);
     } else {
-      dynamics->addCollisionObject(collider.get(), kRobotShell, kFloor | kStatic | kPeople);
+      // The base's casters meet the floor; no other shell reaches down to it.
+      dynamics->addCollisionObject(collider.get(), kRobotShell,
+                                   (k == 0 ? kFloor : 0) | kStatic | kPeople);
     }
     if (k == 0) {
       robot->setBaseCollider(collider.get());
@@ -351,11 +383,11 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
     colliders.push_back(std::move(collider));
   }
 
-  // Servos: a motor on every joint with an effort limit (wheels, head, arms, hands, virtual
-  // fingers), capped at that effort; hard limits on every revolute joint. Casters spin freely.
+  // Servos: a motor on every simulated joint with an effort limit (wheels, head, arms), capped at
+  // that effort. Position limits are kept by the controllers, which saturate every command.
   for (size_t j = 0; j < joint_names.size(); ++j) {
     const RobotJoint& joint = model.joint(joint_names[j]);
-    if (joint.max_effort_nm > 0.0) {
+    if (joint_link[j] >= 0 && joint.max_effort_nm > 0.0) {
       auto motor = std::make_unique<btMultiBodyJointMotor>(robot.get(), joint_link[j], 0.0,
                                                            joint.max_effort_nm * step_s);
       motors.push_back(motor.get());
@@ -363,12 +395,6 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
       constraints.push_back(std::move(motor));
     } else {
       motors.push_back(nullptr);
-    }
-    if (joint.has_position_limits()) {
-      auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(
-          robot.get(), joint_link[j], joint.lower_rad, joint.upper_rad);
-      dynamics->addMultiBodyConstraint(limit.get());
-      constraints.push_back(std::move(limit));
     }
   }
 
@@ -425,18 +451,38 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   save_good_state();
 }
 
-const std::vector<Eigen::Isometry3d>& AriPhysics::Engine::body_poses() {
+const std::vector<Eigen::Isometry3d>& AriPhysics::Engine::link_poses() {
   if (poses_step == steps) {
     return poses;
   }
   robot->forwardKinematics(scratch_rotations, scratch_origins);
-  poses.resize(layout.bodies().size());
-  poses[0] = to_eigen(robot->getBaseWorldTransform());
-  for (int i = 0; i < robot->getNumLinks(); ++i) {
-    poses[static_cast<size_t>(i) + 1] = to_eigen(robot->getLink(i).m_cachedWorldTransform);
+  poses.resize(model.links().size());
+  // Parents first: a simulated joint's link from its body's pose, any other from its parent.
+  for (size_t link = 0; link < poses.size(); ++link) {
+    const int parent_joint = model.links()[link].parent_joint;
+    const int body = layout.placements()[link].body;
+    const BodyLayout& layout_body = layout.bodies()[static_cast<size_t>(body)];
+    if (parent_joint < 0 || layout_body.reference_link == static_cast<int>(link)) {
+      const btTransform X_world_com = body == 0 ? robot->getBaseWorldTransform()
+                                                : robot->getLink(body - 1).m_cachedWorldTransform;
+      poses[link] = to_eigen(X_world_com) * layout_body.X_reference_com.inverse();
+      continue;
+    }
+    const RobotJoint& joint = model.joints()[static_cast<size_t>(parent_joint)];
+    const auto kinematic = joint_by_name.find(joint.name);
+    const double q = kinematic == joint_by_name.end() ? 0.0 : kinematic_position[kinematic->second];
+    poses[link] = poses[static_cast<size_t>(joint.parent_link)] * model.joint_transform(joint, q);
   }
   poses_step = steps;
   return poses;
+}
+
+double AriPhysics::Engine::joint_position(size_t joint) const {
+  return joint_link[joint] < 0 ? kinematic_position[joint] : robot->getJointPos(joint_link[joint]);
+}
+
+double AriPhysics::Engine::joint_velocity(size_t joint) const {
+  return joint_link[joint] < 0 ? kinematic_velocity[joint] : robot->getJointVel(joint_link[joint]);
 }
 
 Eigen::Vector3d AriPhysics::Engine::point_velocity(const Eigen::Vector3d& point_map) const {
@@ -446,9 +492,9 @@ Eigen::Vector3d AriPhysics::Engine::point_velocity(const Eigen::Vector3d& point_
 
 void AriPhysics::Engine::save_good_state() {
   good_base = robot->getBaseWorldTransform();
-  good_positions.resize(joint_names.size());
-  for (size_t j = 0; j < joint_names.size(); ++j) {
-    good_positions[j] = robot->getJointPos(joint_link[j]);
+  good_positions.resize(static_cast<size_t>(robot->getNumLinks()));
+  for (int i = 0; i < robot->getNumLinks(); ++i) {
+    good_positions[static_cast<size_t>(i)] = robot->getJointPos(i);
   }
 }
 
@@ -471,9 +517,9 @@ void AriPhysics::Engine::restore_good_state() {
   robot->setBaseWorldTransform(good_base);
   robot->setBaseVel(btVector3(0, 0, 0));
   robot->setBaseOmega(btVector3(0, 0, 0));
-  for (size_t j = 0; j < joint_names.size(); ++j) {
-    robot->setJointPos(joint_link[j], good_positions[j]);
-    robot->setJointVel(joint_link[j], 0.0);
+  for (int i = 0; i < robot->getNumLinks(); ++i) {
+    robot->setJointPos(i, good_positions[static_cast<size_t>(i)]);
+    robot->setJointVel(i, 0.0);
   }
   ++diagnostics.nan_resets;
 }
@@ -511,24 +557,28 @@ void AriPhysics::step() {
     q.resize(joints.size());
     qd.resize(joints.size());
     for (size_t j = 0; j < joints.size(); ++j) {
-      q[j] = robot.getJointPos(e.joint_link[joints[j]]);
-      qd[j] = robot.getJointVel(e.joint_link[joints[j]]);
+      q[j] = e.joint_position(joints[j]);
+      qd[j] = e.joint_velocity(joints[j]);
     }
     const std::vector<double> previous = controller.command();
     controller.update(e.time_s, dt, q, qd);
     for (size_t j = 0; j < joints.size(); ++j) {
-      btMultiBodyJointMotor* motor = e.motors[joints[j]];
-      motor->setPositionTarget(controller.command()[j], config_.joint_position_gain);
-      motor->setVelocityTarget((controller.command()[j] - previous[j]) / dt,
-                               config_.joint_velocity_gain);
+      const double rate = (controller.command()[j] - previous[j]) / dt;
+      if (btMultiBodyJointMotor* motor = e.motors[joints[j]]) {
+        motor->setPositionTarget(controller.command()[j], config_.joint_position_gain);
+        motor->setVelocityTarget(rate, config_.joint_velocity_gain);
+      } else {
+        e.kinematic_position[joints[j]] = controller.command()[j];
+        e.kinematic_velocity[joints[j]] = rate;
+      }
     }
   }
-  // 3. Passive finger joints copy the actuated one.
+  // 3. Passive finger joints copy the actuated one, within their own limits.
   for (const Engine::Passive& joint : e.passive) {
-    const double target = std::clamp(robot.getJointPos(e.joint_link[joint.follows]),
-                                     joint.lower_rad, joint.upper_rad);
-    e.motors[joint.joint]->setPositionTarget(target, config_.joint_position_gain);
-    e.motors[joint.joint]->setVelocityTarget(0.0, config_.joint_velocity_gain);
+    const double next =
+        std::clamp(e.kinematic_position[joint.follows], joint.lower_rad, joint.upper_rad);
+    e.kinematic_velocity[joint.joint] = (next - e.kinematic_position[joint.joint]) / dt;
+    e.kinematic_position[joint.joint] = next;
   }
   // 4. People keep walking at their last reported velocity.
   for (Engine::Person& person : e.people) {
@@ -548,11 +598,23 @@ void AriPhysics::step() {
   e.time_s = static_cast<double>(e.steps + 1) * dt;
   ++e.steps;
 
-  // 6. Sensors: wheel odometry every step, the IMU at its rate.
-  e.odometry->update(robot.getJointPos(e.joint_link[e.left_wheel]),
-                     robot.getJointPos(e.joint_link[e.right_wheel]),
-                     robot.getJointVel(e.joint_link[e.left_wheel]),
-                     robot.getJointVel(e.joint_link[e.right_wheel]));
+  // 6. Casters roll with the floor under them; wheel odometry every step; the IMU at its rate.
+  for (const size_t caster : e.casters) {
+    const RobotJoint& joint = e.model.joints()[static_cast<size_t>(e.joint_model_index[caster])];
+    const RobotLink& link = e.model.links()[static_cast<size_t>(joint.child_link)];
+    if (link.collisions.empty()) {
+      continue;
+    }
+    const std::vector<Eigen::Isometry3d>& poses = e.link_poses();
+    // Positive spin rolls forward, as the wheels' (the same joint axis).
+    const double forward =
+        e.point_velocity(poses[static_cast<size_t>(joint.child_link)].translation())
+            .dot(poses[static_cast<size_t>(joint.parent_link)].linear().col(0));
+    e.kinematic_velocity[caster] = forward / link.collisions[0].radius_m;
+    e.kinematic_position[caster] += e.kinematic_velocity[caster] * dt;
+  }
+  e.odometry->update(e.joint_position(e.left_wheel), e.joint_position(e.right_wheel),
+                     e.joint_velocity(e.left_wheel), e.joint_velocity(e.right_wheel));
   if (e.time_s + 1e-9 >= e.next_imu_s) {
     const Eigen::Isometry3d X_map_imu = frame_pose(kImuFrame);
     e.imu_reading = e.imu->measure(e.time_s, X_map_imu, e.point_velocity(X_map_imu.translation()),
@@ -633,16 +695,7 @@ std::vector<PersonShape> AriPhysics::people() const {
 }
 
 std::vector<Eigen::Isometry3d> AriPhysics::link_poses() const {
-  Engine& e = *engine_;
-  const std::vector<Eigen::Isometry3d>& bodies = e.body_poses();
-  std::vector<Eigen::Isometry3d> poses(e.model.links().size());
-  for (size_t link = 0; link < poses.size(); ++link) {
-    const LinkPlacement& placement = e.layout.placements()[link];
-    const BodyLayout& body = e.layout.bodies()[static_cast<size_t>(placement.body)];
-    poses[link] = bodies[static_cast<size_t>(placement.body)] * body.X_reference_com.inverse() *
-                  placement.X_reference_link;
-  }
-  return poses;
+  return engine_->link_poses();
 }
 
 Eigen::Isometry3d AriPhysics::frame_pose(const std::string& frame) const {
@@ -651,10 +704,7 @@ Eigen::Isometry3d AriPhysics::frame_pose(const std::string& frame) const {
   if (link < 0) {
     throw core::RequestError("no frame named '" + frame + "' on ARI");
   }
-  const LinkPlacement& placement = e.layout.placements()[static_cast<size_t>(link)];
-  const BodyLayout& body = e.layout.bodies()[static_cast<size_t>(placement.body)];
-  return e.body_poses()[static_cast<size_t>(placement.body)] * body.X_reference_com.inverse() *
-         placement.X_reference_link;
+  return e.link_poses()[static_cast<size_t>(link)];
 }
 
 core::Pose2 AriPhysics::base_pose() const {
@@ -681,16 +731,16 @@ const std::vector<std::string>& AriPhysics::joint_names() const {
 
 std::vector<double> AriPhysics::joint_positions() const {
   std::vector<double> out;
-  for (const int link : engine_->joint_link) {
-    out.push_back(engine_->robot->getJointPos(link));
+  for (size_t j = 0; j < engine_->joint_names.size(); ++j) {
+    out.push_back(engine_->joint_position(j));
   }
   return out;
 }
 
 std::vector<double> AriPhysics::joint_velocities() const {
   std::vector<double> out;
-  for (const int link : engine_->joint_link) {
-    out.push_back(engine_->robot->getJointVel(link));
+  for (size_t j = 0; j < engine_->joint_names.size(); ++j) {
+    out.push_back(engine_->joint_velocity(j));
   }
   return out;
 }
@@ -708,7 +758,7 @@ double AriPhysics::joint_position(const std::string& joint) const {
   if (it == engine_->joint_by_name.end()) {
     throw core::RequestError("no movable joint named '" + joint + "' on ARI");
   }
-  return engine_->robot->getJointPos(engine_->joint_link[it->second]);
+  return engine_->joint_position(it->second);
 }
 
 const ImuReading& AriPhysics::imu() const {

@@ -2,6 +2,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "ari_social_sim/core/error.hpp"
+
 namespace ari_social_sim::physics {
 namespace {
 
@@ -45,10 +47,20 @@ void combine_mass(const RobotModel& model, const std::vector<LinkPlacement>& pla
 
 }  // namespace
 
-MultibodyLayout MultibodyLayout::of(const RobotModel& model) {
+MultibodyLayout MultibodyLayout::of(const RobotModel& model,
+                                    const std::set<std::string>& kinematic_joints) {
   MultibodyLayout layout;
   layout.placements_.resize(model.links().size());
   layout.body_of_joint_.assign(model.joints().size(), -1);
+  layout.kinematic_.assign(model.joints().size(), false);
+  for (const std::string& name : kinematic_joints) {
+    const int joint = model.joint_index(name);
+    if (joint < 0 || !model.joints()[static_cast<size_t>(joint)].is_movable()) {
+      throw core::RequestError(model.name() + ": no movable joint '" + name +
+                               "' to simulate kinematically");
+    }
+    layout.kinematic_[static_cast<size_t>(joint)] = true;
+  }
   BodyLayout root;
   root.reference_link = model.root_link();
   layout.bodies_.push_back(root);
@@ -61,7 +73,7 @@ MultibodyLayout MultibodyLayout::of(const RobotModel& model) {
     } else {
       const RobotJoint& joint = model.joints()[static_cast<size_t>(robot_link.parent_joint)];
       const LinkPlacement& parent = layout.placements_[static_cast<size_t>(joint.parent_link)];
-      if (joint.is_movable()) {
+      if (joint.is_movable() && !layout.kinematic_[static_cast<size_t>(robot_link.parent_joint)]) {
         BodyLayout body;
         body.joint = robot_link.parent_joint;
         body.parent_body = parent.body;

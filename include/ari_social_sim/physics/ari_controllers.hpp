@@ -20,6 +20,14 @@ struct PassiveJoint {
 };
 std::vector<PassiveJoint> ari_passive_joints();
 
+/// Joints AriPhysics sets itself instead of simulating their dynamics: the hands' three joints
+/// (leaf links of 26 to 50 g whose servo would need a far smaller step than 1 ms; they follow
+/// their saturated command exactly) and the casters (free wheels: their spin is the rolling of
+/// the base over the floor). Neither changes a motion anyone measures, and leaving them out of
+/// the multibody keeps it at 12 joints, which roughly halves the constraint solver's work per
+/// step (docs/physics.md, "Speed").
+std::vector<std::string> ari_kinematic_joints();
+
 /// The drive wheels of mobile_base_controller (left, right) and the base frame of its odometry.
 struct DriveJoints {
   std::string left_wheel{"wheel_left_joint"};

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "ari_social_sim/physics/robot_model.hpp"
@@ -29,20 +31,27 @@ struct LinkPlacement {
 /// How a RobotModel maps onto a multibody: fixed joints merged away (their links' masses and
 /// inertias combined with the parallel-axis theorem), one body per movable joint, in tree order
 /// so that every body's parent comes first. Body 0 is the root; body k > 0 is multibody link k-1.
+///
+/// Joints named in `kinematic_joints` are merged like fixed joints (at q = 0) for the dynamics;
+/// the simulation sets their positions itself and poses their links from them (AriPhysics does
+/// this for ARI's light hand joints and its casters).
 class MultibodyLayout {
  public:
-  static MultibodyLayout of(const RobotModel& model);
+  static MultibodyLayout of(const RobotModel& model,
+                            const std::set<std::string>& kinematic_joints = {});
 
   const std::vector<BodyLayout>& bodies() const { return bodies_; }
   /// Indexed like RobotModel::links().
   const std::vector<LinkPlacement>& placements() const { return placements_; }
   /// The body hanging from a movable joint, -1 for fixed joints.
   int body_of_joint(int joint) const { return body_of_joint_[static_cast<size_t>(joint)]; }
+  bool is_kinematic(int joint) const { return kinematic_[static_cast<size_t>(joint)]; }
 
  private:
   std::vector<BodyLayout> bodies_;
   std::vector<LinkPlacement> placements_;
   std::vector<int> body_of_joint_;
+  std::vector<bool> kinematic_;  // by joint
 };
 
 }  // namespace ari_social_sim::physics
