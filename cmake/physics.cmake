@@ -25,6 +25,15 @@ target_link_libraries(ari_physics PUBLIC ari_world ${urdfdom_LIBRARIES} ${ari_bu
 
 set(ari_urdf "${PROJECT_SOURCE_DIR}/urdf/ari.urdf")
 
+# ari_physics_node: thin ROS adapter over the physics core.
+add_executable(ari_physics_node
+  src/nodes/ari_physics_node.cpp
+  src/nodes/conversions/joint_trajectory.cpp)
+target_include_directories(ari_physics_node PRIVATE ${CATKIN_DEVEL_PREFIX}/include
+  ${catkin_INCLUDE_DIRS})
+target_link_libraries(ari_physics_node ari_physics ari_world_conversions ${catkin_LIBRARIES})
+add_dependencies(ari_physics_node ${PROJECT_NAME}_generate_messages_cpp)
+
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_physics
     SOURCES
@@ -40,4 +49,8 @@ if(benchmark_FOUND)
   ari_add_benchmark(bench_physics SOURCES bench/bench_physics.cpp LIBRARIES ari_physics)
   target_compile_definitions(bench_physics PRIVATE ARI_URDF="${ari_urdf}"
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  add_rostest(test/integration/ari_physics_node.test DEPENDENCIES ari_physics_node)
 endif()
