@@ -39,6 +39,14 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES
       test/physics/test_robot_model.cpp
       test/physics/test_multibody_layout.cpp
+      test/physics/test_joint_trajectory.cpp
+      test/physics/test_trajectory_controller.cpp
+      test/physics/test_diff_drive_controller.cpp
+      test/physics/test_wheel_odometry.cpp
+      test/physics/test_imu_model.cpp
+      test/physics/test_point_head.cpp
+      test/physics/test_static_scene.cpp
+      test/physics/test_physics_config.cpp
       test/physics/test_ari_physics.cpp
     LIBRARIES ari_physics)
   target_compile_definitions(test_physics PRIVATE ARI_URDF="${ari_urdf}"
