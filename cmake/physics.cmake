@@ -61,4 +61,5 @@ endif()
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/ari_physics_node.test DEPENDENCIES ari_physics_node)
+  add_rostest(test/integration/world_3d.test DEPENDENCIES ari_physics_node world_node)
 endif()

@@ -14,6 +14,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/physics/ari_controllers.hpp"
@@ -32,6 +33,10 @@ constexpr int kPeople = 1 << 10;
 // Collision margin (m) of ARI's and the people's shapes: small, so contacts happen at the drawn
 // surfaces; Bullet keeps it inside boxes and cylinders.
 constexpr double kMargin = 0.002;
+// People glide to their reported pose within this time (s); a person further off than
+// kPersonTeleportM (m) was moved on purpose (spawned, set_pose) and is placed at once.
+constexpr double kPersonCatchUpS = 0.1;
+constexpr double kPersonTeleportM = 0.5;
 
 btVector3 to_bt(const Eigen::Vector3d& v) {
   return btVector3(v.x(), v.y(), v.z());
@@ -85,7 +90,9 @@ struct AriPhysics::Engine {
     double upper_rad;
   };
   struct Person {
-    PersonState state;
+    PersonState reported;  // the 2D world's last report
+    double reported_at_s;  // physics time it arrived
+    PersonState state;     // where the body is now
     std::unique_ptr<btDefaultMotionState> motion;
     std::unique_ptr<btRigidBody> body;
   };
@@ -580,12 +587,23 @@ void AriPhysics::step() {
     e.kinematic_velocity[joint.joint] = (next - e.kinematic_position[joint.joint]) / dt;
     e.kinematic_position[joint.joint] = next;
   }
-  // 4. People keep walking at their last reported velocity.
+  // 4. People walk on at their reported velocity and close the gap to where their last report
+  // puts them now within kPersonCatchUpS, so a body never jumps: a kinematic body that jumps
+  // into ARI would hit it with the jump's speed.
   for (Engine::Person& person : e.people) {
+    const double since = e.time_s - person.reported_at_s;
+    const Eigen::Vector2d expected =
+        person.reported.pose.position + since * person.reported.velocity_mps;
+    const double expected_theta =
+        person.reported.pose.theta + since * person.reported.angular_velocity_rps;
+    person.state.velocity_mps =
+        person.reported.velocity_mps + (expected - person.state.pose.position) / kPersonCatchUpS;
+    person.state.angular_velocity_rps =
+        person.reported.angular_velocity_rps +
+        core::angle_difference(expected_theta, person.state.pose.theta) / kPersonCatchUpS;
     person.state.pose.position += dt * person.state.velocity_mps;
     person.state.pose.theta += dt * person.state.angular_velocity_rps;
-    btTransform X = to_bt(planar_pose(person.state.pose));
-    person.motion->setWorldTransform(X);
+    person.motion->setWorldTransform(to_bt(planar_pose(person.state.pose)));
   }
 
   // 5. Bullet.
@@ -654,6 +672,7 @@ const std::vector<std::unique_ptr<TrajectoryController>>& AriPhysics::controller
 void AriPhysics::set_people(const std::vector<PersonState>& people) {
   Engine& e = *engine_;
   // Bodies are reused by position in the list; only the count changes the world.
+  const size_t placed_before = e.people.size();
   while (e.people.size() > people.size()) {
     e.dynamics->removeRigidBody(e.people.back().body.get());
     e.people.pop_back();
@@ -671,10 +690,21 @@ void AriPhysics::set_people(const std::vector<PersonState>& people) {
     e.people.push_back(std::move(person));
   }
   for (size_t i = 0; i < people.size(); ++i) {
-    e.people[i].state = people[i];
-    const btTransform X = to_bt(planar_pose(people[i].pose));
-    e.people[i].motion->setWorldTransform(X);
-    e.people[i].body->setWorldTransform(X);
+    Engine::Person& person = e.people[i];
+    const bool placed =
+        i < placed_before && person.reported.id == people[i].id &&
+        (person.state.pose.position - people[i].pose.position).norm() < kPersonTeleportM;
+    person.reported = people[i];
+    person.reported_at_s = e.time_s;
+    const core::Pose2 keep = person.state.pose;
+    person.state = people[i];
+    if (placed) {
+      person.state.pose = keep;  // glides there (step 4)
+    } else {
+      const btTransform X = to_bt(planar_pose(people[i].pose));
+      person.motion->setWorldTransform(X);
+      person.body->setWorldTransform(X);
+    }
   }
 }
 
