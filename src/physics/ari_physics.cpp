@@ -37,6 +37,10 @@ constexpr double kMargin = 0.002;
 // kPersonTeleportM (m) was moved on purpose (spawned, set_pose) and is placed at once.
 constexpr double kPersonCatchUpS = 0.1;
 constexpr double kPersonTeleportM = 0.5;
+// Sum of squared impulse changes (N^2 s^2) under which the solver's iterations stop early.
+constexpr double kSolverResidualThreshold = 1e-7;
+// How far (rad) a wheel's position target may lead the wheel: 2 cm of travel.
+constexpr double kWheelWindupRad = 0.16;
 
 btVector3 to_bt(const Eigen::Vector3d& v) {
   return btVector3(v.x(), v.y(), v.z());
@@ -149,6 +153,7 @@ struct AriPhysics::Engine {
   std::vector<size_t> casters;  // kinematic joints that roll with the base
   size_t left_wheel{0};
   size_t right_wheel{0};
+  double wheel_targets[2] = {0.0, 0.0};  // rad, left and right
   DriveGeometry geometry;
   std::unique_ptr<DiffDriveController> drive;
   std::unique_ptr<WheelOdometry> odometry;
@@ -193,6 +198,8 @@ AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDesc
                                                         solver.get(), collision_config.get());
   dynamics->setGravity(btVector3(0.0, 0.0, -config.gravity_mps2));
   dynamics->getSolverInfo().m_numIterations = config.solver_iterations;
+  // Stop iterating once the impulses have converged: most steps need far fewer than the cap.
+  dynamics->getSolverInfo().m_leastSquaresResidualThreshold = kSolverResidualThreshold;
   build_world(config);
   build_robot(start, config);
   // One shape for every person: a cylinder to the shoulders and the head's sphere.
@@ -547,12 +554,20 @@ void AriPhysics::step() {
   const double dt = config_.step_s;
   btMultiBody& robot = *e.robot;
 
-  // 1. Base: the diff-drive controller's wheel velocities.
+  // 1. Base: the diff-drive controller's wheel velocities, and the wheel angles they integrate
+  // to as the position target, which plays the wheel PID's integral term: without it a parked
+  // ARI creeps (0.3 mm/s) on the solver's residual. The target never leads the wheel by more
+  // than kWheelWindupRad, so a wheel held by a wall does not wind up a lunge for later.
   e.drive->update(e.time_s, dt);
-  e.motors[e.left_wheel]->setVelocityTarget(e.drive->left_wheel_rps(), 1.0);
-  e.motors[e.right_wheel]->setVelocityTarget(e.drive->right_wheel_rps(), 1.0);
-  e.motors[e.left_wheel]->setPositionTarget(0.0, 0.0);
-  e.motors[e.right_wheel]->setPositionTarget(0.0, 0.0);
+  const double wheel_rates[2] = {e.drive->left_wheel_rps(), e.drive->right_wheel_rps()};
+  const size_t wheels[2] = {e.left_wheel, e.right_wheel};
+  for (int w = 0; w < 2; ++w) {
+    const double angle = e.joint_position(wheels[w]);
+    e.wheel_targets[w] = std::clamp(e.wheel_targets[w] + wheel_rates[w] * dt,
+                                    angle - kWheelWindupRad, angle + kWheelWindupRad);
+    e.motors[wheels[w]]->setVelocityTarget(wheel_rates[w], 1.0);
+    e.motors[wheels[w]]->setPositionTarget(e.wheel_targets[w], config_.joint_position_gain);
+  }
 
   // 2. Joint trajectory controllers: the saturated position command, and its rate as the
   // servo's velocity target.

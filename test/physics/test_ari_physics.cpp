@@ -41,6 +41,19 @@ TEST(AriPhysics, StandsStillOnItsWheels) {
   EXPECT_EQ(physics.diagnostics().nan_resets, 0u);
 }
 
+TEST(AriPhysics, StaysParked) {
+  // Ten seconds without commands after settling: the wheels hold their angles (odometry does not
+  // move) and the base stays within a millimetre and a milliradian of where it stood.
+  AriPhysics physics(ari(), walled_floor(), {{0.0, 0.0}, 0.0}, PhysicsConfig{});
+  run(physics, 1.0);
+  const core::Pose2 odom = physics.odometry().pose();
+  const core::Pose2 truth = physics.base_pose();
+  run(physics, 10.0);
+  EXPECT_LT((physics.odometry().pose().position - odom.position).norm(), 1e-4);
+  EXPECT_LT((physics.base_pose().position - truth.position).norm(), 1e-3);
+  EXPECT_LT(std::abs(physics.base_pose().theta - truth.theta), 1e-3);
+}
+
 TEST(AriPhysics, MatchesTheModelsKinematics) {
   // Bullet's link frames equal RobotModel's forward kinematics at the joints' positions.
   AriPhysics physics(ari(), walled_floor(), {{1.0, 2.0}, 0.5}, PhysicsConfig{});
