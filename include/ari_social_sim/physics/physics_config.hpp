@@ -13,7 +13,7 @@ namespace ari_social_sim::physics {
 struct PhysicsConfig {
   double step_s{0.001};  // s; PAL's Gazebo runs physics and ros_control at 1 kHz
   double gravity_mps2{9.81};
-  int solver_iterations{10};  // at most, per step; fewer let a parked ARI creep (docs/physics.md)
+  int solver_iterations{6};  // at most, per step; fewer let a parked ARI creep (docs/physics.md)
   // Contact friction coefficients (Bullet multiplies the two bodies' values).
   double wheel_friction{1.0};
   double caster_friction{0.0};  // stands in for swivel casters that never resist turning
