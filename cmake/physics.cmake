@@ -28,10 +28,14 @@ set(ari_urdf "${PROJECT_SOURCE_DIR}/urdf/ari.urdf")
 # ari_physics_node: thin ROS adapter over the physics core.
 add_executable(ari_physics_node
   src/nodes/ari_physics_node.cpp
+  src/nodes/camera_interface.cpp
+  src/nodes/conversions/image.cpp
   src/nodes/conversions/joint_trajectory.cpp)
 target_include_directories(ari_physics_node PRIVATE ${CATKIN_DEVEL_PREFIX}/include
   ${catkin_INCLUDE_DIRS})
-target_link_libraries(ari_physics_node ari_physics ari_world_conversions ${catkin_LIBRARIES})
+# ari_rendering and ari_mapping: the cameras' core (cmake/cameras.cmake).
+target_link_libraries(ari_physics_node ari_physics ari_rendering ari_mapping ari_world_conversions
+  ${catkin_LIBRARIES})
 add_dependencies(ari_physics_node ${PROJECT_NAME}_generate_messages_cpp)
 
 if(CATKIN_ENABLE_TESTING)
@@ -62,4 +66,5 @@ endif()
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/ari_physics_node.test DEPENDENCIES ari_physics_node)
   add_rostest(test/integration/world_3d.test DEPENDENCIES ari_physics_node world_node)
+  add_rostest(test/integration/ari_cameras.test DEPENDENCIES ari_physics_node)
 endif()

@@ -31,6 +31,7 @@
 #include "ari_social_sim/physics/point_head.hpp"
 #include "ari_social_sim/world/scene.hpp"
 #include "ari_social_sim/world/world_file.hpp"
+#include "camera_interface.hpp"
 #include "conversions/joint_trajectory.hpp"
 #include "ros_params.hpp"
 
@@ -403,9 +404,14 @@ class PointHeadInterface {
 
 class PhysicsNode {
  public:
-  PhysicsNode(const physics::PhysicsRunConfig& config, std::unique_ptr<physics::AriPhysics> physics)
+  /// Throws what CameraInterface throws (bad camera or mapping parameters, no OpenGL context).
+  PhysicsNode(const physics::PhysicsRunConfig& config, const world::WorldDescription& world,
+              std::unique_ptr<physics::AriPhysics> physics)
       : config_(config), physics_(std::move(physics)), tf_listener_(tf_buffer_) {
     clock_.physics = physics_.get();
+    if (config_.cameras_enabled) {
+      cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
+    }
     if (config_.clock == physics::ClockSource::kOwn) {
       clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
       // Standalone, odom starts where map is; in a full run world_node publishes this.
@@ -510,8 +516,9 @@ class PhysicsNode {
       for (auto& controller : controllers_) {
         controller->publish_state();
       }
-      // Cameras and mapping (issue 6, branch `cameras`) hook in here: they render from
-      // physics_->frame_pose(...), physics_->scene() and physics_->people() at their own rates.
+    }
+    if (cameras_) {
+      cameras_->update(stamp);
     }
     if (now_s + 1e-9 >= next_ground_truth_s_) {
       next_ground_truth_s_ = now_s + 1.0 / config_.ground_truth_rate_hz;
@@ -641,6 +648,7 @@ class PhysicsNode {
   tf2_ros::TransformListener tf_listener_;
   std::vector<std::unique_ptr<ControllerInterface>> controllers_;
   std::unique_ptr<PointHeadInterface> point_head_;
+  std::unique_ptr<CameraInterface> cameras_;
 };
 
 }  // namespace
@@ -652,13 +660,14 @@ int main(int argc, char** argv) {
   ros::NodeHandle private_handle("~");
   physics::PhysicsRunConfig config;
   std::unique_ptr<physics::RobotModel> model;
-  std::unique_ptr<physics::AriPhysics> simulation;
+  std::unique_ptr<nodes::PhysicsNode> node;
   try {
     config = physics::PhysicsRunConfig::from_yaml(nodes::read_private_params(private_handle));
     const std::string package = ros::package::getPath("ari_social_sim");
     model = std::make_unique<physics::RobotModel>(physics::RobotModel::from_urdf_file(
         config.urdf.empty() ? package + "/urdf/ari.urdf" : config.urdf));
     world::WorldDescription world_description;
+    std::unique_ptr<physics::AriPhysics> simulation;
     core::Pose2 start;
     if (!config.scene.empty()) {
       const world::Scene scene = world::load_scene_file(config.scene);
@@ -679,11 +688,14 @@ int main(int argc, char** argv) {
              world_description.name.c_str(), start.position.x(), start.position.y(), start.theta,
              config.physics.step_s,
              config.clock == physics::ClockSource::kOwn ? "own" : "world_node's");
+    node = std::make_unique<nodes::PhysicsNode>(config, world_description, std::move(simulation));
   } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
+    ROS_FATAL("%s%s", e.what(),
+              dynamic_cast<const physics::RenderError*>(&e) != nullptr
+                  ? " (run with _cameras_enabled:=false to simulate without cameras)"
+                  : "");
     return 2;
   }
-  nodes::PhysicsNode node(config, std::move(simulation));
-  node.run();
+  node->run();
   return 0;
 }

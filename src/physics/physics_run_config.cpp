@@ -42,6 +42,16 @@ PhysicsRunConfig PhysicsRunConfig::from_yaml(const core::YamlMap& map) {
   config.ground_truth_rate_hz = map.optional<double>(
       "ground_truth_rate", config.ground_truth_rate_hz, core::between(1.0, 1000.0));
 
+  config.cameras_enabled = map.optional<bool>("cameras_enabled", config.cameras_enabled);
+  if (map.has("cameras")) {
+    config.cameras = map.map("cameras");
+  }
+  config.mapping = map.optional<bool>("mapping", config.mapping);
+  if (map.has("mapping_params")) {
+    config.mapping_params = map.map("mapping_params");
+  }
+  config.map_file = map.optional<std::string>("map_file", config.map_file);
+
   PhysicsConfig& physics = config.physics;
   physics.step_s = map.optional<double>("step", physics.step_s, {0.0, 0.01, true});
   physics.seed =

@@ -26,6 +26,13 @@ struct PhysicsRunConfig {
   double publish_rate_hz{50.0};        // /joint_states, odometry, controller states
   double ground_truth_rate_hz{100.0};  // /ground_truth_odom, as PAL's Gazebo p3d plugin
   PhysicsConfig physics;
+  // Cameras and mapping (docs/cameras.md): read here only as far as this node's own keys go;
+  // the sub-mappings are handed unread to CameraRigConfig::from_yaml and MappingConfig::from_yaml.
+  bool cameras_enabled{true};                   // render ARI's cameras for their subscribers
+  std::optional<core::YamlMap> cameras;         // CameraRigConfig overrides
+  bool mapping{false};                          // OctoMap from the torso depth, /map from it
+  std::optional<core::YamlMap> mapping_params;  // MappingConfig overrides
+  std::string map_file{"ari_octomap.bt"};       // where ~save_map writes the .bt file
 
   /// Reads every field from a mapping (parameter server or file); unknown keys, out-of-range
   /// values and contradictions (scene and world both given) throw core::ConfigError naming the
