@@ -191,6 +191,10 @@ class AriPhysicsNodeContract(unittest.TestCase):
         self.assertAlmostEqual(tf_distance, 2.5, delta=0.03 * 2.5)
 
     def test_6_stops_at_a_wall(self):
+        # Arms down first: raised forward, the hands would meet the wall before the base does.
+        for side in ("left", "right"):
+            joints = CONTROLLERS["arm_%s_controller" % side][0]
+            self.follow("arm_%s_controller" % side, joints, [0.0] * 4, 1.0)
         furthest = -1e9
         end = rospy.Time.now() + rospy.Duration(8.0)
         rate = rospy.Rate(20)
