@@ -33,14 +33,12 @@
 #include "ari_social_sim/world/world_file.hpp"
 #include "camera_interface.hpp"
 #include "conversions/joint_trajectory.hpp"
+#include "frames.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kMapFrame[] = "map";
-constexpr char kOdomFrame[] = "odom";
-constexpr char kBaseFrame[] = "base_footprint";
 // The torso RGB-D camera is a D435i; its IMU topic is realsense2_camera's unified one
 // (docs/physics.md: ARI's own launch files name no IMU topic).
 constexpr char kImuTopic[] = "/torso_front_camera/imu";

@@ -11,11 +11,11 @@
 #include "ari_social_sim/physics/physics_primitives.hpp"
 #include "conversions/image.hpp"
 #include "conversions/world_state.hpp"
+#include "frames.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kMapFrame[] = "map";
 // How often the mapping mode republishes /map and the voxels (Hz of sim time).
 constexpr double kMapRateHz = 1.0;
 constexpr char kTorsoCamera[] = "torso_front_camera";

@@ -38,14 +38,12 @@
 #include "ari_social_sim/world/world_snapshot.hpp"
 #include "conversions/world_markers.hpp"
 #include "conversions/world_state.hpp"
+#include "frames.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kMapFrame[] = "map";
-constexpr char kOdomFrame[] = "odom";
-constexpr char kBaseFrame[] = "base_footprint";
 constexpr char kHeadPanJoint[] = "head_1_joint";
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
