@@ -64,9 +64,7 @@ NlgTemplates NlgTemplates::parse(const core::YamlMap& map) {
   for (const core::YamlMap& entry : map.list("templates")) {
     const std::string key = entry.required<std::string>("act");
     if (key != kNone) {
-      // Validate the pattern as an act, `*` read as a name.
-      std::string spelled = replace_all(key, "*", "x");
-      parse_act(spelled, entry.field_name("act"));
+      parse_pattern(key, entry.field_name("act"));
     }
     const std::string speaker = entry.required<std::string>("speaker");
     if (speaker != "human" && speaker != "robot" && speaker != "any") {
