@@ -21,7 +21,9 @@ add_library(ari_dialogue
   src/dialogue/dialogue_env.cpp
   src/dialogue/rule_policy.cpp
   src/dialogue/dialogue_runner.cpp
-  src/dialogue/json_lines.cpp)
+  src/dialogue/json_lines.cpp
+  src/dialogue/robot_nlu.cpp
+  src/dialogue/live_dialogue.cpp)
 target_include_directories(ari_dialogue PUBLIC include)
 target_link_libraries(ari_dialogue PUBLIC ari_core)
 target_compile_definitions(ari_dialogue PRIVATE
@@ -54,6 +56,8 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_rule_policy.cpp
       test/dialogue/test_dialogue_env.cpp
       test/dialogue/test_dialogue_runner.cpp
+      test/dialogue/test_robot_nlu.cpp
+      test/dialogue/test_live_dialogue.cpp
     LIBRARIES ari_dialogue)
   target_compile_definitions(test_dialogue PRIVATE
     ARI_MPGT_DIR="${ARI_MPGT_DIR}"
