@@ -89,6 +89,10 @@ Observation DialogueEnv::observe(size_t from) const {
   return observation;
 }
 
+StepInfo DialogueEnv::current_info() const {
+  return info(judge(users_.agenda(), false));
+}
+
 StepInfo DialogueEnv::info(const DialogueOutcome& outcome) const {
   StepInfo info;
   info.complete = outcome.complete;

@@ -60,6 +60,8 @@ class DialogueEnv {
   const std::vector<Utterance>& transcript() const { return transcript_; }
   const UserSimulation& users() const { return users_; }
   bool episode_over() const { return over_; }
+  /// The info of the episode as it stands (Gymnasium's reset info: goals, patience, no turn yet).
+  StepInfo current_info() const;
 
  private:
   Observation observe(size_t from) const;

@@ -39,6 +39,9 @@ class LiveDialogue {
 
   /// ARI wants to speak: the silence timer stops until robot_finished.
   void request_floor();
+  /// ARI gave up speaking before it started (its request was cancelled): the silence timer runs
+  /// again from the last utterance's end.
+  void release_floor() { robot_wants_floor_ = false; }
   /// ARI may start now: no human utterance is playing or waiting.
   bool robot_may_speak() const { return !human_playing_ && queue_.empty(); }
   /// ARI finished saying `text` at `now_s`. Returns the transcript index of its utterance, or -1

@@ -1,0 +1,156 @@
+#!/usr/bin/python3
+"""rostest, dialogue_node mode 1 (world): a patient and a companion of the waiting room converse
+with a scripted ARI through /tts; every utterance plays in the world word by word at 150 words per
+minute (0.4 s a word), in turn, with the turn timing's gaps."""
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+from actionlib_msgs.msg import GoalStatus
+
+from ari_social_sim.msg import (DialogueUtterance, TtsActionFeedback, TtsActionResult, TtsFeedback,
+                                WorldState)
+
+WORD_S = 0.4  # 150 wpm, the waiting room's default rate and the dialogue's seconds_per_word
+STEP_S = 0.05  # world_node's step
+ROBOT_SILENCE_S = 3.0  # dialogue_world.test
+EPS = 1e-6
+
+
+class WorldSpeech:
+    """Every act each speaker played, from /sim/world_state: start, words with the stamp each was
+    first seen at, and the stamp at which the speaker was first seen no longer playing it."""
+
+    def __init__(self):
+        self.acts = {}  # (speaker id, content, start time) -> dict
+        self.current = {}  # speaker id -> key of the act being played
+        self.now = 0.0
+        self.lock = threading.Lock()
+        rospy.Subscriber("/sim/world_state", WorldState, self.on_state, queue_size=1000)
+
+    def follow(self, speaker_id, speech, stamp):
+        key = (speaker_id, speech.content, round(speech.start_time, 6)) if speech.is_speaking \
+            else None
+        previous = self.current.get(speaker_id)
+        if previous is not None and previous != key:
+            self.acts[previous]["end"] = stamp
+        if key is not None:
+            act = self.acts.setdefault(key, {"start": speech.start_time, "words": {}, "end": None})
+            act["words"].setdefault(speech.word_index, (speech.current_word, stamp))
+        self.current[speaker_id] = key
+
+    def on_state(self, state):
+        stamp = state.header.stamp.to_sec()
+        with self.lock:
+            self.now = stamp
+            if state.has_ari:
+                self.follow(state.ari.id, state.ari.speech, stamp)
+            for human in state.humans:
+                self.follow(human.id, human.speech, stamp)
+
+    def played(self, speaker_id, content, not_before):
+        """The act of `speaker_id` saying `content` that started first at or after `not_before`."""
+        with self.lock:
+            found = [(k, a) for k, a in self.acts.items()
+                     if k[0] == speaker_id and k[1] == content and a["start"] >= not_before - EPS]
+        return min(found, key=lambda ka: ka[1]["start"])[1] if found else None
+
+
+class DialogueWorld(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("dialogue_world_test")
+        cls.sim_duration = rospy.get_param("~sim_duration")
+        cls.lines = rospy.get_param("~lines")
+        cls.world = WorldSpeech()
+        cls.utterances = []
+        cls.feedback = {}
+        cls.results = []
+        rospy.Subscriber("/sim/dialogue/utterances", DialogueUtterance,
+                         lambda m: cls.utterances.append(m), queue_size=100)
+        rospy.Subscriber("/tts/feedback", TtsActionFeedback,
+                         lambda m: cls.feedback.setdefault(m.status.goal_id.id, []).append(
+                             m.feedback), queue_size=100)
+        rospy.Subscriber("/tts/result", TtsActionResult, lambda m: cls.results.append(m),
+                         queue_size=100)
+        limit = time.monotonic() + 150.0
+        while time.monotonic() < limit and cls.world.now < cls.sim_duration:
+            time.sleep(0.1)
+        cls.end_s = cls.world.now
+
+    def finished_utterances(self):
+        """Utterances whose playing must be over by the end of the run (2 steps of slack)."""
+        return [u for u in self.utterances
+                if u.header.stamp.to_sec() + len(u.text.split()) * WORD_S + 2 * STEP_S < self.end_s]
+
+    def test_1_every_utterance_plays_word_by_word_at_150_wpm(self):
+        finished = self.finished_utterances()
+        humans = [u for u in finished if u.speaker != "ARI"]
+        self.assertGreaterEqual(len(humans), 4)
+        self.assertEqual({u.speaker for u in humans}, {"patient", "companion"})
+        # Marie (10) is the waiting room's first patient, Jean (11) its first companion.
+        self.assertEqual({u.speaker_id for u in humans}, {10, 11})
+        self.assertEqual({u.person_id for u in humans}, {"human10", "human11"})
+        for u in finished:
+            words = u.text.split()
+            act = self.world.played(u.speaker_id, u.text, u.header.stamp.to_sec())
+            self.assertIsNotNone(act, "not played: %s %r" % (u.speaker, u.text))
+            # The say call is handled before the next step: it starts at the stamp or one later.
+            self.assertLessEqual(act["start"] - u.header.stamp.to_sec(), STEP_S + EPS)
+            # Every word, in order, once each: word i first seen in [start + 0.4 i, + one step].
+            self.assertEqual(sorted(act["words"]), list(range(len(words))), u.text)
+            for i, word in enumerate(words):
+                said, seen = act["words"][i]
+                self.assertEqual(said, word)
+                self.assertGreaterEqual(seen - act["start"], i * WORD_S - EPS)
+                self.assertLessEqual(seen - act["start"], i * WORD_S + STEP_S + EPS)
+            # The act lasts n * 0.4 s plus at most one step.
+            self.assertIsNotNone(act["end"], u.text)
+            self.assertGreaterEqual(act["end"] - act["start"], len(words) * WORD_S - EPS)
+            self.assertLessEqual(act["end"] - act["start"], len(words) * WORD_S + STEP_S + EPS)
+
+    def test_2_turns_do_not_overlap_and_keep_the_drawn_gaps(self):
+        finished = self.finished_utterances()
+        played = []
+        for u in finished:
+            act = self.world.played(u.speaker_id, u.text, u.header.stamp.to_sec())
+            played.append((act["start"], act["end"], u))
+        played.sort(key=lambda p: p[0])
+        checked = 0
+        for (start0, end0, u0), (start1, end1, u1) in zip(played, played[1:]):
+            self.assertGreaterEqual(start1, end0 - EPS, "%r overlaps %r" % (u1.text, u0.text))
+            if u1.speaker == "ARI" or u1.turn != u0.turn + 1:
+                continue
+            # A human follows the previous utterance after the gap drawn for it, or after ARI's
+            # silence (a silent robot step); end and start are each seen to within a step.
+            pause = start1 - end0
+            drawn = u1.planned_start - u0.planned_end
+            self.assertTrue(abs(pause - drawn) <= 3 * STEP_S or
+                            abs(pause - ROBOT_SILENCE_S) <= 3 * STEP_S,
+                            "pause %.3f s, drawn gap %.3f s: %r" % (pause, drawn, u1.text))
+            checked += 1
+        self.assertGreaterEqual(checked, 3)
+
+    def test_3_scripted_ari_lines_play_and_their_goals_succeed(self):
+        self.assertEqual(len(self.results), self.lines)
+        for result in self.results:
+            self.assertEqual(result.status.status, GoalStatus.SUCCEEDED)
+            feedback = self.feedback[result.status.goal_id.id]
+            words = result.result.text.split()
+            # One STARTED_PLAYING_WORD per word, text_said growing a word at a time.
+            self.assertEqual([f.event_type for f in feedback],
+                             [TtsFeedback.TTS_EVENT_STARTED_PLAYING_WORD] * len(words))
+            self.assertEqual([f.text_said for f in feedback],
+                             [" ".join(words[:i + 1]) for i in range(len(words))])
+        ari = [u for u in self.utterances if u.speaker == "ARI"]
+        self.assertEqual(len(ari), self.lines)
+        self.assertEqual(ari[0].acts, ["greet()", "inform(ari(name))", "offer-help()"])
+        self.assertEqual(ari[1].acts, ["inform(directions(toilet))"])
+        self.assertEqual(ari[2].acts, ["inform(beverage(coffee))"])
+        self.assertEqual(ari[3].acts, ["youre-welcome()"])
+
+
+if __name__ == "__main__":
+    rostest.rosrun("ari_social_sim", "dialogue_world", DialogueWorld)
