@@ -50,11 +50,10 @@ WorldCast cast_from_world(const WorldState& state, const std::vector<std::string
     }
     if (chosen == nullptr) {
       throw core::ConfigError(
-          requested.empty()
-              ? "/sim/world_state: no human with role '" + roles[r] +
-                    "' in the world; give " + source + ": human_ids"
-              : source + ": human_ids[" + std::to_string(r) + "]: no human with id " +
-                    std::to_string(requested[r]) + " in the world");
+          requested.empty() ? "/sim/world_state: no human with role '" + roles[r] +
+                                  "' in the world; give " + source + ": human_ids"
+                            : source + ": human_ids[" + std::to_string(r) + "]: no human with id " +
+                                  std::to_string(requested[r]) + " in the world");
     }
     if (chosen->role != roles[r]) {
       ROS_WARN("human %u plays the %s but the world calls it a %s", chosen->id, roles[r].c_str(),
@@ -132,10 +131,11 @@ int main(int argc, char** argv) {
   }
   nodes::AsrStage stage(nh, *setup->timing, roles, ids, run.language);
   nodes::LiveDialogueNode node(nh, *setup, nlu, run, stage);
-  const ros::Timer tick =
-      nh.createTimer(ros::Duration(1.0 / nodes::kAsrTickHz), [&node](const ros::TimerEvent&) { node.tick(); });
-  const ros::Timer tracked = nh.createTimer(
-      ros::Duration(1.0 / nodes::kTrackedHz), [&stage](const ros::TimerEvent&) { stage.publish_tracked(); });
+  const ros::Timer tick = nh.createTimer(ros::Duration(1.0 / nodes::kAsrTickHz),
+                                         [&node](const ros::TimerEvent&) { node.tick(); });
+  const ros::Timer tracked =
+      nh.createTimer(ros::Duration(1.0 / nodes::kTrackedHz),
+                     [&stage](const ros::TimerEvent&) { stage.publish_tracked(); });
   ros::spin();
   return 0;
 }

@@ -20,15 +20,15 @@ const char* to_string(DialogueMode mode);
 /// the README's parameter table.
 struct DialogueRunConfig {
   DialogueMode mode{DialogueMode::kWorld};  // required
-  std::string config;          // settings file; empty = the package's config/dialogue/simulation.yaml
-  uint64_t seed{1};            // dialogue d runs with episode_seed(seed, d)
-  unsigned dialogues{0};       // world, user_bot: dialogues to run, 0 = one after another forever
-  double dialogue_pause_s{5.0};  // s between two dialogues
-  LiveDialogueConfig live;     // robot_silence: s the humans wait for ARI before going on
+  std::string config;     // settings file; empty = the package's config/dialogue/simulation.yaml
+  uint64_t seed{1};       // dialogue d runs with episode_seed(seed, d)
+  unsigned dialogues{0};  // world, user_bot: dialogues to run, 0 = one after another forever
+  double dialogue_pause_s{5.0};     // s between two dialogues
+  LiveDialogueConfig live;          // robot_silence: s the humans wait for ARI before going on
   std::vector<unsigned> human_ids;  // world id per role of the settings (users.roles order); empty
                                     // = world: the lowest id with that role in the world;
                                     // user_bot: 1, 2, ...
-  std::string language{"en-GB"};  // LiveSpeech language (user_bot)
+  std::string language{"en-GB"};    // LiveSpeech language (user_bot)
 
   /// Reads every field from a mapping (parameter server or file); unknown keys, a missing or
   /// unknown mode and out-of-range values throw core::ConfigError naming the parameter.

@@ -22,8 +22,8 @@ namespace ari_social_sim::nodes {
 class AsrStage : public SpeechStage {
  public:
   /// `roles` and `human_ids` in the same order; ids give person ids `human<N>`, voices `voice<N>`.
-  AsrStage(ros::NodeHandle& nh, const dialogue::TurnTiming& timing,
-           std::vector<std::string> roles, std::vector<uint32_t> human_ids, std::string language);
+  AsrStage(ros::NodeHandle& nh, const dialogue::TurnTiming& timing, std::vector<std::string> roles,
+           std::vector<uint32_t> human_ids, std::string language);
 
   double now_s() const override;
   void start_human(const dialogue::Utterance& utterance, size_t human) override;

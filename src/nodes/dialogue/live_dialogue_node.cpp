@@ -113,8 +113,8 @@ void LiveDialogueNode::tick() {
   if (due >= 0) {
     const dialogue::Utterance& u = live_.env().transcript()[static_cast<size_t>(due)];
     const auto& roles = setup_.config.users.roles;
-    const size_t human = static_cast<size_t>(
-        std::find(roles.begin(), roles.end(), u.speaker) - roles.begin());
+    const size_t human =
+        static_cast<size_t>(std::find(roles.begin(), roles.end(), u.speaker) - roles.begin());
     publish_utterance(due, now);
     stage_.start_human(u, human);
     human_playing_ = true;
@@ -159,8 +159,8 @@ void LiveDialogueNode::publish_utterance(int index, double stamp_s) {
     msg.speaker_id = stage_.robot_id();
   } else {
     const auto& roles = setup_.config.users.roles;
-    const size_t human = static_cast<size_t>(
-        std::find(roles.begin(), roles.end(), u.speaker) - roles.begin());
+    const size_t human =
+        static_cast<size_t>(std::find(roles.begin(), roles.end(), u.speaker) - roles.begin());
     msg.speaker_id = stage_.human_id(human);
     msg.person_id = person_id(msg.speaker_id);
   }
@@ -181,10 +181,11 @@ void LiveDialogueNode::publish_outcome(double now_s) {
   msg.total_reward = live_.total_reward();
   msg.goals = last.info.goals;
   outcome_pub_.publish(msg);
-  ROS_INFO("dialogue %u ended: complete %d, success %d, truncated %d, %d robot turns, %d "
-           "utterances, reward %.0f",
-           dialogue_index_, msg.complete, msg.success, msg.truncated, msg.robot_turns,
-           msg.utterances, msg.total_reward);
+  ROS_INFO(
+      "dialogue %u ended: complete %d, success %d, truncated %d, %d robot turns, %d "
+      "utterances, reward %.0f",
+      dialogue_index_, msg.complete, msg.success, msg.truncated, msg.robot_turns, msg.utterances,
+      msg.total_reward);
 }
 
 std::string LiveDialogueNode::robot_words(size_t count) const {

@@ -16,7 +16,8 @@ WorldStage::WorldStage(ros::NodeHandle& nh, uint32_t robot_id, std::vector<uint3
 }
 
 void WorldStage::start_human(const dialogue::Utterance& utterance, size_t human) {
-  const std::string act = utterance.acts.empty() ? "none" : dialogue::acts_to_string(utterance.acts);
+  const std::string act =
+      utterance.acts.empty() ? "none" : dialogue::acts_to_string(utterance.acts);
   say(human_, human_ids_.at(human), act, utterance.text);
 }
 
