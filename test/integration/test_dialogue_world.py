@@ -18,9 +18,10 @@ STEP_S = 0.05  # world_node's step
 ROBOT_SILENCE_S = 3.0  # dialogue_world.test
 EPS = 1e-6
 # dialogue_node reacts to the world state it has processed, calls /sim/say, and the world steps on
-# meanwhile (a step is 10 ms of wall time at real_time_factor 5): a start or an end is seen a few
-# steps late. The measured latencies are printed; the bound is 5 steps.
-LATENCY_S = 5 * STEP_S
+# meanwhile (a step is 20 ms of wall time at real_time_factor 2.5): a start or an end is seen a
+# few steps late, more on a loaded machine. The measured latencies are printed; the bound is 10
+# steps.
+LATENCY_S = 10 * STEP_S
 
 
 class WorldSpeech:

@@ -136,8 +136,9 @@ class WorldNodeContract(unittest.TestCase):
         self.assertTrue(made.success, made.message)
         self.assertTrue(self.call["members"](group_id=made.id, members=[20]).success)
         self.assertTrue(self.call["centre"](group_id=made.id, centre=Point(6.5, 3.5, 0.0)).success)
+        # A state published before the centre call may still be queued: wait for one after it.
         state = self.state.wait(lambda m: any(g.id == made.id and sorted(g.members) == [20, 30]
-                                              for g in m.groups))
+                                              and abs(g.centre.x - 6.5) < 1e-9 for g in m.groups))
         group = next(g for g in state.groups if g.id == made.id)
         self.assertAlmostEqual(group.centre.x, 6.5)
 
