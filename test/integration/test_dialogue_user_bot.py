@@ -58,18 +58,25 @@ class DialogueUserBot(unittest.TestCase):
             said = [u for u in humans if u.speaker_id == human_id]
             self.assertTrue(all(u.speaker == role and u.person_id == "human%d" % human_id
                                 for u in said))
-            # No error layer here: each utterance is heard once, whole, under its own voice.
+            # No error layer here: each utterance is heard once, whole, under its own voice. The
+            # node starts once something listens to a voice, so this test may have missed the
+            # first utterances on either topic: the transcript and the finals agree from where
+            # both were heard.
             finals = [s for s in self.speech[human_id] if s.final]
-            self.assertEqual([s.final for s in finals], [u.text for u in said])
+            common = min(len(finals), len(said))
+            self.assertGreaterEqual(common, len(said) - 2)
+            self.assertEqual([s.final for s in finals[-common:]], [u.text for u in said[-common:]])
             for s in finals:
                 self.assertEqual(s.language, "en-GB")
                 self.assertEqual(s.incremental, "")
                 self.assertGreaterEqual(s.confidence, 0.0)
                 self.assertLessEqual(s.confidence, 1.0)
-            # Before each final, its words one at a time as incremental hypotheses (n - 1 of them).
+            # Before each final, its words one at a time as incremental hypotheses (n - 1 of
+            # them), counted from the first final this test heard whole.
             partial = []
             expected = []
-            for s in self.speech[human_id]:
+            first_final = next(i for i, s in enumerate(self.speech[human_id]) if s.final)
+            for s in self.speech[human_id][first_final + 1:]:
                 if s.final:
                     words = s.final.split()
                     expected.extend(" ".join(words[:k]) for k in range(1, len(words)))

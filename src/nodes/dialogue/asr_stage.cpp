@@ -61,6 +61,11 @@ double AsrStage::now_s() const {
   return ros::Time::now().toSec();
 }
 
+bool AsrStage::has_listener() const {
+  return std::any_of(voices_.begin(), voices_.end(),
+                     [](const Voice& voice) { return voice.speech.getNumSubscribers() > 0; });
+}
+
 void AsrStage::publish_tracked() {
   IdsList voices;
   IdsList persons;

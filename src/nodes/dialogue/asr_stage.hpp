@@ -26,6 +26,8 @@ class AsrStage : public SpeechStage {
            std::vector<uint32_t> human_ids, std::string language);
 
   double now_s() const override;
+  /// Something subscribes to a voice's speech: the users do not talk to an empty room.
+  bool has_listener() const override;
   void start_human(const dialogue::Utterance& utterance, size_t human) override;
   bool human_done() override;
   void start_robot(const std::string& text) override;

@@ -74,7 +74,7 @@ void LiveDialogueNode::on_preempt() {
 
 void LiveDialogueNode::tick() {
   const double now = stage_.now_s();
-  if (!dialogue_active_ && next_start_s_ >= 0.0 && now >= next_start_s_) {
+  if (!dialogue_active_ && next_start_s_ >= 0.0 && now >= next_start_s_ && stage_.has_listener()) {
     start_dialogue(now);
   }
   // ARI: takes the floor when the humans leave it, then speaks its words one by one.

@@ -18,7 +18,8 @@ namespace ari_social_sim::nodes {
 /// word by word (feedback TTS_EVENT_STARTED_PLAYING_WORD per word) and succeeds once played;
 /// what ARI said goes to the LiveDialogue, whose human replies the stage voices in turn.
 /// Publishes every utterance on /sim/dialogue/utterances and each dialogue's end on
-/// /sim/dialogue/outcome; runs `dialogues` dialogues (0 = forever), `dialogue_pause` apart.
+/// /sim/dialogue/outcome; runs `dialogues` dialogues (0 = forever), `dialogue_pause` apart, each
+/// once the stage has a listener.
 /// Single-threaded: goal callbacks and tick() run on the one ROS spinner.
 class LiveDialogueNode {
  public:

@@ -17,6 +17,9 @@ class SpeechStage {
 
   /// The stage's clock (s): sim time of the world, or ROS time.
   virtual double now_s() const = 0;
+  /// Someone can hear the humans, so a dialogue may start (the world always; a system listening
+  /// to a voice in mode 3).
+  virtual bool has_listener() const = 0;
 
   /// Starts playing a human utterance; `human` indexes the roles of the dialogue settings.
   virtual void start_human(const dialogue::Utterance& utterance, size_t human) = 0;

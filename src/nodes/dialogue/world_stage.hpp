@@ -23,6 +23,7 @@ class WorldStage : public SpeechStage {
              std::function<void()> on_state);
 
   double now_s() const override { return now_s_; }
+  bool has_listener() const override { return true; }
   void start_human(const dialogue::Utterance& utterance, size_t human) override;
   bool human_done() override { return human_.done; }
   void start_robot(const std::string& text) override;
