@@ -4,6 +4,7 @@
 
 #include "ari_social_sim/Say.h"
 #include "ari_social_sim/dialogue/dialogue_act.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::nodes {
 
@@ -63,6 +64,8 @@ void WorldStage::follow(Playback& playback, const SpeechState& speech) {
   if (saying_it && speech.start_time == playback.start_time_s) {
     playback.words_started = speech.word_index + 1;
   } else {
+    // Played to its end: every word was started, including any whose states this node missed.
+    playback.words_started = dialogue::split_words(playback.content).size();
     playback.done = true;
   }
 }
