@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """rostest, dialogue_node mode 1 (world): a patient and a companion of the waiting room converse
 with a scripted ARI through /tts; every utterance plays in the world word by word at 150 words per
-minute (0.4 s a word), in turn, with the turn timing's gaps."""
+minute (0.4 s a word), in turn, with the turn timing's gaps, and hri_perception_node's voices hear
+them as ROS4HRI LiveSpeech."""
 import threading
 import time
 import unittest
@@ -9,9 +10,10 @@ import unittest
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
+from std_msgs.msg import String
 
-from ari_social_sim.msg import (DialogueUtterance, TtsActionFeedback, TtsActionResult, TtsFeedback,
-                                WorldState)
+from ari_social_sim.msg import (DialogueUtterance, IdsList, LiveSpeech, TtsActionFeedback,
+                                TtsActionResult, TtsFeedback, WorldState)
 
 WORD_S = 0.4  # 150 wpm, the waiting room's default rate and the dialogue's seconds_per_word
 STEP_S = 0.05  # world_node's step
@@ -69,6 +71,28 @@ class WorldSpeech:
         return min(found, key=lambda ka: ka[1]["start"])[1] if found else None
 
 
+class Voices:
+    """What hri_perception_node reports hearing: LiveSpeech per voice id (subscribed as each id
+    appears in /humans/voices/tracked) and the voice id of persons human10 and human11."""
+
+    def __init__(self):
+        self.speech = {}
+        self.subscribers = {}
+        self.person_voice = {}
+        rospy.Subscriber("/humans/voices/tracked", IdsList, self.on_tracked, queue_size=10)
+        for person in ("human10", "human11"):
+            rospy.Subscriber("/humans/persons/%s/voice_id" % person, String,
+                             lambda m, p=person: self.person_voice.__setitem__(p, m.data))
+
+    def on_tracked(self, msg):
+        for voice in msg.ids:
+            if voice not in self.subscribers:
+                self.speech[voice] = []
+                self.subscribers[voice] = rospy.Subscriber(
+                    "/humans/voices/%s/speech" % voice, LiveSpeech, self.speech[voice].append,
+                    queue_size=1000)
+
+
 class DialogueWorld(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -76,6 +100,7 @@ class DialogueWorld(unittest.TestCase):
         cls.sim_duration = rospy.get_param("~sim_duration")
         cls.lines = rospy.get_param("~lines")
         cls.world = WorldSpeech()
+        cls.voices = Voices()
         cls.utterances = []
         cls.feedback = {}
         cls.results = []
@@ -181,6 +206,30 @@ class DialogueWorld(unittest.TestCase):
         self.assertEqual(ari[1].acts, ["inform(directions(toilet))"])
         self.assertEqual(ari[2].acts, ["inform(beverage(coffee))"])
         self.assertEqual(ari[3].acts, ["youre-welcome()"])
+
+    def test_4_perception_voices_hear_the_humans(self):
+        # ARI goes next to Marie and Jean before its first line (within the microphones' 5 m);
+        # from then on every human utterance is heard by the perception under the speaker's
+        # person's voice, word for word (error models off). A voice's first utterance may start
+        # before this test has subscribed to the new voice id: at most one per voice is missed.
+        ari_start = min(u.header.stamp.to_sec() for u in self.utterances if u.speaker == "ARI")
+        heard = [u for u in self.finished_utterances()
+                 if u.speaker != "ARI" and u.header.stamp.to_sec() > ari_start]
+        self.assertGreaterEqual(len(heard), 4)
+        received = 0
+        for human_id in (10, 11):
+            voice = self.voices.person_voice.get("human%d" % human_id)
+            self.assertIsNotNone(voice, "no voice for human%d" % human_id)
+            finals = [s.final for s in self.voices.speech.get(voice, []) if s.final]
+            said = [u.text for u in heard if u.speaker_id == human_id]
+            missed = [text for text in said if text not in finals]
+            self.assertLessEqual(len(missed), 1, missed)
+            # Nothing on this voice that its human did not say.
+            spoken = {u.text for u in self.utterances if u.speaker_id == human_id}
+            self.assertTrue(set(finals) <= spoken, set(finals) - spoken)
+            received += len(said) - len(missed)
+        print("perception heard %d of %d human utterances said with ARI nearby, word for word"
+              % (received, len(heard)))
 
 
 if __name__ == "__main__":
