@@ -39,6 +39,8 @@ def main():
     args = parser.parse_args()
     if args.humans < 4:
         sys.exit("make_crowd_scene: --humans: expected at least 4, got %d" % args.humans)
+    if not 0 <= args.seed < 2**31:
+        sys.exit("make_crowd_scene: --seed: expected 0 to 2147483647, got %d" % args.seed)
     rng = random.Random(args.seed)
     side = math.sqrt(args.humans * AREA_PER_HUMAN_M2) + 2.0
 
