@@ -7,7 +7,9 @@ add_library(ari_physics
   src/physics/ari_controllers.cpp
   src/physics/ari_physics.cpp
   src/physics/diff_drive_controller.cpp
+  src/physics/lean_multibody_solver.cpp
   src/physics/imu_model.cpp
+  src/physics/joint_servo.cpp
   src/physics/joint_trajectory.cpp
   src/physics/multibody_layout.cpp
   src/physics/person_shape.cpp

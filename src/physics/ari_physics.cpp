@@ -19,6 +19,8 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/physics/ari_controllers.hpp"
 #include "ari_social_sim/physics/multibody_layout.hpp"
+#include "joint_servo.hpp"
+#include "lean_multibody_solver.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -130,7 +132,7 @@ struct AriPhysics::Engine {
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::unique_ptr<LeanMultiBodySolver> solver;
   std::unique_ptr<btMultiBodyDynamicsWorld> dynamics;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btCollisionObject>> statics;
@@ -198,7 +200,7 @@ AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDesc
   collision_config = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher = std::make_unique<btCollisionDispatcher>(collision_config.get());
   broadphase = std::make_unique<btDbvtBroadphase>();
-  solver = std::make_unique<btMultiBodyConstraintSolver>();
+  solver = std::make_unique<LeanMultiBodySolver>();
   dynamics = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
                                                         solver.get(), collision_config.get());
   dynamics->setGravity(btVector3(0.0, 0.0, -config.gravity_mps2));
@@ -416,8 +418,8 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   for (size_t j = 0; j < joint_names.size(); ++j) {
     const RobotJoint& joint = model.joint(joint_names[j]);
     if (joint_link[j] >= 0 && joint.max_effort_nm > 0.0) {
-      auto motor = std::make_unique<btMultiBodyJointMotor>(robot.get(), joint_link[j], 0.0,
-                                                           joint.max_effort_nm * step_s);
+      auto motor =
+          std::make_unique<JointServo>(robot.get(), joint_link[j], joint.max_effort_nm * step_s);
       motors.push_back(motor.get());
       dynamics->addMultiBodyConstraint(motor.get());
       constraints.push_back(std::move(motor));
