@@ -1,6 +1,7 @@
 #include "joint_servo.hpp"
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "ari_social_sim/core/check.hpp"
 
@@ -10,6 +11,19 @@ JointServo::JointServo(btMultiBody* body, int link, btScalar max_impulse)
     : btMultiBodyJointMotor(body, link, /*linkDoF=*/0, /*desiredVelocity=*/0, max_impulse) {
   m_bodyB = nullptr;
   m_linkB = -1;
+}
+
+int JointServo::getIslandIdB() const {
+  // All colliders of one multibody share its island; the joint's own link may have none.
+  if (const btMultiBodyLinkCollider* base = m_bodyA->getBaseCollider()) {
+    return base->getIslandTag();
+  }
+  for (int link = 0; link < m_bodyA->getNumLinks(); ++link) {
+    if (const btMultiBodyLinkCollider* collider = m_bodyA->getLink(link).m_collider) {
+      return collider->getIslandTag();
+    }
+  }
+  return -1;
 }
 
 void JointServo::createConstraintRows(btMultiBodyConstraintArray& rows,

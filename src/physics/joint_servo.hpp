@@ -16,7 +16,8 @@ class JointServo : public btMultiBodyJointMotor {
  public:
   JointServo(btMultiBody* body, int link, btScalar max_impulse);
 
-  int getIslandIdB() const override { return getIslandIdA(); }
+  /// The multibody's island, as for Bullet's motor, whose second side is the same multibody.
+  int getIslandIdB() const override;
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
 };
