@@ -210,6 +210,8 @@ AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDesc
   // Two friction directions per contact (the classic pyramid) instead of the implicit cone:
   // cheaper, and with it a parked ARI drifts no more than with twice the iterations.
   dynamics->getSolverInfo().m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
+  // Only awake objects get their bounding boxes updated: the robot and the people, not the room.
+  dynamics->setForceUpdateAllAabbs(false);
   build_world(config);
   build_robot(start, config);
   // One shape for every person: a cylinder to the shoulders and the head's sphere.
@@ -252,6 +254,9 @@ void AriPhysics::Engine::add_static(btCollisionShape* shape, const Eigen::Isomet
   object->setCollisionShape(shape);
   object->setWorldTransform(to_bt(X));
   object->setFriction(friction);
+  // Never moves: asleep, its bounding box is not recomputed every step (setForceUpdateAllAabbs
+  // is off); a sleeping object still collides with the awake robot and people.
+  object->setActivationState(ISLAND_SLEEPING);
   dynamics->addCollisionObject(object.get(), group, mask);
   statics.push_back(std::move(object));
 }
