@@ -1,21 +1,12 @@
 #!/usr/bin/env bash
 # Regenerates docs/physics_rviz.png: ari_physics_node alone in the hospital waiting room in mapping
-# mode (launch/ari_physics.launch mapping:=true), ARI turned once on the spot so the torso depth
-# camera fills the OctoMap around it, then config/physics.rviz on a virtual screen: the robot
-# model, the occupied voxels, the projected /map, and the head camera and torso RGB-D colour
-# images. Needs a build (scripts/build.sh), xvfb and ImageMagick; rviz renders with llvmpipe.
+# mode (launch/ari_physics.launch mapping:=true), ARI driven on a loop through the room so the torso
+# depth camera fills the OctoMap, then config/physics.rviz on a virtual screen, seen over the whole
+# room: the robot model, the occupied voxels, the projected /map, and the head camera and torso
+# RGB-D colour images. Needs a build (scripts/build.sh), xvfb and ImageMagick; rviz renders with
+# llvmpipe. Takes about a minute.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-export PATH=/usr/bin:$PATH
-set +u
-source _build/devel/setup.bash
-set -u
-port=${ARI_SCREENSHOT_ROS_PORT:-11461}
-export ROS_MASTER_URI=http://localhost:${port}
-if timeout 5 rostopic list > /dev/null 2>&1; then
-  echo "a ROS master already runs on port ${port}: set ARI_SCREENSHOT_ROS_PORT to a free one" >&2
-  exit 1
-fi
+source "$(dirname "$0")/screenshot_env.sh" 11461
 work=$(mktemp -d)
 
 roslaunch -p "${port}" ari_social_sim ari_physics.launch mapping:=true real_time_factor:=0 \
