@@ -1,0 +1,37 @@
+# navigation/: SocialMPC (costs, solvers, goal finder, control loop), social_mpc_node and the
+# nav_benchmark tool.
+add_library(ari_navigation
+  src/navigation/agent_clearance_cost.cpp
+  src/navigation/control_cost.cpp
+  src/navigation/footprint_model.cpp
+  src/navigation/geodesic_field.cpp
+  src/navigation/goal_cost.cpp
+  src/navigation/goal_finder.cpp
+  src/navigation/grid_field.cpp
+  src/navigation/group_space_cost.cpp
+  src/navigation/heading_cost.cpp
+  src/navigation/initial_guess.cpp
+  src/navigation/mpc_solver.cpp
+  src/navigation/mppi_solver.cpp
+  src/navigation/navigation_config.cpp
+  src/navigation/navigator.cpp
+  src/navigation/nlopt_solver.cpp
+  src/navigation/obstacle_cost.cpp
+  src/navigation/perceived_scene.cpp
+  src/navigation/personal_space_cost.cpp
+  src/navigation/signed_distance_field.cpp
+  src/navigation/social_mpc.cpp
+  src/navigation/social_spaces.cpp
+  src/navigation/trajectory_cost.cpp
+  src/navigation/unicycle_model.cpp
+  src/navigation/view_cost.cpp)
+target_link_libraries(ari_navigation PUBLIC ari_world PRIVATE opencv_core opencv_imgproc NLopt::nlopt)
+target_include_directories(ari_navigation SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_navigation
+    SOURCES
+      test/navigation/test_cost_terms.cpp
+    LIBRARIES ari_navigation)
+  target_include_directories(test_navigation PRIVATE test/world)
+endif()

@@ -1,0 +1,63 @@
+#include "ari_social_sim/navigation/initial_guess.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ari_social_sim/core/angles.hpp"
+
+namespace ari_social_sim::navigation {
+
+Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& config,
+                                const ControlBounds& bounds, double turn_bias_rps) {
+  constexpr double kTurnGain = 2.0;       // 1/s, heading error to angular velocity
+  constexpr double kPanGain = 4.0;        // 1/s, pan error to pan velocity
+  constexpr double kSlowRadius = 0.8;     // m, full speed beyond this travel distance
+  constexpr double kAlignRadius = 0.3;    // m, turn to the goal heading within this
+  const double dt = config.step_s;
+  Eigen::VectorXd controls(config.control_count());
+  RobotState s = problem.start;
+  for (int t = 0; t < config.horizon_steps; ++t) {
+    Eigen::Vector2d g;
+    const double distance = problem.geodesic->cost(s.position, &g);
+    double desired = problem.goal.theta;
+    if (distance > kAlignRadius) {
+      const Eigen::Vector2d direction =
+          g.norm() > 1e-6 ? Eigen::Vector2d(-g) : Eigen::Vector2d(problem.goal.position - s.position);
+      desired = std::atan2(direction.y(), direction.x());
+    }
+    const double error = core::angle_difference(desired, s.theta);
+    const double bias = t < config.horizon_steps / 2 ? turn_bias_rps : 0.0;
+    double v = config.max_linear_mps * std::max(0.0, std::cos(error)) *
+               std::min(1.0, distance / kSlowRadius);
+    if (distance <= kAlignRadius) {
+      v = 0.0;
+    }
+    const double w = kTurnGain * error + bias;
+    double pan_target = 0.0;
+    if (problem.look_at) {
+      const Eigen::Vector2d to = *problem.look_at - s.position;
+      pan_target = core::angle_difference(std::atan2(to.y(), to.x()), s.theta);
+    }
+    const double pan_rate = kPanGain * (pan_target - s.pan);
+    controls.segment<3>(3 * t) << v, w, pan_rate;
+    controls.segment<3>(3 * t) =
+        controls.segment<3>(3 * t).cwiseMax(bounds.lower.segment<3>(3 * t)).cwiseMin(
+            bounds.upper.segment<3>(3 * t));
+    const double applied_v = controls[3 * t], applied_w = controls[3 * t + 1];
+    const double mid = s.theta + 0.5 * applied_w * dt;
+    s.position += applied_v * dt * Eigen::Vector2d(std::cos(mid), std::sin(mid));
+    s.theta += applied_w * dt;
+    s.pan += controls[3 * t + 2] * dt;
+  }
+  return controls;
+}
+
+Eigen::VectorXd shift_by_one_step(const Eigen::VectorXd& previous) {
+  const Eigen::Index n = previous.size();
+  Eigen::VectorXd shifted(n);
+  shifted.head(n - kControlsPerStep) = previous.tail(n - kControlsPerStep);
+  shifted.tail(kControlsPerStep) = previous.tail(kControlsPerStep);
+  return shifted;
+}
+
+}  // namespace ari_social_sim::navigation

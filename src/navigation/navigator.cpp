@@ -1,0 +1,170 @@
+#include "ari_social_sim/navigation/navigator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/navigation/navigation_errors.hpp"
+#include "ari_social_sim/navigation/signed_distance_field.hpp"
+
+namespace ari_social_sim::navigation {
+namespace {
+
+std::string format_seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f s", s);
+  return text;
+}
+
+std::string format_point(const Eigen::Vector2d& p) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "(%.2f, %.2f)", p.x(), p.y());
+  return text;
+}
+
+}  // namespace
+
+Navigator::Navigator(const NavigationConfig& config, const world::OccupancyGrid& map)
+    : config_(config),
+      footprint_(FootprintModel::covering(world::AriFootprint{}, config.mpc.footprint_circles)),
+      sdf_(signed_distance_field(map)),
+      goal_finder_(config.goal_finder, footprint_, config.mpc.personal_space),
+      mpc_(config.mpc, footprint_) {}
+
+void Navigator::start(const NavigationTarget& target, const PerceivedScene& scene,
+                      const RobotObservation& robot, double time_s) {
+  Goal goal = goal_finder_.find(target, scene, sdf_, robot.pose);
+  std::unique_ptr<GeodesicField> field = field_to(goal, robot.pose);
+  goal_ = std::move(goal);
+  geodesic_ = std::move(field);
+  target_ = target;
+  state_ = NavigationState::kActive;
+  target_seen_s_ = time_s;
+  best_distance_m_ = geodesic_->cost(robot.pose.position);
+  best_distance_time_s_ = time_s;
+  mpc_.reset();
+}
+
+void Navigator::cancel() {
+  state_ = NavigationState::kIdle;
+  target_.reset();
+}
+
+std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal,
+                                                   const core::Pose2& robot) const {
+  auto field =
+      std::make_unique<GeodesicField>(sdf_, goal.pose.position, config_.navigator.geodesic);
+  if (!field->reachable(goal.pose.position)) {
+    throw GoalUnreachable("goal " + format_point(goal.pose.position) +
+                          " is too close to walls or furniture for ARI to reach");
+  }
+  if (!field->reachable(robot.position)) {
+    throw GoalUnreachable("no collision-free path from ARI at " + format_point(robot.position) +
+                          " to the goal " + format_point(goal.pose.position));
+  }
+  return field;
+}
+
+void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot) {
+  if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m) {
+    geodesic_ = field_to(goal, robot);
+  }
+  goal_ = goal;
+}
+
+NavigatorStep Navigator::finish(NavigationState state, const std::string& reason) {
+  state_ = state;
+  NavigatorStep step;
+  step.state = state;
+  step.reason = reason;
+  step.phase = state == NavigationState::kSucceeded ? "arrived" : "aborted";
+  step.command.pan_rad = problem_.start.pan;
+  return step;
+}
+
+NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
+                                const PerceivedScene& scene) {
+  NavigatorStep step;
+  step.state = state_;
+  step.command.pan_rad = robot.pan_rad;
+  if (state_ != NavigationState::kActive) {
+    return step;
+  }
+  problem_.start.pan = robot.pan_rad;
+
+  // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
+  bool target_visible = true;
+  try {
+    adopt_goal(goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_), robot.pose);
+    target_seen_s_ = time_s;
+  } catch (const UnknownTarget& e) {
+    target_visible = false;
+    if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
+      return finish(NavigationState::kAborted, describe(*target_) + " lost for " +
+                                                   format_seconds(time_s - target_seen_s_) +
+                                                   " (" + e.what() + ")");
+    }
+  } catch (const GoalUnreachable& e) {
+    return finish(NavigationState::kAborted, e.what());
+  }
+
+  // Arrival, judged on base_footprint against the goal pose.
+  const double position_error = (robot.pose.position - goal_->pose.position).norm();
+  const double heading_error = std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
+  step.distance_to_goal_m = geodesic_->cost(robot.pose.position);
+  if (target_visible && position_error <= config_.navigator.goal_tolerance_m &&
+      heading_error <= config_.navigator.yaw_tolerance) {
+    NavigatorStep done = finish(NavigationState::kSucceeded, "");
+    done.distance_to_goal_m = step.distance_to_goal_m;
+    done.command.pan_rad = robot.pan_rad;
+    return done;
+  }
+
+  // Progress watchdog on the geodesic distance.
+  if (step.distance_to_goal_m < best_distance_m_ - config_.navigator.progress_distance_m) {
+    best_distance_m_ = step.distance_to_goal_m;
+    best_distance_time_s_ = time_s;
+  } else if (position_error > config_.navigator.goal_tolerance_m &&
+             time_s - best_distance_time_s_ > config_.navigator.progress_timeout_s) {
+    return finish(NavigationState::kAborted,
+                  "no progress toward " + describe(*target_) + " for " +
+                      format_seconds(time_s - best_distance_time_s_) + " (" +
+                      format_point(robot.pose.position) + ", " +
+                      std::to_string(step.distance_to_goal_m).substr(0, 4) + " m to go)");
+  }
+
+  build_problem(robot, scene);
+  plan_ = mpc_.solve(problem_);
+  step.replanned = true;
+  step.command = {plan_.linear_mps(), plan_.angular_rps(), plan_.pan_target()};
+  step.phase = !target_visible                   ? "waiting for the target"
+               : position_error > 2.0 * config_.navigator.goal_tolerance_m ? "approaching"
+                                                                           : "aligning";
+  return step;
+}
+
+void Navigator::build_problem(const RobotObservation& robot, const PerceivedScene& scene) {
+  problem_.start.position = robot.pose.position;
+  problem_.start.theta = robot.pose.theta;
+  problem_.start.pan = robot.pan_rad;
+  problem_.start_linear_mps = robot.linear_mps;
+  problem_.start_angular_rps = robot.angular_rps;
+  problem_.start_pan_rps = robot.pan_rps;
+  problem_.sdf = &sdf_;
+  problem_.geodesic = geodesic_.get();
+  problem_.goal = goal_->pose;
+  problem_.look_at = goal_->look_at;
+  problem_.people.clear();
+  for (const PersonEstimate& person : scene.people) {
+    const bool is_target = std::find(goal_->target_people.begin(), goal_->target_people.end(),
+                                     person.id) != goal_->target_people.end();
+    problem_.people.push_back({person, is_target ? config_.mpc.target_space_scale : 1.0});
+  }
+  problem_.groups.clear();
+  for (const GroupEstimate& group : scene.groups) {
+    problem_.groups.push_back({group, group.id == goal_->group_id});
+  }
+}
+
+}  // namespace ari_social_sim::navigation
