@@ -3,6 +3,7 @@
 add_library(ari_navigation
   src/navigation/agent_clearance_cost.cpp
   src/navigation/control_cost.cpp
+  src/navigation/episode_scorer.cpp
   src/navigation/footprint_model.cpp
   src/navigation/geodesic_field.cpp
   src/navigation/goal_cost.cpp
@@ -35,3 +36,11 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ari_navigation)
   target_include_directories(test_navigation PRIVATE test/world)
 endif()
+
+# nav_benchmark: the navigation benchmark (a user-facing tool, `rosrun ari_social_sim nav_benchmark`).
+add_executable(nav_benchmark
+  src/tools/nav_benchmark/episodes.cpp
+  src/tools/nav_benchmark/nav_benchmark.cpp)
+target_link_libraries(nav_benchmark ari_navigation ari_perception)
+target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

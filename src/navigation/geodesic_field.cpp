@@ -33,7 +33,7 @@ float eikonal_update(float a, float b, float f, float h) {
 }  // namespace
 
 GeodesicField::GeodesicField(const GridField& sdf, const Eigen::Vector2d& goal,
-                             const GeodesicParams& params)
+                             const GeodesicParams& params, const std::vector<CostDisc>& discs)
     : field_(sdf), goal_(goal), params_(params) {
   const size_t count = sdf.values().size();
   std::vector<float> cost_per_m(count);
@@ -50,6 +50,24 @@ GeodesicField::GeodesicField(const GridField& sdf, const Eigen::Vector2d& goal,
     const double shortfall =
         std::max(0.0, (params.preferred_clearance_m - clearance) / spare_range);
     cost_per_m[i] = static_cast<float>(1.0 + params.clearance_penalty * shortfall * shortfall);
+  }
+  // Cost discs: the largest extra cost of the discs covering a cell.
+  for (const CostDisc& disc : discs) {
+    int x0, y0, x1, y1;
+    const Eigen::Vector2d reach(disc.radius_m, disc.radius_m);
+    field_.cell_of(disc.centre - reach, x0, y0);
+    field_.cell_of(disc.centre + reach, x1, y1);
+    for (int y = std::max(y0, 0); y <= std::min(y1, field_.height() - 1); ++y) {
+      for (int x = std::max(x0, 0); x <= std::min(x1, field_.width() - 1); ++x) {
+        if ((field_.cell_centre(x, y) - disc.centre).norm() <= disc.radius_m) {
+          const size_t i = field_.index(x, y);
+          if (passable_[i]) {
+            const float base = cost_per_m[i];
+            cost_per_m[i] = std::max(base, static_cast<float>(1.0 + disc.extra_cost));
+          }
+        }
+      }
+    }
   }
   march(cost_per_m);
   flood_passable();

@@ -24,7 +24,8 @@ Eigen::Vector2d GridField::cell_centre(int x, int y) const {
   return origin_ + resolution_m_ * Eigen::Vector2d(x + 0.5, y + 0.5);
 }
 
-double GridField::sample(const Eigen::Vector2d& point, Eigen::Vector2d* gradient) const {
+double GridField::sample(const Eigen::Vector2d& point, Eigen::Vector2d* gradient,
+                         double* cross) const {
   ARI_DCHECK(!values_.empty());
   // Continuous cell coordinates with cell centres at integers.
   double fx = (point.x() - origin_.x()) / resolution_m_ - 0.5;
@@ -46,6 +47,9 @@ double GridField::sample(const Eigen::Vector2d& point, Eigen::Vector2d* gradient
     const double dx = ((1.0 - ty) * (v10 - v00) + ty * (v11 - v01)) / resolution_m_;
     const double dy = (top - bottom) / resolution_m_;
     *gradient = {clamped_x ? 0.0 : dx, clamped_y ? 0.0 : dy};
+  }
+  if (cross != nullptr) {
+    *cross = clamped_x || clamped_y ? 0.0 : (v11 - v01 - v10 + v00) / (resolution_m_ * resolution_m_);
   }
   return bottom + ty * (top - bottom);
 }

@@ -14,8 +14,11 @@ Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& conf
   constexpr double kSlowRadius = 0.8;     // m, full speed beyond this travel distance
   constexpr double kAlignRadius = 0.3;    // m, turn to the goal heading within this
   const double dt = config.step_s;
+  const double max_dv = config.limits.max_linear_accel_mps2 * dt;
+  const double max_dw = config.limits.max_angular_accel_rps2 * dt;
   Eigen::VectorXd controls(config.control_count());
   RobotState s = problem.start;
+  double v_prev = problem.start_linear_mps, w_prev = problem.start_angular_rps;
   for (int t = 0; t < config.horizon_steps; ++t) {
     Eigen::Vector2d g;
     const double distance = problem.geodesic->cost(s.position, &g);
@@ -32,7 +35,9 @@ Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& conf
     if (distance <= kAlignRadius) {
       v = 0.0;
     }
-    const double w = kTurnGain * error + bias;
+    // Ramp toward the wanted velocities within ARI's acceleration limits.
+    v = std::clamp(v, v_prev - max_dv, v_prev + max_dv);
+    const double w = std::clamp(kTurnGain * error + bias, w_prev - max_dw, w_prev + max_dw);
     double pan_target = 0.0;
     if (problem.look_at) {
       const Eigen::Vector2d to = *problem.look_at - s.position;
@@ -44,6 +49,8 @@ Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& conf
         controls.segment<3>(3 * t).cwiseMax(bounds.lower.segment<3>(3 * t)).cwiseMin(
             bounds.upper.segment<3>(3 * t));
     const double applied_v = controls[3 * t], applied_w = controls[3 * t + 1];
+    v_prev = applied_v;
+    w_prev = applied_w;
     const double mid = s.theta + 0.5 * applied_w * dt;
     s.position += applied_v * dt * Eigen::Vector2d(std::cos(mid), std::sin(mid));
     s.theta += applied_w * dt;

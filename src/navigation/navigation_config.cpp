@@ -45,6 +45,7 @@ void CostWeights::read(const core::YamlMap& map) {
   read_number(map, "goal", goal, core::positive());
   read_number(map, "terminal", terminal, w);
   read_number(map, "heading", heading, w);
+  read_number(map, "path_heading", path_heading, w);
   read_number(map, "obstacle", obstacle, w);
   read_number(map, "agent_clearance", agent_clearance, w);
   read_number(map, "personal_space", personal_space, w);
@@ -85,6 +86,7 @@ void MpcConfig::read(const core::YamlMap& map) {
   read_number(map, "goal_huber", goal_huber_m, {0.0, 10.0, true});
   read_number(map, "heading_radius", heading_radius_m, {0.0, 10.0, true});
   read_number(map, "target_space_scale", target_space_scale, core::between(0.0, 1.0));
+  read_number(map, "target_space_fade", target_space_fade_m, core::positive());
   map.finish();
 }
 
@@ -143,6 +145,9 @@ NavigationConfig NavigationConfig::from_yaml(const core::YamlMap& map) {
     read_number(geo, "clearance_penalty", g.clearance_penalty, core::non_negative());
     read_number(geo, "blocked_cost", g.blocked_cost, {1.0, 1e6, false});
     read_number(geo, "snap_radius", g.snap_radius_m, core::between(0.0, 2.0));
+    read_number(geo, "person_clearance", g.person_clearance_m, core::between(0.0, 2.0));
+    read_number(geo, "person_cost", g.person_cost, core::non_negative());
+    read_number(geo, "group_cost", g.group_cost, core::non_negative());
     geo.finish();
     if (g.preferred_clearance_m < g.inscribed_radius_m) {
       geo.fail("preferred_clearance", "a value >= inscribed_radius (" +

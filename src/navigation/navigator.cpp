@@ -35,7 +35,9 @@ Navigator::Navigator(const NavigationConfig& config, const world::OccupancyGrid&
 void Navigator::start(const NavigationTarget& target, const PerceivedScene& scene,
                       const RobotObservation& robot, double time_s) {
   Goal goal = goal_finder_.find(target, scene, sdf_, robot.pose);
-  std::unique_ptr<GeodesicField> field = field_to(goal, robot.pose);
+  std::vector<CostDisc> discs = cost_discs(scene, goal);
+  std::unique_ptr<GeodesicField> field = field_to(goal, robot.pose, discs);
+  field_discs_ = std::move(discs);
   goal_ = std::move(goal);
   geodesic_ = std::move(field);
   target_ = target;
@@ -51,10 +53,50 @@ void Navigator::cancel() {
   target_.reset();
 }
 
-std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal,
-                                                   const core::Pose2& robot) const {
-  auto field =
-      std::make_unique<GeodesicField>(sdf_, goal.pose.position, config_.navigator.geodesic);
+std::vector<CostDisc> Navigator::cost_discs(const PerceivedScene& scene, const Goal& goal) const {
+  // People standing still and groups stand in the way as areas to go around; walking people are
+  // the MPC's, which predicts them.
+  constexpr double kStandingSpeed = 0.3;  // m/s
+  const GeodesicParams& g = config_.navigator.geodesic;
+  std::vector<CostDisc> discs;
+  if (g.person_cost > 0.0) {
+    for (const PersonEstimate& person : scene.people) {
+      if (person.velocity.norm() < kStandingSpeed) {
+        discs.push_back({person.position,
+                         config_.mpc.personal_space.person_radius_m + g.inscribed_radius_m +
+                             g.person_clearance_m,
+                         g.person_cost});
+      }
+    }
+  }
+  if (g.group_cost > 0.0) {
+    for (const GroupEstimate& group : scene.groups) {
+      if (group.id != goal.group_id) {
+        discs.push_back({group.centre, group.radius_m, g.group_cost});
+      }
+    }
+  }
+  return discs;
+}
+
+bool Navigator::discs_changed(const std::vector<CostDisc>& discs) const {
+  constexpr double kMoved = 0.2;  // m
+  if (discs.size() != field_discs_.size()) {
+    return true;
+  }
+  for (size_t i = 0; i < discs.size(); ++i) {
+    if ((discs[i].centre - field_discs_[i].centre).norm() > kMoved ||
+        std::abs(discs[i].radius_m - field_discs_[i].radius_m) > kMoved) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal, const core::Pose2& robot,
+                                                   const std::vector<CostDisc>& discs) const {
+  auto field = std::make_unique<GeodesicField>(sdf_, goal.pose.position,
+                                               config_.navigator.geodesic, discs);
   if (!field->reachable(goal.pose.position)) {
     throw GoalUnreachable("goal " + format_point(goal.pose.position) +
                           " is too close to walls or furniture for ARI to reach");
@@ -66,9 +108,13 @@ std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal,
   return field;
 }
 
-void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot) {
-  if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m) {
-    geodesic_ = field_to(goal, robot);
+void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
+                           const PerceivedScene& scene) {
+  std::vector<CostDisc> discs = cost_discs(scene, goal);
+  if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m ||
+      discs_changed(discs)) {
+    geodesic_ = field_to(goal, robot, discs);
+    field_discs_ = std::move(discs);
   }
   goal_ = goal;
 }
@@ -96,7 +142,7 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
   bool target_visible = true;
   try {
-    adopt_goal(goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_), robot.pose);
+    adopt_goal(goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_), robot.pose, scene);
     target_seen_s_ = time_s;
   } catch (const UnknownTarget& e) {
     target_visible = false;
@@ -154,12 +200,23 @@ void Navigator::build_problem(const RobotObservation& robot, const PerceivedScen
   problem_.sdf = &sdf_;
   problem_.geodesic = geodesic_.get();
   problem_.goal = goal_->pose;
+  problem_.at_goal_position =
+      (robot.pose.position - goal_->pose.position).norm() <= config_.navigator.goal_tolerance_m;
   problem_.look_at = goal_->look_at;
+  // The person approached or the members joined keep a share of their personal space while ARI
+  // is far, so it comes in from the front rather than brushing past them, fading to nothing over
+  // the last metres where ARI must stand within it: from the fade distance to half of it.
+  const double distance = geodesic_->cost(robot.pose.position);
+  const double fade_start = config_.mpc.target_space_fade_m;
+  const double fade_end = 0.5 * fade_start;
+  const double target_scale =
+      config_.mpc.target_space_scale *
+      std::clamp((distance - fade_end) / (fade_start - fade_end), 0.0, 1.0);
   problem_.people.clear();
   for (const PersonEstimate& person : scene.people) {
     const bool is_target = std::find(goal_->target_people.begin(), goal_->target_people.end(),
                                      person.id) != goal_->target_people.end();
-    problem_.people.push_back({person, is_target ? config_.mpc.target_space_scale : 1.0});
+    problem_.people.push_back({person, is_target ? target_scale : 1.0});
   }
   problem_.groups.clear();
   for (const GroupEstimate& group : scene.groups) {

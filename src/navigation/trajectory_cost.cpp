@@ -18,8 +18,9 @@ TrajectoryCost::TrajectoryCost(const MpcConfig& config, const UnicycleModel& mod
   const FootprintModel& footprint = model.footprint();
   const double dt = config.step_s;
   terms_.push_back(std::make_unique<GoalCost>(w.goal, w.terminal, config.goal_huber_m));
-  if (w.heading > 0.0) {
-    terms_.push_back(std::make_unique<HeadingCost>(w.heading, config.heading_radius_m));
+  if (w.heading > 0.0 || w.path_heading > 0.0) {
+    terms_.push_back(
+        std::make_unique<HeadingCost>(w.heading, w.path_heading, config.heading_radius_m));
   }
   if (w.obstacle > 0.0) {
     terms_.push_back(

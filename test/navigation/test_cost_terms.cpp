@@ -122,17 +122,23 @@ TEST(SignedDistanceField, PositiveInFreeSpaceNegativeInWalls) {
   EXPECT_NEAR(g.y(), 0.0, 0.05);
 }
 
-TEST(HeadingCost, FadesInNearTheGoal) {
+TEST(HeadingCost, PathDirectionOnTheWayArrivalHeadingAtTheGoal) {
   test::RoomProblem room(8.0, test::pose(2.0, 4.0, 0.0), test::pose(5.0, 4.0, M_PI / 2));
-  const HeadingCost cost(2.0, 0.5);
-  // At the goal, 90 deg off: 2 * 1 * (1 - cos 90 deg) = 2 per step.
-  Still at_goal(state(5.0, 4.0, 0.0), 1);
-  EXPECT_NEAR(cost.evaluate(room.problem, at_goal.rollout, at_goal.controls, nullptr), 2.0, 0.05);
-  // 3 m away the fade is 1 / (1 + 36) of that.
-  Still far(state(2.0, 4.0, 0.0), 1);
-  EXPECT_NEAR(cost.evaluate(room.problem, far.rollout, far.controls, nullptr), 2.0 / 37.0, 0.005);
-  // Aligned: nothing.
-  Still aligned(state(5.0, 4.0, M_PI / 2), 1);
+  const HeadingCost cost(2.0, 3.0, 0.5);
+  // 3 m away facing the goal: nothing; facing away from it, the path term owes the U-turn:
+  // 3 * (1 - 1 / (1 + 6^4)) * (1 - cos 180 deg) = 6.
+  Still facing(state(2.0, 4.0, 0.0), 3);
+  EXPECT_NEAR(cost.evaluate(room.problem, facing.rollout, facing.controls, nullptr), 0.0, 0.01);
+  Still away(state(2.0, 4.0, M_PI), 3);
+  EXPECT_NEAR(cost.evaluate(room.problem, away.rollout, away.controls, nullptr), 6.0, 0.02);
+  // At the goal, 90 deg off its heading, on the way: the path term has faded, the goal heading
+  // does not count yet.
+  Still at_goal(state(5.0, 4.0, 0.0), 3);
+  EXPECT_NEAR(cost.evaluate(room.problem, at_goal.rollout, at_goal.controls, nullptr), 0.0, 0.01);
+  // Standing at the goal position, each of the 3 steps counts: 3 * 2 * (1 - cos 90 deg).
+  room.problem.at_goal_position = true;
+  EXPECT_NEAR(cost.evaluate(room.problem, at_goal.rollout, at_goal.controls, nullptr), 6.0, 1e-9);
+  Still aligned(state(5.0, 4.0, M_PI / 2), 3);
   EXPECT_NEAR(cost.evaluate(room.problem, aligned.rollout, aligned.controls, nullptr), 0.0, 1e-9);
 }
 
@@ -288,7 +294,7 @@ TEST_P(TermGradient, MatchesFiniteDifferences) {
   const PersonalSpaceParams spaces;
   std::vector<std::unique_ptr<CostTerm>> terms;
   terms.push_back(std::make_unique<GoalCost>(1.0, 4.0, 0.5));
-  terms.push_back(std::make_unique<HeadingCost>(2.0, 3.0));
+  terms.push_back(std::make_unique<HeadingCost>(2.0, 3.0, 3.0));
   terms.push_back(std::make_unique<ObstacleCost>(100.0, kFootprint, 0.3));
   terms.push_back(std::make_unique<AgentClearanceCost>(100.0, kFootprint, 0.2, 0.3, kStep));
   terms.push_back(std::make_unique<PersonalSpaceCost>(3.0, kFootprint, spaces, kStep));

@@ -33,8 +33,11 @@ class GridField {
   Eigen::Vector2d cell_centre(int x, int y) const;
 
   /// Bilinear value at `point` (m, map frame); when `gradient` is given, also the gradient of that
-  /// interpolant (per m). Outside the grid, the border value and a zero gradient across the border.
-  double sample(const Eigen::Vector2d& point, Eigen::Vector2d* gradient = nullptr) const;
+  /// interpolant (per m), and when `cross` is given its only non-zero second derivative
+  /// d2f/dxdy (per m^2; d2f/dx2 = d2f/dy2 = 0 inside a cell). Outside the grid, the border value
+  /// and zero derivatives across the border.
+  double sample(const Eigen::Vector2d& point, Eigen::Vector2d* gradient = nullptr,
+                double* cross = nullptr) const;
 
  private:
   Eigen::Vector2d origin_{Eigen::Vector2d::Zero()};

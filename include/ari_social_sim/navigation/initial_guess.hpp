@@ -10,7 +10,8 @@ namespace ari_social_sim::navigation {
 
 /// A control sequence that follows the geodesic field downhill, as a start point for the solvers:
 /// steer toward -grad G (or the goal heading within 0.3 m), slow down as the heading error grows
-/// and near the goal, turn the head toward the look-at point. `turn_bias_rps` adds a constant turn
+/// and near the goal, change speed within ARI's acceleration limits, turn the head toward the
+/// look-at point. `turn_bias_rps` adds a constant turn
 /// over the first half of the horizon (a swerve left or right around someone ahead).
 Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& config,
                                 const ControlBounds& bounds, double turn_bias_rps);

@@ -17,8 +17,9 @@ enum class SolverKind { kLbfgs, kSlsqp, kMppi };
 /// A weight of 0 switches its term off; the non-social baseline sets the social ones to 0.
 struct CostWeights {
   double goal{1.0};               // per step, per m of geodesic distance to the goal (Huber)
-  double terminal{4.0};           // the same at the end of the horizon
-  double heading{2.0};            // (1 - cos heading error), fading in near the goal
+  double terminal{10.0};          // the same at the end of the horizon
+  double heading{5.0};            // (1 - cos) of the last step's heading off the goal's, at it
+  double path_heading{3.0};       // (1 - cos) of the last step's heading off the path direction
   double obstacle{400.0};         // per m^2 of footprint circle inside the obstacle margin
   double agent_clearance{400.0};  // per m^2 of footprint circle inside a person's body margin
   double personal_space{3.0};     // per unit of asymmetric Gaussian at ARI's body edge
@@ -31,7 +32,7 @@ struct CostWeights {
   double smooth_angular{0.5};     // per (rad/s)^2 of change between steps
   double smooth_pan{0.05};        // per (rad/s)^2 of change between steps
   double acceleration{200.0};     // per (m/s)^2 or (rad/s)^2 of change beyond ARI's limits
-  double reverse{2.0};            // per (m/s)^2 of backward speed
+  double reverse{30.0};           // per (m/s)^2 of backward speed
   double view{1.0};               // (1 - cos) of the target's bearing off the head camera axis
   double pan_limit{100.0};        // per rad^2 of pan beyond +-75 deg
 
@@ -56,11 +57,12 @@ struct MpcConfig {
   uint64_t seed{1};               // MPPI's sample stream
   int footprint_circles{3};       // circles covering ARI's footprint
   double obstacle_margin_m{0.05}; // extra clearance from walls and furniture
-  double agent_margin_m{0.15};    // extra clearance from people's bodies
+  double agent_margin_m{0.05};    // extra clearance from people's bodies
   double ospace_margin_m{0.1};    // extra clearance from other groups' o-space disc
-  double goal_huber_m{0.5};       // the progress cost is quadratic below, linear above
-  double heading_radius_m{0.5};   // the heading cost fades in within about this distance
-  double target_space_scale{0.1}; // personal-space weight of the person or group approached
+  double goal_huber_m{0.2};       // the progress cost is quadratic below, linear above
+  double heading_radius_m{0.2};   // the arrival heading counts within about this distance
+  double target_space_scale{0.3}; // personal-space weight of the person or group approached...
+  double target_space_fade_m{2.5};// ... fading from this distance to the goal to 0 at half of it
   CostWeights weights;
   PersonalSpaceParams personal_space;
   world::AriLimits limits;        // ARI's own limits (not read from files)

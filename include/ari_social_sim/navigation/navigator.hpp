@@ -73,10 +73,15 @@ class Navigator {
   const std::optional<NavigationTarget>& target() const { return target_; }
 
  private:
+  /// The areas the geodesic field routes around: standing people, groups not joined.
+  std::vector<CostDisc> cost_discs(const PerceivedScene& scene, const Goal& goal) const;
+  bool discs_changed(const std::vector<CostDisc>& discs) const;
   /// The geodesic field to `goal`; throws GoalUnreachable when the goal or ARI cannot reach it.
-  std::unique_ptr<GeodesicField> field_to(const Goal& goal, const core::Pose2& robot) const;
-  /// Sets goal_, rebuilding the geodesic field when the goal moved; throws GoalUnreachable.
-  void adopt_goal(const Goal& goal, const core::Pose2& robot);
+  std::unique_ptr<GeodesicField> field_to(const Goal& goal, const core::Pose2& robot,
+                                          const std::vector<CostDisc>& discs) const;
+  /// Sets goal_, rebuilding the geodesic field when the goal or the people moved; throws
+  /// GoalUnreachable.
+  void adopt_goal(const Goal& goal, const core::Pose2& robot, const PerceivedScene& scene);
   NavigatorStep finish(NavigationState state, const std::string& reason);
   void build_problem(const RobotObservation& robot, const PerceivedScene& scene);
 
@@ -89,6 +94,7 @@ class Navigator {
   std::optional<NavigationTarget> target_;
   std::optional<Goal> goal_;
   std::unique_ptr<GeodesicField> geodesic_;
+  std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
