@@ -102,7 +102,7 @@ Goal GoalFinder::find(const NavigationTarget& target, const PerceivedScene& scen
       throw UnknownTarget("person " + person_id + " is in no group");
     }
   }
-  return find_group(*group, scene, sdf, previous);
+  return find_group(*group, scene, sdf, robot, previous);
 }
 
 bool GoalFinder::is_free(const core::Pose2& base, const PerceivedScene& scene,
@@ -222,7 +222,8 @@ Goal GoalFinder::find_person(const PersonEstimate& person, const PerceivedScene&
 }
 
 Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& scene,
-                            const GridField& sdf, const std::optional<Goal>& previous) const {
+                            const GridField& sdf, const core::Pose2& robot,
+                            const std::optional<Goal>& previous) const {
   std::vector<const PersonEstimate*> members;
   for (const std::string& id : group.members) {
     if (const PersonEstimate* person = scene.find_person(id)) {
@@ -234,14 +235,6 @@ Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& sc
   std::vector<Gap> gaps = gaps_around(centre, members);
   if (gaps.empty()) {
     gaps.push_back({0.0, kTwoPi});
-  }
-  // A gap used before comes first while it still has room.
-  if (previous && previous->group_id == group.id) {
-    const auto kept = std::find_if(gaps.begin(), gaps.end(),
-                                   [&](const Gap& gap) { return gap.contains(previous->gap_angle); });
-    if (kept != gaps.end()) {
-      std::rotate(gaps.begin(), kept, kept + 1);
-    }
   }
   const double needed_arc = 2.0 * footprint_.rectangle.half_width_m + 2.0 * config_.gap_clearance_m;
   auto make_goal = [&](const Gap& gap, double body_radius, bool outside) {
@@ -256,6 +249,29 @@ Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& sc
     goal.outside_circle = outside;
     return goal;
   };
+  // Gaps within the width tolerance of the widest one with room are as good as it: of those, the
+  // one nearest ARI comes first (no detour round the group to a gap a few degrees wider).
+  const auto first_with_room = std::find_if(gaps.begin(), gaps.end(), [&](const Gap& gap) {
+    return radius * gap.width >= needed_arc;
+  });
+  if (first_with_room != gaps.end()) {
+    const double widest = first_with_room->width;
+    const auto as_wide_end = std::find_if(first_with_room, gaps.end(), [&](const Gap& gap) {
+      return gap.width < widest - config_.gap_width_tolerance;
+    });
+    std::stable_sort(first_with_room, as_wide_end, [&](const Gap& a, const Gap& b) {
+      return (make_goal(a, radius, false).pose.position - robot.position).norm() <
+             (make_goal(b, radius, false).pose.position - robot.position).norm();
+    });
+  }
+  // A gap used before comes first while it still has room.
+  if (previous && previous->group_id == group.id) {
+    const auto kept = std::find_if(gaps.begin(), gaps.end(),
+                                   [&](const Gap& gap) { return gap.contains(previous->gap_angle); });
+    if (kept != gaps.end()) {
+      std::rotate(gaps.begin(), kept, kept + 1);
+    }
+  }
   // On the circle: polite places first, then any free one.
   for (int pass = 0; pass < 2; ++pass) {
     for (const Gap& gap : gaps) {

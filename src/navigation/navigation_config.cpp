@@ -95,6 +95,7 @@ void GoalFinderConfig::read(const core::YamlMap& map) {
   read_number(map, "approach_max_angle", approach_max_angle, core::between(0.0, 1.57));
   read_number(map, "approach_angle_step", approach_angle_step, {0.0, 1.57, true});
   read_number(map, "gap_clearance", gap_clearance_m, core::between(0.0, 1.0));
+  read_number(map, "gap_width_tolerance", gap_width_tolerance, core::between(0.0, 3.1416));
   read_number(map, "outside_offset", outside_offset_m, core::between(0.0, 2.0));
   read_number(map, "group_stride", group_stride_m, core::between(0.0, 2.0));
   read_number(map, "free_margin", free_margin_m, core::between(0.0, 0.5));
@@ -109,6 +110,8 @@ void NavigatorConfig::read(const core::YamlMap& map) {
   read_number(map, "progress_timeout", progress_timeout_s, core::positive());
   read_number(map, "progress_distance", progress_distance_m, core::positive());
   read_number(map, "goal_update_distance", goal_update_distance_m, core::positive());
+  read_number(map, "patience", patience_s, core::positive());
+  read_number(map, "patience_halving", patience_halving_s, core::positive());
   map.finish();
 }
 

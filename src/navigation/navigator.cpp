@@ -43,6 +43,7 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   target_ = target;
   state_ = NavigationState::kActive;
   target_seen_s_ = time_s;
+  aligning_ = false;
   best_distance_m_ = geodesic_->cost(robot.pose.position);
   best_distance_time_s_ = time_s;
   mpc_.reset();
@@ -55,25 +56,32 @@ void Navigator::cancel() {
 
 std::vector<CostDisc> Navigator::cost_discs(const PerceivedScene& scene, const Goal& goal) const {
   // People standing still and groups stand in the way as areas to go around; walking people are
-  // the MPC's, which predicts them.
+  // the MPC's, which predicts them. The person approached and the members joined keep only their
+  // body plus ARI's inscribed radius, so the way goes round them but reaches the goal beside them.
   constexpr double kStandingSpeed = 0.3;  // m/s
   const GeodesicParams& g = config_.navigator.geodesic;
   std::vector<CostDisc> discs;
   if (g.person_cost > 0.0) {
     for (const PersonEstimate& person : scene.people) {
-      if (person.velocity.norm() < kStandingSpeed) {
-        discs.push_back({person.position,
-                         config_.mpc.personal_space.person_radius_m + g.inscribed_radius_m +
-                             g.person_clearance_m,
-                         g.person_cost});
+      if (person.velocity.norm() >= kStandingSpeed) {
+        continue;
       }
+      const bool is_target = std::find(goal.target_people.begin(), goal.target_people.end(),
+                                       person.id) != goal.target_people.end();
+      discs.push_back({person.position,
+                       config_.mpc.personal_space.person_radius_m + g.inscribed_radius_m +
+                           (is_target ? 0.0 : g.person_clearance_m),
+                       g.person_cost});
     }
   }
+  // Other groups' whole circle; the joined group's o-space only, which ARI's goal at the rim of
+  // barely enters, so the way comes in through the gap rather than across the o-space.
   if (g.group_cost > 0.0) {
     for (const GroupEstimate& group : scene.groups) {
-      if (group.id != goal.group_id) {
-        discs.push_back({group.centre, group.radius_m, g.group_cost});
-      }
+      const double radius = group.id == goal.group_id
+                                ? ospace_radius(group, config_.mpc.personal_space)
+                                : group.radius_m;
+      discs.push_back({group.centre, radius, g.group_cost});
     }
   }
   return discs;
@@ -180,17 +188,16 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
                       std::to_string(step.distance_to_goal_m).substr(0, 4) + " m to go)");
   }
 
-  build_problem(robot, scene);
+  build_problem(time_s, robot, scene);
   plan_ = mpc_.solve(problem_);
   step.replanned = true;
   step.command = {plan_.linear_mps(), plan_.angular_rps(), plan_.pan_target()};
-  step.phase = !target_visible                   ? "waiting for the target"
-               : position_error > 2.0 * config_.navigator.goal_tolerance_m ? "approaching"
-                                                                           : "aligning";
+  step.phase = !target_visible ? "waiting for the target" : aligning_ ? "aligning" : "approaching";
   return step;
 }
 
-void Navigator::build_problem(const RobotObservation& robot, const PerceivedScene& scene) {
+void Navigator::build_problem(double time_s, const RobotObservation& robot,
+                              const PerceivedScene& scene) {
   problem_.start.position = robot.pose.position;
   problem_.start.theta = robot.pose.theta;
   problem_.start.pan = robot.pan_rad;
@@ -200,8 +207,15 @@ void Navigator::build_problem(const RobotObservation& robot, const PerceivedScen
   problem_.sdf = &sdf_;
   problem_.geodesic = geodesic_.get();
   problem_.goal = goal_->pose;
-  problem_.at_goal_position =
-      (robot.pose.position - goal_->pose.position).norm() <= config_.navigator.goal_tolerance_m;
+  // Turning on the spot once at the goal position, until pushed out to twice the tolerance: the
+  // turn about base_footprint may shift it a little, and the phase must not flicker.
+  const double position_error = (robot.pose.position - goal_->pose.position).norm();
+  if (position_error <= config_.navigator.goal_tolerance_m) {
+    aligning_ = true;
+  } else if (position_error > 2.0 * config_.navigator.goal_tolerance_m) {
+    aligning_ = false;
+  }
+  problem_.at_goal_position = aligning_;
   problem_.look_at = goal_->look_at;
   // The person approached or the members joined keep a share of their personal space while ARI
   // is far, so it comes in from the front rather than brushing past them, fading to nothing over
@@ -212,11 +226,17 @@ void Navigator::build_problem(const RobotObservation& robot, const PerceivedScen
   const double target_scale =
       config_.mpc.target_space_scale *
       std::clamp((distance - fade_end) / (fade_start - fade_end), 0.0, 1.0);
+  // Patience: when someone's space blocks the only way (a person standing in a doorway), ARI
+  // waits, then claims the way bit by bit, halving the personal-space weights every
+  // patience_halving seconds; people step aside from a robot pressing on.
+  const NavigatorConfig& nav = config_.navigator;
+  const double stalled_s = time_s - best_distance_time_s_ - nav.patience_s;
+  const double patience = stalled_s > 0.0 ? std::pow(0.5, stalled_s / nav.patience_halving_s) : 1.0;
   problem_.people.clear();
   for (const PersonEstimate& person : scene.people) {
     const bool is_target = std::find(goal_->target_people.begin(), goal_->target_people.end(),
                                      person.id) != goal_->target_people.end();
-    problem_.people.push_back({person, is_target ? target_scale : 1.0});
+    problem_.people.push_back({person, patience * (is_target ? target_scale : 1.0)});
   }
   problem_.groups.clear();
   for (const GroupEstimate& group : scene.groups) {

@@ -52,8 +52,10 @@ struct Goal {
 ///   `approach_max_angle` of their facing direction, facing them; the first free place in order
 ///   of angle off their facing direction, preferring places outside others' personal spaces;
 /// - group: ARI's body centre on the o-space circle at the bisector of the widest gap whose arc
-///   leaves ARI's width plus `gap_clearance` on each side, facing the centre; otherwise the next
-///   gap; otherwise just outside the circle (`outside_offset`) at the widest free gap.
+///   leaves ARI's width plus `gap_clearance` on each side, facing the centre; gaps within
+///   `gap_width_tolerance` of the widest count as equally wide and the one nearest ARI wins;
+///   otherwise the next gap; otherwise just outside the circle (`outside_offset`) at the widest
+///   free gap.
 /// A goal found before for the same target is kept while still valid, so ARI does not hop between
 /// gaps of a group whose members shuffle.
 class GoalFinder {
@@ -76,7 +78,7 @@ class GoalFinder {
                    const GridField& sdf, const core::Pose2& robot,
                    const std::optional<Goal>& previous) const;
   Goal find_group(const GroupEstimate& group, const PerceivedScene& scene, const GridField& sdf,
-                  const std::optional<Goal>& previous) const;
+                  const core::Pose2& robot, const std::optional<Goal>& previous) const;
   /// Free and outside every o-space but `group_id`'s and every personal space but `exempt`'s.
   bool is_polite(const core::Pose2& base, const PerceivedScene& scene, const std::string& group_id,
                  const std::vector<std::string>& exempt) const;

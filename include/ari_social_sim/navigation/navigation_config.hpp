@@ -77,6 +77,7 @@ struct GoalFinderConfig {
   double approach_max_angle{0.52};  // rad, at most this far off the person's facing direction
   double approach_angle_step{0.13}; // rad between candidate places
   double gap_clearance_m{0.3};      // room to leave on each side of ARI in a group's gap
+  double gap_width_tolerance{0.35}; // rad: gaps this much narrower than the widest are as good
   double outside_offset_m{0.2};     // how far outside the circle ARI stands when no gap fits
   double group_stride_m{0.5};       // GCFF stride used to place the o-space centre
   double free_margin_m{0.05};       // a goal's footprint keeps this from walls and bodies
@@ -93,6 +94,8 @@ struct NavigatorConfig {
   double progress_timeout_s{20.0};      // abort when the path to the goal shrinks by less than
   double progress_distance_m{0.3};      //   this distance within the timeout
   double goal_update_distance_m{0.1};   // recompute the geodesic field when the goal moves more
+  double patience_s{4.0};               // without progress for this long, personal spaces...
+  double patience_halving_s{2.0};       // ... lose half their weight every this many seconds
   GeodesicParams geodesic;
 
   void read(const core::YamlMap& map);

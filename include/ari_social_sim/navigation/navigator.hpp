@@ -83,7 +83,7 @@ class Navigator {
   /// GoalUnreachable.
   void adopt_goal(const Goal& goal, const core::Pose2& robot, const PerceivedScene& scene);
   NavigatorStep finish(NavigationState state, const std::string& reason);
-  void build_problem(const RobotObservation& robot, const PerceivedScene& scene);
+  void build_problem(double time_s, const RobotObservation& robot, const PerceivedScene& scene);
 
   NavigationConfig config_;
   FootprintModel footprint_;
@@ -96,6 +96,7 @@ class Navigator {
   std::unique_ptr<GeodesicField> geodesic_;
   std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
+  bool aligning_{false};  // at the goal position, turning to the goal heading
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
   MpcProblem problem_;

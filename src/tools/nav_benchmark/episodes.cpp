@@ -170,12 +170,12 @@ Episode pose_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
   const Eigen::Vector2d low(0.6, 0.6), high(9.4, 5.4);
   place_ari(sim, rng, low, high, [&](const core::Pose2& p) { return footprint_clear(sdf, p, 0.1); });
   const Eigen::Vector2d start = sim.ari()->pose().position;
-  place_person(sim, rng, 10, low, high, [&](const core::Pose2& p) {
-    return (p.position - start).norm() > 1.5;
-  });
-  place_person(sim, rng, 11, low, high, [&](const core::Pose2& p) {
-    return (p.position - start).norm() > 1.5;
-  });
+  // Two people standing about, never in the door or a narrow passage (0.7 m from any wall).
+  for (ObjectId id : {10, 11}) {
+    place_person(sim, rng, id, low, high, [&](const core::Pose2& p) {
+      return (p.position - start).norm() > 1.5 && sdf.sample(p.position) > 0.7;
+    });
+  }
   // A goal at least 4 m away, its footprint clear of furniture and people (checked by the goal
   // finder when the run starts; here only a distance rule).
   const core::Pose2 goal = [&] {
