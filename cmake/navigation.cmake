@@ -19,8 +19,10 @@ add_library(ari_navigation
   src/navigation/nlopt_solver.cpp
   src/navigation/obstacle_cost.cpp
   src/navigation/perceived_scene.cpp
+  src/navigation/scene_tracker.cpp
   src/navigation/personal_space_cost.cpp
   src/navigation/signed_distance_field.cpp
+  src/navigation/social_cost_map.cpp
   src/navigation/social_mpc.cpp
   src/navigation/social_spaces.cpp
   src/navigation/trajectory_cost.cpp
@@ -44,3 +46,9 @@ add_executable(nav_benchmark
 target_link_libraries(nav_benchmark ari_navigation ari_perception)
 target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# social_mpc_node: thin ROS adapter over the navigation core.
+add_executable(social_mpc_node
+  src/nodes/social_mpc_node.cpp
+  src/nodes/conversions/navigation_msgs.cpp)
+target_link_libraries(social_mpc_node ari_navigation ari_world_conversions)

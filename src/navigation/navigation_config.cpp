@@ -97,7 +97,6 @@ void GoalFinderConfig::read(const core::YamlMap& map) {
   read_number(map, "gap_clearance", gap_clearance_m, core::between(0.0, 1.0));
   read_number(map, "gap_width_tolerance", gap_width_tolerance, core::between(0.0, 3.1416));
   read_number(map, "outside_offset", outside_offset_m, core::between(0.0, 2.0));
-  read_number(map, "group_stride", group_stride_m, core::between(0.0, 2.0));
   read_number(map, "free_margin", free_margin_m, core::between(0.0, 0.5));
   map.finish();
 }
@@ -139,6 +138,9 @@ NavigationConfig NavigationConfig::from_yaml(const core::YamlMap& map) {
   }
   if (map.has("controller")) {
     config.navigator.read(map.map("controller"));
+  }
+  if (map.has("perception_input")) {
+    config.scene.read(map.map("perception_input"));
   }
   if (map.has("geodesic")) {
     const core::YamlMap geo = map.map("geodesic");

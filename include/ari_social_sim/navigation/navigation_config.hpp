@@ -5,6 +5,7 @@
 
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
+#include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "ari_social_sim/navigation/social_spaces.hpp"
 #include "ari_social_sim/world/ari_limits.hpp"
 
@@ -79,7 +80,6 @@ struct GoalFinderConfig {
   double gap_clearance_m{0.3};      // room to leave on each side of ARI in a group's gap
   double gap_width_tolerance{0.35}; // rad: gaps this much narrower than the widest are as good
   double outside_offset_m{0.2};     // how far outside the circle ARI stands when no gap fits
-  double group_stride_m{0.5};       // GCFF stride used to place the o-space centre
   double free_margin_m{0.05};       // a goal's footprint keeps this from walls and bodies
 
   void read(const core::YamlMap& map);
@@ -102,11 +102,13 @@ struct NavigatorConfig {
 };
 
 /// Everything config/social_mpc.yaml holds. Sections: mpc, weights, personal_space, goal_finder,
-/// controller, geodesic; every key optional with the defaults above; unknown keys are errors.
+/// controller, geodesic, perception_input; every key optional with the defaults above; unknown
+/// keys are errors.
 struct NavigationConfig {
   MpcConfig mpc;
   GoalFinderConfig goal_finder;
   NavigatorConfig navigator;
+  SceneTrackerConfig scene;
 
   /// Throws core::ConfigError naming the file, field, value and expected range.
   static NavigationConfig from_yaml(const core::YamlMap& map);

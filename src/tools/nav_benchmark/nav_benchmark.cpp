@@ -250,7 +250,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
   record.controller = controller;
   record.index = episode.index;
   record.seed = episode.seed;
-  const double stride = config.goal_finder.group_stride_m;
+  const double stride = config.scene.group_stride_m;
   navigation::Navigator navigator(config, world::rasterize_static_map(sim.world(), 0.05));
   navigation::EpisodeScorer scorer(navigator.footprint(), config.mpc.personal_space,
                                    episode.exempt_people, episode.exempt_group);
