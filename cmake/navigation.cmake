@@ -35,8 +35,14 @@ if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_navigation
     SOURCES
       test/navigation/test_cost_terms.cpp
+      test/navigation/test_goal_finder.cpp
+      test/navigation/test_navigation_config.cpp
+      test/navigation/test_navigator.cpp
+      test/navigation/test_scene_tracker.cpp
+      test/navigation/test_episode_scorer.cpp
     LIBRARIES ari_navigation)
   target_include_directories(test_navigation PRIVATE test/world)
+  target_compile_definitions(test_navigation PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # nav_benchmark: the navigation benchmark (a user-facing tool, `rosrun ari_social_sim nav_benchmark`).

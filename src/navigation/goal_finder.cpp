@@ -249,20 +249,19 @@ Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& sc
     goal.outside_circle = outside;
     return goal;
   };
-  // Gaps within the width tolerance of the widest one with room are as good as it: of those, the
-  // one nearest ARI comes first (no detour round the group to a gap a few degrees wider).
-  const auto first_with_room = std::find_if(gaps.begin(), gaps.end(), [&](const Gap& gap) {
-    return radius * gap.width >= needed_arc;
-  });
-  if (first_with_room != gaps.end()) {
-    const double widest = first_with_room->width;
-    const auto as_wide_end = std::find_if(first_with_room, gaps.end(), [&](const Gap& gap) {
+  // Gaps within the width tolerance of one another are as good as each other: within each such
+  // run (widest first), the one nearest ARI comes first, so ARI does not go round the group for a
+  // gap a few degrees wider.
+  for (auto run = gaps.begin(); run != gaps.end();) {
+    const double widest = run->width;
+    const auto run_end = std::find_if(run, gaps.end(), [&](const Gap& gap) {
       return gap.width < widest - config_.gap_width_tolerance;
     });
-    std::stable_sort(first_with_room, as_wide_end, [&](const Gap& a, const Gap& b) {
+    std::stable_sort(run, run_end, [&](const Gap& a, const Gap& b) {
       return (make_goal(a, radius, false).pose.position - robot.position).norm() <
              (make_goal(b, radius, false).pose.position - robot.position).norm();
     });
+    run = run_end;
   }
   // A gap used before comes first while it still has room.
   if (previous && previous->group_id == group.id) {

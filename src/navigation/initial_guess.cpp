@@ -12,7 +12,7 @@ Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& conf
   constexpr double kTurnGain = 2.0;       // 1/s, heading error to angular velocity
   constexpr double kPanGain = 4.0;        // 1/s, pan error to pan velocity
   constexpr double kSlowRadius = 0.8;     // m, full speed beyond this travel distance
-  constexpr double kAlignRadius = 0.3;    // m, turn to the goal heading within this
+  constexpr double kDirectRadius = 0.5;   // m, head straight for the goal point within this
   const double dt = config.step_s;
   const double max_dv = config.limits.max_linear_accel_mps2 * dt;
   const double max_dw = config.limits.max_angular_accel_rps2 * dt;
@@ -22,19 +22,21 @@ Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& conf
   for (int t = 0; t < config.horizon_steps; ++t) {
     Eigen::Vector2d g;
     const double distance = problem.geodesic->cost(s.position, &g);
+    // Standing at the goal: turn on the spot to its heading. On the way: steer down the field, or
+    // straight at the goal point over the last half metre, where the field is coarse.
     double desired = problem.goal.theta;
-    if (distance > kAlignRadius) {
+    double v = 0.0;
+    double error = core::angle_difference(desired, s.theta);
+    if (!problem.at_goal_position) {
+      const Eigen::Vector2d to_goal = problem.goal.position - s.position;
       const Eigen::Vector2d direction =
-          g.norm() > 1e-6 ? Eigen::Vector2d(-g) : Eigen::Vector2d(problem.goal.position - s.position);
+          distance < kDirectRadius || g.norm() < 1e-6 ? to_goal : Eigen::Vector2d(-g);
       desired = std::atan2(direction.y(), direction.x());
+      error = core::angle_difference(desired, s.theta);
+      v = config.max_linear_mps * std::max(0.0, std::cos(error)) *
+          std::min(1.0, to_goal.norm() / kSlowRadius);
     }
-    const double error = core::angle_difference(desired, s.theta);
     const double bias = t < config.horizon_steps / 2 ? turn_bias_rps : 0.0;
-    double v = config.max_linear_mps * std::max(0.0, std::cos(error)) *
-               std::min(1.0, distance / kSlowRadius);
-    if (distance <= kAlignRadius) {
-      v = 0.0;
-    }
     // Ramp toward the wanted velocities within ARI's acceleration limits.
     v = std::clamp(v, v_prev - max_dv, v_prev + max_dv);
     const double w = std::clamp(kTurnGain * error + bias, w_prev - max_dw, w_prev + max_dw);

@@ -52,10 +52,10 @@ struct Goal {
 ///   `approach_max_angle` of their facing direction, facing them; the first free place in order
 ///   of angle off their facing direction, preferring places outside others' personal spaces;
 /// - group: ARI's body centre on the o-space circle at the bisector of the widest gap whose arc
-///   leaves ARI's width plus `gap_clearance` on each side, facing the centre; gaps within
-///   `gap_width_tolerance` of the widest count as equally wide and the one nearest ARI wins;
-///   otherwise the next gap; otherwise just outside the circle (`outside_offset`) at the widest
-///   free gap.
+///   leaves ARI's width plus `gap_clearance` on each side, facing the centre (gaps within
+///   `gap_width_tolerance` of each other count as equally wide, the one nearest ARI first);
+///   otherwise the next gap; otherwise just outside the circle (`outside_offset`, stepping out
+///   until the footprint is free) at the widest gap.
 /// A goal found before for the same target is kept while still valid, so ARI does not hop between
 /// gaps of a group whose members shuffle.
 class GoalFinder {

@@ -9,7 +9,8 @@
 namespace ari_social_sim::navigation {
 
 /// A control sequence that follows the geodesic field downhill, as a start point for the solvers:
-/// steer toward -grad G (or the goal heading within 0.3 m), slow down as the heading error grows
+/// steer toward -grad G (straight at the goal point within 0.5 m; on the spot to the goal heading
+/// once MpcProblem::at_goal_position), slow down as the heading error grows
 /// and near the goal, change speed within ARI's acceleration limits, turn the head toward the
 /// look-at point. `turn_bias_rps` adds a constant turn
 /// over the first half of the horizon (a swerve left or right around someone ahead).
