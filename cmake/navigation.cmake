@@ -58,3 +58,21 @@ add_executable(social_mpc_node
   src/nodes/social_mpc_node.cpp
   src/nodes/conversions/navigation_msgs.cpp)
 target_link_libraries(social_mpc_node ari_navigation ari_world_conversions)
+
+if(CATKIN_ENABLE_TESTING)
+  add_rostest_gtest(test_social_navigation test/integration/social_navigation.test
+    test/integration/test_social_navigation.cpp)
+  target_include_directories(test_social_navigation PRIVATE ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
+  target_link_libraries(test_social_navigation ari_perception ${catkin_LIBRARIES})
+  add_dependencies(test_social_navigation ${PROJECT_NAME}_generate_messages_cpp social_mpc_node world_node)
+endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_navigation
+    SOURCES bench/bench_navigation.cpp
+    LIBRARIES ari_navigation)
+  # The scenes are the navigation tests' own (test/navigation/navigation_fixtures.hpp).
+  target_include_directories(bench_navigation PRIVATE ${PROJECT_SOURCE_DIR}/test/navigation
+    ${PROJECT_SOURCE_DIR}/test/world)
+  target_compile_definitions(bench_navigation PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()

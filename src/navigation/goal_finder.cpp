@@ -69,6 +69,25 @@ std::string describe(const NavigationTarget& target) {
   return "the group of person " + std::get<GroupOfPersonTarget>(target).person_id;
 }
 
+std::string unknown_target_reason(const NavigationTarget& target, const PerceivedScene& scene) {
+  if (const auto* person = std::get_if<PersonTarget>(&target)) {
+    return scene.find_person(person->person_id) ? ""
+                                                : "person " + person->person_id + " is not tracked";
+  }
+  if (const auto* group = std::get_if<GroupTarget>(&target)) {
+    return scene.find_group(group->group_id) ? ""
+                                             : "group " + group->group_id + " is not reported";
+  }
+  if (const auto* member = std::get_if<GroupOfPersonTarget>(&target)) {
+    if (!scene.find_person(member->person_id)) {
+      return "person " + member->person_id + " is not tracked";
+    }
+    return scene.group_of(member->person_id) ? ""
+                                             : "person " + member->person_id + " is in no group";
+  }
+  return "";
+}
+
 GoalFinder::GoalFinder(const GoalFinderConfig& config, const FootprintModel& footprint,
                        const PersonalSpaceParams& spaces)
     : config_(config), footprint_(footprint), spaces_(spaces) {}
@@ -79,29 +98,17 @@ Goal GoalFinder::find(const NavigationTarget& target, const PerceivedScene& scen
   if (const auto* pose = std::get_if<PoseTarget>(&target)) {
     return find_pose(*pose, sdf);
   }
-  if (const auto* person_target = std::get_if<PersonTarget>(&target)) {
-    const PersonEstimate* person = scene.find_person(person_target->person_id);
-    if (person == nullptr) {
-      throw UnknownTarget("person " + person_target->person_id + " is not tracked");
-    }
-    return find_person(*person, scene, sdf, robot, previous);
+  const std::string unknown = unknown_target_reason(target, scene);
+  if (!unknown.empty()) {
+    throw UnknownTarget(unknown);
   }
-  const GroupEstimate* group = nullptr;
-  if (const auto* group_target = std::get_if<GroupTarget>(&target)) {
-    group = scene.find_group(group_target->group_id);
-    if (group == nullptr) {
-      throw UnknownTarget("group " + group_target->group_id + " is not reported");
-    }
-  } else {
-    const std::string& person_id = std::get<GroupOfPersonTarget>(target).person_id;
-    if (scene.find_person(person_id) == nullptr) {
-      throw UnknownTarget("person " + person_id + " is not tracked");
-    }
-    group = scene.group_of(person_id);
-    if (group == nullptr) {
-      throw UnknownTarget("person " + person_id + " is in no group");
-    }
+  if (const auto* person = std::get_if<PersonTarget>(&target)) {
+    return find_person(*scene.find_person(person->person_id), scene, sdf, robot, previous);
   }
+  const GroupEstimate* group =
+      std::holds_alternative<GroupTarget>(target)
+          ? scene.find_group(std::get<GroupTarget>(target).group_id)
+          : scene.group_of(std::get<GroupOfPersonTarget>(target).person_id);
   return find_group(*group, scene, sdf, robot, previous);
 }
 

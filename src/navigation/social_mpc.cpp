@@ -1,6 +1,7 @@
 #include "ari_social_sim/navigation/social_mpc.hpp"
 
 #include <chrono>
+#include <ctime>
 
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/navigation/initial_guess.hpp"
@@ -14,9 +15,22 @@ SocialMpc::SocialMpc(const MpcConfig& config, const FootprintModel& footprint)
       bounds_(ControlBounds::of(config)),
       solver_(make_solver(config)) {}
 
+namespace {
+
+// CPU time of the calling thread (s): what a solve costs on one core, whatever else the machine
+// runs at the same time.
+double thread_cpu_s() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+}  // namespace
+
 MpcSolution SocialMpc::solve(const MpcProblem& problem) {
   ARI_CHECK(problem.sdf != nullptr && problem.geodesic != nullptr);
   const auto started = std::chrono::steady_clock::now();
+  const double started_cpu_s = thread_cpu_s();
   cost_.set_problem(problem);
   cost_.reset_evaluations();
 
@@ -51,6 +65,7 @@ MpcSolution SocialMpc::solve(const MpcProblem& problem) {
   has_previous_ = true;
   solution.solve_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  solution.solve_cpu_s = thread_cpu_s() - started_cpu_s;
   return solution;
 }
 

@@ -216,18 +216,44 @@ class SocialMpcNode {
     return in_map;
   }
 
-  void on_move_base(MoveBaseServer::GoalHandle handle) {
-    const move_base_msgs::MoveBaseGoalConstPtr goal = handle.getGoal();
+  // Accepts a goal whose request is well formed and starts it; a goal that cannot be reached
+  // (nothing to plan on yet, no free place, no path) is aborted with the reason, as move_base
+  // aborts a goal it finds no plan for.
+  template <class Handle, class Result>
+  void accept_and_start(Handle handle, const navigation::NavigationTarget& target, Result result,
+                        ActiveGoal active) {
+    handle.setAccepted();
     try {
-      start(navigation::PoseTarget{*goal_in_map(goal->target_pose)});
+      start(target);
+    } catch (const core::Error& e) {
+      ROS_WARN("goal aborted: %s", e.what());
+      handle.setAborted(with_reason(result, e.what()), e.what());
+      return;
+    }
+    replace_active(std::move(active));
+    publish_status("pursuing " + navigation::describe(target));
+  }
+
+  static move_base_msgs::MoveBaseResult with_reason(move_base_msgs::MoveBaseResult result,
+                                                    const std::string&) {
+    return result;
+  }
+  static ApproachResult with_reason(ApproachResult result, const std::string& reason) {
+    result.reason = reason;
+    return result;
+  }
+
+  void on_move_base(MoveBaseServer::GoalHandle handle) {
+    std::optional<core::Pose2> pose;
+    try {
+      pose = goal_in_map(handle.getGoal()->target_pose);
     } catch (const core::Error& e) {
       ROS_WARN("move_base goal rejected: %s", e.what());
       handle.setRejected(move_base_msgs::MoveBaseResult(), e.what());
       return;
     }
-    handle.setAccepted();
-    replace_active({handle, std::nullopt, handle.getGoalID().id});
-    publish_status("accepted move_base goal");
+    accept_and_start(handle, navigation::PoseTarget{*pose}, move_base_msgs::MoveBaseResult(),
+                     {handle, std::nullopt, handle.getGoalID().id});
   }
 
   void on_simple_goal(const geometry_msgs::PoseStamped& goal) {
@@ -239,40 +265,43 @@ class SocialMpcNode {
       return;
     }
     replace_active({std::nullopt, std::nullopt, ""});
-    publish_status("accepted /move_base_simple/goal");
+    publish_status("pursuing /move_base_simple/goal");
   }
 
+  // An approach goal naming an id perception does not report is rejected with the reason.
   void on_approach(ApproachServer::GoalHandle handle) {
     const ApproachGoalConstPtr goal = handle.getGoal();
-    ApproachResult rejected;
-    try {
-      if (goal->target_id.empty()) {
-        throw core::RequestError("target_id: expected a person or group id, got ''");
-      }
-      switch (goal->target_type) {
-        case ApproachGoal::TARGET_PERSON:
-          start(navigation::PersonTarget{goal->target_id});
-          break;
-        case ApproachGoal::TARGET_GROUP:
-          start(navigation::GroupTarget{goal->target_id});
-          break;
-        case ApproachGoal::TARGET_GROUP_OF_PERSON:
-          start(navigation::GroupOfPersonTarget{goal->target_id});
-          break;
-        default:
-          throw core::RequestError(
-              "target_type: expected TARGET_PERSON (0), TARGET_GROUP (1) or "
-              "TARGET_GROUP_OF_PERSON (2), got " + std::to_string(goal->target_type));
-      }
-    } catch (const core::Error& e) {
-      ROS_WARN("approach goal rejected: %s", e.what());
-      rejected.reason = e.what();
-      handle.setRejected(rejected, e.what());
+    std::optional<navigation::NavigationTarget> target;
+    std::string problem;
+    switch (goal->target_type) {
+      case ApproachGoal::TARGET_PERSON:
+        target = navigation::PersonTarget{goal->target_id};
+        break;
+      case ApproachGoal::TARGET_GROUP:
+        target = navigation::GroupTarget{goal->target_id};
+        break;
+      case ApproachGoal::TARGET_GROUP_OF_PERSON:
+        target = navigation::GroupOfPersonTarget{goal->target_id};
+        break;
+      default:
+        problem = "target_type: expected TARGET_PERSON (0), TARGET_GROUP (1) or "
+                  "TARGET_GROUP_OF_PERSON (2), got " + std::to_string(goal->target_type);
+    }
+    if (problem.empty() && goal->target_id.empty()) {
+      problem = "target_id: expected a person or group id, got ''";
+    }
+    if (problem.empty()) {
+      observe_people();
+      problem = navigation::unknown_target_reason(
+          *target, tracker_.scene(ros::Time::now().toSec()));
+    }
+    if (!problem.empty()) {
+      ROS_WARN("approach goal rejected: %s", problem.c_str());
+      handle.setRejected(with_reason(ApproachResult(), problem), problem);
       return;
     }
-    handle.setAccepted();
-    replace_active({std::nullopt, handle, handle.getGoalID().id});
-    publish_status("accepted approach goal: " + goal->target_id);
+    accept_and_start(handle, *target, ApproachResult(),
+                     {std::nullopt, handle, handle.getGoalID().id});
   }
 
   void on_cancel(const actionlib_msgs::GoalID& id) {

@@ -35,6 +35,10 @@ using NavigationTarget = std::variant<PoseTarget, PersonTarget, GroupTarget, Gro
 /// A description of a target for messages ("person human3", "group g1", "pose (1.00, 2.00)").
 std::string describe(const NavigationTarget& target);
 
+/// Why `scene` cannot tell where the target is ("person human9 is not tracked", "person human2 is
+/// in no group"), or "" when it can (always for a pose).
+std::string unknown_target_reason(const NavigationTarget& target, const PerceivedScene& scene);
+
 /// Where a target puts ARI, and what the planner should know about it.
 struct Goal {
   core::Pose2 pose;                        // base_footprint goal, map frame

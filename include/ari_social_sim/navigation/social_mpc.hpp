@@ -18,7 +18,8 @@ struct MpcSolution {
   double cost{0.0};
   std::vector<TermCost> terms;     // each term's share of the cost
   int evaluations{0};              // cost evaluations, start-point candidates included
-  double solve_time_s{0.0};        // wall time of solve(), for the benchmark
+  double solve_time_s{0.0};        // wall time of solve()
+  double solve_cpu_s{0.0};         // CPU time of solve() on its thread (one core)
 
   double linear_mps() const { return controls[0]; }
   double angular_rps() const { return controls[1]; }

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -33,10 +34,11 @@ constexpr int kUsageError = 2;
 
 constexpr const char* kUsage = R"(Usage:
   nav_benchmark [--episodes N] [--seed S] [--types T1,T2,...] [--controllers social,baseline]
-                [--solver lbfgs|slsqp|mppi] [--config FILE] [--csv FILE] [--worlds DIR]
+                [--solver lbfgs|slsqp|mppi] [--config FILE] [--csv FILE] [--worlds DIR] [--trace]
 
 Runs N seeded episodes of each type with each controller, on the world core in one process,
-with ground-truth perception, and prints a summary table per type and controller.
+with ground-truth perception, and prints a summary table per type and controller. Solve times
+are CPU time of the solving thread (one core); the wall-clock figures follow the table.
 
   --episodes N      episodes per type (default 50)
   --seed S          base seed (default 1); episode i of a type always gets the same world
@@ -49,6 +51,7 @@ with ground-truth perception, and prints a summary table per type and controller
   --config FILE     SocialMPC parameters (default: the package's config/social_mpc.yaml)
   --csv FILE        writes one row per episode (default: no CSV)
   --worlds DIR      folder of the shipped worlds (default: the package's worlds/)
+  --trace           print every replanning cycle (pose, goal, command, cost by term) to stderr
   --help            print this text
 
 Exit status: 0 after a complete run, 2 on bad arguments or configuration.
@@ -63,6 +66,7 @@ struct Options {
   std::string config{std::string(ARI_SOURCE_DIR) + "/config/social_mpc.yaml"};
   std::string csv;
   std::string worlds{std::string(ARI_SOURCE_DIR) + "/worlds"};
+  bool trace{false};
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -92,6 +96,10 @@ Options parse(int argc, char** argv) {
     if (arg == "--help") {
       std::cout << kUsage;
       std::exit(0);
+    }
+    if (arg == "--trace") {
+      options.trace = true;
+      continue;
     }
     if (i + 1 >= argc) {
       throw core::ConfigError(arg + ": unknown option or missing value (see --help)");
@@ -229,7 +237,8 @@ struct EpisodeRecord {
   double final_position_error_m{-1.0};
   double final_heading_error_rad{-1.0};
   int gcff_includes_ari{-1};  // -1 = not a joining episode
-  std::vector<double> solve_times_s;
+  std::vector<double> solve_times_s;       // CPU time of each solve on its thread
+  std::vector<double> solve_wall_times_s;  // wall time of each solve (grows with machine load)
 };
 
 double percentile(std::vector<double> values, double q) {
@@ -242,8 +251,28 @@ double percentile(std::vector<double> values, double q) {
   return values[index];
 }
 
+// One line per replanning cycle: time, ARI's pose and speeds, the goal, the command, the plan's
+// cost by term (--trace, for tuning).
+void print_trace(const world::Simulation& sim, const navigation::Navigator& navigator,
+                 const navigation::NavigatorStep& step) {
+  const core::Pose2& ari = sim.ari()->pose();
+  const core::Pose2& goal = navigator.goal()->pose;
+  std::fprintf(stderr,
+               "t=%.1f ari=(%.2f,%.2f,%.2f) v=%.2f w=%.2f goal=(%.2f,%.2f,%.2f) d=%.2f "
+               "cmd=(%.2f,%.2f) %s J=%.3f:",
+               sim.time_s(), ari.position.x(), ari.position.y(), ari.theta,
+               sim.ari()->drive().linear_mps(), sim.ari()->drive().angular_rps(),
+               goal.position.x(), goal.position.y(), goal.theta, step.distance_to_goal_m,
+               step.command.linear_mps, step.command.angular_rps, step.phase.c_str(),
+               navigator.plan().cost);
+  for (const navigation::TermCost& term : navigator.plan().terms) {
+    std::fprintf(stderr, " %s=%.3f", term.name, term.cost);
+  }
+  std::fprintf(stderr, "\n");
+}
+
 EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& config,
-                          const std::string& controller) {
+                          const std::string& controller, bool trace) {
   world::Simulation& sim = *episode.simulation;
   EpisodeRecord record;
   record.type = tools::type_name(episode.type);
@@ -285,13 +314,10 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
       const navigation::NavigatorStep step =
           navigator.update(sim.time_s(), observe(*sim.ari()), scene);
       if (step.replanned) {
-        record.solve_times_s.push_back(navigator.plan().solve_time_s);
-        if (std::getenv("NAV_TRACE")) {
-          const auto& plan = navigator.plan();
-          const auto r = sim.ari()->pose();
-          std::fprintf(stderr, "t=%.1f ari=(%.2f,%.2f,%.2f) v=%.2f w=%.2f goal=(%.2f,%.2f,%.2f) d=%.2f cmd=(%.2f,%.2f) J=%.3f ev=%d:", sim.time_s(), r.position.x(), r.position.y(), r.theta, sim.ari()->drive().linear_mps(), sim.ari()->drive().angular_rps(), navigator.goal()->pose.position.x(), navigator.goal()->pose.position.y(), navigator.goal()->pose.theta, step.distance_to_goal_m, step.command.linear_mps, step.command.angular_rps, plan.cost, plan.evaluations);
-          for (const auto& t : plan.terms) std::fprintf(stderr, " %s=%.3f", t.name, t.cost);
-          std::fprintf(stderr, "\n");
+        record.solve_times_s.push_back(navigator.plan().solve_cpu_s);
+        record.solve_wall_times_s.push_back(navigator.plan().solve_time_s);
+        if (trace) {
+          print_trace(sim, navigator, step);
         }
       }
       if (step.state == navigation::NavigationState::kSucceeded) {
@@ -355,7 +381,7 @@ void write_csv(const std::string& path, const std::vector<EpisodeRecord>& record
   out << "type,episode,seed,controller,success,outcome,time_to_goal_s,path_length_m,"
          "path_length_ratio,person_collisions,static_collisions,min_person_distance_m,"
          "personal_space_share,ospace_intrusions,final_position_error_m,"
-         "final_heading_error_rad,gcff_includes_ari,mean_abs_jerk,solve_median_ms,solve_max_ms,"
+         "final_heading_error_rad,gcff_includes_ari,mean_abs_jerk,solve_cpu_median_ms,solve_cpu_max_ms,"
          "solves,reason\n";
   for (const EpisodeRecord& r : records) {
     const double ratio =
@@ -391,9 +417,9 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
       "| type | controller | episodes | success | collisions (people/static) | episodes with "
       "o-space intrusion | personal-space time | min distance to people (min / mean) | time to "
       "goal | path ratio | final position / heading error | GCFF includes ARI | mean abs jerk "
-      "| solve p50 / p99 |\n");
+      "| solve p50 / p99 (CPU) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::vector<double> all_solves;
+  std::vector<double> all_solves, all_wall;
   for (EpisodeType type : options.types) {
     for (const std::string& controller : options.controllers) {
       std::vector<const EpisodeRecord*> rows;
@@ -432,6 +458,10 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
       }
       if (controller == "social") {
         all_solves.insert(all_solves.end(), solves.begin(), solves.end());
+        for (const EpisodeRecord* r : rows) {
+          all_wall.insert(all_wall.end(), r->solve_wall_times_s.begin(),
+                          r->solve_wall_times_s.end());
+        }
       }
       const double n = static_cast<double>(std::max<size_t>(rows.size(), 1));
       char placement[64] = "-";
@@ -454,9 +484,13 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
     }
   }
   if (!all_solves.empty()) {
-    std::printf("\nSocialMPC solve time over %zu solves: median %.2f ms, p99 %.2f ms, max %.2f ms\n",
-                all_solves.size(), 1e3 * percentile(all_solves, 0.5),
-                1e3 * percentile(all_solves, 0.99), 1e3 * percentile(all_solves, 1.0));
+    std::printf(
+        "\nSocialMPC solve time (CPU, one core) over %zu solves: median %.2f ms, p99 %.2f ms, max "
+        "%.2f ms\n",
+        all_solves.size(), 1e3 * percentile(all_solves, 0.5), 1e3 * percentile(all_solves, 0.99),
+        1e3 * percentile(all_solves, 1.0));
+    std::printf("SocialMPC solve time (wall) over the same solves: median %.2f ms, p99 %.2f ms\n",
+                1e3 * percentile(all_wall, 0.5), 1e3 * percentile(all_wall, 0.99));
   }
 }
 
@@ -481,7 +515,7 @@ int main(int argc, char** argv) {
       for (const std::string& controller : options.controllers) {
         try {
           records.push_back(run_episode(tools::make_episode(type, i, options.seed, options.worlds),
-                                        configs.at(controller), controller));
+                                        configs.at(controller), controller, options.trace));
         } catch (const core::Error& e) {
           std::cerr << "nav_benchmark: " << tools::type_name(type) << " episode " << i << ": "
                     << e.what() << "\n";
