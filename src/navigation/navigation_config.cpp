@@ -109,6 +109,8 @@ void NavigatorConfig::read(const core::YamlMap& map) {
   read_number(map, "progress_timeout", progress_timeout_s, core::positive());
   read_number(map, "progress_distance", progress_distance_m, core::positive());
   read_number(map, "goal_update_distance", goal_update_distance_m, core::positive());
+  read_number(map, "goal_switch_distance", goal_switch_distance_m, core::positive());
+  read_number(map, "goal_switch_time", goal_switch_time_s, core::non_negative());
   read_number(map, "patience", patience_s, core::positive());
   read_number(map, "patience_halving", patience_halving_s, core::positive());
   map.finish();

@@ -44,6 +44,7 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   state_ = NavigationState::kActive;
   target_seen_s_ = time_s;
   aligning_ = false;
+  jump_since_s_.reset();
   best_distance_m_ = geodesic_->cost(robot.pose.position);
   best_distance_time_s_ = time_s;
   mpc_.reset();
@@ -150,8 +151,21 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
   bool target_visible = true;
   try {
-    adopt_goal(goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_), robot.pose, scene);
+    const Goal found = goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_);
     target_seen_s_ = time_s;
+    // A goal that jumps (another gap, another side of the person) must hold for a while before
+    // ARI follows it: perception's noise can make a group look different for a frame or two.
+    const bool jumped =
+        (found.pose.position - goal_->pose.position).norm() > config_.navigator.goal_switch_distance_m;
+    if (!jumped) {
+      jump_since_s_.reset();
+      adopt_goal(found, robot.pose, scene);
+    } else if (!jump_since_s_) {
+      jump_since_s_ = time_s;
+    } else if (time_s - *jump_since_s_ >= config_.navigator.goal_switch_time_s) {
+      jump_since_s_.reset();
+      adopt_goal(found, robot.pose, scene);
+    }
   } catch (const UnknownTarget& e) {
     target_visible = false;
     if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
@@ -160,7 +174,13 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
                                                    " (" + e.what() + ")");
     }
   } catch (const GoalUnreachable& e) {
-    return finish(NavigationState::kAborted, e.what());
+    // A pose stays unreachable; a person or group may make room again (or perception may have
+    // misjudged them for a moment): keep the last goal up to the lost-target timeout.
+    if (std::holds_alternative<PoseTarget>(*target_) ||
+        time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
+      return finish(NavigationState::kAborted, e.what());
+    }
+    target_visible = false;
   }
 
   // Arrival, judged on base_footprint against the goal pose.

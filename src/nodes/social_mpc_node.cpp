@@ -33,6 +33,7 @@
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "conversions/navigation_msgs.hpp"
+#include "conversions/world_state.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -130,17 +131,18 @@ class SocialMpcNode {
     tracker_.observe_group(msg.group_id, msg.header.stamp.toSec(), msg.members);
   }
 
-  // Each tracked person's pose in the map: the body frame (x = the body's facing) when perception
-  // matched a body, else the person frame.
+  // Each tracked person's pose in the map from their body frame (x = the body's facing). A person
+  // without a body (heard, or not yet matched) is left out: the person frame has a position but
+  // no meaningful orientation (REP-155), and the planner needs both.
   void observe_people() {
     for (const std::string& id : tracked_persons_) {
       const auto body = body_ids_.find(id);
-      const std::string frame = body != body_ids_.end() && !body->second.empty()
-                                    ? "body_" + body->second
-                                    : "person_" + id;
+      if (body == body_ids_.end() || body->second.empty()) {
+        continue;
+      }
       geometry_msgs::TransformStamped t;
       try {
-        t = tf_buffer_.lookupTransform(kMapFrame, frame, ros::Time(0));
+        t = tf_buffer_.lookupTransform(kMapFrame, "body_" + body->second, ros::Time(0));
       } catch (const tf2::TransformException&) {
         continue;
       }
@@ -385,14 +387,14 @@ class SocialMpcNode {
     if (step.state == navigation::NavigationState::kSucceeded ||
         step.state == navigation::NavigationState::kAborted) {
       finish(step.state, step.reason);
-      markers_pub_.publish(navigation_markers(*navigator_, false, kMapFrame, now));
+      markers_pub_.publish(navigation_markers(*navigator_, false, kMapFrame));
       return;
     }
     command(step.command, now);
     publish_feedback(step, *robot);
     plan_pub_.publish(plan_msg(navigator_->plan(), kMapFrame, now));
     if (markers_pub_.getNumSubscribers() > 0) {
-      markers_pub_.publish(navigation_markers(*navigator_, true, kMapFrame, now));
+      markers_pub_.publish(navigation_markers(*navigator_, true, kMapFrame));
     }
     char status[128];
     std::snprintf(status, sizeof(status), "%s, %.2f m to go", step.phase.c_str(),

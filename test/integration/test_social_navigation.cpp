@@ -177,6 +177,30 @@ TEST_F(SocialNavigation, GoalInTheClosedStoreroomIsAbortedWithTheReason) {
       << move_base_->getState().getText();
 }
 
+TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
+  ApproachGoal goal;
+  goal.target_type = ApproachGoal::TARGET_PERSON;
+  goal.target_id = "human20";
+  ASSERT_EQ(run(*approach_, goal, 90.0), actionlib::SimpleClientGoalState::SUCCEEDED)
+      << approach_->getState().getText();
+  const ApproachResult& result = *approach_->getResult();
+  // 1.1 m from base_footprint to her (goal_finder.approach_distance), within the tolerances.
+  EXPECT_NEAR(result.final_distance, 1.1, 0.2);
+  EXPECT_LT(result.final_heading_error, 0.25);
+  // Ground truth: ARI stands in front of her, within 35 deg of where she faces.
+  WorldState truth;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    truth = truth_;
+  }
+  const auto ana = std::find_if(truth.humans.begin(), truth.humans.end(),
+                                [](const HumanState& h) { return h.id == 20; });
+  ASSERT_NE(ana, truth.humans.end());
+  const double dx = truth.ari.pose.x - ana->pose.x, dy = truth.ari.pose.y - ana->pose.y;
+  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)), 35.0 * M_PI / 180.0);
+  EXPECT_NEAR(std::hypot(dx, dy), 1.1, 0.25);
+}
+
 TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   const std::string group_id = group_of_three(30.0);
   ASSERT_FALSE(group_id.empty()) << "perception never reported the group of three";
@@ -228,30 +252,6 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   EXPECT_EQ(with_ari, 3) << persons.size() - 1 << " bodies perceived";
   // And the members are still reported as one group by perception.
   EXPECT_EQ(group_of_three(5.0), group_id);
-}
-
-TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
-  ApproachGoal goal;
-  goal.target_type = ApproachGoal::TARGET_PERSON;
-  goal.target_id = "human20";
-  ASSERT_EQ(run(*approach_, goal, 90.0), actionlib::SimpleClientGoalState::SUCCEEDED)
-      << approach_->getState().getText();
-  const ApproachResult& result = *approach_->getResult();
-  // 1.1 m from base_footprint to her (goal_finder.approach_distance), within the tolerances.
-  EXPECT_NEAR(result.final_distance, 1.1, 0.2);
-  EXPECT_LT(result.final_heading_error, 0.25);
-  // Ground truth: ARI stands in front of her, within 35 deg of where she faces.
-  WorldState truth;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    truth = truth_;
-  }
-  const auto ana = std::find_if(truth.humans.begin(), truth.humans.end(),
-                                [](const HumanState& h) { return h.id == 20; });
-  ASSERT_NE(ana, truth.humans.end());
-  const double dx = truth.ari.pose.x - ana->pose.x, dy = truth.ari.pose.y - ana->pose.y;
-  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)), 35.0 * M_PI / 180.0);
-  EXPECT_NEAR(std::hypot(dx, dy), 1.1, 0.25);
 }
 
 }  // namespace

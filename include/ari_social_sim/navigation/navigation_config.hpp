@@ -94,6 +94,8 @@ struct NavigatorConfig {
   double progress_timeout_s{20.0};      // abort when the path to the goal shrinks by less than
   double progress_distance_m{0.3};      //   this distance within the timeout
   double goal_update_distance_m{0.1};   // recompute the geodesic field when the goal moves more
+  double goal_switch_distance_m{0.5};   // a goal moving farther than this at once (another gap)...
+  double goal_switch_time_s{1.0};       // ... is followed only once it has held this long
   double patience_s{4.0};               // without progress for this long, personal spaces...
   double patience_halving_s{2.0};       // ... lose half their weight every this many seconds
   GeodesicParams geodesic;

@@ -97,6 +97,7 @@ class Navigator {
   std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
   bool aligning_{false};  // at the goal position, turning to the goal heading
+  std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
   MpcProblem problem_;

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <geometry_msgs/Pose.h>
-#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -10,12 +9,9 @@
 
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 
 namespace ari_social_sim::nodes {
 
-/// /map back into the core's grid (same layout: row-major from the origin cell, ROS values).
-world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
 /// A planar pose from a 3D one: position x, y and the yaw of the quaternion. Empty when the
 /// quaternion is not finite or has no length.
 std::optional<core::Pose2> planar_pose(const geometry_msgs::Pose& pose);
@@ -27,7 +23,6 @@ nav_msgs::Path plan_msg(const navigation::MpcSolution& plan, const std::string& 
 /// group joined) and the social cost density around ARI as coloured squares. Starts with
 /// DELETEALL; empty apart from it when no goal is active.
 visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& navigator,
-                                                   bool active, const std::string& frame_id,
-                                                   const ros::Time& stamp);
+                                                   bool active, const std::string& frame_id);
 
 }  // namespace ari_social_sim::nodes

@@ -14,4 +14,10 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
 nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
                                double stamp_s);
 
+/// The snapshot a /sim/world_state message carries: the inverse of to_msg (the message holds a
+/// speaker's previous act but no longer history).
+world::WorldSnapshot from_msg(const WorldState& msg);
+/// A /map message as a grid (an origin rotation, which the world never writes, is ignored).
+world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
+
 }  // namespace ari_social_sim::nodes
