@@ -372,6 +372,8 @@ class SocialMpcNode {
 
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
+    // People are followed all the time, so that a goal naming someone finds them known already.
+    observe_people();
     if (!navigator_ || navigator_->state() != navigation::NavigationState::kActive) {
       return;
     }
@@ -380,7 +382,6 @@ class SocialMpcNode {
       ROS_WARN_THROTTLE(5.0, "social_mpc_node: no transform from map to base_footprint");
       return;
     }
-    observe_people();
     const ros::Time now = ros::Time::now();
     const navigation::NavigatorStep step =
         navigator_->update(now.toSec(), *robot, tracker_.scene(now.toSec()));

@@ -102,6 +102,27 @@ class SocialNavigation : public ::testing::Test {
     return "";
   }
 
+  // Waits until perception has matched a body to each of `persons` (their latched body_id), then
+  // a second more, so that social_mpc_node, listening to the same topics, knows them too.
+  static bool wait_for_bodies(const std::vector<std::string>& persons, double timeout_s) {
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    while (ros::WallTime::now() < until) {
+      bool all = true;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const std::string& id : persons) {
+          all = all && body_ids_.count(id) > 0;
+        }
+      }
+      if (all) {
+        ros::Duration(1.0).sleep();
+        return true;
+      }
+      ros::WallDuration(0.1).sleep();
+    }
+    return false;
+  }
+
   static bool lookup(const std::string& frame, Eigen::Vector2d& position, double& yaw) {
     try {
       const geometry_msgs::TransformStamped t =
@@ -178,6 +199,7 @@ TEST_F(SocialNavigation, GoalInTheClosedStoreroomIsAbortedWithTheReason) {
 }
 
 TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
+  ASSERT_TRUE(wait_for_bodies({"human20"}, 30.0)) << "perception never matched Ana's body";
   ApproachGoal goal;
   goal.target_type = ApproachGoal::TARGET_PERSON;
   goal.target_id = "human20";
@@ -204,6 +226,7 @@ TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
 TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   const std::string group_id = group_of_three(30.0);
   ASSERT_FALSE(group_id.empty()) << "perception never reported the group of three";
+  ASSERT_TRUE(wait_for_bodies({"human10", "human11", "human12"}, 30.0));
   ApproachGoal goal;
   goal.target_type = ApproachGoal::TARGET_GROUP;
   goal.target_id = group_id;
