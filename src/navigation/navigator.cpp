@@ -104,8 +104,8 @@ bool Navigator::discs_changed(const std::vector<CostDisc>& discs) const {
 
 std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal, const core::Pose2& robot,
                                                    const std::vector<CostDisc>& discs) const {
-  auto field = std::make_unique<GeodesicField>(sdf_, goal.pose.position,
-                                               config_.navigator.geodesic, discs);
+  auto field =
+      std::make_unique<GeodesicField>(sdf_, goal.pose.position, config_.navigator.geodesic, discs);
   if (!field->reachable(goal.pose.position)) {
     throw GoalUnreachable("goal " + format_point(goal.pose.position) +
                           " is too close to walls or furniture for ARI to reach");
@@ -155,8 +155,8 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
     target_seen_s_ = time_s;
     // A goal that jumps (another gap, another side of the person) must hold for a while before
     // ARI follows it: perception's noise can make a group look different for a frame or two.
-    const bool jumped =
-        (found.pose.position - goal_->pose.position).norm() > config_.navigator.goal_switch_distance_m;
+    const bool jumped = (found.pose.position - goal_->pose.position).norm() >
+                        config_.navigator.goal_switch_distance_m;
     if (!jumped) {
       jump_since_s_.reset();
       adopt_goal(found, robot.pose, scene);
@@ -170,8 +170,8 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
     target_visible = false;
     if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
       return finish(NavigationState::kAborted, describe(*target_) + " lost for " +
-                                                   format_seconds(time_s - target_seen_s_) +
-                                                   " (" + e.what() + ")");
+                                                   format_seconds(time_s - target_seen_s_) + " (" +
+                                                   e.what() + ")");
     }
   } catch (const GoalUnreachable& e) {
     // A pose stays unreachable; a person or group may make room again (or perception may have
@@ -185,9 +185,12 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
 
   // Arrival, judged on base_footprint against the goal pose.
   const double position_error = (robot.pose.position - goal_->pose.position).norm();
-  const double heading_error = std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
+  const double heading_error =
+      std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
   step.distance_to_goal_m = geodesic_->cost(robot.pose.position);
-  if (target_visible && position_error <= config_.navigator.goal_tolerance_m &&
+  // Arriving where the target was last seen counts: a member hidden behind another as ARI
+  // steps into the gap is still there.
+  if (position_error <= config_.navigator.goal_tolerance_m &&
       heading_error <= config_.navigator.yaw_tolerance) {
     NavigatorStep done = finish(NavigationState::kSucceeded, "");
     done.distance_to_goal_m = step.distance_to_goal_m;
@@ -243,9 +246,8 @@ void Navigator::build_problem(double time_s, const RobotObservation& robot,
   const double distance = geodesic_->cost(robot.pose.position);
   const double fade_start = config_.mpc.target_space_fade_m;
   const double fade_end = 0.5 * fade_start;
-  const double target_scale =
-      config_.mpc.target_space_scale *
-      std::clamp((distance - fade_end) / (fade_start - fade_end), 0.0, 1.0);
+  const double target_scale = config_.mpc.target_space_scale *
+                              std::clamp((distance - fade_end) / (fade_start - fade_end), 0.0, 1.0);
   // Patience: when someone's space blocks the only way (a person standing in a doorway), ARI
   // waits, then claims the way bit by bit, halving the personal-space weights every
   // patience_halving seconds; people step aside from a robot pressing on.

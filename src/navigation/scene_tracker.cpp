@@ -73,9 +73,10 @@ PerceivedScene SceneTracker::scene(double time_s) const {
   PerceivedScene scene;
   for (const auto& [id, track] : people_) {
     if (time_s - track.time_s <= config_.person_timeout_s) {
+      // Where they are now if they kept walking since perception last saw them.
       PersonEstimate person;
       person.id = id;
-      person.position = track.position;
+      person.position = track.position + track.velocity * (time_s - track.time_s);
       person.velocity = track.velocity;
       person.heading = std::atan2(track.facing.y(), track.facing.x());
       scene.people.push_back(person);

@@ -1,17 +1,17 @@
-#include "ari_social_sim/navigation/scene_tracker.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/navigation/scene_tracker.hpp"
 
 namespace ari_social_sim::navigation {
 namespace {
 
 TEST(SceneTracker, EstimatesWalkingVelocityFromPositions) {
   SceneTracker tracker{SceneTrackerConfig{}};
-  // 1 m/s along x, reported exactly at 10 Hz for 3 s: the filter settles on 1 m/s.
+  // 1 m/s along x, reported exactly at 10 Hz for 3 s: the filter settles on 1 m/s; unseen for
+  // the next 0.5 s, the person is carried on to x = 3.5.
   for (int i = 0; i <= 30; ++i) {
     tracker.observe_person("human1", 0.1 * i, {0.1 * i, 2.0}, 0.0);
   }
@@ -20,6 +20,7 @@ TEST(SceneTracker, EstimatesWalkingVelocityFromPositions) {
   EXPECT_NEAR(scene.people[0].velocity.x(), 1.0, 0.02);
   EXPECT_NEAR(scene.people[0].velocity.y(), 0.0, 1e-9);
   EXPECT_NEAR(scene.people[0].position.x(), 3.0, 0.01);
+  EXPECT_NEAR(tracker.scene(3.5).people[0].position.x(), 3.5, 0.02);
   // The person stops: within 1.5 s the estimate is below a fifth of the walking speed.
   for (int i = 1; i <= 15; ++i) {
     tracker.observe_person("human1", 3.0 + 0.1 * i, {3.0, 2.0}, 0.0);
@@ -66,9 +67,9 @@ TEST(SceneTracker, DropsWhatPerceptionStoppedReporting) {
   // Facing each other 1 m apart, stride 0.5 m: both candidate centres at (1.5, 1), radius 0.5.
   EXPECT_NEAR(scene.groups[0].centre.x(), 1.5, 1e-12);
   EXPECT_NEAR(scene.groups[0].radius_m, 0.5, 1e-12);
-  // 1 s timeouts: at 1.2 s only human3, seen again at 0.8 s, remains; no group has two members.
-  tracker.observe_person("human3", 0.8, {5.0, 5.0}, 0.0);
-  scene = tracker.scene(1.2);
+  // 2 s timeouts: at 2.2 s only human3, seen again at 1.6 s, remains; no group has two members.
+  tracker.observe_person("human3", 1.6, {5.0, 5.0}, 0.0);
+  scene = tracker.scene(2.2);
   ASSERT_EQ(scene.people.size(), 1u);
   EXPECT_EQ(scene.people[0].id, "human3");
   EXPECT_TRUE(scene.groups.empty());
@@ -84,14 +85,14 @@ TEST(SceneTracker, AMemberMissedForAFrameStaysInTheGroup) {
   tracker.observe_group("g1", 0.0, {"human1", "human2", "human3"});
   tracker.observe_group("g1", 0.1, {"human1", "human2"});  // GCFF left human3 out once
   EXPECT_EQ(tracker.scene(0.2).groups[0].members.size(), 3u);
-  // Left out for longer than the 1 s group timeout, they are gone from it.
-  tracker.observe_group("g1", 1.2, {"human1", "human2"});
-  for (const double t : {1.2}) {
+  // Left out for longer than the 2 s group timeout, they are gone from it.
+  tracker.observe_group("g1", 2.2, {"human1", "human2"});
+  for (const double t : {2.2}) {
     tracker.observe_person("human1", t, {1.0, 1.0}, 0.0);
     tracker.observe_person("human2", t, {2.0, 1.0}, M_PI);
     tracker.observe_person("human3", t, {1.5, 1.6}, -M_PI / 2);
   }
-  EXPECT_EQ(tracker.scene(1.2).groups[0].members.size(), 2u);
+  EXPECT_EQ(tracker.scene(2.2).groups[0].members.size(), 2u);
 }
 
 }  // namespace

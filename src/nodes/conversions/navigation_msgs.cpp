@@ -117,15 +117,18 @@ visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& 
                    group.is_target ? green : rgba(0.9f, 0.1f, 0.1f));
   }
 
-  // Social cost density around ARI.
+  // Social cost density around ARI (rviz rejects an empty list, so none when all is clear).
   constexpr double kSpacing = 0.2;
-  Marker& cost = markers.add("social_cost", 0, Marker::CUBE_LIST, rgba(1, 1, 1));
-  cost.scale.x = cost.scale.y = kSpacing;
-  cost.scale.z = 0.01;
-  for (const navigation::CostSample& sample : navigation::sample_social_cost(
-           problem, spaces, problem.start.position, 5.0, kSpacing, 0.05)) {
-    cost.points.push_back(at(sample.position, 0.0));
-    cost.colors.push_back(heat(sample.value));
+  const std::vector<navigation::CostSample> samples =
+      navigation::sample_social_cost(problem, spaces, problem.start.position, 5.0, kSpacing, 0.05);
+  if (!samples.empty()) {
+    Marker& cost = markers.add("social_cost", 0, Marker::CUBE_LIST, rgba(1, 1, 1));
+    cost.scale.x = cost.scale.y = kSpacing;
+    cost.scale.z = 0.01;
+    for (const navigation::CostSample& sample : samples) {
+      cost.points.push_back(at(sample.position, 0.01));
+      cost.colors.push_back(heat(sample.value));
+    }
   }
   return out;
 }
