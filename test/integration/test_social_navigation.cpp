@@ -51,13 +51,13 @@ class SocialNavigation : public ::testing::Test {
           std::lock_guard<std::mutex> lock(mutex_);
           truth_ = *msg;
         })));
-    subscribers_.push_back(nh_->subscribe<nav_msgs::Path>(
-        "/social_mpc/plan", 1,
-        boost::function<void(const nav_msgs::Path::ConstPtr&)>(
-            [](const nav_msgs::Path::ConstPtr& msg) {
-              std::lock_guard<std::mutex> lock(mutex_);
-              plan_poses_ = std::max(plan_poses_, msg->poses.size());
-            })));
+    subscribers_.push_back(
+        nh_->subscribe<nav_msgs::Path>("/social_mpc/plan", 1,
+                                       boost::function<void(const nav_msgs::Path::ConstPtr&)>(
+                                           [](const nav_msgs::Path::ConstPtr& msg) {
+                                             std::lock_guard<std::mutex> lock(mutex_);
+                                             plan_poses_ = std::max(plan_poses_, msg->poses.size());
+                                           })));
     spinner_ = new ros::AsyncSpinner(2);
     spinner_->start();
     approach_ = new ApproachClient("/social_mpc/approach", false);
@@ -178,8 +178,7 @@ TEST_F(SocialNavigation, UnknownIdIsRejectedWithTheReason) {
   goal.target_type = ApproachGoal::TARGET_PERSON;
   goal.target_id = "human99";
   EXPECT_EQ(run(*approach_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
-  EXPECT_NE(approach_->getResult()->reason.find("person human99 is not tracked"),
-            std::string::npos)
+  EXPECT_NE(approach_->getResult()->reason.find("person human99 is not tracked"), std::string::npos)
       << approach_->getResult()->reason;
   goal.target_type = 7;
   EXPECT_EQ(run(*approach_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
@@ -219,7 +218,8 @@ TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
                                 [](const HumanState& h) { return h.id == 20; });
   ASSERT_NE(ana, truth.humans.end());
   const double dx = truth.ari.pose.x - ana->pose.x, dy = truth.ari.pose.y - ana->pose.y;
-  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)), 35.0 * M_PI / 180.0);
+  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)),
+            35.0 * M_PI / 180.0);
   EXPECT_NEAR(std::hypot(dx, dy), 1.1, 0.25);
 }
 
@@ -261,8 +261,8 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   Eigen::Vector2d base;
   double heading;
   ASSERT_TRUE(lookup("base_footprint", base, heading));
-  const Eigen::Vector2d ari = base - kBodyCentreBehindBase * Eigen::Vector2d(std::cos(heading),
-                                                                            std::sin(heading));
+  const Eigen::Vector2d ari =
+      base - kBodyCentreBehindBase * Eigen::Vector2d(std::cos(heading), std::sin(heading));
   persons.push_back({"ari", ari.x(), ari.y(), heading});
   perception::GcffDetector detector(perception::GcffParams{kGcffStride, kGcffMdl});
   const perception::GcffResult gcff = detector.detect(persons);
