@@ -242,24 +242,35 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   ros::Duration(1.0).sleep();   // perception catches up with the final poses
 
   // GCFF, as hri_perception_node runs it, on the bodies perception reports plus ARI at its body
-  // centre, facing its heading: ARI shares the label of the three members.
+  // centre, facing its heading: ARI shares the label of the three members. Standing in the gap,
+  // ARI may see a member beside it only now and then, so the bodies are read until perception
+  // reports all three at once (within 10 s).
   std::vector<perception::GcffPerson> persons;
-  std::vector<std::string> tracked;
-  std::map<std::string, std::string> body_ids;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    tracked = tracked_;
-    body_ids = body_ids_;
-  }
-  for (const std::string& id : tracked) {
-    Eigen::Vector2d position;
-    double yaw;
-    if (body_ids.count(id) && lookup("body_" + body_ids[id], position, yaw)) {
-      persons.push_back({id, position.x(), position.y(), yaw});
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(10.0);
+  size_t members_seen = 0;
+  while (members_seen < kGroupOfThree.size() && ros::WallTime::now() < until) {
+    std::vector<std::string> tracked;
+    std::map<std::string, std::string> body_ids;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      tracked = tracked_;
+      body_ids = body_ids_;
     }
+    persons.clear();
+    members_seen = 0;
+    for (const std::string& id : tracked) {
+      Eigen::Vector2d position;
+      double yaw;
+      if (body_ids.count(id) && lookup("body_" + body_ids[id], position, yaw)) {
+        persons.push_back({id, position.x(), position.y(), yaw});
+        members_seen += kGroupOfThree.count(id);
+      }
+    }
+    ros::WallDuration(0.2).sleep();
   }
+  ASSERT_EQ(members_seen, kGroupOfThree.size()) << "perception never reported all three at once";
   Eigen::Vector2d base;
-  double heading;
+  double heading = 0.0;
   ASSERT_TRUE(lookup("base_footprint", base, heading));
   const Eigen::Vector2d ari =
       base - kBodyCentreBehindBase * Eigen::Vector2d(std::cos(heading), std::sin(heading));
