@@ -45,6 +45,7 @@ namespace ari_social_sim::nodes {
 namespace {
 
 constexpr char kHeadPanJoint[] = "head_1_joint";
+constexpr char kHeadTiltJoint[] = "head_2_joint";
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
   return {{pose.x, pose.y}, pose.theta};
@@ -86,6 +87,9 @@ class WorldNode {
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
     if (config_.ari_source == world::AriSource::kInternal) {
       odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
+      // The head's joint states come from here only in 2D mode; in 3D mode ari_physics_node
+      // publishes /joint_states and this node reads them.
+      joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("/joint_states", 10);
       cmd_vel_sub_ =
           nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
       head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
@@ -208,6 +212,14 @@ class WorldNode {
     odom.twist.twist.linear.x = ari.linear_mps;
     odom.twist.twist.angular.z = ari.angular_rps;
     odom_pub_.publish(odom);
+
+    // The head joints, as ARI's joint_state_controller reports them (tilt stays level in 2D).
+    sensor_msgs::JointState joints;
+    joints.header.stamp = stamp;
+    joints.name = {kHeadPanJoint, kHeadTiltJoint};
+    joints.position = {ari.head_pan_rad, 0.0};
+    joints.velocity = {ari.head_pan_velocity_rps, 0.0};
+    joint_states_pub_.publish(joints);
   }
 
   void publish_map() { map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s())); }
@@ -443,7 +455,7 @@ class WorldNode {
   ros::WallTime last_markers_;
 
   ros::NodeHandle nh_;
-  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_;
+  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_, joint_states_pub_;
   ros::Subscriber cmd_vel_sub_, head_sub_, ground_truth_sub_, joint_state_sub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
