@@ -5,13 +5,7 @@
 # couple and the waiting patient (plan, predicted footprints, personal spaces, o-spaces, social
 # cost), and once it has joined. Needs a build (scripts/build.sh), xvfb and ImageMagick.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-export PATH=/usr/bin:$PATH
-set +u
-source _build/devel/setup.bash
-set -u
-port=${ARI_SCREENSHOT_ROS_PORT:-11398}
-export ROS_MASTER_URI=http://localhost:${port}
+source "$(dirname "$0")/screenshot_env.sh" 11398
 work=$(mktemp -d)
 
 roslaunch -p "${port}" ari_social_sim navigation.launch \
