@@ -1,0 +1,36 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/scenario/agent_ref.hpp"
+#include "ari_social_sim/world/world_snapshot.hpp"
+
+namespace ari_social_sim::scenario {
+
+/// State of ARI's last navigation goal (set_goal, approach or join_group), as its action client
+/// reports it.
+enum class NavigationState { kIdle, kActive, kSucceeded, kFailed };
+
+struct NavigationStatus {
+  NavigationState state{NavigationState::kIdle};
+  std::string reason;  // why it failed; empty otherwise
+};
+
+/// One group as perception reports it, its members mapped to agents (ids that are not `humanN`
+/// person ids are left out).
+struct PerceivedGroup {
+  std::string group_id;
+  std::vector<AgentRef> members;
+};
+
+/// What a script sees at one tick: ground truth of the world (scenario_node: /sim/world_state),
+/// ARI's navigation (the move_base and /social_mpc/approach clients) and the perceived groups
+/// (/humans/interactions/groups). The batch tool fills the same from the cores in-process.
+struct Observations {
+  world::WorldSnapshot world;
+  NavigationStatus navigation;
+  std::vector<PerceivedGroup> perceived_groups;
+};
+
+}  // namespace ari_social_sim::scenario
