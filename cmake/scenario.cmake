@@ -1,14 +1,21 @@
-# scenario/: scenario files (a scene plus a script) and the state machine that plays them; its
-# tests.
+# scenario/: scenario files (a scene plus a script), the state machine that plays them, and
+# scenario_node, which plays them through the suite's public services and actions.
 add_library(ari_scenario
   src/scenario/agent_ref.cpp
   src/scenario/episode_metrics.cpp
   src/scenario/episode_report.cpp
   src/scenario/random_group.cpp
   src/scenario/scenario.cpp
+  src/scenario/scenario_run_config.cpp
+  src/scenario/script.cpp
   src/scenario/script_runner.cpp
   src/scenario/transcript.cpp)
 target_link_libraries(ari_scenario PUBLIC ari_world)
+
+add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
+target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
+add_executable(scenario_node src/nodes/scenario_node.cpp)
+target_link_libraries(scenario_node ari_scenario_conversions)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
@@ -17,9 +24,18 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_episode_metrics.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_scenario.cpp
+      test/scenario/test_scenario_run_config.cpp
       test/scenario/test_script_runner.cpp
       test/scenario/test_transcript.cpp
     LIBRARIES ari_scenario)
   target_compile_definitions(test_scenario PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(test_scenario PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+
+  ari_add_gtest(test_world_state_round_trip
+    SOURCES test/nodes/test_world_state_round_trip.cpp
+    LIBRARIES ari_world_conversions)
+  target_compile_definitions(test_world_state_round_trip PRIVATE
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+  add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
 endif()

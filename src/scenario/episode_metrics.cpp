@@ -39,6 +39,7 @@ void MetricsRecorder::observe(const Observations& observations) {
   previous_navigation_ = navigation;
 
   if (world.ari) {
+    metrics_.has_ari = true;
     if (previous_ari_position_) {
       metrics_.ari_path_length_m += (world.ari->pose.position - *previous_ari_position_).norm();
     }

@@ -16,10 +16,11 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 
 std::string format_report(const std::string& scenario_name, const ScriptRunner& runner,
                           const EpisodeMetrics& metrics) {
-  std::string report = "scenario " + scenario_name + "\ntranscript:\n";
+  std::string report = "scenario " + scenario_name + " (times from the script's start)\n";
+  report += "transcript:\n";
   for (const TranscriptLine& line : runner.transcript().lines()) {
-    report += format("  [%8.2f s] ", line.start_s) + line.speaker_name + " (" + line.act +
-              "): " + line.text + "\n";
+    report += format("  [%7.2f s] ", line.start_s - runner.start_time_s()) + line.speaker_name +
+              " (" + line.act + "): " + line.text + "\n";
   }
   report += "states:";
   for (const StateVisit& visit : runner.visits()) {
@@ -36,10 +37,13 @@ std::string format_report(const std::string& scenario_name, const ScriptRunner& 
   } else {
     report += "outcome: not finished\n";
   }
+  if (!metrics.has_ari) {
+    return report + "navigation: no ARI in the scene\n";
+  }
   report += format("navigation: path %.2f m, ", metrics.ari_path_length_m) +
             (std::isfinite(metrics.min_clearance_m)
                  ? format("min clearance %.2f m, ", metrics.min_clearance_m)
-                 : std::string("no humans, ")) +
+                 : std::string("nobody around, ")) +
             std::to_string(metrics.contacts) + " contacts, " +
             format("%.2f s in personal space, ", metrics.personal_space_time_s) +
             std::to_string(metrics.navigation_goals) + " goals (" +

@@ -426,15 +426,6 @@ class ScriptReader {
 
 }  // namespace
 
-size_t Script::state_index(const std::string& name) const {
-  for (size_t i = 0; i < states.size(); ++i) {
-    if (states[i].name == name) {
-      return i;
-    }
-  }
-  throw std::out_of_range("no state named " + name);
-}
-
 Scenario parse_scenario(const core::YamlMap& root, const std::string& base_dir,
                         const std::string& name) {
   Scenario scenario;

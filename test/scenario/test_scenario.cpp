@@ -69,6 +69,15 @@ TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStates) {
   EXPECT_DOUBLE_EQ(home.distance_m, 0.5);
 }
 
+TEST(Scenario, GroupDiscussionNeedsSpeechAndBothNavigationActions) {
+  const ScriptInterfaces uses =
+      load_scenario_file(kSource + "/scenarios/group_discussion.yaml").script.interfaces();
+  EXPECT_TRUE(uses.text_to_speech);
+  EXPECT_TRUE(uses.approach);
+  EXPECT_TRUE(uses.move_base);
+  EXPECT_FALSE(uses.perceived_groups);
+}
+
 TEST(Scenario, EveryConditionAndActionTypeReads) {
   const Scenario s = load_scenario_file(write_scenario(
       "  time_limit: 30\n  start: a\n"

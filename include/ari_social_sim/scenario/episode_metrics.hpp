@@ -9,6 +9,7 @@ namespace ari_social_sim::scenario {
 
 /// Navigation figures of one run, from ground truth (docs/scenario.md section 7).
 struct EpisodeMetrics {
+  bool has_ari{false};            // the run had ARI (else the figures below stay at zero)
   double ari_path_length_m{0.0};  // distance base_footprint travelled
   /// Smallest distance from ARI's footprint (a rectangle) to the edge of a human's body (a 0.2 m
   /// circle): 0 means touching. Infinite when nobody was ever there.

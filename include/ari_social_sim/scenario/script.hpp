@@ -137,6 +137,15 @@ struct State {
   std::vector<Transition> transitions;  // checked in order; the first that holds fires
 };
 
+/// The run interfaces a script uses beyond the world's services, so that a runner waits for
+/// exactly those before it starts.
+struct ScriptInterfaces {
+  bool text_to_speech{false};    // ARI says something (/tts)
+  bool move_base{false};         // ARI goes to a pose
+  bool approach{false};          // ARI approaches a person or joins a group
+  bool perceived_groups{false};  // a condition on /humans/interactions/groups
+};
+
 /// The scripted part of a scenario (the seed's Script, 3.7, as data).
 struct Script {
   double time_limit_s{0.0};  // sim time after which the run ends as a failure
@@ -146,6 +155,7 @@ struct Script {
 
   /// Index of the state with this name; throws std::out_of_range when there is none.
   size_t state_index(const std::string& name) const;
+  ScriptInterfaces interfaces() const;
 };
 
 }  // namespace ari_social_sim::scenario

@@ -47,6 +47,8 @@ class ScriptRunner {
   const std::string& state() const;
   const std::vector<StateVisit>& visits() const { return visits_; }
   const Transcript& transcript() const { return transcript_; }
+  /// Sim time (s) of the first update, from which the script's times count.
+  double start_time_s() const { return start_s_; }
 
  private:
   struct FinishedAct {

@@ -24,6 +24,16 @@ SpeechState to_msg(const world::SpeechSnapshot& speech) {
   return msg;
 }
 
+core::Pose2 from_msg(const geometry_msgs::Pose2D& msg) {
+  return {{msg.x, msg.y}, msg.theta};
+}
+
+world::SpeechSnapshot from_msg(const SpeechState& msg) {
+  return {msg.act,          msg.content,          msg.current_word,
+          msg.word_index,   msg.is_speaking != 0, msg.start_time,
+          msg.previous_act, msg.previous_content};
+}
+
 }  // namespace
 
 WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id) {
@@ -78,6 +88,47 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     msg.groups.push_back(std::move(g));
   }
   return msg;
+}
+
+world::WorldSnapshot from_msg(const WorldState& msg) {
+  world::WorldSnapshot snapshot;
+  snapshot.time_s = msg.header.stamp.toSec();
+  snapshot.step = msg.step;
+  if (msg.has_ari) {
+    world::AriSnapshot& ari = snapshot.ari.emplace();
+    ari.id = msg.ari.id;
+    ari.pose = from_msg(msg.ari.pose);
+    ari.linear_mps = msg.ari.linear_velocity;
+    ari.angular_rps = msg.ari.angular_velocity;
+    ari.head_pan_rad = msg.ari.head_pan;
+    ari.head_pan_velocity_rps = msg.ari.head_pan_velocity;
+    ari.speech = from_msg(msg.ari.speech);
+  }
+  snapshot.humans.reserve(msg.humans.size());
+  for (const HumanState& h : msg.humans) {
+    world::HumanSnapshot& human = snapshot.humans.emplace_back();
+    human.id = h.id;
+    human.name = h.name;
+    human.role = h.role;
+    human.pose = from_msg(h.pose);
+    human.velocity_mps = {h.velocity.linear.x, h.velocity.linear.y};
+    human.angular_velocity_rps = h.velocity.angular.z;
+    human.age_years = h.age;
+    human.gender = static_cast<world::Gender>(h.gender);
+    human.mask = h.mask;
+    human.emotion = static_cast<world::Emotion>(h.emotion);
+    human.motion_mode = static_cast<world::MotionMode>(h.motion_mode);
+    if (h.has_goal) {
+      human.goal = from_msg(h.goal);
+    }
+    human.group_id = h.group_id;
+    human.gaze = {h.gaze.target_id, h.gaze.direction, h.gaze.since};
+    human.speech = from_msg(h.speech);
+  }
+  for (const GroupState& g : msg.groups) {
+    snapshot.groups.push_back({g.id, g.members, {g.centre.x, g.centre.y}, g.ospace_radius});
+  }
+  return snapshot;
 }
 
 nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
