@@ -2,6 +2,7 @@
 # scenario_node, which plays them through the suite's public services and actions.
 add_library(ari_scenario
   src/scenario/agent_ref.cpp
+  src/scenario/batch_plan.cpp
   src/scenario/episode_metrics.cpp
   src/scenario/episode_report.cpp
   src/scenario/random_group.cpp
@@ -21,6 +22,7 @@ if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
     SOURCES
       test/scenario/test_agent_ref.cpp
+      test/scenario/test_batch_plan.cpp
       test/scenario/test_episode_metrics.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_scenario.cpp
