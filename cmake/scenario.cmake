@@ -5,6 +5,7 @@ add_library(ari_scenario
   src/scenario/batch_plan.cpp
   src/scenario/episode_metrics.cpp
   src/scenario/episode_report.cpp
+  src/scenario/progress_bar.cpp
   src/scenario/random_group.cpp
   src/scenario/scenario.cpp
   src/scenario/scenario_run_config.cpp
@@ -24,6 +25,7 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_agent_ref.cpp
       test/scenario/test_batch_plan.cpp
       test/scenario/test_episode_metrics.cpp
+      test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_scenario.cpp
       test/scenario/test_scenario_run_config.cpp

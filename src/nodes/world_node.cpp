@@ -289,11 +289,7 @@ class WorldNode {
   }
 
   bool set_goal(SetGoal::Request& req, SetGoal::Response& res) {
-    return answer(res, [&] {
-      world::Human& h = human(req.id);
-      simulation_->release_from_group(req.id);
-      h.set_goal(from_msg(req.goal));
-    });
+    return answer(res, [&] { simulation_->set_human_goal(req.id, from_msg(req.goal)); });
   }
 
   bool set_velocity(SetVelocity::Request& req, SetVelocity::Response& res) {
@@ -347,14 +343,9 @@ class WorldNode {
 
   bool say(Say::Request& req, Say::Response& res) {
     return answer(res, [&] {
-      world::SpeechGenerator* speech = nullptr;
-      if (simulation_->ari() != nullptr && simulation_->ari()->id() == req.speaker_id) {
-        speech = &simulation_->ari()->speech();
-      } else {
-        speech = &human(req.speaker_id).speech();
-      }
-      speech->say(req.act, req.content, simulation_->time_s());
-      res.duration = speech->duration_s(req.content);
+      world::SpeechGenerator& speech = simulation_->speech_of(req.speaker_id);
+      speech.say(req.act, req.content, simulation_->time_s());
+      res.duration = speech.duration_s(req.content);
     });
   }
 

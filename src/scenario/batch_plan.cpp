@@ -54,8 +54,7 @@ void parse_shard(const std::string& text, const std::string& field, BatchPlan& p
   unsigned k = 0, n = 0;
   if (slash == std::string::npos || !parse_positive(text.substr(0, slash), k) ||
       !parse_positive(text.substr(slash + 1), n) || k > n) {
-    throw core::ConfigError(field + ": --shard: expected K/N with 1 <= K <= N, got '" + text +
-                            "'");
+    throw core::ConfigError(field + ": --shard: expected K/N with 1 <= K <= N, got '" + text + "'");
   }
   plan.shard_index = k;
   plan.shard_count = n;

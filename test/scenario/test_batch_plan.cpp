@@ -1,9 +1,8 @@
-#include "ari_social_sim/scenario/batch_plan.hpp"
-
 #include <gtest/gtest.h>
 
 #include <set>
 
+#include "ari_social_sim/scenario/batch_plan.hpp"
 #include "expect_config_error.hpp"
 
 namespace ari_social_sim::scenario {
@@ -38,10 +37,15 @@ TEST(BatchPlan, ParsesShardsAndNamesBadOnes) {
 
 TEST(BatchPlan, SeedsMustStayBelowTwoToThe31) {
   world::test::expect_config_error(
-      [] { (BatchPlan{10, 2147483640u, 1, 1}).validate("command line"); },
+      [] {
+        (BatchPlan{10, 2147483640u, 1, 1}).validate("command line");
+      },
       "command line: --seed", {"2147483640..2147483649", "below 2^31"});
-  world::test::expect_config_error([] { (BatchPlan{0, 1, 1, 1}).validate("command line"); },
-                                   "command line: --episodes", {"at least 1"});
+  world::test::expect_config_error(
+      [] {
+        (BatchPlan{0, 1, 1, 1}).validate("command line");
+      },
+      "command line: --episodes", {"at least 1"});
   EXPECT_NO_THROW((BatchPlan{8, 2147483640u, 1, 1}).validate("command line"));
 }
 
