@@ -3,6 +3,8 @@
 add_library(ari_scenario
   src/scenario/agent_ref.cpp
   src/scenario/batch_plan.cpp
+  src/scenario/episode.cpp
+  src/scenario/episode_csv.cpp
   src/scenario/episode_metrics.cpp
   src/scenario/episode_report.cpp
   src/scenario/progress_bar.cpp
@@ -19,11 +21,20 @@ target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_con
 add_executable(scenario_node src/nodes/scenario_node.cpp)
 target_link_libraries(scenario_node ari_scenario_conversions)
 
+# run_episodes: the batch tool (cores in one process, rosbags written without a master).
+add_library(ari_episode_bag src/tools/episode_bag.cpp)
+target_link_libraries(ari_episode_bag PUBLIC ari_scenario_conversions)
+add_executable(run_episodes src/tools/run_episodes.cpp)
+target_link_libraries(run_episodes ari_episode_bag)
+target_compile_definitions(run_episodes PRIVATE
+  ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios")
+
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
     SOURCES
       test/scenario/test_agent_ref.cpp
       test/scenario/test_batch_plan.cpp
+      test/scenario/test_episode_csv.cpp
       test/scenario/test_episode_metrics.cpp
       test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp
@@ -42,4 +53,11 @@ if(CATKIN_ENABLE_TESTING)
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_episode_bag
+    SOURCES test/tools/test_episode_bag.cpp
+    LIBRARIES ari_episode_bag)
+  target_compile_definitions(test_episode_bag PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()

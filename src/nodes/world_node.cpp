@@ -35,6 +35,7 @@
 #include "ari_social_sim/world/scene.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
+#include "conversions/ari_base.hpp"
 #include "conversions/world_markers.hpp"
 #include "conversions/world_state.hpp"
 #include "ros_params.hpp"
@@ -42,20 +43,10 @@
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kMapFrame[] = "map";
-constexpr char kOdomFrame[] = "odom";
-constexpr char kBaseFrame[] = "base_footprint";
 constexpr char kHeadPanJoint[] = "head_1_joint";
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
   return {{pose.x, pose.y}, pose.theta};
-}
-
-geometry_msgs::Quaternion yaw_quaternion(double theta) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * theta);
-  q.w = std::cos(0.5 * theta);
-  return q;
 }
 
 // Runs a service body; a core::Error becomes success = false with its text, as ROS users expect
@@ -108,11 +99,7 @@ class WorldNode {
     services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));
 
     // In 2D mode the base pose is exact, so map and odom coincide.
-    geometry_msgs::TransformStamped map_to_odom;
-    map_to_odom.header.frame_id = kMapFrame;
-    map_to_odom.child_frame_id = kOdomFrame;
-    map_to_odom.transform.rotation.w = 1.0;
-    static_tf_.sendTransform(map_to_odom);
+    static_tf_.sendTransform(map_to_odom(0.0));
     publish_map();
     publish_state();
   }
@@ -184,24 +171,8 @@ class WorldNode {
   }
 
   void publish_base(const world::AriSnapshot& ari, const ros::Time& stamp) {
-    geometry_msgs::TransformStamped odom_to_base;
-    odom_to_base.header.stamp = stamp;
-    odom_to_base.header.frame_id = kOdomFrame;
-    odom_to_base.child_frame_id = kBaseFrame;
-    odom_to_base.transform.translation.x = ari.pose.position.x();
-    odom_to_base.transform.translation.y = ari.pose.position.y();
-    odom_to_base.transform.rotation = yaw_quaternion(ari.pose.theta);
-    tf_.sendTransform(odom_to_base);
-
-    nav_msgs::Odometry odom;
-    odom.header = odom_to_base.header;
-    odom.child_frame_id = kBaseFrame;
-    odom.pose.pose.position.x = ari.pose.position.x();
-    odom.pose.pose.position.y = ari.pose.position.y();
-    odom.pose.pose.orientation = odom_to_base.transform.rotation;
-    odom.twist.twist.linear.x = ari.linear_mps;
-    odom.twist.twist.angular.z = ari.angular_rps;
-    odom_pub_.publish(odom);
+    tf_.sendTransform(odom_to_base(ari, stamp.toSec()));
+    odom_pub_.publish(to_odometry(ari, stamp.toSec()));
   }
 
   void publish_map() { map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s())); }

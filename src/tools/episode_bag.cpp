@@ -1,0 +1,62 @@
+#include "episode_bag.hpp"
+
+#include <tf2_msgs/TFMessage.h>
+
+#include "../nodes/conversions/ari_base.hpp"
+#include "../nodes/conversions/scenario_status.hpp"
+#include "../nodes/conversions/world_state.hpp"
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::tools {
+
+template <class Message>
+void EpisodeBag::write(const std::string& topic, double stamp_s, const Message& message) {
+  bag_.write(topic, ros::Time(stamp_s), message);
+}
+
+EpisodeBag::EpisodeBag(const std::string& path, const std::string& scenario_name)
+    : scenario_name_(scenario_name) {
+  try {
+    bag_.open(path, rosbag::bagmode::Write);
+  } catch (const rosbag::BagException& e) {
+    throw core::RequestError(path + ": cannot write the bag: " + e.what());
+  }
+}
+
+EpisodeBag::~EpisodeBag() {
+  bag_.close();
+}
+
+void EpisodeBag::record_step(const scenario::Episode& episode) {
+  const double now_s = episode.snapshot().time_s;
+  // Latched topics arrive first in a live recording. Bags cannot hold time 0, so everything is
+  // written from the first step on (live runs also start one step in: docs/scenario.md).
+  if (!started_) {
+    started_ = true;
+    tf2_msgs::TFMessage statics;
+    statics.transforms.push_back(nodes::map_to_odom(0.0));
+    write("/tf_static", now_s, statics);
+    write("/map", now_s, nodes::to_msg(episode.map(), nodes::kMapFrame, 0.0));
+  }
+  record_world(episode);
+  const auto& visits = episode.runner().visits();
+  if (visits.size() != visits_recorded_ || episode.finished()) {
+    write("/scenario/status", now_s, nodes::to_msg(scenario_name_, episode.runner(), now_s));
+    visits_recorded_ = visits.size();
+  }
+}
+
+// What world_node publishes after each step.
+void EpisodeBag::record_world(const scenario::Episode& episode) {
+  const world::WorldSnapshot& snapshot = episode.snapshot();
+  const double now_s = snapshot.time_s;
+  write("/sim/world_state", now_s, nodes::to_msg(snapshot, nodes::kMapFrame));
+  if (snapshot.ari) {
+    tf2_msgs::TFMessage tf;
+    tf.transforms.push_back(nodes::odom_to_base(*snapshot.ari, now_s));
+    write("/tf", now_s, tf);
+    write("/mobile_base_controller/odom", now_s, nodes::to_odometry(*snapshot.ari, now_s));
+  }
+}
+
+}  // namespace ari_social_sim::tools
