@@ -3,6 +3,7 @@
 add_library(ari_scenario
   src/scenario/agent_ref.cpp
   src/scenario/batch_plan.cpp
+  src/scenario/conversation.cpp
   src/scenario/episode.cpp
   src/scenario/episode_csv.cpp
   src/scenario/episode_metrics.cpp
@@ -14,7 +15,7 @@ add_library(ari_scenario
   src/scenario/script.cpp
   src/scenario/script_runner.cpp
   src/scenario/transcript.cpp)
-target_link_libraries(ari_scenario PUBLIC ari_world)
+target_link_libraries(ari_scenario PUBLIC ari_world ari_dialogue)
 
 add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
 target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
@@ -34,6 +35,7 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES
       test/scenario/test_agent_ref.cpp
       test/scenario/test_batch_plan.cpp
+      test/scenario/test_conversation.cpp
       test/scenario/test_episode_csv.cpp
       test/scenario/test_episode_metrics.cpp
       test/scenario/test_progress_bar.cpp

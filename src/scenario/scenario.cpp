@@ -12,11 +12,11 @@ namespace {
 
 const std::vector<std::string> kConditionTypes = {
     "distance_below",    "distance_above", "speech_finished", "goal_reached",
-    "navigation_failed", "time_elapsed",   "perceived_group"};
+    "navigation_failed", "time_elapsed",   "perceived_group", "dialogue_finished"};
 const std::vector<std::string> kActionTypes = {
     "say",       "set_goal",     "approach",     "join_group",        "cancel_navigation",
     "add_human", "remove_human", "create_group", "add_group_members", "set_group_centre",
-    "stop"};
+    "converse",  "stop"};
 
 std::string one_of(const std::vector<std::string>& names) {
   std::string text = "one of ";
@@ -213,6 +213,8 @@ class ScriptReader {
       condition = NavigationFailedCondition{};
     } else if (type == "time_elapsed") {
       condition = TimeElapsedCondition{entry.required<double>("seconds", core::non_negative())};
+    } else if (type == "dialogue_finished") {
+      condition = DialogueFinishedCondition{};
     } else {
       PerceivedGroupCondition c;
       const std::vector<std::string> members = entry.required<std::vector<std::string>>("members");
@@ -267,6 +269,9 @@ class ScriptReader {
         check_agent(AgentRef::human(id), entry.field_name("members"));
       }
       action = a;
+    } else if (type == "converse") {
+      require_ari(entry, "type");
+      action = ConverseAction{};
     } else if (type == "set_group_centre") {
       action = SetGroupCentreAction{read_group_ref(entry, "group"),
                                     entry.required<Eigen::Vector2d>("centre")};

@@ -13,6 +13,9 @@ void note(const Action& action, ScriptInterfaces& uses) {
   } else if (std::holds_alternative<ApproachAction>(action) ||
              std::holds_alternative<JoinGroupAction>(action)) {
     uses.approach = true;
+  } else if (std::holds_alternative<ConverseAction>(action)) {
+    uses.dialogue = true;
+    uses.text_to_speech = true;
   }
 }
 
@@ -40,6 +43,8 @@ ScriptInterfaces Script::interfaces() const {
       for (const Condition& condition : transition.when) {
         uses.perceived_groups =
             uses.perceived_groups || std::holds_alternative<PerceivedGroupCondition>(condition);
+        uses.dialogue =
+            uses.dialogue || std::holds_alternative<DialogueFinishedCondition>(condition);
       }
     }
   }

@@ -11,6 +11,7 @@ namespace {
 // Random groups draw from their own streams, one per group, so that adding a group to a scenario
 // leaves the others unchanged.
 constexpr uint64_t kRandomGroupStream = 0x5ce0a210;
+constexpr uint64_t kConversationStream = 0xc0417e75;
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -76,6 +77,7 @@ std::string describe(const Action& action) {
           [](const SetGroupCentreAction& a) {
             return "set_group_centre (" + std::to_string(a.group) + ")";
           },
+          [](const ConverseAction&) { return std::string("converse"); },
           [](const StopAction& a) {
             return std::string(a.success ? "stop (success)" : "stop (failure)");
           },
@@ -83,8 +85,17 @@ std::string describe(const Action& action) {
       action);
 }
 
-ScriptRunner::ScriptRunner(const Scenario& scenario, uint64_t seed)
-    : scenario_(scenario), seed_(seed) {}
+ScriptRunner::ScriptRunner(const Scenario& scenario, uint64_t seed,
+                           const dialogue::DialogueSetup* dialogue)
+    : scenario_(scenario), seed_(seed) {
+  if (dialogue != nullptr) {
+    conversation_.emplace(*dialogue, core::Rng::for_stream(seed, kConversationStream).next_u64());
+  } else if (scenario.script.interfaces().dialogue) {
+    throw core::ConfigError(scenario.scene.path +
+                            ": script: expected the dialogue settings for `converse` and "
+                            "`dialogue_finished`, got none");
+  }
+}
 
 const std::string& ScriptRunner::state() const {
   static const std::string kNone;
@@ -105,6 +116,17 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
   for (size_t line : transcript_.observe(observations.world)) {
     const TranscriptLine& said = transcript_.lines()[line];
     finished_in_state_.push_back({said.speaker, said.act});
+  }
+  if (observations.dialogue_end && !dialogue_end_) {
+    dialogue_end_ = observations.dialogue_end;
+  }
+  if (conversation_ && conversation_->active()) {
+    try {
+      conversation_->update(observations, commands);
+    } catch (const core::Error& e) {
+      end(false, "state " + state() + ": converse refused: " + e.what());
+      return;
+    }
   }
   if (now_s_ >= scenario_.script.time_limit_s) {
     end(false, "time limit of " + std::to_string(scenario_.script.time_limit_s) +
@@ -145,6 +167,9 @@ void ScriptRunner::begin(const Observations& observations, Commands& commands) {
 }
 
 void ScriptRunner::enter(size_t state, Commands& commands) {
+  if (conversation_) {
+    conversation_->stop();  // a conversation lasts as long as the state that started it
+  }
   state_ = state;
   state_enter_s_ = now_s_;
   finished_in_state_.clear();
@@ -184,6 +209,7 @@ bool ScriptRunner::holds(const Condition& condition, const Observations& observa
             return observations.navigation.state == NavigationState::kFailed;
           },
           [&](const TimeElapsedCondition& c) { return now_s_ - state_enter_s_ >= c.seconds; },
+          [&](const DialogueFinishedCondition&) { return dialogue_end_.has_value(); },
           [&](const PerceivedGroupCondition& c) {
             return std::any_of(
                 observations.perceived_groups.begin(), observations.perceived_groups.end(),
@@ -221,6 +247,7 @@ bool ScriptRunner::run(const std::vector<Action>& actions, Commands& commands) {
                 commands.add_group_members(a.group, a.members);
               },
               [&](const SetGroupCentreAction& a) { commands.set_group_centre(a.group, a.centre); },
+              [&](const ConverseAction&) { conversation_->start(); },
               [&](const StopAction& a) { end(a.success, a.reason); },
           },
           action);

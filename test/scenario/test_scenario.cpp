@@ -69,6 +69,24 @@ TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStates) {
   EXPECT_DOUBLE_EQ(home.distance_m, 0.5);
 }
 
+TEST(Scenario, EveryShippedScenarioLoads) {
+  // name, humans in the scene, states, what it needs beyond the world
+  const struct {
+    const char* name;
+    size_t humans, states;
+    bool dialogue;
+  } shipped[] = {{"group_discussion", 2, 6, false},
+                 {"waiting_room", 6, 3, true},
+                 {"corridor", 6, 1, false},
+                 {"join_group", 0, 2, false}};
+  for (const auto& expected : shipped) {
+    const Scenario s = load_scenario_file(kSource + "/scenarios/" + expected.name + ".yaml");
+    EXPECT_EQ(s.scene.humans.size(), expected.humans) << expected.name;
+    EXPECT_EQ(s.script.states.size(), expected.states) << expected.name;
+    EXPECT_EQ(s.script.interfaces().dialogue, expected.dialogue) << expected.name;
+  }
+}
+
 TEST(Scenario, GroupDiscussionNeedsSpeechAndBothNavigationActions) {
   const ScriptInterfaces uses =
       load_scenario_file(kSource + "/scenarios/group_discussion.yaml").script.interfaces();

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/dialogue/utterance.hpp"
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
@@ -24,13 +26,29 @@ struct PerceivedGroup {
   std::vector<AgentRef> members;
 };
 
+/// How the dialogue with the simulated humans ended (dialogue_node: /sim/dialogue/outcome).
+struct DialogueEnd {
+  bool complete{false};
+  bool success{false};
+  bool truncated{false};
+  int robot_turns{0};
+  int utterances{0};
+  double total_reward{0.0};
+};
+
 /// What a script sees at one tick: ground truth of the world (scenario_node: /sim/world_state),
 /// ARI's navigation (the move_base and /social_mpc/approach clients) and the perceived groups
-/// (/humans/interactions/groups). The batch tool fills the same from the cores in-process.
+/// (/humans/interactions/groups) and the dialogue (/sim/dialogue/utterances and /outcome). The
+/// batch tool fills the same from the cores in-process.
 struct Observations {
   world::WorldSnapshot world;
   NavigationStatus navigation;
   std::vector<PerceivedGroup> perceived_groups;
+  /// Human utterances of the dialogue that started since the previous observation, as ARI
+  /// perceived them (the dialogue's error layer applied).
+  std::vector<dialogue::Perception> heard;
+  /// Set once the dialogue has ended.
+  std::optional<DialogueEnd> dialogue_end;
 };
 
 }  // namespace ari_social_sim::scenario

@@ -54,9 +54,12 @@ struct PerceivedGroupCondition {
   std::vector<AgentRef> members;
 };
 
-using Condition =
-    std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
-                 NavigationFailedCondition, TimeElapsedCondition, PerceivedGroupCondition>;
+/// The dialogue with the simulated humans (dialogue_node) has ended.
+struct DialogueFinishedCondition {};
+
+using Condition = std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
+                               NavigationFailedCondition, TimeElapsedCondition,
+                               PerceivedGroupCondition, DialogueFinishedCondition>;
 
 // ---- Actions: what entering a state or firing a transition does (section 5) ----
 
@@ -108,6 +111,11 @@ struct SetGroupCentreAction {
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
 };
 
+/// ARI takes part in the dialogue with the simulated humans, answering what it hears with the
+/// dialogue core's rule-based policy (dialogue::RulePolicy, opening with its greeting) until the
+/// script leaves the state.
+struct ConverseAction {};
+
 /// Ends the run with an outcome (the seed's `simulation.stop()`).
 struct StopAction {
   bool success{true};
@@ -117,7 +125,7 @@ struct StopAction {
 using Action =
     std::variant<SayAction, SetGoalAction, ApproachAction, JoinGroupAction, CancelNavigationAction,
                  AddHumanAction, RemoveHumanAction, CreateGroupAction, AddGroupMembersAction,
-                 SetGroupCentreAction, StopAction>;
+                 SetGroupCentreAction, ConverseAction, StopAction>;
 
 // ---- The state machine ----
 
@@ -144,6 +152,7 @@ struct ScriptInterfaces {
   bool move_base{false};         // ARI goes to a pose
   bool approach{false};          // ARI approaches a person or joins a group
   bool perceived_groups{false};  // a condition on /humans/interactions/groups
+  bool dialogue{false};          // ARI converses or a condition waits for the dialogue's end
 };
 
 /// The scripted part of a scenario (the seed's Script, 3.7, as data).

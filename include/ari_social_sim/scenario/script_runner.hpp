@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ari_social_sim/scenario/commands.hpp"
+#include "ari_social_sim/scenario/conversation.hpp"
 #include "ari_social_sim/scenario/observations.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/transcript.hpp"
@@ -34,8 +35,11 @@ struct StateVisit {
 /// the action. Holds a reference to the scenario, which must outlive it.
 class ScriptRunner {
  public:
-  /// `seed` draws the random groups (the scene's seed, or the episode's in batch runs).
-  ScriptRunner(const Scenario& scenario, uint64_t seed);
+  /// `seed` draws the random groups and ARI's words when it converses (the scene's seed, or the
+  /// episode's in batch runs). `dialogue` is needed by scripts that converse; throws
+  /// core::ConfigError when such a script gets none.
+  ScriptRunner(const Scenario& scenario, uint64_t seed,
+               const dialogue::DialogueSetup* dialogue = nullptr);
 
   /// One tick, with observations at least once per world step. The first call adds the random
   /// groups and enters the start state. Does nothing once the run has ended.
@@ -47,6 +51,8 @@ class ScriptRunner {
   const std::string& state() const;
   const std::vector<StateVisit>& visits() const { return visits_; }
   const Transcript& transcript() const { return transcript_; }
+  /// How the dialogue with the simulated humans ended, once it has.
+  const std::optional<DialogueEnd>& dialogue_end() const { return dialogue_end_; }
   /// Sim time (s) of the first update, from which the script's times count.
   double start_time_s() const { return start_s_; }
 
@@ -73,6 +79,8 @@ class ScriptRunner {
   std::vector<FinishedAct> finished_in_state_;  // utterances that ended since entering the state
   std::vector<StateVisit> visits_;
   Transcript transcript_;
+  std::optional<Conversation> conversation_;  // when the runner has the dialogue setup
+  std::optional<DialogueEnd> dialogue_end_;
   std::optional<Outcome> outcome_;
 };
 
