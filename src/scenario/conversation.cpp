@@ -26,13 +26,13 @@ bool Conversation::floor_free(const world::WorldSnapshot& world) const {
   return true;
 }
 
-void Conversation::update(const Observations& observations, Commands& commands) {
+std::optional<SayAction> Conversation::update(const Observations& observations) {
   if (!active_) {
-    return;
+    return std::nullopt;
   }
   if (observations.dialogue_end) {
     active_ = false;
-    return;
+    return std::nullopt;
   }
   pending_.insert(pending_.end(), observations.heard.begin(), observations.heard.end());
   // ARI's own utterance must have played before it takes another turn (live, /tts waits for the
@@ -44,7 +44,7 @@ void Conversation::update(const Observations& observations, Commands& commands) 
     own_ = Own::kNone;
   }
   if (own_ != Own::kNone || !floor_free(observations.world) || (!opening_ && pending_.empty())) {
-    return;
+    return std::nullopt;
   }
   dialogue::Observation heard;
   heard.heard = std::move(pending_);
@@ -53,12 +53,12 @@ void Conversation::update(const Observations& observations, Commands& commands) 
   opening_ = false;
   const dialogue::RobotAction action = policy_.act(heard);
   if (action.acts.empty()) {
-    return;  // nothing addressed to ARI: it lets the humans go on
+    return std::nullopt;  // nothing addressed to ARI: it lets the humans go on
   }
-  commands.say(AgentRef::ari(), dialogue::acts_to_string(action.acts),
-               setup_.nlg->realise(true, action.acts, rng_));
   ++robot_turns_;
   own_ = Own::kSent;
+  return SayAction{AgentRef::ari(), dialogue::acts_to_string(action.acts),
+                   setup_.nlg->realise(true, action.acts, rng_)};
 }
 
 }  // namespace ari_social_sim::scenario

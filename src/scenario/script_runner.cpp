@@ -113,7 +113,9 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
     }
   }
   now_s_ = observations.world.time_s - start_s_;
-  for (size_t line : transcript_.observe(observations.world)) {
+  const std::vector<size_t> finished_lines = transcript_.observe(observations.world);
+  label_ari_lines();
+  for (size_t line : finished_lines) {
     const TranscriptLine& said = transcript_.lines()[line];
     finished_in_state_.push_back({said.speaker, said.act});
   }
@@ -121,11 +123,10 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
     dialogue_end_ = observations.dialogue_end;
   }
   if (conversation_ && conversation_->active()) {
-    try {
-      conversation_->update(observations, commands);
-    } catch (const core::Error& e) {
-      end(false, "state " + state() + ": converse refused: " + e.what());
-      return;
+    if (const std::optional<SayAction> turn = conversation_->update(observations)) {
+      if (!run({*turn}, commands)) {
+        return;
+      }
     }
   }
   if (now_s_ >= scenario_.script.time_limit_s) {
@@ -144,6 +145,22 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
       enter(scenario_.script.state_index(transition.next), commands);
     }
     return;
+  }
+}
+
+void ScriptRunner::label_ari_lines() {
+  const auto& lines = transcript_.lines();
+  for (; lines_labelled_ < lines.size(); ++lines_labelled_) {
+    if (!lines[lines_labelled_].speaker.is_ari()) {
+      continue;
+    }
+    const auto said = std::find_if(ari_says_.begin(), ari_says_.end(), [&](const SayAction& a) {
+      return a.text == lines[lines_labelled_].text;
+    });
+    if (said != ari_says_.end()) {
+      transcript_.relabel(lines_labelled_, said->act);
+      ari_says_.erase(ari_says_.begin(), said + 1);
+    }
   }
 }
 
@@ -229,7 +246,12 @@ bool ScriptRunner::run(const std::vector<Action>& actions, Commands& commands) {
     try {
       std::visit(
           Overloaded{
-              [&](const SayAction& a) { commands.say(a.speaker, a.act, a.text); },
+              [&](const SayAction& a) {
+                commands.say(a.speaker, a.act, a.text);
+                if (a.speaker.is_ari()) {
+                  ari_says_.push_back(a);
+                }
+              },
               [&](const SetGoalAction& a) {
                 if (a.who.is_ari()) {
                   commands.navigate(a.goal);

@@ -6,24 +6,16 @@
 namespace ari_social_sim::scenario {
 namespace {
 
-// Keeps what ARI was asked to say.
-class SaidByAri : public Commands {
- public:
+// Keeps the acts of what ARI says.
+struct SaidByAri {
   std::vector<std::string> acts;
-  void say(const AgentRef& speaker, const std::string& act, const std::string& text) override {
-    EXPECT_TRUE(speaker.is_ari());
-    EXPECT_FALSE(text.empty());
-    acts.push_back(act);
+  void take(const std::optional<SayAction>& said) {
+    if (said) {
+      EXPECT_TRUE(said->speaker.is_ari());
+      EXPECT_FALSE(said->text.empty());
+      acts.push_back(said->act);
+    }
   }
-  void set_human_goal(world::ObjectId, const core::Pose2&) override {}
-  void navigate(const core::Pose2&) override {}
-  void approach(world::ObjectId, bool) override {}
-  void cancel_navigation() override {}
-  void add_human(const world::HumanSpec&) override {}
-  void remove_human(world::ObjectId) override {}
-  void create_group(const world::GroupSpec&) override {}
-  void add_group_members(world::ObjectId, const std::vector<world::ObjectId>&) override {}
-  void set_group_centre(world::ObjectId, const Eigen::Vector2d&) override {}
 };
 
 class ConversationTest : public ::testing::Test {
@@ -58,38 +50,38 @@ class ConversationTest : public ::testing::Test {
 TEST_F(ConversationTest, OpensWithTheGreetingThenAnswersWhatIsAddressedToAri) {
   Conversation conversation(*setup, 3);
   conversation.start();
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   ASSERT_EQ(commands.acts.size(), 1u);
   EXPECT_EQ(commands.acts[0], "greet(); inform(ari(name)); offer-help()");
 
   // ARI's greeting plays; meanwhile the patient talks to the companion, then asks ARI.
   set_speaking(true, false);
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   set_speaking(false, true);
   obs.heard = {request("request(location(toilet))", false)};
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   obs.heard = {request("request(location(toilet))")};
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   EXPECT_EQ(commands.acts.size(), 1u) << "ARI spoke while the patient was speaking";
   obs.heard.clear();
   set_speaking(false, false);
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   ASSERT_EQ(commands.acts.size(), 2u);
   EXPECT_EQ(commands.acts[1], "inform(directions(toilet))");  // the domain's answer
   EXPECT_EQ(conversation.robot_turns(), 2);
 
   // Said to the companion only: ARI stays silent.
   set_speaking(true, false);
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   set_speaking(false, false);
   obs.heard = {request("request(location(cafe))", false)};
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   EXPECT_EQ(commands.acts.size(), 2u);
 
   // The dialogue ends: ARI stops taking turns.
   obs.heard = {request("request(location(cafe))")};
   obs.dialogue_end = DialogueEnd{true, true, false, 2, 6, 70.0};
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   EXPECT_FALSE(conversation.active());
   EXPECT_EQ(commands.acts.size(), 2u);
 }
@@ -97,15 +89,16 @@ TEST_F(ConversationTest, OpensWithTheGreetingThenAnswersWhatIsAddressedToAri) {
 TEST_F(ConversationTest, WaitsForItsOwnUtteranceToPlay) {
   Conversation conversation(*setup, 3);
   conversation.start();
-  conversation.update(obs, commands);  // greeting sent, not yet playing (/tts waits for the floor)
+  commands.take(
+      conversation.update(obs));  // greeting sent, not yet playing (/tts waits for the floor)
   obs.heard = {request("request(location(toilet))")};
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   EXPECT_EQ(commands.acts.size(), 1u);
   obs.heard.clear();
   set_speaking(true, false);
-  conversation.update(obs, commands);
+  commands.take(conversation.update(obs));
   set_speaking(false, false);
-  conversation.update(obs, commands);  // played: now it answers the request it kept
+  commands.take(conversation.update(obs));  // played: now it answers the request it kept
   ASSERT_EQ(commands.acts.size(), 2u);
   EXPECT_EQ(commands.acts[1], "inform(directions(toilet))");  // the domain's answer
 }

@@ -68,8 +68,8 @@ struct Stage {
     return who.is_ari() ? obs.world.ari->speech : obs.world.humans[who.human_id - 10].speech;
   }
   // `who` starts saying `act` now.
-  void start(const AgentRef& who, const std::string& act) {
-    speech(who) = {act, "words", "words", 0, true, obs.world.time_s, "", ""};
+  void start(const AgentRef& who, const std::string& act, const std::string& text = "words") {
+    speech(who) = {act, text, text, 0, true, obs.world.time_s, "", ""};
   }
   void stop(const AgentRef& who) {
     world::SpeechSnapshot& s = speech(who);
@@ -176,6 +176,22 @@ TEST_F(GroupDiscussionRunner, AnActFinishedBeforeTheStateWasEnteredDoesNotCount)
     stage.tick(runner, commands);
   }
   EXPECT_EQ(runner.state(), "ask_help");
+}
+
+TEST_F(GroupDiscussionRunner, AriSpeechThroughTtsTakesTheScriptsAct) {
+  // dialogue_node voices /tts goals with the act `tts`: the script's own act is recognised by the
+  // text it asked ARI to say.
+  stage.tick(runner, commands);
+  stage.obs.world.ari->pose.position = {4.0, 3.0};
+  stage.tick(runner, commands);
+  ASSERT_EQ(runner.state(), "ask_help");
+  stage.start(AgentRef::ari(), "tts", "Hello, I am ARI. Can I help you?");
+  stage.tick(runner, commands);
+  stage.stop(AgentRef::ari());
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "ask_time");
+  ASSERT_EQ(runner.transcript().lines().size(), 1u);
+  EXPECT_EQ(runner.transcript().lines()[0].act, "QUESTION:HELP");
 }
 
 TEST_F(GroupDiscussionRunner, NavigationFailureEndsTheRunAsAFailure) {

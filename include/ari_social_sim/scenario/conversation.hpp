@@ -1,19 +1,20 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/rule_policy.hpp"
-#include "ari_social_sim/scenario/commands.hpp"
 #include "ari_social_sim/scenario/observations.hpp"
+#include "ari_social_sim/scenario/script.hpp"
 
 namespace ari_social_sim::scenario {
 
 /// ARI's side of a dialogue with the simulated humans (a script's `converse`): the dialogue core's
-/// rule-based policy answers what ARI heard, the NLG puts its acts into words, and ARI says them
-/// through Commands (its /tts). ARI takes a turn only when nobody in the world is speaking and its
+/// rule-based policy answers what ARI heard and the NLG puts its acts into words, for the script
+/// to say through ARI's /tts. ARI takes a turn only when nobody in the world is speaking and its
 /// previous utterance has been played, and opens with the policy's greeting. Holds references to
 /// the dialogue setup, which must outlive it.
 class Conversation {
@@ -26,9 +27,8 @@ class Conversation {
   void stop() { active_ = false; }
   bool active() const { return active_; }
 
-  /// Takes in what ARI heard; when it may speak and the policy has something to say, says it.
-  /// Throws what Commands::say throws.
-  void update(const Observations& observations, Commands& commands);
+  /// Takes in what ARI heard; returns what ARI says now, if anything (the caller says it).
+  std::optional<SayAction> update(const Observations& observations);
 
   int robot_turns() const { return robot_turns_; }
 

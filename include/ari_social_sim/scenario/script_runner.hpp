@@ -68,6 +68,8 @@ class ScriptRunner {
   /// Runs actions in order; false once the run has ended (stop or a refused command).
   bool run(const std::vector<Action>& actions, Commands& commands);
   void end(bool success, const std::string& reason);
+  /// Labels ARI's new transcript lines with the acts the script gave their texts.
+  void label_ari_lines();
 
   const Scenario& scenario_;
   uint64_t seed_;
@@ -77,6 +79,8 @@ class ScriptRunner {
   size_t state_{0};
   double state_enter_s_{0.0};
   std::vector<FinishedAct> finished_in_state_;  // utterances that ended since entering the state
+  std::vector<SayAction> ari_says_;  // ARI's utterances asked for and not yet heard, in order
+  size_t lines_labelled_{0};
   std::vector<StateVisit> visits_;
   Transcript transcript_;
   std::optional<Conversation> conversation_;  // when the runner has the dialogue setup

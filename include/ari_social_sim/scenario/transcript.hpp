@@ -32,6 +32,9 @@ class Transcript {
   std::vector<size_t> observe(const world::WorldSnapshot& world);
 
   const std::vector<TranscriptLine>& lines() const { return lines_; }
+  /// Gives a line the act its author meant: ARI's text-to-speech plays text only, labelled `tts`
+  /// in the world, while the script knows which act it asked for.
+  void relabel(size_t line, const std::string& act) { lines_.at(line).act = act; }
 
  private:
   struct Playing {
