@@ -7,6 +7,6 @@ target_link_libraries(ari_core PUBLIC Eigen3::Eigen yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_core
-    SOURCES test/core/test_rng.cpp test/core/test_yaml_map.cpp
+    SOURCES test/core/test_pose2.cpp test/core/test_rng.cpp test/core/test_yaml_map.cpp
     LIBRARIES ari_core)
 endif()

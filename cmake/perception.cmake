@@ -1,30 +1,88 @@
-# perception/: GCFF F-formation groups, group ids, the F-formation data sets and their evaluation;
-# the detect_groups tool.
+# perception/: what ARI perceives of the people around it (ROS4HRI bodies, faces, voices, persons,
+# groups, with error models), GCFF F-formation groups and their evaluation; the detect_groups tool
+# and hri_perception_node.
 add_library(ari_perception
+  src/perception/ari_sensors.cpp
+  src/perception/asr_errors.cpp
+  src/perception/body_tracker.cpp
+  src/perception/detection_model.cpp
+  src/perception/engagement.cpp
+  src/perception/expression.cpp
+  src/perception/face_tracker.cpp
   src/perception/fformation_dataset.cpp
+  src/perception/field_of_view.cpp
   src/perception/gcff.cpp
+  src/perception/grid_raycast.cpp
   src/perception/group_evaluation.cpp
-  src/perception/group_tracker.cpp)
+  src/perception/group_perception.cpp
+  src/perception/group_tracker.cpp
+  src/perception/image_regions.cpp
+  src/perception/perception_config.cpp
+  src/perception/perception_pipeline.cpp
+  src/perception/perception_run_config.cpp
+  src/perception/person_registry.cpp
+  src/perception/pose_noise.cpp
+  src/perception/sound_map.cpp
+  src/perception/speech_listener.cpp
+  src/perception/track_ids.cpp
+  src/perception/transient_ids.cpp
+  src/perception/visibility.cpp)
 target_include_directories(ari_perception PUBLIC include)
-target_link_libraries(ari_perception PUBLIC ari_core)
+# The world's plain types (snapshots, occupancy grid) are the perception's input.
+target_link_libraries(ari_perception PUBLIC ari_core ari_world)
 
 # Lands in devel/lib/ari_social_sim, so `rosrun ari_social_sim detect_groups` finds it.
 add_executable(detect_groups src/tools/detect_groups.cpp)
 target_link_libraries(detect_groups ari_perception)
 install(TARGETS detect_groups RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
+# hri_perception_node: thin ROS adapter over the perception core (ROS4HRI topics, tf, markers).
+add_library(ari_perception_conversions
+  src/nodes/conversions/hri_messages.cpp
+  src/nodes/conversions/perception_markers.cpp)
+target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
+
+add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
+target_link_libraries(hri_perception_node ari_perception_conversions)
+install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
 if(CATKIN_ENABLE_TESTING)
   # The development sets live in shared/ beside the repository (specs/algorithms.md 1.7).
   set(ari_fformation_dir ${CMAKE_CURRENT_SOURCE_DIR}/../shared/fformation)
   ari_add_gtest(test_perception
     SOURCES
+      test/perception/test_ari_sensors.cpp
+      test/perception/test_asr_errors.cpp
+      test/perception/test_body_tracker.cpp
+      test/perception/test_detection_model.cpp
+      test/perception/test_engagement.cpp
+      test/perception/test_face_tracker.cpp
       test/perception/test_fformation_dataset.cpp
+      test/perception/test_field_of_view.cpp
       test/perception/test_gcff.cpp
       test/perception/test_gcff_reference.cpp
+      test/perception/test_grid_raycast.cpp
       test/perception/test_group_evaluation.cpp
+      test/perception/test_group_perception.cpp
       test/perception/test_group_tracker.cpp
+      test/perception/test_image_regions.cpp
+      test/perception/test_perception_config.cpp
+      test/perception/test_perception_pipeline.cpp
+      test/perception/test_perception_run_config.cpp
+      test/perception/test_person_registry.cpp
+      test/perception/test_pose_noise.cpp
+      test/perception/test_sound_map.cpp
+      test/perception/test_speech_listener.cpp
+      test/perception/test_track_ids.cpp
+      test/perception/test_transient_ids.cpp
+      test/perception/test_visibility.cpp
     LIBRARIES ari_perception)
-  target_compile_definitions(test_perception PRIVATE ARI_FFORMATION_DIR="${ari_fformation_dir}")
+  target_compile_definitions(test_perception PRIVATE
+    ARI_FFORMATION_DIR="${ari_fformation_dir}"
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+  add_rostest(test/integration/hri_wire.test DEPENDENCIES world_node hri_perception_node)
+  add_rostest(test/integration/hri_perception.test DEPENDENCIES world_node hri_perception_node)
 
   ari_add_gtest(test_detect_groups SOURCES test/tools/test_detect_groups.cpp)
   target_compile_definitions(test_detect_groups PRIVATE
@@ -37,4 +95,6 @@ if(benchmark_FOUND)
   ari_add_benchmark(bench_perception
     SOURCES bench/bench_perception.cpp
     LIBRARIES ari_perception)
+  # The scenes are the perception tests' own (test/perception/perception_scenes.hpp).
+  target_include_directories(bench_perception PRIVATE ${PROJECT_SOURCE_DIR}/test/perception)
 endif()

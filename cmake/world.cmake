@@ -41,6 +41,7 @@ endif()
 # world_node: thin ROS adapter over the world core.
 add_library(ari_world_conversions
   src/nodes/conversions/ari_base.cpp
+  src/nodes/conversions/marker_builder.cpp
   src/nodes/conversions/world_markers.cpp
   src/nodes/conversions/world_state.cpp
   src/nodes/ros_params.cpp)
@@ -65,4 +66,8 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES test/nodes/test_world_state_determinism.cpp
     LIBRARIES ari_world_conversions)
   target_compile_definitions(test_world_state_determinism PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  ari_add_gtest(test_world_state_conversion
+    SOURCES test/nodes/test_world_state_conversion.cpp
+    LIBRARIES ari_world_conversions)
+  target_compile_definitions(test_world_state_conversion PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()

@@ -19,6 +19,8 @@ packages=(
   # simulation cores
   libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev
   liburdfdom-dev liburdfdom-tools
+  # headless camera rendering: OpenGL through EGL, Mesa's llvmpipe when there is no GPU
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   # tests and benchmarks
   libgtest-dev googletest libbenchmark-dev
   # inspection

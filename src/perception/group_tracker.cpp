@@ -77,6 +77,13 @@ std::vector<std::string> GroupTracker::update(const Grouping& groups) {
     }
     ids.push_back(track.id);
   }
+  // Unmatched groups are remembered for a few updates, in case they were only missed.
+  for (size_t p = 0; p < tracks_.size(); ++p) {
+    if (!previous_used[p] && tracks_[p].missed < memory_updates_) {
+      current.push_back(std::move(tracks_[p]));
+      ++current.back().missed;
+    }
+  }
   tracks_ = std::move(current);
   return ids;
 }

@@ -51,6 +51,16 @@ TEST(GroupTracker, EqualOverlapGoesToTheOlderId) {
   EXPECT_EQ(tracker.update({{"c", "d", "a", "b"}}), (Ids{"g1"}));
 }
 
+TEST(GroupTracker, RemembersUnmatchedGroupsForAFewUpdates) {
+  GroupTracker tracker(2);
+  tracker.update({{"a", "b"}, {"c", "d"}});
+  // {a, b} missed for two updates comes back as g1; {c, d} missed for three is forgotten.
+  EXPECT_EQ(tracker.update({}), Ids{});
+  EXPECT_EQ(tracker.update({}), Ids{});
+  EXPECT_EQ(tracker.update({{"a", "b"}}), (Ids{"g1"}));
+  EXPECT_EQ(tracker.update({{"c", "d"}}), (Ids{"g3"}));
+}
+
 TEST(GroupTracker, ClearForgetsGroupsButNotTheCounter) {
   GroupTracker tracker;
   tracker.update({{"a", "b"}});

@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "ari_social_sim/core/angles.hpp"
+
 namespace ari_social_sim::core {
 
 /// A planar pose: position (m) and heading (rad, counter-clockwise from +x) in one frame.
@@ -17,6 +19,14 @@ struct Pose2 {
     const double c = std::cos(theta), s = std::sin(theta);
     return position + Eigen::Vector2d(c * point_local.x() - s * point_local.y(),
                                       s * point_local.x() + c * point_local.y());
+  }
+  /// This pose expressed in `frame`, both given in the same parent frame:
+  /// X_frame_this = X_parent_frame^-1 * X_parent_this.
+  Pose2 relative_to(const Pose2& frame) const {
+    const Eigen::Vector2d offset = position - frame.position;
+    const double c = std::cos(frame.theta), s = std::sin(frame.theta);
+    return {{c * offset.x() + s * offset.y(), -s * offset.x() + c * offset.y()},
+            wrap_angle(theta - frame.theta)};
   }
 };
 

@@ -17,10 +17,13 @@ namespace ari_social_sim::perception {
 /// keeps the previous id, so a group that gains or loses members keeps its id, a group that splits
 /// leaves it to the part with most of its members, and groups that merge take the id of the one
 /// contributing most. Unmatched groups get a fresh id "g<n>" from a counter (n = 1, 2, ...; a
-/// valid identifier, never reused). Only the previous frame is remembered: a group missing for
-/// one frame comes back with a new id.
+/// valid identifier, never reused). A group that no new group matches is remembered for
+/// `memory_updates` more updates (0: only the previous frame counts), so that a group whose
+/// members were missed for a few frames comes back with its id.
 class GroupTracker {
  public:
+  explicit GroupTracker(int memory_updates = 0) : memory_updates_(memory_updates) {}
+
   /// Ids for `groups` (each a list of person ids), in the same order.
   std::vector<std::string> update(const Grouping& groups);
 
@@ -32,8 +35,10 @@ class GroupTracker {
     std::string id;
     uint64_t serial{0};                ///< Creation order: lower is older.
     std::vector<std::string> members;  ///< Sorted.
+    int missed{0};                     ///< Updates since it was last matched.
   };
 
+  int memory_updates_;
   std::vector<Track> tracks_;
   uint64_t next_serial_{1};
 };

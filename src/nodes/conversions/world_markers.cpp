@@ -4,78 +4,12 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "marker_builder.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
 
 using visualization_msgs::Marker;
-
-// Colours: static geometry green as in the seed's GUI, agents red, ARI white, gaze yellow.
-std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f) {
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
-
-geometry_msgs::Point point(double x, double y, double z = 0.0) {
-  geometry_msgs::Point p;
-  p.x = x;
-  p.y = y;
-  p.z = z;
-  return p;
-}
-
-geometry_msgs::Quaternion yaw(double theta) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * theta);
-  q.w = std::cos(0.5 * theta);
-  return q;
-}
-
-class MarkerBuilder {
- public:
-  MarkerBuilder(const std::string& frame_id, visualization_msgs::MarkerArray& out)
-      : frame_id_(frame_id), out_(out) {}
-
-  Marker& add(const std::string& ns, int id, int type, const std_msgs::ColorRGBA& colour) {
-    Marker m;
-    m.header.frame_id = frame_id_;
-    m.ns = ns;
-    m.id = id;
-    m.type = type;
-    m.action = Marker::ADD;
-    m.pose.orientation.w = 1.0;
-    m.scale.x = m.scale.y = m.scale.z = 1.0;
-    m.color = colour;
-    out_.markers.push_back(std::move(m));
-    return out_.markers.back();
-  }
-
-  void arrow(const std::string& ns, int id, double x, double y, double z, double theta,
-             double length, const std_msgs::ColorRGBA& colour) {
-    Marker& m = add(ns, id, Marker::ARROW, colour);
-    m.points = {point(x, y, z),
-                point(x + length * std::cos(theta), y + length * std::sin(theta), z)};
-    m.scale.x = 0.04;
-    m.scale.y = 0.08;
-    m.scale.z = 0.1;
-  }
-
-  void text(const std::string& ns, int id, double x, double y, double z, const std::string& words,
-            double height, const std_msgs::ColorRGBA& colour) {
-    Marker& m = add(ns, id, Marker::TEXT_VIEW_FACING, colour);
-    m.pose.position = point(x, y, z);
-    m.scale.z = height;
-    m.text = words;
-  }
-
- private:
-  const std::string& frame_id_;
-  visualization_msgs::MarkerArray& out_;
-};
 
 std::string utterance(const world::SpeechSnapshot& speech) {
   // The word being played is marked, so a viewer sees the speech advance word by word.
@@ -94,7 +28,7 @@ void add_static(MarkerBuilder& b, const world::WorldDescription& world) {
       case world::ShapeType::kBox: {
         Marker& m = b.add("static", id++, Marker::CUBE, is_wall ? wall : furniture);
         m.pose.position = point(object.pose.position.x(), object.pose.position.y(), 0.5 * height);
-        m.pose.orientation = yaw(object.pose.theta);
+        m.pose.orientation = yaw_quaternion(object.pose.theta);
         m.scale.x = object.size.x();
         m.scale.y = object.size.y();
         m.scale.z = height;
@@ -128,9 +62,10 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
                                               const std::string& frame_id) {
   visualization_msgs::MarkerArray array;
   MarkerBuilder b(frame_id, array);
-  b.add("", 0, Marker::CUBE, rgba(0, 0, 0)).action = Marker::DELETEALL;
+  b.delete_all();
   add_static(b, world);
 
+  // Colours: static geometry green as in the seed's GUI, agents red, ARI white, gaze yellow.
   const std_msgs::ColorRGBA body = rgba(0.85f, 0.2f, 0.2f);
   const std_msgs::ColorRGBA heading = rgba(0.5f, 0.05f, 0.05f);
   const std_msgs::ColorRGBA gaze = rgba(1.0f, 0.85f, 0.1f);
@@ -160,7 +95,7 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
     const Eigen::Vector2d centre = pose.transform({-0.22, 0.0});
     Marker& base = b.add("ari/base", 0, Marker::CUBE, rgba(0.95f, 0.95f, 0.95f));
     base.pose.position = point(centre.x(), centre.y(), 0.6);
-    base.pose.orientation = yaw(pose.theta);
+    base.pose.orientation = yaw_quaternion(pose.theta);
     base.scale.x = 0.76;
     base.scale.y = 0.54;
     base.scale.z = 1.2;
@@ -173,15 +108,8 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
     }
   }
   for (const world::GroupSnapshot& g : snapshot.groups) {
-    Marker& circle = b.add("groups/ospace", static_cast<int>(g.id), Marker::LINE_STRIP,
-                           rgba(1.0f, 0.6f, 0.0f, 0.9f));
-    circle.scale.x = 0.03;
-    constexpr int kSegments = 48;
-    for (int i = 0; i <= kSegments; ++i) {
-      const double a = 2.0 * core::kPi * i / kSegments;
-      circle.points.push_back(point(g.centre.x() + g.ospace_radius_m * std::cos(a),
-                                    g.centre.y() + g.ospace_radius_m * std::sin(a), 0.02));
-    }
+    b.circle("groups/ospace", static_cast<int>(g.id), g.centre.x(), g.centre.y(), 0.02,
+             g.ospace_radius_m, 0.03, rgba(1.0f, 0.6f, 0.0f, 0.9f));
     b.text("groups/label", static_cast<int>(g.id), g.centre.x(), g.centre.y(), 0.3,
            "group " + std::to_string(g.id), 0.15, rgba(1.0f, 0.6f, 0.0f));
   }

@@ -29,9 +29,16 @@ core::Pose2 from_msg(const geometry_msgs::Pose2D& msg) {
 }
 
 world::SpeechSnapshot from_msg(const SpeechState& msg) {
-  return {msg.act,          msg.content,          msg.current_word,
-          msg.word_index,   msg.is_speaking != 0, msg.start_time,
-          msg.previous_act, msg.previous_content};
+  world::SpeechSnapshot speech;
+  speech.act = msg.act;
+  speech.content = msg.content;
+  speech.current_word = msg.current_word;
+  speech.word_index = msg.word_index;
+  speech.is_speaking = msg.is_speaking;
+  speech.start_s = msg.start_time;
+  speech.previous_act = msg.previous_act;
+  speech.previous_content = msg.previous_content;
+  return speech;
 }
 
 }  // namespace
@@ -90,12 +97,28 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
   return msg;
 }
 
+nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
+                               double stamp_s) {
+  nav_msgs::OccupancyGrid msg;
+  msg.header.stamp = ros::Time(stamp_s);
+  msg.header.frame_id = frame_id;
+  msg.info.map_load_time = msg.header.stamp;
+  msg.info.resolution = static_cast<float>(grid.resolution_m);
+  msg.info.width = static_cast<uint32_t>(grid.width);
+  msg.info.height = static_cast<uint32_t>(grid.height);
+  msg.info.origin.position.x = grid.origin.x();
+  msg.info.origin.position.y = grid.origin.y();
+  msg.info.origin.orientation.w = 1.0;
+  msg.data = grid.cells;
+  return msg;
+}
+
 world::WorldSnapshot from_msg(const WorldState& msg) {
   world::WorldSnapshot snapshot;
   snapshot.time_s = msg.header.stamp.toSec();
   snapshot.step = msg.step;
   if (msg.has_ari) {
-    world::AriSnapshot& ari = snapshot.ari.emplace();
+    world::AriSnapshot ari;
     ari.id = msg.ari.id;
     ari.pose = from_msg(msg.ari.pose);
     ari.linear_mps = msg.ari.linear_velocity;
@@ -103,10 +126,11 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
     ari.head_pan_rad = msg.ari.head_pan;
     ari.head_pan_velocity_rps = msg.ari.head_pan_velocity;
     ari.speech = from_msg(msg.ari.speech);
+    snapshot.ari = ari;
   }
   snapshot.humans.reserve(msg.humans.size());
   for (const HumanState& h : msg.humans) {
-    world::HumanSnapshot& human = snapshot.humans.emplace_back();
+    world::HumanSnapshot human;
     human.id = h.id;
     human.name = h.name;
     human.role = h.role;
@@ -124,6 +148,7 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
     human.group_id = h.group_id;
     human.gaze = {h.gaze.target_id, h.gaze.direction, h.gaze.since};
     human.speech = from_msg(h.speech);
+    snapshot.humans.push_back(std::move(human));
   }
   for (const GroupState& g : msg.groups) {
     snapshot.groups.push_back({g.id, g.members, {g.centre.x, g.centre.y}, g.ospace_radius});
@@ -131,20 +156,14 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
   return snapshot;
 }
 
-nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
-                               double stamp_s) {
-  nav_msgs::OccupancyGrid msg;
-  msg.header.stamp = ros::Time(stamp_s);
-  msg.header.frame_id = frame_id;
-  msg.info.map_load_time = msg.header.stamp;
-  msg.info.resolution = static_cast<float>(grid.resolution_m);
-  msg.info.width = static_cast<uint32_t>(grid.width);
-  msg.info.height = static_cast<uint32_t>(grid.height);
-  msg.info.origin.position.x = grid.origin.x();
-  msg.info.origin.position.y = grid.origin.y();
-  msg.info.origin.orientation.w = 1.0;
-  msg.data = grid.cells;
-  return msg;
+world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg) {
+  world::OccupancyGrid grid;
+  grid.origin = {msg.info.origin.position.x, msg.info.origin.position.y};
+  grid.resolution_m = msg.info.resolution;
+  grid.width = static_cast<int>(msg.info.width);
+  grid.height = static_cast<int>(msg.info.height);
+  grid.cells = msg.data;
+  return grid;
 }
 
 }  // namespace ari_social_sim::nodes

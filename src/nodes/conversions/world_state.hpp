@@ -10,11 +10,14 @@ namespace ari_social_sim::nodes {
 
 /// /sim/world_state from a snapshot; header stamped with the snapshot's sim time in `frame_id`.
 WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id);
-/// The snapshot a /sim/world_state message carries (its inverse: from_msg(to_msg(s)) == s up
-/// to the message's float32 ages).
-world::WorldSnapshot from_msg(const WorldState& msg);
 /// /map from the rasterised static geometry.
 nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
                                double stamp_s);
+
+/// The snapshot a /sim/world_state message carries: the inverse of to_msg (the message holds a
+/// speaker's previous act but no longer history).
+world::WorldSnapshot from_msg(const WorldState& msg);
+/// A /map message as a grid (an origin rotation, which the world never writes, is ignored).
+world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
 
 }  // namespace ari_social_sim::nodes

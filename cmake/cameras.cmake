@@ -1,0 +1,48 @@
+# physics/ cameras and mapping: headless rendering (EGL + OpenGL, llvmpipe without a GPU), ARI's
+# camera models and rig, and OctoMap mapping from depth images. ROS-free.
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(octomap REQUIRED)
+
+add_library(ari_rendering
+  src/physics/ari_cameras.cpp
+  src/physics/camera_model.cpp
+  src/physics/camera_rig.cpp
+  src/physics/camera_rig_config.cpp
+  src/physics/depth_image.cpp
+  src/physics/egl_context.cpp
+  src/physics/fisheye_renderer.cpp
+  src/physics/render_mesh.cpp
+  src/physics/renderer.cpp
+  src/physics/world_scene.cpp)
+target_include_directories(ari_rendering PUBLIC ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(ari_rendering PUBLIC ari_world ${OpenCV_LIBS} PRIVATE OpenGL::OpenGL OpenGL::EGL)
+
+# Mapping only needs depth images and poses, so it links OctoMap and not the renderer.
+add_library(ari_mapping src/physics/octomap_mapper.cpp)
+target_include_directories(ari_mapping PUBLIC ${OCTOMAP_INCLUDE_DIRS} ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(ari_mapping PUBLIC ari_rendering ${OCTOMAP_LIBRARIES})
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_cameras
+    SOURCES
+      test/physics/test_camera_model.cpp
+      test/physics/test_ari_cameras.cpp
+      test/physics/test_camera_rig.cpp
+      test/physics/test_depth_image.cpp
+      test/physics/test_fisheye_renderer.cpp
+      test/physics/test_octomap_mapper.cpp
+      test/physics/test_renderer.cpp
+    LIBRARIES ari_rendering ari_mapping)
+  target_compile_definitions(test_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
+
+add_executable(render_cameras src/tools/render_cameras.cpp)
+target_link_libraries(render_cameras ari_rendering)
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_cameras
+    SOURCES bench/bench_cameras.cpp
+    LIBRARIES ari_rendering ari_mapping)
+  target_compile_definitions(bench_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()

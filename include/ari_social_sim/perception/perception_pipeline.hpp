@@ -1,0 +1,68 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "ari_social_sim/perception/body_tracker.hpp"
+#include "ari_social_sim/perception/face_tracker.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
+#include "ari_social_sim/perception/perception_config.hpp"
+#include "ari_social_sim/perception/perception_frame.hpp"
+#include "ari_social_sim/perception/person_registry.hpp"
+#include "ari_social_sim/perception/speech_listener.hpp"
+#include "ari_social_sim/perception/transient_ids.hpp"
+#include "ari_social_sim/world/occupancy_grid.hpp"
+#include "ari_social_sim/world/world_snapshot.hpp"
+
+namespace ari_social_sim::perception {
+
+/// ARI's perception of the people around it (seed 3.5.2-3.5.4), one frame per world snapshot:
+/// bodies (torso fisheye), faces (head camera), voices and speech (microphones), persons with
+/// engagement, gaze relations and GCFF groups, with the configured error models. Seeded: the same
+/// configuration and snapshots give the same frames.
+///
+/// Frames may come at any rate; each advances the trackers by the sim time since the previous
+/// one. Sim time going backwards (a world reset) forgets every track and person; ids already
+/// handed out are never reused.
+class PerceptionPipeline {
+ public:
+  /// Throws core::ConfigError if the configuration is invalid.
+  explicit PerceptionPipeline(const PerceptionConfig& config);
+  PerceptionPipeline(const PerceptionPipeline&) = delete;
+  PerceptionPipeline& operator=(const PerceptionPipeline&) = delete;
+
+  /// The static map that blocks sight (walls and furniture). Without one nothing static does.
+  void set_sight_map(world::OccupancyGrid grid);
+  /// The static map that blocks sound (walls only). Without one the sight map does.
+  void set_sound_map(world::OccupancyGrid grid);
+
+  /// Perceives one snapshot. The reference stays valid until the next call.
+  const PerceptionFrame& update(const world::WorldSnapshot& snapshot);
+
+  /// The configuration in effect (error models zeroed when errors_enabled is false).
+  const PerceptionConfig& config() const { return config_; }
+  const PerceptionFrame& frame() const { return frame_; }
+  /// Body and face ids handed out after a human's first one (re-identifications).
+  uint64_t body_id_switches() { return bodies_.track_ids().switches(); }
+  uint64_t face_id_switches() { return faces_.track_ids().switches(); }
+
+ private:
+  void forget_everyone();
+  std::vector<GazeRelation> gaze_relations(const world::WorldSnapshot& snapshot) const;
+
+  PerceptionConfig config_;
+  TransientIds ids_;
+  BodyTracker bodies_;
+  FaceTracker faces_;
+  SpeechListener speech_;
+  PersonRegistry persons_;
+  GroupPerception groups_;
+  std::optional<world::OccupancyGrid> sight_map_;
+  std::optional<world::OccupancyGrid> sound_map_;
+  std::vector<Eigen::Vector2d> people_;
+  std::optional<double> last_time_s_;
+  PerceptionFrame frame_;
+};
+
+}  // namespace ari_social_sim::perception

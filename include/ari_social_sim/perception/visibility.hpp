@@ -1,0 +1,27 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+#include "ari_social_sim/perception/field_of_view.hpp"
+#include "ari_social_sim/world/occupancy_grid.hpp"
+
+namespace ari_social_sim::perception {
+
+/// What blocks sight in one instant: the static map and the people, as circles of one radius.
+struct SightObstacles {
+  const world::OccupancyGrid* grid{nullptr};  ///< Not owned; null = no static obstacles.
+  int occupied_threshold{50};
+  const std::vector<Eigen::Vector2d>* people{nullptr};  ///< Circle centres (map); not owned.
+  double person_radius_m{0.2};
+};
+
+/// Seed 3.5.2 raycasting: the share of `ray_count` rays from the sensor, spread evenly over the
+/// angular width of person `target` (index into obstacles.people), that reach that person's circle
+/// without entering a blocking grid cell or another person's circle first, and that lie inside
+/// the sensor's wedge. 1 when the sensor stands inside the circle. Range is not checked here.
+double visible_fraction(const FieldOfView& sensor, const SightObstacles& obstacles, size_t target,
+                        int ray_count);
+
+}  // namespace ari_social_sim::perception

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <opencv2/core/mat.hpp>
+#include <vector>
+
+#include "ari_social_sim/physics/camera_model.hpp"
+#include "ari_social_sim/physics/camera_rig_config.hpp"
+#include "ari_social_sim/physics/fisheye_renderer.hpp"
+#include "ari_social_sim/physics/renderer.hpp"
+#include "ari_social_sim/physics/world_scene.hpp"
+
+namespace ari_social_sim::physics {
+
+/// One camera's output for one instant.
+struct CameraFrame {
+  cv::Mat colour;  // CV_8UC3, RGB
+  cv::Mat depth;   // RGB-D cameras only: CV_32FC1 metres (NaN invalid) or CV_16UC1 millimetres
+                   // (0 invalid), per the rig's depth encoding; aligned pixel for pixel to colour
+};
+
+/// ARI's enabled cameras around one renderer: the component a node (or a batch tool) calls with
+/// each camera's optical-frame pose in the world. It owns the static scene (set once from the
+/// world) and takes the moving part (people, the robot's own body) each tick.
+class CameraRig {
+ public:
+  /// Opens the renderer; throws RenderError when no headless OpenGL context can be made.
+  explicit CameraRig(const CameraRigConfig& config);
+
+  /// The enabled cameras, in the order of ari_camera_specs().
+  const std::vector<CameraSpec>& cameras() const { return cameras_; }
+  /// camera_info of camera i (the depth image of an RGB-D camera shares its colour intrinsics).
+  const CameraInfo& info(size_t i) const { return infos_[i]; }
+  DepthEncoding depth_encoding() const { return depth_encoding_; }
+  Renderer& renderer() { return *renderer_; }
+
+  void set_world(const world::WorldDescription& world, const SceneStyle& style);
+  void set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives);
+
+  /// Indices of the cameras with a frame due at sim time t: camera i's k-th frame is due at
+  /// k / rate_hz. A frame that could not be taken in time is skipped, not queued.
+  std::vector<size_t> due(double time_s);
+
+  /// Renders camera i from its optical frame's pose in the world.
+  void render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out);
+
+ private:
+  std::vector<CameraSpec> cameras_;
+  std::vector<CameraInfo> infos_;
+  std::vector<PinholeModel> pinholes_;                      // unused for fisheyes
+  std::vector<std::unique_ptr<FisheyeRenderer>> fisheyes_;  // null for pinholes
+  std::vector<double> next_due_s_;
+  DepthEncoding depth_encoding_;
+  std::unique_ptr<Renderer> renderer_;
+  RenderedImage scratch_;
+};
+
+}  // namespace ari_social_sim::physics

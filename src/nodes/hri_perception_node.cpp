@@ -1,0 +1,332 @@
+// hri_perception_node: what ARI's ROS4HRI perception stack would publish about the people around
+// it, computed from the world's ground truth (/sim/world_state, /map) by the perception core.
+// Reads parameters, builds the core, wires topics and tf, converts at the edges.
+
+#include <nav_msgs/OccupancyGrid.h>
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <std_msgs/Bool.h>
+#include <std_msgs/Float32.h>
+#include <std_msgs/String.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "ari_social_sim/WorldState.h"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/perception_pipeline.hpp"
+#include "ari_social_sim/perception/perception_run_config.hpp"
+#include "ari_social_sim/perception/sound_map.hpp"
+#include "ari_social_sim/world/world_file.hpp"
+#include "conversions/hri_messages.hpp"
+#include "conversions/perception_markers.hpp"
+#include "conversions/world_state.hpp"
+#include "ros_params.hpp"
+
+namespace ari_social_sim::nodes {
+namespace {
+
+constexpr char kMapFrame[] = "map";
+// In 2D mode no camera frames exist: ROS4HRI frames hang from ARI's base instead of the sensor.
+constexpr char kRobotFrame[] = "base_footprint";
+constexpr double kSoundMapResolution_m = 0.05;
+
+// The subtopics of one face, body or voice id: advertised when the id first appears, shut down
+// (by dropping the publishers) once it has been absent for the linger time, so that an id
+// missing for a frame or two does not make subscribers reconnect.
+template <class Topics>
+class PerIdTopics {
+ public:
+  using Advertise = std::function<Topics(const std::string& id)>;
+
+  explicit PerIdTopics(Advertise advertise) : advertise_(std::move(advertise)) {}
+
+  Topics& of(const std::string& id, double now_s) {
+    Entry& entry = entries_[id];
+    if (!entry.topics) {
+      entry.topics = advertise_(id);
+    }
+    entry.last_seen_s = now_s;
+    return *entry.topics;
+  }
+  void retire(double now_s, double linger_s) {
+    for (auto it = entries_.begin(); it != entries_.end();) {
+      const bool gone = now_s - it->second.last_seen_s > linger_s || now_s < it->second.last_seen_s;
+      it = gone ? entries_.erase(it) : std::next(it);
+    }
+  }
+
+ private:
+  struct Entry {
+    std::optional<Topics> topics;
+    double last_seen_s{0.0};
+  };
+  Advertise advertise_;
+  std::map<std::string, Entry> entries_;
+};
+
+struct BodyTopics {
+  ros::Publisher roi;
+};
+struct FaceTopics {
+  ros::Publisher roi, expression, softbiometrics, mask;
+};
+struct VoiceTopics {
+  ros::Publisher is_speaking, speech;
+};
+// Persons are permanent: their topics live as long as the node. Latched attributes are sent
+// only when they change.
+struct PersonTopics {
+  ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence;
+  std::optional<std::string> sent_name, sent_face, sent_body, sent_voice;
+};
+
+std_msgs::String string_msg(const std::string& text) {
+  std_msgs::String msg;
+  msg.data = text;
+  return msg;
+}
+
+// Publishes `value` on a latched topic unless it was the last value sent.
+void publish_on_change(ros::Publisher& publisher, std::optional<std::string>& sent,
+                       const std::string& value) {
+  if (sent != value) {
+    publisher.publish(string_msg(value));
+    sent = value;
+  }
+}
+
+class HriPerceptionNode {
+ public:
+  HriPerceptionNode(const perception::PerceptionRunConfig& run,
+                    const perception::PerceptionConfig& config,
+                    std::optional<world::OccupancyGrid> sound_map)
+      : run_(run),
+        pipeline_(config),
+        bodies_([this](const std::string& id) { return advertise_body(id); }),
+        faces_([this](const std::string& id) { return advertise_face(id); }),
+        voices_([this](const std::string& id) { return advertise_voice(id); }) {
+    if (sound_map) {
+      pipeline_.set_sound_map(std::move(*sound_map));
+    }
+    faces_tracked_ = nh_.advertise<IdsList>("/humans/faces/tracked", 1);
+    bodies_tracked_ = nh_.advertise<IdsList>("/humans/bodies/tracked", 1);
+    voices_tracked_ = nh_.advertise<IdsList>("/humans/voices/tracked", 1);
+    persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
+    persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
+    matches_ = nh_.advertise<IdsMatch>("/humans/candidate_matches", 50);
+    groups_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
+    gazing_ = nh_.advertise<Gaze>("/humans/interactions/gazing", 50);
+    markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
+    map_sub_ = nh_.subscribe("/map", 1, &HriPerceptionNode::on_map, this);
+    // No Nagle delay: each world state should be perceived as soon as it is published.
+    state_sub_ = nh_.subscribe("/sim/world_state", 1, &HriPerceptionNode::on_world_state, this,
+                               ros::TransportHints().tcpNoDelay());
+  }
+
+ private:
+  BodyTopics advertise_body(const std::string& id) {
+    const std::string ns = "/humans/bodies/" + id + "/";
+    return {nh_.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1)};
+  }
+  FaceTopics advertise_face(const std::string& id) {
+    const std::string ns = "/humans/faces/" + id + "/";
+    return {nh_.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1),
+            nh_.advertise<Expression>(ns + "expression", 1),
+            nh_.advertise<SoftBiometrics>(ns + "softbiometrics", 1),
+            nh_.advertise<std_msgs::Bool>(ns + "mask", 1)};
+  }
+  VoiceTopics advertise_voice(const std::string& id) {
+    const std::string ns = "/humans/voices/" + id + "/";
+    return {nh_.advertise<std_msgs::Bool>(ns + "is_speaking", 1),
+            nh_.advertise<LiveSpeech>(ns + "speech", 10)};
+  }
+  PersonTopics& person_topics(const std::string& id) {
+    auto [it, is_new] = persons_.try_emplace(id);
+    if (is_new) {
+      const std::string ns = "/humans/persons/" + id + "/";
+      PersonTopics& topics = it->second;
+      topics.anonymous = nh_.advertise<std_msgs::Bool>(ns + "anonymous", 1, true);
+      topics.name = nh_.advertise<std_msgs::String>(ns + "name", 1, true);
+      topics.face_id = nh_.advertise<std_msgs::String>(ns + "face_id", 1, true);
+      topics.body_id = nh_.advertise<std_msgs::String>(ns + "body_id", 1, true);
+      topics.voice_id = nh_.advertise<std_msgs::String>(ns + "voice_id", 1, true);
+      topics.engagement = nh_.advertise<EngagementLevel>(ns + "engagement_status", 1);
+      topics.location_confidence = nh_.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
+      // Everyone is recognised from ARI's database of known persons (person_id_of).
+      std_msgs::Bool anonymous;
+      anonymous.data = false;
+      topics.anonymous.publish(anonymous);
+    }
+    return it->second;
+  }
+
+  void on_map(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    pipeline_.set_sight_map(from_msg(*msg));
+    has_map_ = true;
+  }
+
+  void on_world_state(const WorldState::ConstPtr& msg) {
+    if (!has_map_) {
+      ROS_WARN_THROTTLE(5.0, "hri_perception_node: waiting for /map before perceiving");
+      return;
+    }
+    const double time_s = msg->header.stamp.toSec();
+    // A small tolerance, so that a world stepping at exactly max_rate is not thinned out.
+    const double period_s = 1.0 / run_.max_rate_hz;
+    if (last_time_s_ && time_s >= *last_time_s_ && time_s - *last_time_s_ < 0.999 * period_s) {
+      return;
+    }
+    last_time_s_ = time_s;
+    const perception::PerceptionFrame& frame = pipeline_.update(from_msg(*msg));
+    publish(frame, msg->header.stamp);
+  }
+
+  void publish(const perception::PerceptionFrame& frame, const ros::Time& stamp) {
+    std_msgs::Header header;
+    header.stamp = stamp;
+    header.frame_id = kRobotFrame;
+    const double now_s = frame.time_s;
+    std::vector<std::string> body_ids, face_ids, voice_ids, tracked_persons, known_persons;
+
+    for (const perception::PerceivedBody& body : frame.bodies) {
+      bodies_.of(body.body_id, now_s).roi.publish(roi_msg(body.roi, body.visible_fraction, header));
+      matches_.publish(
+          match_msg(body.body_id, IdsMatch::BODY, body.person_id, IdsMatch::PERSON, 1.0));
+      body_ids.push_back(body.body_id);
+    }
+    for (const perception::PerceivedFace& face : frame.faces) {
+      FaceTopics& topics = faces_.of(face.face_id, now_s);
+      topics.roi.publish(roi_msg(face.roi, 1.0, header));
+      topics.expression.publish(expression_msg(face, header));
+      topics.softbiometrics.publish(softbiometrics_msg(face, header));
+      std_msgs::Bool mask;
+      mask.data = face.mask;
+      topics.mask.publish(mask);
+      matches_.publish(
+          match_msg(face.face_id, IdsMatch::FACE, face.person_id, IdsMatch::PERSON, 1.0));
+      face_ids.push_back(face.face_id);
+    }
+    const std::string& language = pipeline_.config().microphone.language;
+    for (const perception::PerceivedVoice& voice : frame.voices) {
+      VoiceTopics& topics = voices_.of(voice.voice_id, now_s);
+      std_msgs::Bool speaking;
+      speaking.data = voice.is_speaking;
+      topics.is_speaking.publish(speaking);
+      for (const perception::SpeechResult& result : voice.speech) {
+        topics.speech.publish(speech_msg(result, language, header));
+      }
+      matches_.publish(
+          match_msg(voice.voice_id, IdsMatch::VOICE, voice.person_id, IdsMatch::PERSON, 1.0));
+      voice_ids.push_back(voice.voice_id);
+    }
+    for (const perception::PersonReport& person : frame.persons) {
+      PersonTopics& topics = person_topics(person.person_id);
+      publish_on_change(topics.name, topics.sent_name, person.name);
+      publish_on_change(topics.face_id, topics.sent_face, person.face_id);
+      publish_on_change(topics.body_id, topics.sent_body, person.body_id);
+      publish_on_change(topics.voice_id, topics.sent_voice, person.voice_id);
+      topics.engagement.publish(engagement_msg(person.engagement, header));
+      std_msgs::Float32 confidence;
+      confidence.data = static_cast<float>(person.location_confidence);
+      topics.location_confidence.publish(confidence);
+      known_persons.push_back(person.person_id);
+      if (person.tracked) {
+        tracked_persons.push_back(person.person_id);
+      }
+    }
+    for (const perception::PerceivedGroup& group : frame.groups) {
+      groups_.publish(group_msg(group, header));
+    }
+    for (const perception::GazeRelation& gaze : frame.gazes) {
+      gazing_.publish(gaze_msg(gaze, header));
+    }
+
+    std_msgs::Header map_header = header;
+    map_header.frame_id = kMapFrame;
+    if (frame.has_ari) {
+      tf_.sendTransform(
+          hri_transforms(frame, pipeline_.config().human_model, map_header, kRobotFrame));
+    }
+    // The lists last: a listener that diffs them finds every new id's topics already there.
+    faces_tracked_.publish(ids_msg(face_ids, header));
+    bodies_tracked_.publish(ids_msg(body_ids, header));
+    voices_tracked_.publish(ids_msg(voice_ids, header));
+    persons_tracked_.publish(ids_msg(tracked_persons, header));
+    persons_known_.publish(ids_msg(known_persons, header));
+
+    bodies_.retire(now_s, run_.id_linger_s);
+    faces_.retire(now_s, run_.id_linger_s);
+    voices_.retire(now_s, run_.id_linger_s);
+    publish_markers(frame);
+  }
+
+  void publish_markers(const perception::PerceptionFrame& frame) {
+    const ros::WallTime now = ros::WallTime::now();
+    if (markers_.getNumSubscribers() == 0 ||
+        (now - last_markers_).toSec() < 1.0 / run_.marker_rate_hz) {
+      return;
+    }
+    last_markers_ = now;
+    markers_.publish(perception_markers(frame, pipeline_.config(), kMapFrame));
+  }
+
+  perception::PerceptionRunConfig run_;
+  perception::PerceptionPipeline pipeline_;
+  bool has_map_{false};
+  std::optional<double> last_time_s_;
+  ros::WallTime last_markers_;
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_{"~"};
+  ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
+      matches_, groups_, gazing_, markers_;
+  ros::Subscriber map_sub_, state_sub_;
+  tf2_ros::TransformBroadcaster tf_;
+  PerIdTopics<BodyTopics> bodies_;
+  PerIdTopics<FaceTopics> faces_;
+  PerIdTopics<VoiceTopics> voices_;
+  std::map<std::string, PersonTopics> persons_;
+};
+
+}  // namespace
+}  // namespace ari_social_sim::nodes
+
+int main(int argc, char** argv) {
+  using namespace ari_social_sim;
+  ros::init(argc, argv, "hri_perception");
+  ros::NodeHandle private_handle("~");
+  perception::PerceptionRunConfig run;
+  perception::PerceptionConfig config;
+  std::optional<world::OccupancyGrid> sound_map;
+  try {
+    run = perception::PerceptionRunConfig::from_yaml(nodes::read_private_params(private_handle));
+    if (run.config.empty()) {
+      run.config = ros::package::getPath("ari_social_sim") + "/config/perception.yaml";
+    }
+    config = perception::PerceptionConfig::load_file(run.config);
+    if (run.seed >= 0) {
+      config.seed = static_cast<unsigned>(run.seed);
+    }
+    if (run.errors_enabled) {
+      config.errors_enabled = *run.errors_enabled;
+    }
+    if (!run.world.empty()) {
+      sound_map = perception::rasterize_walls(world::load_world_file(run.world),
+                                              nodes::kSoundMapResolution_m);
+    }
+  } catch (const core::Error& e) {
+    ROS_FATAL("%s", e.what());
+    return 2;
+  }
+  ROS_INFO("hri_perception_node: %s, seed %u, error models %s, sound blocked by %s",
+           run.config.c_str(), config.seed, config.errors_enabled ? "on" : "off",
+           run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
+  nodes::HriPerceptionNode node(run, config, std::move(sound_map));
+  ros::spin();
+  return 0;
+}

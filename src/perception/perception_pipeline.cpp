@@ -1,0 +1,107 @@
+#include "ari_social_sim/perception/perception_pipeline.hpp"
+
+#include <set>
+
+namespace ari_social_sim::perception {
+namespace {
+
+// Independent random streams, so that switching one error model on or off leaves the draws of
+// the others unchanged.
+enum Stream : uint64_t { kIdStream = 1, kBodyStream = 2, kFaceStream = 3, kSpeechStream = 4 };
+
+const PerceptionConfig& validated(const PerceptionConfig& config) {
+  config.validate();
+  return config;
+}
+
+}  // namespace
+
+PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
+    : config_(validated(config).effective()),
+      ids_(core::Rng::for_stream(config.seed, kIdStream)),
+      bodies_(config_, ids_, core::Rng::for_stream(config.seed, kBodyStream)),
+      faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),
+      speech_(config_, ids_, core::Rng::for_stream(config.seed, kSpeechStream)),
+      persons_(config_.persons, config_.engagement),
+      groups_(config_.groups) {}
+
+void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
+  sight_map_ = std::move(grid);
+}
+
+void PerceptionPipeline::set_sound_map(world::OccupancyGrid grid) {
+  sound_map_ = std::move(grid);
+}
+
+void PerceptionPipeline::forget_everyone() {
+  bodies_.track_ids().retain({});
+  faces_.track_ids().retain({});
+  speech_.clear();
+  persons_.clear();
+  groups_.clear();
+}
+
+std::vector<GazeRelation> PerceptionPipeline::gaze_relations(
+    const world::WorldSnapshot& snapshot) const {
+  // Receivers must be known persons (REP-155); ARI is the empty receiver.
+  std::vector<GazeRelation> gazes;
+  const world::ObjectId ari = snapshot.ari ? snapshot.ari->id : world::kNoObject;
+  for (const PerceivedFace& face : frame_.faces) {
+    if (face.gaze_target == world::kNoObject) {
+      continue;
+    }
+    if (face.gaze_target == ari) {
+      gazes.push_back({face.person_id, ""});
+    } else if (persons_.is_known(face.gaze_target)) {
+      gazes.push_back({face.person_id, person_id_of(face.gaze_target)});
+    }
+  }
+  return gazes;
+}
+
+const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& snapshot) {
+  if (last_time_s_ && snapshot.time_s < *last_time_s_) {
+    forget_everyone();
+    last_time_s_.reset();
+  }
+  const double dt_s = last_time_s_ ? snapshot.time_s - *last_time_s_ : 0.0;
+  last_time_s_ = snapshot.time_s;
+
+  frame_.time_s = snapshot.time_s;
+  frame_.has_ari = snapshot.ari.has_value();
+  frame_.bodies.clear();
+  frame_.faces.clear();
+  frame_.voices.clear();
+  frame_.groups.clear();
+  frame_.gazes.clear();
+
+  std::set<world::ObjectId> present;
+  people_.clear();
+  for (const world::HumanSnapshot& human : snapshot.humans) {
+    present.insert(human.id);
+    people_.push_back(human.pose.position);
+  }
+  bodies_.track_ids().retain(present);
+  faces_.track_ids().retain(present);
+
+  if (snapshot.ari) {
+    frame_.X_map_base = snapshot.ari->pose;
+    frame_.sensors = AriSensors::of(*snapshot.ari, config_);
+    const SightObstacles obstacles{sight_map_ ? &*sight_map_ : nullptr,
+                                   config_.occlusion.occupied_threshold, &people_,
+                                   config_.occlusion.person_radius_m};
+    bodies_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.bodies);
+    faces_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.faces);
+    const world::OccupancyGrid* sound_map =
+        sound_map_ ? &*sound_map_ : (sight_map_ ? &*sight_map_ : nullptr);
+    speech_.update(snapshot, frame_.sensors, sound_map, config_.occlusion.occupied_threshold,
+                   frame_.voices);
+  }
+  persons_.update(snapshot, snapshot.ari ? &frame_.sensors : nullptr, frame_.bodies, frame_.faces,
+                  frame_.voices, frame_.persons);
+  frame_.gazes = gaze_relations(snapshot);
+  groups_.update(frame_.bodies, frame_.groups);
+  return frame_;
+}
+
+}  // namespace ari_social_sim::perception

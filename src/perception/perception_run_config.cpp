@@ -1,0 +1,21 @@
+#include "ari_social_sim/perception/perception_run_config.hpp"
+
+namespace ari_social_sim::perception {
+
+PerceptionRunConfig PerceptionRunConfig::from_yaml(const core::YamlMap& map) {
+  PerceptionRunConfig config;
+  config.config = map.optional<std::string>("config", config.config);
+  config.seed = map.optional<int>("seed", -1, core::Bounds{-1.0, 2147483647.0, false});
+  if (map.has("errors_enabled")) {
+    config.errors_enabled = map.required<bool>("errors_enabled");
+  }
+  config.world = map.optional<std::string>("world", config.world);
+  config.max_rate_hz = map.optional<double>("max_rate", config.max_rate_hz, {0.0, 1000.0, true});
+  config.id_linger_s = map.optional<double>("id_linger", config.id_linger_s, core::between(0, 60));
+  config.marker_rate_hz =
+      map.optional<double>("marker_rate", config.marker_rate_hz, {0.0, 30.0, true});
+  map.finish();
+  return config;
+}
+
+}  // namespace ari_social_sim::perception

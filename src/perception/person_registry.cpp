@@ -1,0 +1,81 @@
+#include "ari_social_sim/perception/person_registry.hpp"
+
+#include <algorithm>
+
+namespace ari_social_sim::perception {
+namespace {
+
+// The observation of `human` in a list ordered by human id, or null.
+template <class Observation>
+const Observation* find_of(const std::vector<Observation>& observations, world::ObjectId human) {
+  const auto it = std::lower_bound(
+      observations.begin(), observations.end(), human,
+      [](const Observation& observation, world::ObjectId id) { return observation.human < id; });
+  return it != observations.end() && it->human == human ? &*it : nullptr;
+}
+
+}  // namespace
+
+PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConfig& engagement)
+    : config_(persons), engagement_config_(engagement) {}
+
+void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSensors* sensors,
+                            const std::vector<PerceivedBody>& bodies,
+                            const std::vector<PerceivedFace>& faces,
+                            const std::vector<PerceivedVoice>& voices,
+                            std::vector<PersonReport>& reports) {
+  const double now = snapshot.time_s;
+  // Untracked unless something of theirs is seen or heard below (removed humans included).
+  for (auto& [human, person] : persons_) {
+    person.report.tracked = false;
+  }
+  for (const world::HumanSnapshot& human : snapshot.humans) {
+    const PerceivedBody* body = find_of(bodies, human.id);
+    const PerceivedFace* face = find_of(faces, human.id);
+    const PerceivedVoice* voice = find_of(voices, human.id);
+    if (body == nullptr && face == nullptr && voice == nullptr) {
+      continue;
+    }
+    auto it = persons_.find(human.id);
+    if (it == persons_.end()) {
+      it = persons_.emplace(human.id, Person{{}, now, EngagementTracker(engagement_config_)}).first;
+      it->second.report.human = human.id;
+      it->second.report.person_id = person_id_of(human.id);
+    }
+    Person& person = it->second;
+    PersonReport& report = person.report;
+    report.name = human.name;
+    report.tracked = true;
+    person.last_tracked_s = now;
+    report.face_id = face != nullptr ? face->face_id : "";
+    report.body_id = body != nullptr ? body->body_id : "";
+    report.voice_id = voice != nullptr ? voice->voice_id : "";
+    report.location = face != nullptr   ? face->X_map_face.position
+                      : body != nullptr ? body->X_map_body.position
+                                        : voice->position;
+    report.engagement_score =
+        face != nullptr && sensors != nullptr
+            ? engagement_score(engagement_config_, sensors->face_camera.X_map_sensor,
+                               {face->X_map_face.position, face->gaze_rad})
+            : 0.0;
+    report.engagement = person.engagement.update(now, report.engagement_score);
+  }
+
+  reports.clear();
+  for (auto& [human, person] : persons_) {
+    PersonReport& report = person.report;
+    if (!report.tracked) {
+      report.face_id.clear();
+      report.body_id.clear();
+      report.voice_id.clear();
+      report.engagement_score = 0.0;
+      person.engagement.reset();
+      report.engagement = EngagementLevel::kUnknown;
+    }
+    report.location_confidence =
+        std::max(0.0, 1.0 - (now - person.last_tracked_s) / config_.location_decay_s);
+    reports.push_back(report);
+  }
+}
+
+}  // namespace ari_social_sim::perception

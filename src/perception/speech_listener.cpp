@@ -1,0 +1,138 @@
+#include "ari_social_sim/perception/speech_listener.hpp"
+
+#include <algorithm>
+
+#include "ari_social_sim/perception/grid_raycast.hpp"
+
+namespace ari_social_sim::perception {
+
+SpeechListener::SpeechListener(const PerceptionConfig& config, TransientIds& ids, core::Rng rng)
+    : config_(config),
+      ids_(ids),
+      rng_(rng.next_u64()),
+      asr_(config.speech_errors, core::Rng(rng.next_u64())) {}
+
+void SpeechListener::clear() {
+  utterances_.clear();
+  voices_.clear();
+}
+
+SpeechListener::VoiceTrack& SpeechListener::voice_of(world::ObjectId human) {
+  VoiceTrack& voice = voices_[human];
+  if (voice.id.empty()) {
+    voice.id = ids_.next();
+  }
+  return voice;
+}
+
+void SpeechListener::finish(const Utterance& utterance, double now_s) {
+  VoiceTrack& voice = voice_of(utterance.voice_owner);
+  voice.last_active_s = now_s;
+  if (!utterance.transcript.empty()) {
+    voice.results.push_back(
+        {"", join_words(utterance.transcript), 1.0 - config_.speech_errors.word_error_rate});
+  }
+}
+
+void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
+                            const world::OccupancyGrid* sound_map, int occupied_threshold,
+                            std::vector<PerceivedVoice>& voices) {
+  const double now = snapshot.time_s;
+  const std::vector<world::HumanSnapshot>& humans = snapshot.humans;
+  std::map<world::ObjectId, size_t> index_of;
+  std::vector<bool> audible(humans.size(), false);
+  for (size_t i = 0; i < humans.size(); ++i) {
+    const Eigen::Vector2d& position = humans[i].pose.position;
+    index_of[humans[i].id] = i;
+    audible[i] = (position - sensors.microphone).norm() <= sensors.listening_range_m &&
+                 (sound_map == nullptr ||
+                  segment_is_clear(*sound_map, occupied_threshold, sensors.microphone, position));
+  }
+  for (auto& [owner, voice] : voices_) {
+    voice.active = false;
+    voice.results.clear();
+  }
+
+  // Utterances end with their act, when another act starts, or when the speaker goes out of
+  // hearing or out of the world.
+  for (auto it = utterances_.begin(); it != utterances_.end();) {
+    const auto found = index_of.find(it->first);
+    const bool goes_on = found != index_of.end() && audible[found->second] &&
+                         humans[found->second].speech.is_speaking &&
+                         humans[found->second].speech.start_s == it->second.start_s;
+    if (goes_on) {
+      ++it;
+    } else {
+      finish(it->second, now);
+      it = utterances_.erase(it);
+    }
+  }
+
+  // New utterances and new words.
+  const double confidence = 1.0 - config_.speech_errors.word_error_rate;
+  for (size_t i = 0; i < humans.size(); ++i) {
+    const world::SpeechSnapshot& speech = humans[i].speech;
+    if (!audible[i] || !speech.is_speaking) {
+      continue;
+    }
+    auto [it, is_new] = utterances_.try_emplace(humans[i].id);
+    Utterance& utterance = it->second;
+    if (is_new) {
+      utterance.start_s = speech.start_s;
+      utterance.words = split_words(speech.content);
+      // Words said before the speaker came within hearing are lost.
+      utterance.last_heard = static_cast<int>(speech.word_index) - 1;
+      utterance.voice_owner = humans[i].id;
+      const double misattribution = config_.speech_errors.misattribution_rate;
+      if (misattribution > 0.0 && rng_.bernoulli(misattribution)) {
+        std::vector<world::ObjectId> others;
+        for (size_t j = 0; j < humans.size(); ++j) {
+          if (j != i && audible[j]) {
+            others.push_back(humans[j].id);
+          }
+        }
+        if (!others.empty()) {
+          utterance.voice_owner = others[rng_.uniform_index(others.size())];
+        }
+      }
+    }
+    const size_t before = utterance.transcript.size();
+    const int current =
+        std::min(static_cast<int>(speech.word_index), static_cast<int>(utterance.words.size()) - 1);
+    for (int word = utterance.last_heard + 1; word <= current; ++word) {
+      asr_.hear(utterance.words[static_cast<size_t>(word)], utterance.transcript);
+    }
+    utterance.last_heard = std::max(utterance.last_heard, current);
+    VoiceTrack& voice = voice_of(utterance.voice_owner);
+    voice.active = true;
+    voice.last_active_s = now;
+    if (utterance.transcript.size() != before) {
+      voice.transcript = join_words(utterance.transcript);
+      voice.results.push_back({voice.transcript, "", confidence});
+    }
+  }
+
+  // Report the voices in use; forget those whose owner left the world.
+  for (auto it = voices_.begin(); it != voices_.end();) {
+    const auto found = index_of.find(it->first);
+    if (found == index_of.end()) {
+      it = voices_.erase(it);
+      continue;
+    }
+    VoiceTrack& voice = it->second;
+    if (voice.active || now - voice.last_active_s <= config_.microphone.voice_timeout_s) {
+      PerceivedVoice perceived;
+      perceived.human = it->first;
+      perceived.voice_id = voice.id;
+      perceived.person_id = person_id_of(it->first);
+      perceived.position = humans[found->second].pose.position;
+      perceived.is_speaking = voice.active;
+      perceived.speech = std::move(voice.results);
+      perceived.transcript = voice.transcript;
+      voices.push_back(std::move(perceived));
+    }
+    ++it;
+  }
+}
+
+}  // namespace ari_social_sim::perception

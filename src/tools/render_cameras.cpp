@@ -1,0 +1,144 @@
+// render_cameras: renders one image from each of ARI's cameras in a world with a few people, and
+// writes them as PNG files (the pictures in docs/cameras.md). Depth is written false-coloured.
+
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/physics/camera_rig.hpp"
+#include "ari_social_sim/world/world_file.hpp"
+
+namespace {
+
+using namespace ari_social_sim;
+
+constexpr int kUsageError = 2;
+
+constexpr const char* kUsage = R"(Usage:
+  render_cameras --world WORLD_YAML --out DIR
+
+Renders ARI's head camera, torso RGB-D camera (colour and depth), front and rear fisheyes and the
+T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world and four people
+around it, and writes DIR/camera_head.png, camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m
+false-coloured, black where invalid), camera_fisheye_front.png, camera_fisheye_rear.png,
+camera_t265_fisheye1.png and camera_t265_fisheye2.png.
+
+Exit status: 0 on success, 2 on bad arguments or an unreadable world, 1 when rendering fails.
+)";
+
+// File name of each camera's picture.
+std::string picture_name(const std::string& camera) {
+  if (camera == "head_front_camera")
+    return "camera_head";
+  if (camera == "torso_front_camera")
+    return "camera_torso_rgb";
+  if (camera == "front_fisheye_camera")
+    return "camera_fisheye_front";
+  if (camera == "rear_fisheye_camera")
+    return "camera_fisheye_rear";
+  if (camera == "torso_back_camera/fisheye1")
+    return "camera_t265_fisheye1";
+  return "camera_t265_fisheye2";
+}
+
+// Depth in metres as a turbo-coloured picture over 0..5 m; invalid pixels black.
+cv::Mat false_colour(const cv::Mat& depth_m) {
+  cv::Mat scaled(depth_m.size(), CV_8UC1);
+  cv::Mat invalid(depth_m.size(), CV_8UC1);
+  for (int v = 0; v < depth_m.rows; ++v) {
+    for (int u = 0; u < depth_m.cols; ++u) {
+      const float d = depth_m.at<float>(v, u);
+      invalid.at<uint8_t>(v, u) = std::isfinite(d) ? 0 : 255;
+      scaled.at<uint8_t>(v, u) =
+          static_cast<uint8_t>(std::clamp(d / 5.0f, 0.0f, 1.0f) * 255.0f + 0.5f);
+    }
+  }
+  cv::Mat coloured;
+  cv::applyColorMap(scaled, coloured, cv::COLORMAP_TURBO);
+  coloured.setTo(cv::Scalar(0, 0, 0), invalid);
+  return coloured;
+}
+
+void write_png(const std::string& path, const cv::Mat& bgr) {
+  if (!cv::imwrite(path, bgr)) {
+    throw core::Error("cannot write " + path);
+  }
+  std::printf("wrote %s (%dx%d)\n", path.c_str(), bgr.cols, bgr.rows);
+}
+
+int run(const std::string& world_path, const std::string& out_dir) {
+  const world::WorldDescription world = world::load_world_file(world_path);
+  physics::CameraRigConfig config;
+  for (physics::CameraSpec& spec : config.cameras) {
+    spec.enabled = true;
+  }
+  physics::CameraRig rig(config);
+  std::printf("renderer: %s\n", rig.renderer().device_name().c_str());
+  const physics::SceneStyle style;
+  rig.set_world(world, style);
+
+  // ARI faces north-west towards the middle rows of chairs; two people talk in front of it, one
+  // walks past on its left and one waits behind it.
+  const core::Pose2 ari{{6.0, 2.6}, 2.0};
+  const double head_pan = 0.15, head_tilt = 0.05;
+  std::vector<physics::RenderPrimitive> people;
+  auto add = [&](Eigen::Vector2d position, double body_yaw, double face_yaw, size_t shirt) {
+    physics::append_person({position, body_yaw}, face_yaw, shirt, style.person, people);
+  };
+  add({5.1, 4.2}, -0.9, -1.1, 0);  // facing ARI
+  add({4.5, 3.7}, 0.2, 0.5, 1);    // talking to the first
+  add({4.3, 2.0}, 1.6, 1.6, 2);    // walking north past ARI's left
+  add({7.2, 0.9}, 2.3, 2.5, 3);    // behind ARI, by the entrance
+  add({6.9, 3.4}, -2.0, -2.2, 4);  // close, in the torso camera's view
+  rig.set_dynamic_primitives(people);
+
+  physics::CameraFrame frame;
+  for (size_t i = 0; i < rig.cameras().size(); ++i) {
+    const physics::CameraSpec& spec = rig.cameras()[i];
+    rig.render(i, physics::X_world_optical(spec, ari, head_pan, head_tilt), frame);
+    cv::Mat bgr;
+    cv::cvtColor(frame.colour, bgr, cv::COLOR_RGB2BGR);
+    write_png(out_dir + "/" + picture_name(spec.name) + ".png", bgr);
+    if (!frame.depth.empty()) {
+      write_png(out_dir + "/camera_torso_depth.png", false_colour(frame.depth));
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string world_path, out_dir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if ((arg == "--world" || arg == "--out") && i + 1 < argc) {
+      (arg == "--world" ? world_path : out_dir) = argv[++i];
+    } else {
+      std::fprintf(stderr, "render_cameras: unknown or incomplete argument '%s'\n%s", arg.c_str(),
+                   kUsage);
+      return kUsageError;
+    }
+  }
+  if (world_path.empty() || out_dir.empty()) {
+    std::fprintf(stderr, "render_cameras: --world and --out are required\n%s", kUsage);
+    return kUsageError;
+  }
+  try {
+    return run(world_path, out_dir);
+  } catch (const core::ConfigError& error) {
+    std::fprintf(stderr, "render_cameras: %s\n", error.what());
+    return kUsageError;
+  } catch (const core::Error& error) {
+    std::fprintf(stderr, "render_cameras: %s\n", error.what());
+    return 1;
+  }
+}

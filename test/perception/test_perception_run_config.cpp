@@ -1,0 +1,57 @@
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/perception_run_config.hpp"
+
+namespace ari_social_sim::perception {
+namespace {
+
+PerceptionRunConfig parse(const std::string& text) {
+  return PerceptionRunConfig::from_yaml(core::YamlMap::parse(text, "/hri_perception parameter"));
+}
+
+TEST(PerceptionRunConfig, NoParametersGiveTheDefaults) {
+  const PerceptionRunConfig config = parse("{}");
+  EXPECT_EQ(config.config, "");
+  EXPECT_EQ(config.seed, -1);
+  EXPECT_FALSE(config.errors_enabled.has_value());
+  EXPECT_EQ(config.world, "");
+  EXPECT_DOUBLE_EQ(config.max_rate_hz, 30.0);
+  EXPECT_DOUBLE_EQ(config.id_linger_s, 1.0);
+  EXPECT_DOUBLE_EQ(config.marker_rate_hz, 10.0);
+}
+
+TEST(PerceptionRunConfig, ReadsEveryParameter) {
+  const PerceptionRunConfig config = parse(
+      "{config: a.yaml, seed: 4, errors_enabled: false, world: w.yaml, max_rate: 15, "
+      "id_linger: 0.5, marker_rate: 5}");
+  EXPECT_EQ(config.config, "a.yaml");
+  EXPECT_EQ(config.seed, 4);
+  EXPECT_EQ(config.errors_enabled, std::optional<bool>(false));
+  EXPECT_EQ(config.world, "w.yaml");
+  EXPECT_DOUBLE_EQ(config.max_rate_hz, 15.0);
+  EXPECT_DOUBLE_EQ(config.id_linger_s, 0.5);
+  EXPECT_DOUBLE_EQ(config.marker_rate_hz, 5.0);
+}
+
+TEST(PerceptionRunConfig, BadOrUnknownParametersAreNamed) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{max_rate: 0}", "max_rate: expected a number (0, 1000], got 0"},
+      {"{seed: -2}", "seed: expected an integer [-1, 2.14748e+09], got -2"},
+      {"{id_linger: 61}", "id_linger: expected a number [0, 60], got 61"},
+      {"{marker_rate: 31}", "marker_rate: expected a number (0, 30], got 31"},
+      {"{errors_enabled: 2}", "errors_enabled: expected true or false, got 2"},
+      {"{rate: 30}", "unknown field(s) rate"}};
+  for (const auto& [text, message] : cases) {
+    try {
+      parse(text);
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const core::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("/hri_perception parameter"), std::string::npos);
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ari_social_sim::perception

@@ -1,0 +1,99 @@
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/perception/person_registry.hpp"
+#include "perception_scenes.hpp"
+
+namespace ari_social_sim::perception {
+namespace {
+
+using test::human_at;
+
+PerceivedBody body_of(world::ObjectId human, const std::string& id, double x, double y) {
+  PerceivedBody body;
+  body.human = human;
+  body.body_id = id;
+  body.person_id = person_id_of(human);
+  body.X_map_body = {{x, y}, 0.0};
+  return body;
+}
+
+TEST(PersonRegistry, PermanentIdsLinkedToTheirFeatures) {
+  PersonRegistry registry({}, {});
+  world::WorldSnapshot snapshot = test::snapshot_with_ari(1.0);
+  snapshot.humans = {human_at(10, 2.0, 0.0, 0.0), human_at(11, 3.0, 1.0, 0.0),
+                     human_at(12, 4.0, 1.0, 0.0)};
+  PerceivedFace face;
+  face.human = 11;
+  face.face_id = "faces";
+  face.X_map_face = {{3.01, 1.0}, 0.0};
+  PerceivedVoice voice;
+  voice.human = 11;
+  voice.voice_id = "voice";
+  std::vector<PersonReport> reports;
+  registry.update(snapshot, nullptr,
+                  {body_of(10, "bodya", 2.0, 0.0), body_of(11, "bodyb", 3.0, 1.0)}, {face}, {voice},
+                  reports);
+  ASSERT_EQ(reports.size(), 2u);  // human 12 was never seen: not known
+  EXPECT_EQ(reports[0].person_id, "human10");
+  EXPECT_EQ(reports[0].name, "human 10");
+  EXPECT_EQ(reports[0].body_id, "bodya");
+  EXPECT_EQ(reports[0].face_id, "");
+  EXPECT_TRUE(reports[0].tracked);
+  EXPECT_DOUBLE_EQ(reports[0].location_confidence, 1.0);
+  EXPECT_EQ(reports[1].person_id, "human11");
+  EXPECT_EQ(reports[1].face_id, "faces");
+  EXPECT_EQ(reports[1].voice_id, "voice");
+  EXPECT_EQ(reports[1].location, Eigen::Vector2d(3.01, 1.0));  // the face before the body
+  EXPECT_TRUE(registry.is_known(11));
+  EXPECT_FALSE(registry.is_known(12));
+}
+
+TEST(PersonRegistry, LocationConfidenceFallsToZeroOverTenSeconds) {
+  PersonRegistry registry({}, {});
+  world::WorldSnapshot snapshot = test::snapshot_with_ari(5.0);
+  snapshot.humans = {human_at(10, 2.0, 0.0, 0.0)};
+  std::vector<PersonReport> reports;
+  registry.update(snapshot, nullptr, {body_of(10, "bodya", 2.0, 0.0)}, {}, {}, reports);
+  // Unseen from t = 5 s: 1 - (t - 5) / 10, kept at the last place, links cleared.
+  for (const auto& [t, expected] :
+       {std::pair{7.5, 0.75}, std::pair{10.0, 0.5}, std::pair{14.0, 0.1}, std::pair{15.0, 0.0},
+        std::pair{20.0, 0.0}}) {
+    snapshot.time_s = t;
+    registry.update(snapshot, nullptr, {}, {}, {}, reports);
+    ASSERT_EQ(reports.size(), 1u);
+    EXPECT_FALSE(reports[0].tracked);
+    EXPECT_NEAR(reports[0].location_confidence, expected, 1e-12) << "t " << t;
+    EXPECT_EQ(reports[0].location, Eigen::Vector2d(2.0, 0.0));
+    EXPECT_EQ(reports[0].body_id, "");
+    EXPECT_EQ(reports[0].engagement, EngagementLevel::kUnknown);
+  }
+  // A human removed from the world stays known and untracked.
+  snapshot.humans.clear();
+  registry.update(snapshot, nullptr, {}, {}, {}, reports);
+  EXPECT_EQ(reports.size(), 1u);
+}
+
+TEST(PersonRegistry, EngagementComesFromThePerceivedFace) {
+  EngagementConfig engagement;
+  engagement.window_s = 1.0;
+  PersonRegistry registry({}, engagement);
+  world::WorldSnapshot snapshot = test::snapshot_with_ari();
+  snapshot.humans = {human_at(10, 1.0, 0.0, core::kPi)};
+  const AriSensors sensors = AriSensors::of(*snapshot.ari, PerceptionConfig());
+  PerceivedFace face;
+  face.human = 10;
+  face.face_id = "faces";
+  face.X_map_face = {{1.0, 0.0}, core::kPi};
+  face.gaze_rad = core::kPi;  // looking at ARI, which looks at them
+  std::vector<PersonReport> reports;
+  for (int i = 0; i <= 12; ++i) {
+    snapshot.time_s = 0.1 * i;
+    registry.update(snapshot, &sensors, {}, {face}, {}, reports);
+  }
+  // 1.12 m from the head camera: log(3.88) / log(5) = 0.84 > 0.5.
+  EXPECT_NEAR(reports.at(0).engagement_score, std::log(4.0 + 1.0 - 1.12) / std::log(5.0), 1e-9);
+  EXPECT_EQ(reports[0].engagement, EngagementLevel::kEngaged);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::perception
