@@ -17,11 +17,13 @@ const std::string kScenarios = std::string(ARI_SOURCE_DIR) + "/scenarios/";
 // Runs episodes with seeds 1, 2, 3, ... of the named scenario.
 void run_scenario(benchmark::State& state, const std::string& name, bool with_bag) {
   const scenario::Scenario loaded = scenario::load_scenario_file(kScenarios + name + ".yaml");
+  const scenario::EpisodeConfig config =
+      scenario::EpisodeConfig::load(std::string(ARI_SOURCE_DIR) + "/config");
   uint64_t seed = 1;
   double sim_s = 0.0;
   int successes = 0;
   for (auto _ : state) {
-    scenario::Episode episode(loaded, seed++);
+    scenario::Episode episode(loaded, seed++, config);
     std::unique_ptr<tools::EpisodeBag> bag;
     if (with_bag) {
       bag = std::make_unique<tools::EpisodeBag>("/tmp/bench_scenario.bag", loaded.name);
@@ -47,9 +49,15 @@ void BM_GroupDiscussionEpisode(benchmark::State& state) {
 void BM_GroupDiscussionEpisodeWithBag(benchmark::State& state) {
   run_scenario(state, "group_discussion", true);
 }
-void BM_WaitingRoomEpisode(benchmark::State& state) { run_scenario(state, "waiting_room", false); }
-void BM_CorridorEpisode(benchmark::State& state) { run_scenario(state, "corridor", false); }
-void BM_JoinGroupEpisode(benchmark::State& state) { run_scenario(state, "join_group", false); }
+void BM_WaitingRoomEpisode(benchmark::State& state) {
+  run_scenario(state, "waiting_room", false);
+}
+void BM_CorridorEpisode(benchmark::State& state) {
+  run_scenario(state, "corridor", false);
+}
+void BM_JoinGroupEpisode(benchmark::State& state) {
+  run_scenario(state, "join_group", false);
+}
 
 BENCHMARK(BM_GroupDiscussionEpisode)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 BENCHMARK(BM_GroupDiscussionEpisodeWithBag)->Unit(benchmark::kMillisecond)->MinTime(5.0);

@@ -9,13 +9,14 @@ add_library(ari_scenario
   src/scenario/episode_metrics.cpp
   src/scenario/episode_report.cpp
   src/scenario/progress_bar.cpp
+  src/scenario/observations.cpp
   src/scenario/random_group.cpp
   src/scenario/scenario.cpp
   src/scenario/scenario_run_config.cpp
   src/scenario/script.cpp
   src/scenario/script_runner.cpp
   src/scenario/transcript.cpp)
-target_link_libraries(ari_scenario PUBLIC ari_world ari_dialogue)
+target_link_libraries(ari_scenario PUBLIC ari_world ari_perception ari_dialogue)
 
 add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
 target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
@@ -24,11 +25,12 @@ target_link_libraries(scenario_node ari_scenario_conversions)
 
 # run_episodes: the batch tool (cores in one process, rosbags written without a master).
 add_library(ari_episode_bag src/tools/episode_bag.cpp)
-target_link_libraries(ari_episode_bag PUBLIC ari_scenario_conversions)
+target_link_libraries(ari_episode_bag PUBLIC ari_scenario_conversions ari_perception_conversions)
 add_executable(run_episodes src/tools/run_episodes.cpp)
 target_link_libraries(run_episodes ari_episode_bag)
 target_compile_definitions(run_episodes PRIVATE
-  ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios")
+  ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios"
+  ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
@@ -47,12 +49,6 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ari_scenario)
   target_compile_definitions(test_scenario PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(test_scenario PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
-
-  ari_add_gtest(test_world_state_round_trip
-    SOURCES test/nodes/test_world_state_round_trip.cpp
-    LIBRARIES ari_world_conversions)
-  target_compile_definitions(test_world_state_round_trip PRIVATE
-    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
 endif()

@@ -322,12 +322,7 @@ class ScenarioNode {
   void on_group(const Group& msg) {
     PerceivedGroupEntry& entry = groups_[msg.group_id];
     entry.stamp_s = msg.header.stamp.toSec();
-    entry.group = {msg.group_id, {}};
-    for (const std::string& person : msg.members) {
-      if (const world::ObjectId human = scenario::human_of_person_id(person)) {
-        entry.group.members.push_back(scenario::AgentRef::human(human));
-      }
-    }
+    entry.group = scenario::perceived_group(msg.group_id, msg.members);
   }
 
   // A world started paused stands at sim time 0, which ROS takes for "no time yet"; one step

@@ -63,12 +63,33 @@ class Episode::InProcessCommands : public Commands {
   std::vector<SpokenByAri>& ari_speech_;
 };
 
+namespace {
+
+perception::PerceptionConfig seeded(perception::PerceptionConfig config, uint64_t seed) {
+  config.seed = static_cast<unsigned>(seed);
+  return config;
+}
+
+}  // namespace
+
+EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
+  EpisodeConfig config;
+  config.perception = perception::PerceptionConfig::load_file(config_dir + "/perception.yaml");
+  return config;
+}
+
 Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& config)
-    : scenario_(scenario), seed_(seed), runner_(scenario, seed) {
+    : scenario_(scenario),
+      seed_(seed),
+      config_(config),
+      perception_(seeded(config.perception, seed)),
+      runner_(scenario, seed) {
   world::Scene scene = scenario.scene;
   scene.seed = seed;
   simulation_ = world::build_simulation(scene, config.simulation);
   map_ = world::rasterize_static_map(scene.world, config.simulation.map_resolution_m);
+  // hri_perception_node sees through /map: walls and furniture block sight and sound.
+  perception_.set_sight_map(map_);
   commands_ = std::make_unique<InProcessCommands>(*simulation_, ari_speech_);
   observations_.world = world::WorldSnapshot::of(*simulation_);
 }
@@ -82,8 +103,25 @@ void Episode::step() {
   ari_speech_.clear();
   simulation_->step();
   observations_.world = world::WorldSnapshot::of(*simulation_);
+  perceive();
   runner_.update(observations_, *commands_);
   metrics_.observe(observations_);
+}
+
+// As hri_perception_node: every world state unless closer than its maximum rate to the last one.
+void Episode::perceive() {
+  perceived_ = nullptr;
+  const double time_s = observations_.world.time_s;
+  const double period_s = 1.0 / config_.perception_max_rate_hz;
+  if (last_perceived_s_ && time_s - *last_perceived_s_ < 0.999 * period_s) {
+    return;
+  }
+  last_perceived_s_ = time_s;
+  perceived_ = &perception_.update(observations_.world);
+  observations_.perceived_groups.clear();
+  for (const perception::PerceivedGroup& group : perceived_->groups) {
+    observations_.perceived_groups.push_back(perceived_group(group.group_id, group.members));
+  }
 }
 
 }  // namespace ari_social_sim::scenario

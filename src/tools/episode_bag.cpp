@@ -3,6 +3,7 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "../nodes/conversions/ari_base.hpp"
+#include "../nodes/conversions/hri_messages.hpp"
 #include "../nodes/conversions/scenario_status.hpp"
 #include "../nodes/conversions/world_state.hpp"
 #include "ari_social_sim/core/error.hpp"
@@ -39,6 +40,9 @@ void EpisodeBag::record_step(const scenario::Episode& episode) {
     write("/map", now_s, nodes::to_msg(episode.map(), nodes::kMapFrame, 0.0));
   }
   record_world(episode);
+  if (const perception::PerceptionFrame* frame = episode.perception_frame()) {
+    record_perception(*frame, episode.perception_config());
+  }
   const auto& visits = episode.runner().visits();
   if (visits.size() != visits_recorded_ || episode.finished()) {
     write("/scenario/status", now_s, nodes::to_msg(scenario_name_, episode.runner(), now_s));
@@ -57,6 +61,33 @@ void EpisodeBag::record_world(const scenario::Episode& episode) {
     write("/tf", now_s, tf);
     write("/mobile_base_controller/odom", now_s, nodes::to_odometry(*snapshot.ari, now_s));
   }
+}
+
+// What hri_perception_node publishes once per frame (its per-id subtopics are not recorded).
+void EpisodeBag::record_perception(const perception::PerceptionFrame& frame,
+                                   const perception::PerceptionConfig& config) {
+  const double now_s = frame.time_s;
+  const nodes::HriFrameMessages messages = nodes::hri_frame_messages(
+      frame, config.human_model, ros::Time(now_s), nodes::kBaseFrame, nodes::kMapFrame);
+  for (const IdsMatch& match : messages.matches) {
+    write("/humans/candidate_matches", now_s, match);
+  }
+  for (const Group& group : messages.groups) {
+    write("/humans/interactions/groups", now_s, group);
+  }
+  for (const Gaze& gaze : messages.gazes) {
+    write("/humans/interactions/gazing", now_s, gaze);
+  }
+  if (!messages.transforms.empty()) {
+    tf2_msgs::TFMessage tf;
+    tf.transforms = messages.transforms;
+    write("/tf", now_s, tf);
+  }
+  write("/humans/faces/tracked", now_s, messages.faces_tracked);
+  write("/humans/bodies/tracked", now_s, messages.bodies_tracked);
+  write("/humans/voices/tracked", now_s, messages.voices_tracked);
+  write("/humans/persons/tracked", now_s, messages.persons_tracked);
+  write("/humans/persons/known", now_s, messages.persons_known);
 }
 
 }  // namespace ari_social_sim::tools

@@ -107,11 +107,13 @@ std::string scenario_path(const std::string& scenario) {
 int main(int argc, char** argv) {
   Options options;
   scenario::Scenario loaded;
+  scenario::EpisodeConfig config;
   std::ofstream csv;
   std::string csv_path;
   try {
     options = parse_options(argc, argv);
     loaded = scenario::load_scenario_file(scenario_path(options.scenario));
+    config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
     if (!options.seed_given) {
       options.plan.first_seed = loaded.scene.seed;
     }
@@ -150,7 +152,7 @@ int main(int argc, char** argv) {
     const uint64_t seed = options.plan.seed_of(index);
     const auto episode_start = std::chrono::steady_clock::now();
     try {
-      scenario::Episode episode(loaded, seed);
+      scenario::Episode episode(loaded, seed, config);
       std::unique_ptr<tools::EpisodeBag> bag;
       if (options.bags) {
         bag = std::make_unique<tools::EpisodeBag>(

@@ -37,7 +37,7 @@ scenario::Scenario random_group_scenario() {
 std::string run_to_bag(const scenario::Scenario& scenario, uint64_t seed, const std::string& name) {
   const std::string path = ::testing::TempDir() + name + ".bag";
   {
-    scenario::Episode episode(scenario, seed);
+    scenario::Episode episode(scenario, seed, scenario::EpisodeConfig::load(kSource + "/config"));
     EpisodeBag bag(path, scenario.name);
     while (!episode.finished()) {
       episode.step();
@@ -73,11 +73,18 @@ TEST(EpisodeBag, TopicsTypesAndCounts) {
     last_s = std::max(last_s, m.getTime().toSec());
   }
   const std::map<std::string, std::string> expected = {
+      {"/humans/bodies/tracked", "ari_social_sim/IdsList"},
+      {"/humans/faces/tracked", "ari_social_sim/IdsList"},
+      {"/humans/persons/known", "ari_social_sim/IdsList"},
+      {"/humans/persons/tracked", "ari_social_sim/IdsList"},
+      {"/humans/voices/tracked", "ari_social_sim/IdsList"},
       {"/map", "nav_msgs/OccupancyGrid"},
       {"/scenario/status", "ari_social_sim/ScenarioStatus"},
       {"/sim/world_state", "ari_social_sim/WorldState"},
       {"/tf_static", "tf2_msgs/TFMessage"}};
-  EXPECT_EQ(types, expected);  // no ARI in this scene: no odometry, no /tf
+  // No ARI in this scene: no odometry, no /tf, and perception reports nobody (empty lists).
+  EXPECT_EQ(types, expected);
+  EXPECT_EQ(counts["/humans/persons/tracked"], 121);  // perception at 20 Hz, below its 30 Hz cap
   // The script stops 6 s after its first step (0.05 s): 121 steps of 0.05 s, one state each.
   EXPECT_EQ(counts["/sim/world_state"], 121);
   EXPECT_EQ(counts["/scenario/status"], 2);  // entering `chat`, finishing

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/perception/perception_config.hpp"
+#include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
@@ -17,6 +19,13 @@ namespace ari_social_sim::scenario {
 /// What the batch tool runs every episode with; the defaults are those of the live nodes.
 struct EpisodeConfig {
   world::SimulationConfig simulation;  // step and map resolution (world_node's ~step, ...)
+  /// hri_perception_node's config/perception.yaml; its seed is replaced by the episode's.
+  perception::PerceptionConfig perception;
+  double perception_max_rate_hz{30.0};  // hri_perception_node's ~max_rate
+
+  /// The live nodes' defaults, read from the package's config files under `config_dir`.
+  /// Throws core::ConfigError naming the file and field.
+  static EpisodeConfig load(const std::string& config_dir);
 };
 
 /// Something ARI said through its text-to-speech, as the batch records it (a /tts goal live).
@@ -51,14 +60,23 @@ class Episode {
   uint64_t seed() const { return seed_; }
   /// /tts goals sent during the last step.
   const std::vector<SpokenByAri>& ari_speech() const { return ari_speech_; }
+  /// What perception reported in the last step; null when it skipped the step (its ~max_rate).
+  const perception::PerceptionFrame* perception_frame() const { return perceived_; }
+  const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
 
  private:
   class InProcessCommands;
 
+  void perceive();
+
   const Scenario& scenario_;
   uint64_t seed_;
+  EpisodeConfig config_;
   std::unique_ptr<world::Simulation> simulation_;
   world::OccupancyGrid map_;
+  perception::PerceptionPipeline perception_;
+  std::optional<double> last_perceived_s_;
+  const perception::PerceptionFrame* perceived_{nullptr};
   std::unique_ptr<InProcessCommands> commands_;
   ScriptRunner runner_;
   MetricsRecorder metrics_;

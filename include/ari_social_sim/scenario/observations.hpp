@@ -26,6 +26,10 @@ struct PerceivedGroup {
   std::vector<AgentRef> members;
 };
 
+/// A perceived group from its ROS4HRI person ids (`humanN`; other ids are left out).
+PerceivedGroup perceived_group(const std::string& group_id,
+                               const std::vector<std::string>& person_ids);
+
 /// How the dialogue with the simulated humans ended (dialogue_node: /sim/dialogue/outcome).
 struct DialogueEnd {
   bool complete{false};

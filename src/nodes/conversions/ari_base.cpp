@@ -1,18 +1,8 @@
 #include "ari_base.hpp"
 
-#include <cmath>
+#include "marker_builder.hpp"
 
 namespace ari_social_sim::nodes {
-namespace {
-
-geometry_msgs::Quaternion yaw_quaternion(double theta) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * theta);
-  q.w = std::cos(0.5 * theta);
-  return q;
-}
-
-}  // namespace
 
 geometry_msgs::TransformStamped map_to_odom(double stamp_s) {
   geometry_msgs::TransformStamped transform;
