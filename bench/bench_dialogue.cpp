@@ -1,9 +1,11 @@
 // Benchmarks of the dialogue simulation in standalone mode (no ROS): whole dialogues of the rule
-// policy, with and without writing JSON lines, and the error layer alone.
+// policy, with and without writing JSON lines, the error layer alone, and the understanding of
+// ARI's words that modes 1 and 3 run on every /tts goal.
 #include <benchmark/benchmark.h>
 
 #include "ari_social_sim/dialogue/dialogue_runner.hpp"
 #include "ari_social_sim/dialogue/json_lines.hpp"
+#include "ari_social_sim/dialogue/robot_nlu.hpp"
 
 namespace {
 
@@ -75,6 +77,19 @@ void BM_ErrorModelApply(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ErrorModelApply);
+
+// One /tts text of two sentences understood against every exemplar (templates and MPGT's ARI).
+void BM_RobotNluUnderstand(benchmark::State& state) {
+  const DialogueSetup& setup = shared_setup(NlgMode::kRetrieval);
+  const RobotNlu nlu(*setup.nlg, setup.domain, &setup.corpus);
+  const std::string text = "Hello. The toilets are down the corridor, second door on the left.";
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(nlu.understand(text));
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["exemplars"] = static_cast<double>(nlu.exemplar_count());
+}
+BENCHMARK(BM_RobotNluUnderstand);
 
 }  // namespace
 

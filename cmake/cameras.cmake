@@ -12,11 +12,12 @@ add_library(ari_rendering
   src/physics/depth_image.cpp
   src/physics/egl_context.cpp
   src/physics/fisheye_renderer.cpp
+  src/physics/physics_primitives.cpp
   src/physics/render_mesh.cpp
   src/physics/renderer.cpp
   src/physics/world_scene.cpp)
 target_include_directories(ari_rendering PUBLIC ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(ari_rendering PUBLIC ari_world ${OpenCV_LIBS} PRIVATE OpenGL::OpenGL OpenGL::EGL)
+target_link_libraries(ari_rendering PUBLIC ari_physics ${OpenCV_LIBS} PRIVATE OpenGL::OpenGL OpenGL::EGL)
 
 # Mapping only needs depth images and poses, so it links OctoMap and not the renderer.
 add_library(ari_mapping src/physics/octomap_mapper.cpp)
@@ -32,9 +33,11 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_depth_image.cpp
       test/physics/test_fisheye_renderer.cpp
       test/physics/test_octomap_mapper.cpp
+      test/physics/test_physics_primitives.cpp
       test/physics/test_renderer.cpp
     LIBRARIES ari_rendering ari_mapping)
-  target_compile_definitions(test_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_compile_definitions(test_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    ARI_URDF="${PROJECT_SOURCE_DIR}/urdf/ari.urdf")
 endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)

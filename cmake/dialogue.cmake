@@ -21,7 +21,10 @@ add_library(ari_dialogue
   src/dialogue/dialogue_env.cpp
   src/dialogue/rule_policy.cpp
   src/dialogue/dialogue_runner.cpp
-  src/dialogue/json_lines.cpp)
+  src/dialogue/json_lines.cpp
+  src/dialogue/robot_nlu.cpp
+  src/dialogue/live_dialogue.cpp
+  src/dialogue/dialogue_run_config.cpp)
 target_include_directories(ari_dialogue PUBLIC include)
 target_link_libraries(ari_dialogue PUBLIC ari_core)
 target_compile_definitions(ari_dialogue PRIVATE
@@ -54,10 +57,33 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_rule_policy.cpp
       test/dialogue/test_dialogue_env.cpp
       test/dialogue/test_dialogue_runner.cpp
+      test/dialogue/test_robot_nlu.cpp
+      test/dialogue/test_live_dialogue.cpp
+      test/dialogue/test_dialogue_run_config.cpp
     LIBRARIES ari_dialogue)
   target_compile_definitions(test_dialogue PRIVATE
     ARI_MPGT_DIR="${ARI_MPGT_DIR}"
     ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
+endif()
+
+# dialogue_node: thin ROS adapter over the dialogue core, three modes (docs/dialogue.md).
+add_executable(dialogue_node
+  src/nodes/dialogue_node.cpp
+  src/nodes/dialogue/asr_stage.cpp
+  src/nodes/dialogue/live_dialogue_node.cpp
+  src/nodes/dialogue/rl_env_services.cpp
+  src/nodes/dialogue/world_stage.cpp
+  src/nodes/conversions/dialogue.cpp
+  src/nodes/ros_params.cpp)
+target_include_directories(dialogue_node PRIVATE
+  src/nodes ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
+target_link_libraries(dialogue_node ari_dialogue ${catkin_LIBRARIES})
+add_dependencies(dialogue_node ${PROJECT_NAME}_generate_messages_cpp)
+
+if(CATKIN_ENABLE_TESTING)
+  add_rostest(test/integration/dialogue_world.test DEPENDENCIES dialogue_node world_node)
+  add_rostest(test/integration/dialogue_user_bot.test DEPENDENCIES dialogue_node)
+  add_rostest(test/integration/dialogue_rl_env.test DEPENDENCIES dialogue_node)
 endif()
 
 if(benchmark_FOUND)

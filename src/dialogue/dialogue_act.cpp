@@ -105,6 +105,28 @@ DialogueAct read_one(const std::string& text, const std::string& source, bool re
 
 }  // namespace
 
+DialogueAct parse_pattern(const std::string& text, const std::string& source) {
+  // The reader accepts names only; `*` goes through a stand-in that no act uses.
+  const std::string stand_in = "x_wildcard_x";
+  const auto swap = [](std::string s, const std::string& from, const std::string& to) {
+    for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) {
+      s.replace(at, from.size(), to);
+    }
+    return s;
+  };
+  DialogueAct act;
+  try {
+    act = parse_act(swap(text, "*", stand_in), source);
+  } catch (const core::ConfigError& e) {
+    throw core::ConfigError(swap(e.what(), stand_in, "*"));
+  }
+  for (std::string& slot : act.slots) {
+    slot = slot == stand_in ? "*" : slot;
+  }
+  act.value = act.value == stand_in ? "*" : act.value;
+  return act;
+}
+
 std::string DialogueAct::to_string() const {
   std::vector<std::string> names = path();
   std::string text = intent + "(";

@@ -27,7 +27,7 @@ StepResult DialogueEnv::step(const RobotAction& action) {
   const size_t first_new = transcript_.size();
   bool terminated = false;
   bool robot_said_bye = false;
-  if (!action.acts.empty()) {
+  if (!action.acts.empty() || !action.text.empty()) {
     Utterance u;
     u.turn = static_cast<int>(transcript_.size());
     u.speaker = kRobot;
@@ -45,7 +45,7 @@ StepResult DialogueEnv::step(const RobotAction& action) {
       }
     }
     u.acts = action.acts;
-    u.text = setup_.nlg->realise(true, u.acts, rng_);
+    u.text = action.text.empty() ? setup_.nlg->realise(true, u.acts, rng_) : action.text;
     u.start_s =
         transcript_.empty() ? 0.0 : setup_.timing->next_start(transcript_.back().end_s, rng_);
     u.end_s = u.start_s + setup_.timing->duration(u.text);
@@ -87,6 +87,10 @@ Observation DialogueEnv::observe(size_t from) const {
     }
   }
   return observation;
+}
+
+StepInfo DialogueEnv::current_info() const {
+  return info(judge(users_.agenda(), false));
 }
 
 StepInfo DialogueEnv::info(const DialogueOutcome& outcome) const {

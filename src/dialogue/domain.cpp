@@ -9,25 +9,19 @@ namespace ari_social_sim::dialogue {
 namespace {
 
 constexpr const char* kWildcard = "*";
-// The act parser accepts names only; `*` is read through this stand-in.
-constexpr const char* kWildcardName = "__object__";
 
 DialogueAct read_pattern(const core::YamlMap& map, const std::string& key, const std::string& text,
                          const std::string& field) {
-  std::string spelled = text;
-  const size_t star = spelled.find(kWildcard);
-  if (star == std::string::npos) {
+  if (text.find(kWildcard) == std::string::npos) {
     map.fail(key, "an act pattern with * for the object, such as request(location(*))",
              "'" + text + "'");
   }
-  spelled.replace(star, 1, kWildcardName);
-  DialogueAct act = parse_act(spelled, field);
+  DialogueAct act = parse_pattern(text, field);
   std::vector<std::string> path = act.path();
-  if (path.empty() || path.back() != kWildcardName ||
-      std::count(path.begin(), path.end(), kWildcardName) != 1) {
+  if (path.empty() || path.back() != kWildcard ||
+      std::count(path.begin(), path.end(), kWildcard) != 1) {
     map.fail(key, "exactly one * as the innermost name of the pattern", "'" + text + "'");
   }
-  path.back() = kWildcard;
   act.slots = std::move(path);
   act.value.clear();
   return act;

@@ -64,9 +64,7 @@ NlgTemplates NlgTemplates::parse(const core::YamlMap& map) {
   for (const core::YamlMap& entry : map.list("templates")) {
     const std::string key = entry.required<std::string>("act");
     if (key != kNone) {
-      // Validate the pattern as an act, `*` read as a name.
-      std::string spelled = replace_all(key, "*", "x");
-      parse_act(spelled, entry.field_name("act"));
+      parse_pattern(key, entry.field_name("act"));
     }
     const std::string speaker = entry.required<std::string>("speaker");
     if (speaker != "human" && speaker != "robot" && speaker != "any") {
@@ -116,20 +114,40 @@ std::string Nlg::surface(const std::vector<std::string>& names) const {
   return text;
 }
 
-std::string Nlg::from_template(bool robot, const DialogueAct* act, core::Rng& rng) const {
+Nlg::TemplateMatch Nlg::find_template(bool robot, const DialogueAct& act) const {
   const auto& table = robot ? templates_.robot : templates_.human;
+  for (auto& [key, names] : keys_of(act)) {
+    const auto found = table.find(key);
+    if (found != table.end()) {
+      return {&found->second, std::move(names)};
+    }
+  }
+  return {};
+}
+
+std::string Nlg::from_template(bool robot, const DialogueAct* act, core::Rng& rng) const {
   if (act == nullptr) {
+    const auto& table = robot ? templates_.robot : templates_.human;
     const auto found = table.find(kNone);
     return found != table.end() ? pick(found->second, rng) : "Hmm.";
   }
-  for (const auto& [key, names] : keys_of(*act)) {
-    const auto found = table.find(key);
-    if (found != table.end()) {
-      return replace_all(pick(found->second, rng), "{object}", surface(names));
-    }
+  const TemplateMatch match = find_template(robot, *act);
+  if (match.texts != nullptr) {
+    return replace_all(pick(*match.texts, rng), "{object}", surface(match.names));
   }
   // No template: say the intent and its path in words rather than nothing.
   return replace_all(act->intent, "-", " ") + " " + surface(act->path()) + ".";
+}
+
+std::vector<std::string> Nlg::template_texts(bool robot, const DialogueAct& act) const {
+  const TemplateMatch match = find_template(robot, act);
+  std::vector<std::string> texts;
+  if (match.texts != nullptr) {
+    for (const std::string& text : *match.texts) {
+      texts.push_back(replace_all(text, "{object}", surface(match.names)));
+    }
+  }
+  return texts;
 }
 
 std::string Nlg::realise(bool robot, const std::vector<DialogueAct>& acts, core::Rng& rng) const {

@@ -7,6 +7,7 @@
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/JointState.h>
 #include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
@@ -38,6 +39,7 @@
 #include "conversions/ari_base.hpp"
 #include "conversions/world_markers.hpp"
 #include "conversions/world_state.hpp"
+#include "frames.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -76,10 +78,17 @@ class WorldNode {
     state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10);
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
-    odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
-    cmd_vel_sub_ =
-        nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
-    head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
+    if (config_.ari_source == world::AriSource::kInternal) {
+      odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
+      cmd_vel_sub_ =
+          nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
+      head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
+    } else {
+      // 3D mode: ari_physics_node drives ARI and publishes its odometry and tf; the 2D body
+      // follows its ground truth and head pan.
+      ground_truth_sub_ = nh_.subscribe("/ground_truth_odom", 1, &WorldNode::on_ground_truth, this);
+      joint_state_sub_ = nh_.subscribe("/joint_states", 1, &WorldNode::on_joint_states, this);
+    }
 
     services_.push_back(nh_.advertiseService("/sim/spawn_human", &WorldNode::spawn_human, this));
     services_.push_back(nh_.advertiseService("/sim/remove_human", &WorldNode::remove_human, this));
@@ -153,7 +162,7 @@ class WorldNode {
     clock.clock = stamp;
     clock_pub_.publish(clock);
     state_pub_.publish(to_msg(snapshot, kMapFrame));
-    if (snapshot.ari) {
+    if (snapshot.ari && config_.ari_source == world::AriSource::kInternal) {
       publish_base(*snapshot.ari, stamp);
     }
     const ros::WallTime now = ros::WallTime::now();
@@ -214,6 +223,26 @@ class WorldNode {
       return;
     }
     simulation_->command_ari_head_pan(last.positions[index]);
+  }
+
+  void on_ground_truth(const nav_msgs::Odometry& truth) {
+    if (simulation_->ari() == nullptr) {
+      return;
+    }
+    const geometry_msgs::Quaternion& q = truth.pose.pose.orientation;
+    const double yaw =
+        std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+    simulation_->follow_ari({{truth.pose.pose.position.x, truth.pose.pose.position.y}, yaw},
+                            truth.twist.twist.linear.x, truth.twist.twist.angular.z);
+  }
+
+  void on_joint_states(const sensor_msgs::JointState& state) {
+    const auto joint = std::find(state.name.begin(), state.name.end(), kHeadPanJoint);
+    const size_t index = static_cast<size_t>(joint - state.name.begin());
+    if (simulation_->ari() != nullptr && joint != state.name.end() &&
+        index < state.position.size()) {
+      simulation_->command_ari_head_pan(state.position[index]);
+    }
   }
 
   world::Human& human(uint32_t id) {
@@ -380,7 +409,7 @@ class WorldNode {
 
   ros::NodeHandle nh_;
   ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_;
-  ros::Subscriber cmd_vel_sub_, head_sub_;
+  ros::Subscriber cmd_vel_sub_, head_sub_, ground_truth_sub_, joint_state_sub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
@@ -413,11 +442,13 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s",
+  ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s, ARI %s",
            scene.path.c_str(), scene.world.name.c_str(), static_cast<unsigned long>(scene.seed),
            config.step_s,
            config.real_time_factor > 0 ? std::to_string(config.real_time_factor).c_str()
-                                       : "as fast as possible");
+                                       : "as fast as possible",
+           config.ari_source == world::AriSource::kInternal ? "driven here (2D mode)"
+                                                            : "from ari_physics_node (3D mode)");
   nodes::WorldNode node(config, std::move(scene));
   node.run();
   return 0;

@@ -66,7 +66,11 @@ std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription&
 
   for (const world::StaticObject& object : world.objects) {
     const bool is_wall = object.type == world::ShapeType::kWall;
-    const double height = is_wall ? style.wall_height_m : style.furniture_height_m;
+    // The world file's height (the physics collides with the same solid); the style's for
+    // objects built in code without one.
+    const double height = object.height_m > 0.0
+                              ? object.height_m
+                              : (is_wall ? style.wall_height_m : style.furniture_height_m);
     const Eigen::Vector3f colour = is_wall ? kWallColour : kFurnitureColour;
     const Eigen::Isometry3d X = planar(object.pose.position, 0.5 * height, object.pose.theta);
     switch (object.type) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::world {
@@ -31,7 +32,23 @@ Ari::Ari(const AriSpec& spec, double map_resolution_m)
   map_sensor_ = &add_component(std::make_unique<MapSensor>(map_resolution_m));
 }
 
+void Ari::follow(const core::Pose2& pose, double linear_mps, double angular_rps) {
+  followed_ = pose;
+  followed_linear_mps_ = linear_mps;
+  followed_angular_rps_ = angular_rps;
+}
+
 void Ari::apply_motion(const StepContext& context) {
+  if (followed_) {
+    // The velocity that lands the body on the followed pose at the end of this step; contacts
+    // with people may still stop it short, as they would stop the 3D robot.
+    const Eigen::Vector2d velocity = (followed_->position - pose_.position) / context.dt_s;
+    body()->SetLinearVelocity(
+        b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
+    body()->SetAngularVelocity(
+        static_cast<float>(core::angle_difference(followed_->theta, pose_.theta) / context.dt_s));
+    return;
+  }
   // The body's centre of mass is placed at base_footprint, so Box2D rotates it about the wheel
   // axle as a differential drive turns.
   const double v = drive_->linear_mps();

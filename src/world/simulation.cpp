@@ -367,6 +367,13 @@ void Simulation::command_ari_twist(double linear_mps, double angular_rps) {
   diagnostics_.clamped_commands += ari_->drive().command(linear_mps, angular_rps, time_s());
 }
 
+void Simulation::follow_ari(const core::Pose2& pose, double linear_mps, double angular_rps) {
+  if (!ari_) {
+    throw core::RequestError("the world has no ARI to follow");
+  }
+  ari_->follow(pose, linear_mps, angular_rps);
+}
+
 void Simulation::command_ari_head_pan(double pan_rad) {
   if (!ari_) {
     throw core::RequestError("the world has no ARI");

@@ -81,6 +81,8 @@ StaticObject parse_object(const core::YamlMap& entry) {
   } else {
     entry.fail("type", "one of wall, box, circle, polygon", "'" + type + "'");
   }
+  object.height_m = entry.optional<double>(
+      "height", type == "wall" ? kDefaultWallHeightM : kDefaultFurnitureHeightM, core::positive());
   entry.finish();
   return object;
 }

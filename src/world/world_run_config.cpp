@@ -15,6 +15,14 @@ WorldRunConfig WorldRunConfig::from_yaml(const core::YamlMap& map) {
   config.map_resolution_m =
       map.optional<double>("map_resolution", config.map_resolution_m, core::between(0.01, 1.0));
   config.start_paused = map.optional<bool>("start_paused", config.start_paused);
+  const std::string ari_source = map.optional<std::string>("ari_source", "internal");
+  if (ari_source == "internal") {
+    config.ari_source = AriSource::kInternal;
+  } else if (ari_source == "physics") {
+    config.ari_source = AriSource::kPhysics;
+  } else {
+    map.fail("ari_source", "internal or physics", "'" + ari_source + "'");
+  }
   map.finish();
   return config;
 }

@@ -27,8 +27,8 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     AriSnapshot a;
     a.id = ari->id();
     a.pose = ari->pose();
-    a.linear_mps = ari->drive().linear_mps();
-    a.angular_rps = ari->drive().angular_rps();
+    a.linear_mps = ari->linear_mps();
+    a.angular_rps = ari->angular_rps();
     a.head_pan_rad = ari->head().pan_rad();
     a.head_pan_velocity_rps = ari->head().pan_velocity_rps();
     a.speech = snapshot_of(ari->speech());

@@ -36,6 +36,23 @@ TEST_F(DialogueEnvTest, SilentRobotIsTruncatedAtTheCap) {
   EXPECT_TRUE(env.episode_over());
 }
 
+TEST_F(DialogueEnvTest, CurrentInfoAfterResetHasGoalsAndPatience) {
+  DialogueEnv env(*setup_);
+  env.reset(3);
+  const StepInfo info = env.current_info();
+  EXPECT_EQ(info.robot_turns, 0);
+  EXPECT_EQ(info.utterances, static_cast<int>(env.transcript().size()));
+  EXPECT_EQ(info.goals.size(), env.users().agenda().goals().size());
+  EXPECT_GE(info.goals.size(), 1u);
+  // One patience per human, each in [min_patience, max_patience] = [3, 5].
+  ASSERT_EQ(info.patience.size(), 2u);
+  for (int p : info.patience) {
+    EXPECT_GE(p, 3);
+    EXPECT_LE(p, 5);
+  }
+  EXPECT_FALSE(info.complete);
+}
+
 TEST_F(DialogueEnvTest, RulePolicyEpisodesEndAndPayTheBonus) {
   DialogueEnv env(*setup_);
   RulePolicy policy(setup_->domain);

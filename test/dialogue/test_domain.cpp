@@ -62,7 +62,8 @@ TEST(Domain, AsksAnswersAndRecognisesGoals) {
 TEST(Domain, UnknownIntentNamesFileAndEntry) {
   const std::string text = replace_once(kSmallDomain, "request(food(*))", "requets(food(*))");
   expect_config_error([&] { Domain::parse(core::YamlMap::parse(text, "bad_domain.yaml")); },
-                      {"bad_domain.yaml", "predicates[1].ask[0]", "unknown intent 'requets'"});
+                      {"bad_domain.yaml", "predicates[1].ask[0]", "'requets(food(*))'",
+                       "unknown intent 'requets'"});
 }
 
 TEST(Domain, BadWeightPatternAndUnknownKeyAreErrors) {

@@ -33,6 +33,17 @@ TEST(Nlg, TemplatesFillTheObject) {
             "Thanks. Where is the cafeteria?");
 }
 
+TEST(Nlg, TemplateTextsListEveryAlternative) {
+  const Nlg nlg(NlgTemplates::load(config_path("nlg_templates.yaml")), nullptr, NlgMode::kTemplate);
+  // nlg_templates.yaml: three human texts for request(location(*)), toilet -> toilets.
+  const std::vector<std::string> texts =
+      nlg.template_texts(false, parse_act("request(location(toilet))", "t"));
+  ASSERT_EQ(texts.size(), 3u);
+  EXPECT_EQ(texts[0], "Where is the toilets?");
+  EXPECT_EQ(nlg.template_texts(true, parse_act("offer-help()", "t")).size(), 2u);
+  EXPECT_TRUE(nlg.template_texts(true, parse_act("call-nurse()", "t")).empty());
+}
+
 TEST(Nlg, RetrievalReturnsRealUtterances) {
   const MpgtCorpus corpus = load_mpgt_corpus(ARI_MPGT_DIR);
   const Nlg nlg(NlgTemplates::load(config_path("nlg_templates.yaml")), &corpus,

@@ -7,7 +7,8 @@ world_node playing test/integration/perception_scene.yaml (everyone standing sti
     equal the ground truth;
   - an utterance in range arrives word by word, then final; one through a wall does not arrive.
 Also the contract around them: person ids human<N>, latched attributes, candidate matches, gaze,
-tf frames body_<id> / face_<id> / gaze_<id> / person_<id>."""
+tf frames body_<id> / face_<id> / gaze_<id> / person_<id>, per-id topics shut down when the id
+goes."""
 import time
 import unittest
 
@@ -152,6 +153,18 @@ class HriPerception(unittest.TestCase):
         self.assertTrue(all(0.34 <= g <= 0.46 for g in gaps), gaps)
         print("[ measured ] %d incremental results %.2f-%.2f s apart, then final '%s'"
               % (len(incrementals), min(gaps), max(gaps), finals[0]))
+        # The voice stays tracked 2 s after its last word, its topics 1 s more (~id_linger):
+        # then both are gone.
+        limit = time.monotonic() + 5.0
+        while voice_id in self.voices.last().ids and time.monotonic() < limit:
+            time.sleep(0.05)
+        self.assertNotIn(voice_id, self.voices.last().ids)
+        time.sleep(1.5)
+        topics = dict(rospy.get_published_topics())
+        self.assertNotIn("/humans/voices/%s/speech" % voice_id, topics)
+        self.assertNotIn("/humans/voices/%s/is_speaking" % voice_id, topics)
+        self.assertEqual(self.latched("/humans/persons/%s/voice_id" % person(SPEAKER),
+                                      String).data, "")
 
     def test_an_utterance_through_a_wall_does_not_arrive(self):
         voices_before = len(self.voices.all())

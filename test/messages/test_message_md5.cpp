@@ -14,6 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "actionlib_msgs/GoalID.h"
+#include "actionlib_msgs/GoalStatus.h"
+#include "actionlib_msgs/GoalStatusArray.h"
 #include "ari_social_sim/AudioFeatures.h"
 #include "ari_social_sim/BodyPosture.h"
 #include "ari_social_sim/EngagementLevel.h"
@@ -42,7 +45,11 @@
 #include "ari_social_sim/TtsAction.h"
 #include "ari_social_sim/TtsMark.h"
 #include "ari_social_sim/TtsText.h"
+#include "geometry_msgs/PointStamped.h"
+#include "geometry_msgs/Vector3.h"
 #include "std_msgs/Header.h"
+#include "trajectory_msgs/JointTrajectory.h"
+#include "trajectory_msgs/JointTrajectoryPoint.h"
 
 namespace {
 
@@ -181,6 +188,27 @@ const std::vector<WireType> kPlayMotionMsgs = {
      message_md5<a::PlayMotionFeedback>()},
 };
 
+// shared/specs/wire_types.md §2, "Dependencies Debian does package": the Debian types our copies
+// embed. If one of them drifted from the sums upstream was computed against, every copy that
+// nests it would stop connecting even with correct field lists.
+const std::vector<WireType> kDebianDependencies = {
+    {"std_msgs/Header", "2176decaecbce78abc3b96ef049fabed", message_md5<std_msgs::Header>()},
+    {"actionlib_msgs/GoalID", "302881f31927c1df708a2dbab0e80ee8",
+     message_md5<actionlib_msgs::GoalID>()},
+    {"actionlib_msgs/GoalStatus", "d388f9b87b3c471f784434d671988d4a",
+     message_md5<actionlib_msgs::GoalStatus>()},
+    {"actionlib_msgs/GoalStatusArray", "8b2b82f13216d0a8ea88bd3af735e619",
+     message_md5<actionlib_msgs::GoalStatusArray>()},
+    {"trajectory_msgs/JointTrajectory", "65b4f94a94d1ed67169da35a02f33d3f",
+     message_md5<trajectory_msgs::JointTrajectory>()},
+    {"trajectory_msgs/JointTrajectoryPoint", "f3cd1e1c4d320c79d6985c904ae5dcd3",
+     message_md5<trajectory_msgs::JointTrajectoryPoint>()},
+    {"geometry_msgs/PointStamped", "c63aecb41bfdfd6b7e1fac37c7cbe7bf",
+     message_md5<geometry_msgs::PointStamped>()},
+    {"geometry_msgs/Vector3", "4a842b65f413084dc2b10fb484ea7f17",
+     message_md5<geometry_msgs::Vector3>()},
+};
+
 class WireMd5 : public ::testing::TestWithParam<WireType> {};
 
 TEST_P(WireMd5, EqualsUpstream) {
@@ -201,13 +229,17 @@ INSTANTIATE_TEST_SUITE_P(ControlMsgs, WireMd5, ::testing::ValuesIn(kControlMsgs)
 INSTANTIATE_TEST_SUITE_P(PalInteractionMsgs, WireMd5, ::testing::ValuesIn(kPalInteractionMsgs),
                          type_name);
 INSTANTIATE_TEST_SUITE_P(PlayMotionMsgs, WireMd5, ::testing::ValuesIn(kPlayMotionMsgs), type_name);
+INSTANTIATE_TEST_SUITE_P(DebianDependencies, WireMd5, ::testing::ValuesIn(kDebianDependencies),
+                         type_name);
 
-// The tables above hold 17 + 19 + 11 + 7 rows; a row dropped by an edit must not pass silently.
+// The tables above hold 17 + 19 + 11 + 7 + 8 rows; a row dropped by an edit must not pass
+// silently.
 TEST(WireMd5Tables, CoverEverySpecRow) {
   EXPECT_EQ(kHriMsgs.size(), 17u);
   EXPECT_EQ(kControlMsgs.size(), 19u);
   EXPECT_EQ(kPalInteractionMsgs.size(), 11u);
   EXPECT_EQ(kPlayMotionMsgs.size(), 7u);
+  EXPECT_EQ(kDebianDependencies.size(), 8u);
 }
 
 // The method itself: the same traits reproduce the spec's known-good sum for a Debian type.

@@ -156,6 +156,23 @@ TEST(Simulation, AriCannotDriveThroughAWall) {
   EXPECT_NEAR(ari.pose().position.x(), 5.95 - 0.16 - 0.01, 0.02);
 }
 
+TEST(Simulation, AriFollowsThe3dBasesPose) {
+  // 3D mode: each step lands ARI's 2D body on the pose ari_physics_node reported, 0.02 m and
+  // 0.01 rad further each step, and reports the given twist.
+  Simulation simulation(test::square_room(6.0), SimulationConfig{});
+  AriSpec spec;
+  spec.pose = {{3.0, 3.0}, 0.0};
+  const Ari& ari = simulation.add_ari(spec);
+  for (int i = 1; i <= 20; ++i) {
+    simulation.follow_ari({{3.0 + 0.02 * i, 3.0}, 0.01 * i}, 0.4, 0.2);
+    simulation.step();
+  }
+  EXPECT_NEAR(ari.pose().position.x(), 3.4, 1e-4);
+  EXPECT_NEAR(ari.pose().theta, 0.2, 1e-4);
+  EXPECT_DOUBLE_EQ(ari.linear_mps(), 0.4);
+  EXPECT_TRUE(ari.is_following());
+}
+
 TEST(Simulation, SpawnRequestsAreCheckedAgainstWallsPeopleAndIds) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{});
   simulation.add_human(person(10, 3.0, 3.0));

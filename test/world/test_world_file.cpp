@@ -25,13 +25,14 @@ void expect_rejected(const std::string& text, const std::vector<std::string>& fr
 constexpr const char* kHeader = "name: test\norigin: [0, 0]\nsize: [5, 5]\nobjects:\n";
 
 TEST(WorldFile, ReadsEveryShapeType) {
-  const std::string path = write_file(
-      "good_world.yaml", std::string(kHeader) +
-                             "  - {type: wall, from: [0, 0], to: [4, 0], thickness: 0.2}\n"
-                             "  - {type: box, id: 7, name: couch, position: [2, 3], orientation: "
-                             "0.5, size: [2, 0.8]}\n"
-                             "  - {type: circle, position: [1, 1], radius: 0.4}\n"
-                             "  - {type: polygon, points: [[3, 3], [4, 3], [4, 4]]}\n");
+  const std::string path =
+      write_file("good_world.yaml",
+                 std::string(kHeader) +
+                     "  - {type: wall, from: [0, 0], to: [4, 0], thickness: 0.2}\n"
+                     "  - {type: box, id: 7, name: couch, position: [2, 3], orientation: "
+                     "0.5, size: [2, 0.8]}\n"
+                     "  - {type: circle, position: [1, 1], radius: 0.4}\n"
+                     "  - {type: polygon, points: [[3, 3], [4, 3], [4, 4]], height: 1.2}\n");
   const WorldDescription world = load_world_file(path);
   ASSERT_EQ(world.objects.size(), 4u);
   // Wall from (0,0) to (4,0): centre (2, 0), length 4, thickness 0.2.
@@ -45,6 +46,17 @@ TEST(WorldFile, ReadsEveryShapeType) {
   EXPECT_EQ(world.objects[0].id, 1000u);
   EXPECT_DOUBLE_EQ(world.objects[2].radius_m, 0.4);
   EXPECT_EQ(world.objects[3].points.size(), 3u);
+  // Heights: the walls' and furniture's defaults unless given.
+  EXPECT_DOUBLE_EQ(world.objects[0].height_m, kDefaultWallHeightM);
+  EXPECT_DOUBLE_EQ(world.objects[1].height_m, kDefaultFurnitureHeightM);
+  EXPECT_DOUBLE_EQ(world.objects[3].height_m, 1.2);
+}
+
+TEST(WorldFile, NonPositiveHeightNamesTheField) {
+  expect_rejected(std::string(kHeader) +
+                      "  - {type: circle, position: [1, 1], radius: 0.3, "
+                      "height: 0}\n",
+                  {"objects[0].height", "> 0"});
 }
 
 TEST(WorldFile, UnknownTypeNamesTheEntry) {

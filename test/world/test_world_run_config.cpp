@@ -31,6 +31,8 @@ TEST(WorldRunConfig, DefaultsAreValidAndFieldsAreRead) {
   EXPECT_DOUBLE_EQ(config.real_time_factor, 0.0);
   EXPECT_EQ(config.seed, 4);
   EXPECT_DOUBLE_EQ(config.duration_s, 40.0);
+  EXPECT_EQ(defaults.ari_source, AriSource::kInternal);
+  EXPECT_EQ(parse("{ari_source: physics}").ari_source, AriSource::kPhysics);
 }
 
 TEST(WorldRunConfig, EachBadParameterIsNamed) {
@@ -39,6 +41,7 @@ TEST(WorldRunConfig, EachBadParameterIsNamed) {
   expect_rejected("{marker_rate: 100}", {"marker_rate", "(0, 30]"});
   expect_rejected("{real_time_factor: -2}", {"real_time_factor", ">= 0"});
   expect_rejected("{stepp: 0.1}", {"unknown field", "stepp"});
+  expect_rejected("{ari_source: gazebo}", {"ari_source", "internal or physics", "gazebo"});
 }
 
 }  // namespace

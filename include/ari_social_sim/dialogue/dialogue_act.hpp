@@ -38,6 +38,10 @@ bool is_known_intent(const std::string& intent);
 /// text when malformed or when the intent is not an MPGT intent.
 DialogueAct parse_act(const std::string& text, const std::string& source);
 
+/// Parses an act pattern: an act in which `*` may stand for a name (`request(location(*))`); the
+/// names `*` replaces come back as "*". Errors quote the pattern as written. Throws like parse_act.
+DialogueAct parse_pattern(const std::string& text, const std::string& source);
+
 /// Parses acts separated by `;` or `,` at bracket depth 0 (both separators occur in MPGT).
 /// Lenient mode (`repair` true) is for the corpus: it drops surplus closing brackets and closes
 /// unclosed ones, counting each repair in `*repairs`; intents need not be known.

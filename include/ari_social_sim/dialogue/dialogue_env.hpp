@@ -12,11 +12,13 @@
 
 namespace ari_social_sim::dialogue {
 
-/// What the robot does in one step: acts to say (none = stay silent and let the humans go on) and
-/// to whom (empty = the human who last spoke to ARI).
+/// What the robot does in one step: acts to say (none = stay silent and let the humans go on), to
+/// whom (empty = the human who last spoke to ARI) and in which words (empty = the NLG's; a live
+/// robot's own text in modes 1 and 3).
 struct RobotAction {
   std::vector<DialogueAct> acts;
   std::vector<std::string> addressees;
+  std::string text;
 };
 
 /// What the robot perceives since its previous turn: human utterances after the error layer
@@ -58,6 +60,8 @@ class DialogueEnv {
   const std::vector<Utterance>& transcript() const { return transcript_; }
   const UserSimulation& users() const { return users_; }
   bool episode_over() const { return over_; }
+  /// The info of the episode as it stands (Gymnasium's reset info: goals, patience, no turn yet).
+  StepInfo current_info() const;
 
  private:
   Observation observe(size_t from) const;

@@ -40,11 +40,21 @@ class Nlg {
   /// Text for `acts` (empty acts: an unannotated utterance) said by ARI or by a human.
   std::string realise(bool robot, const std::vector<DialogueAct>& acts, core::Rng& rng) const;
 
+  /// Every template text for `act` said by ARI or a human, {object} filled in, from the most
+  /// specific matching key (the alternatives one realise() call picks from); empty when none.
+  std::vector<std::string> template_texts(bool robot, const DialogueAct& act) const;
+  const NlgTemplates& templates() const { return templates_; }
+
   NlgMode mode() const { return mode_; }
   /// Every word of the template texts and of the retrieval index, for ASR substitutions.
   std::vector<std::string> vocabulary() const;
 
  private:
+  struct TemplateMatch {
+    const std::vector<std::string>* texts{nullptr};  ///< null when no key matches
+    std::vector<std::string> names;                  ///< what {object} stands for
+  };
+  TemplateMatch find_template(bool robot, const DialogueAct& act) const;
   std::string from_template(bool robot, const DialogueAct* act, core::Rng& rng) const;
   std::string surface(const std::vector<std::string>& names) const;
 

@@ -42,10 +42,6 @@ class PerceptionPipeline {
 
   /// The configuration in effect (error models zeroed when errors_enabled is false).
   const PerceptionConfig& config() const { return config_; }
-  const PerceptionFrame& frame() const { return frame_; }
-  /// Body and face ids handed out after a human's first one (re-identifications).
-  uint64_t body_id_switches() { return bodies_.track_ids().switches(); }
-  uint64_t face_id_switches() { return faces_.track_ids().switches(); }
 
  private:
   void forget_everyone();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 
 #include "ari_social_sim/world/ari_limits.hpp"
 #include "ari_social_sim/world/differential_drive.hpp"
@@ -53,6 +54,14 @@ class Ari : public Object {
   const SpeechGenerator& speech() const { return *speech_; }
   const MapSensor& map_sensor() const { return *map_sensor_; }
 
+  /// 3D mode: ARI's base is simulated elsewhere (ari_physics_node). From now on each step moves
+  /// the 2D body onto this pose (map frame) and reports this twist, instead of driving it.
+  void follow(const core::Pose2& pose, double linear_mps, double angular_rps);
+  bool is_following() const { return followed_.has_value(); }
+  /// The base's twist: the drive's, or the followed one in 3D mode.
+  double linear_mps() const { return followed_ ? followed_linear_mps_ : drive_->linear_mps(); }
+  double angular_rps() const { return followed_ ? followed_angular_rps_ : drive_->angular_rps(); }
+
   void apply_motion(const StepContext& context) override;
 
  private:
@@ -61,6 +70,9 @@ class Ari : public Object {
   HeadPanController* head_;
   SpeechGenerator* speech_;
   MapSensor* map_sensor_;
+  std::optional<core::Pose2> followed_;
+  double followed_linear_mps_{0.0};
+  double followed_angular_rps_{0.0};
 };
 
 }  // namespace ari_social_sim::world

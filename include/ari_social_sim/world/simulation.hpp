@@ -70,6 +70,9 @@ class Simulation {
   /// ARI's head pan target (rad) or velocity (rad/s); clamped and counted likewise.
   void command_ari_head_pan(double pan_rad);
   void command_ari_head_pan_velocity(double pan_velocity_rps);
+  /// 3D mode: ARI's base follows this pose and twist from the 3D simulation (Ari::follow).
+  /// Throws without ARI.
+  void follow_ari(const core::Pose2& pose, double linear_mps, double angular_rps);
   /// Smallest id >= `from` that no object uses.
   ObjectId next_free_id(ObjectId from) const;
 

@@ -21,7 +21,12 @@ struct StaticObject {
   Eigen::Vector2d size{0.0, 0.0};       // m, full length x width (boxes, walls)
   double radius_m{0.0};                 // circles
   std::vector<Eigen::Vector2d> points;  // convex polygon vertices in the map frame, 3 to 8
+  double height_m{0.0};                 // m, standing on the floor; used by the 3D scene only
 };
+
+/// Heights of objects whose world file gives none (m): a room's walls, and a table or chair.
+constexpr double kDefaultWallHeightM = 2.5;
+constexpr double kDefaultFurnitureHeightM = 0.75;
 
 /// The static part of a world: a rectangle of floor and what stands on it. Shared by the 2D world,
 /// its occupancy map and (later) the 3D scene. Loaded from worlds/*.yaml by load_world_file.

@@ -7,6 +7,10 @@
 
 namespace ari_social_sim::world {
 
+/// Who moves ARI's base: world_node itself from cmd_vel (2D mode), or ari_physics_node, whose
+/// ground truth world_node follows (3D mode, DESIGN.md).
+enum class AriSource { kInternal, kPhysics };
+
 /// How world_node runs a scene: its private parameters (~scene, ~step, ...), read and checked in
 /// one place. Documented in the README's parameter table.
 struct WorldRunConfig {
@@ -18,6 +22,7 @@ struct WorldRunConfig {
   double marker_rate_hz{30.0};    // wall-clock rate of /sim/markers, (0, 30]
   double map_resolution_m{0.05};  // /map cell size, [0.01, 1]
   bool start_paused{false};       // wait for /sim/pause false or /sim/step before stepping
+  AriSource ari_source{AriSource::kInternal};  // ~ari_source: internal or physics
 
   /// Reads every field from a mapping (parameter server or file); unknown keys and out-of-range
   /// values throw core::ConfigError naming the parameter.

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstdint>
+
+#include "ari_social_sim/core/pose2.hpp"
+
+namespace ari_social_sim::physics {
+
+/// Proportions of the person-shaped bodies standing in for the 2D world's humans (m). The body is
+/// a vertical cylinder from the floor to the shoulders, the head a sphere above it.
+struct PersonShapeConfig {
+  double body_radius_m{0.2};  // the 2D world's body_radius
+  double shoulder_height_m{1.45};
+  double head_radius_m{0.11};
+  double head_centre_height_m{1.62};  // eyes at about 1.6 m, an adult's
+};
+
+/// A human as the 2D world reports it (/sim/world_state): map frame.
+struct PersonState {
+  uint32_t id{0};
+  core::Pose2 pose;                                       // body centre and heading
+  Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};  // map frame
+  double angular_velocity_rps{0.0};
+  double face_yaw_rad{0.0};  // where the face points (the gaze direction), map frame
+};
+
+/// A person's 3D shape at one instant, for collisions and rendering.
+struct PersonShape {
+  uint32_t id{0};
+  /// Feet centre on the floor; x along the body's heading, z up.
+  Eigen::Isometry3d X_map_body{Eigen::Isometry3d::Identity()};
+  Eigen::Vector3d head_centre_map{Eigen::Vector3d::Zero()};
+  double face_yaw_rad{0.0};
+  PersonShapeConfig proportions;
+
+  static PersonShape of(const PersonState& state, const PersonShapeConfig& proportions);
+};
+
+}  // namespace ari_social_sim::physics

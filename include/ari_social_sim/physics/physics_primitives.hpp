@@ -1,0 +1,24 @@
+#pragma once
+
+#include <vector>
+
+#include "ari_social_sim/physics/person_shape.hpp"
+#include "ari_social_sim/physics/render_primitive.hpp"
+#include "ari_social_sim/physics/robot_model.hpp"
+#include "ari_social_sim/physics/world_scene.hpp"
+
+namespace ari_social_sim::physics {
+
+/// ARI's own body as the cameras see it: one primitive per visual shape of every link, placed by
+/// the link's pose (`X_world_links` indexed like model.links(), e.g. AriPhysics::link_poses()),
+/// in the URDF material's colour. Shapes under 3 mm across (PAL's dummy finger sphere) are left
+/// out.
+std::vector<RenderPrimitive> robot_primitives(const RobotModel& model,
+                                              const std::vector<Eigen::Isometry3d>& X_world_links);
+
+/// Appends the physics' people (AriPhysics::people()) as the cameras draw people: their body
+/// pose and face direction on `figure`.
+void append_people(const std::vector<PersonShape>& people, const PersonFigure& figure,
+                   std::vector<RenderPrimitive>& out);
+
+}  // namespace ari_social_sim::physics

@@ -1,0 +1,87 @@
+#include "conversions/dialogue.hpp"
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::nodes {
+
+std::vector<std::string> to_strings(const std::vector<dialogue::DialogueAct>& acts) {
+  std::vector<std::string> out;
+  for (const dialogue::DialogueAct& act : acts) {
+    out.push_back(act.to_string());
+  }
+  return out;
+}
+
+std::vector<std::string> to_strings(const std::vector<dialogue::GoalLabel>& goals) {
+  std::vector<std::string> out;
+  for (const dialogue::GoalLabel& goal : goals) {
+    out.push_back(goal.to_string());
+  }
+  return out;
+}
+
+DialoguePerception to_msg(const dialogue::Perception& heard) {
+  DialoguePerception msg;
+  msg.dropped = heard.dropped;
+  msg.speaker = heard.speaker;
+  msg.addressees = heard.addressees;
+  msg.text = heard.text;
+  msg.acts = to_strings(heard.acts);
+  msg.confidence = heard.confidence;
+  msg.word_errors = heard.word_errors;
+  return msg;
+}
+
+DialogueObservation to_msg(const dialogue::Observation& observation) {
+  DialogueObservation msg;
+  for (const dialogue::Perception& heard : observation.heard) {
+    msg.heard.push_back(to_msg(heard));
+  }
+  msg.robot_turn = observation.robot_turn;
+  return msg;
+}
+
+DialogueInfo to_msg(const dialogue::StepInfo& info, const std::vector<std::string>& roles) {
+  DialogueInfo msg;
+  msg.complete = info.complete;
+  msg.success = info.success;
+  msg.robot_turns = info.robot_turns;
+  msg.utterances = info.utterances;
+  msg.patience = info.patience;
+  msg.roles = roles;
+  msg.goals = info.goals;
+  return msg;
+}
+
+DialogueUtterance to_msg(const dialogue::Utterance& utterance, uint32_t dialogue, double stamp_s) {
+  DialogueUtterance msg;
+  msg.header.stamp = ros::Time(stamp_s);
+  msg.dialogue = dialogue;
+  msg.turn = static_cast<uint32_t>(utterance.turn);
+  msg.speaker = utterance.speaker;
+  msg.addressees = utterance.addressees;
+  msg.text = utterance.text;
+  msg.acts = to_strings(utterance.acts);
+  msg.goals = to_strings(utterance.goals);
+  msg.planned_start = utterance.start_s;
+  msg.planned_end = utterance.end_s;
+  if (!utterance.is_robot()) {
+    msg.heard = to_msg(utterance.heard);
+  }
+  return msg;
+}
+
+std::vector<dialogue::DialogueAct> acts_from_msg(const std::vector<std::string>& acts,
+                                                 const std::string& field) {
+  std::vector<dialogue::DialogueAct> out;
+  for (size_t i = 0; i < acts.size(); ++i) {
+    try {
+      out.push_back(dialogue::parse_act(acts[i], field + "[" + std::to_string(i) + "]"));
+    } catch (const core::ConfigError& e) {
+      throw core::RequestError(e.what());
+    }
+  }
+  return out;
+}
+
+}  // namespace ari_social_sim::nodes

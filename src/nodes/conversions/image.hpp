@@ -1,0 +1,20 @@
+#pragma once
+
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/CompressedImage.h>
+#include <sensor_msgs/Image.h>
+
+#include <opencv2/core/mat.hpp>
+
+#include "ari_social_sim/physics/camera_model.hpp"
+
+namespace ari_social_sim::nodes {
+
+/// A CV_8UC3 RGB image as `rgb8`, a CV_32FC1 depth image as `32FC1` (metres) or a CV_16UC1 one as
+/// `16UC1` (millimetres), REP-118. The header is the caller's.
+sensor_msgs::Image to_image_msg(const cv::Mat& image);
+/// A CV_8UC3 RGB image JPEG-encoded, as image_transport's compressed plugin sends it.
+sensor_msgs::CompressedImage to_compressed_msg(const cv::Mat& rgb);
+sensor_msgs::CameraInfo to_msg(const physics::CameraInfo& info);
+
+}  // namespace ari_social_sim::nodes

@@ -1,0 +1,141 @@
+// dialogue_node: the Conversational Content Generator as a ROS node, in one of three modes
+// (~mode): world (simulated humans answer a /tts-speaking ARI in the world), rl_env (reset/step
+// services) or user_bot (simulated users heard through ROS4HRI speech). Reads parameters, builds
+// the dialogue core, wires the mode's topics, services and action; no dialogue logic here.
+
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <ros/topic.h>
+
+#include <memory>
+
+#include "ari_social_sim/WorldState.h"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/dialogue_config.hpp"
+#include "ari_social_sim/dialogue/dialogue_run_config.hpp"
+#include "ari_social_sim/dialogue/robot_nlu.hpp"
+#include "dialogue/asr_stage.hpp"
+#include "dialogue/live_dialogue_node.hpp"
+#include "dialogue/rl_env_services.hpp"
+#include "dialogue/world_stage.hpp"
+#include "ros_params.hpp"
+
+namespace ari_social_sim::nodes {
+namespace {
+
+constexpr double kAsrTickHz = 50.0;
+constexpr double kTrackedHz = 10.0;
+
+/// World ids of ARI and of one human per role, from the first world state: ~human_ids when
+/// given (each must exist), else the lowest id with the role. Throws core::ConfigError otherwise.
+struct WorldCast {
+  uint32_t robot_id{0};
+  std::vector<uint32_t> human_ids;
+};
+
+WorldCast cast_from_world(const WorldState& state, const std::vector<std::string>& roles,
+                          const std::vector<unsigned>& requested, const std::string& source) {
+  if (!state.has_ari) {
+    throw core::ConfigError("/sim/world_state: the world has no ARI to speak the /tts goals");
+  }
+  WorldCast cast;
+  cast.robot_id = state.ari.id;
+  for (size_t r = 0; r < roles.size(); ++r) {
+    const HumanState* chosen = nullptr;
+    for (const HumanState& human : state.humans) {  // ordered by id
+      const bool wanted = requested.empty() ? human.role == roles[r] : human.id == requested[r];
+      if (wanted && chosen == nullptr) {
+        chosen = &human;
+      }
+    }
+    if (chosen == nullptr) {
+      throw core::ConfigError(
+          requested.empty() ? "/sim/world_state: no human with role '" + roles[r] +
+                                  "' in the world; give " + source + ": human_ids"
+                            : source + ": human_ids[" + std::to_string(r) + "]: no human with id " +
+                                  std::to_string(requested[r]) + " in the world");
+    }
+    if (chosen->role != roles[r]) {
+      ROS_WARN("human %u plays the %s but the world calls it a %s", chosen->id, roles[r].c_str(),
+               chosen->role.c_str());
+    }
+    cast.human_ids.push_back(chosen->id);
+  }
+  return cast;
+}
+
+}  // namespace
+}  // namespace ari_social_sim::nodes
+
+int main(int argc, char** argv) {
+  using namespace ari_social_sim;
+  ros::init(argc, argv, "dialogue_node");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_handle("~");
+  const std::string source = ros::this_node::getName() + " parameter";
+  dialogue::DialogueRunConfig run;
+  std::unique_ptr<dialogue::DialogueSetup> setup;
+  try {
+    run = dialogue::DialogueRunConfig::from_yaml(nodes::read_private_params(private_handle));
+    if (run.config.empty()) {
+      run.config = ros::package::getPath("ari_social_sim") + "/config/dialogue/simulation.yaml";
+    }
+    setup = dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(run.config));
+    run.check_human_ids(setup->config.users.roles, source);
+  } catch (const core::Error& e) {
+    ROS_FATAL("%s", e.what());
+    return 2;
+  }
+  const std::vector<std::string>& roles = setup->config.users.roles;
+  ROS_INFO("dialogue_node: mode %s, settings %s, seed %lu", dialogue::to_string(run.mode),
+           run.config.c_str(), static_cast<unsigned long>(run.seed));
+
+  if (run.mode == dialogue::DialogueMode::kRlEnv) {
+    nodes::RlEnvServices services(nh, *setup);
+    ros::spin();
+    return 0;
+  }
+
+  const dialogue::RobotNlu nlu(*setup->nlg, setup->domain, &setup->corpus);
+  if (run.mode == dialogue::DialogueMode::kWorld) {
+    ROS_INFO("dialogue_node: waiting for /sim/world_state");
+    const auto state = ros::topic::waitForMessage<WorldState>("/sim/world_state", nh);
+    if (!state) {
+      return 0;  // shut down while waiting
+    }
+    nodes::WorldCast cast;
+    try {
+      cast = nodes::cast_from_world(*state, roles, run.human_ids, source);
+    } catch (const core::Error& e) {
+      ROS_FATAL("%s", e.what());
+      return 2;
+    }
+    for (size_t r = 0; r < roles.size(); ++r) {
+      ROS_INFO("dialogue_node: the %s is human %u (%s)", roles[r].c_str(), cast.human_ids[r],
+               nodes::person_id(cast.human_ids[r]).c_str());
+    }
+    std::unique_ptr<nodes::LiveDialogueNode> node;
+    nodes::WorldStage stage(nh, cast.robot_id, cast.human_ids, [&node] {
+      if (node) {
+        node->tick();
+      }
+    });
+    node = std::make_unique<nodes::LiveDialogueNode>(nh, *setup, nlu, run, stage);
+    ros::spin();
+    return 0;
+  }
+
+  std::vector<uint32_t> ids(run.human_ids.begin(), run.human_ids.end());
+  for (size_t r = ids.size(); r < roles.size(); ++r) {
+    ids.push_back(static_cast<uint32_t>(r + 1));
+  }
+  nodes::AsrStage stage(nh, *setup->timing, roles, ids, run.language);
+  nodes::LiveDialogueNode node(nh, *setup, nlu, run, stage);
+  const ros::Timer tick = nh.createTimer(ros::Duration(1.0 / nodes::kAsrTickHz),
+                                         [&node](const ros::TimerEvent&) { node.tick(); });
+  const ros::Timer tracked =
+      nh.createTimer(ros::Duration(1.0 / nodes::kTrackedHz),
+                     [&stage](const ros::TimerEvent&) { stage.publish_tracked(); });
+  ros::spin();
+  return 0;
+}

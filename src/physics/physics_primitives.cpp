@@ -1,0 +1,52 @@
+#include "ari_social_sim/physics/physics_primitives.hpp"
+
+#include <cmath>
+
+namespace ari_social_sim::physics {
+namespace {
+
+// Smallest extent (m) of a shape worth drawing.
+constexpr double kSmallestDrawnM = 0.003;
+
+}  // namespace
+
+std::vector<RenderPrimitive> robot_primitives(const RobotModel& model,
+                                              const std::vector<Eigen::Isometry3d>& X_world_links) {
+  std::vector<RenderPrimitive> out;
+  for (size_t link = 0; link < model.links().size(); ++link) {
+    for (const LinkShape& visual : model.links()[link].visuals) {
+      RenderPrimitive primitive;
+      primitive.X_world_shape = X_world_links[link] * visual.X_link_shape;
+      primitive.colour = visual.rgba.head<3>().cast<float>();
+      switch (visual.type) {
+        case LinkShape::Type::kBox:
+          primitive.shape = PrimitiveShape::kBox;
+          primitive.size = visual.box_size_m;
+          break;
+        case LinkShape::Type::kCylinder:
+          primitive.shape = PrimitiveShape::kCylinder;
+          primitive.size = {2.0 * visual.radius_m, 2.0 * visual.radius_m, visual.length_m};
+          break;
+        case LinkShape::Type::kSphere:
+          primitive.shape = PrimitiveShape::kSphere;
+          primitive.size = Eigen::Vector3d::Constant(2.0 * visual.radius_m);
+          break;
+      }
+      if (primitive.size.minCoeff() > kSmallestDrawnM) {
+        out.push_back(primitive);
+      }
+    }
+  }
+  return out;
+}
+
+void append_people(const std::vector<PersonShape>& people, const PersonFigure& figure,
+                   std::vector<RenderPrimitive>& out) {
+  for (const PersonShape& person : people) {
+    const Eigen::Matrix3d& R = person.X_map_body.linear();
+    const core::Pose2 body{person.X_map_body.translation().head<2>(), std::atan2(R(1, 0), R(0, 0))};
+    append_person(body, person.face_yaw_rad, person.id, figure, out);
+  }
+}
+
+}  // namespace ari_social_sim::physics
