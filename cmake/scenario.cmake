@@ -15,17 +15,20 @@ add_library(ari_scenario
   src/scenario/scenario_run_config.cpp
   src/scenario/script.cpp
   src/scenario/script_runner.cpp
-  src/scenario/transcript.cpp)
+  src/scenario/transcript.cpp
+  src/scenario/world_speech_stage.cpp)
 target_link_libraries(ari_scenario PUBLIC ari_world ari_perception ari_dialogue)
 
 add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
 target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
+target_include_directories(ari_scenario_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include)
 add_executable(scenario_node src/nodes/scenario_node.cpp)
-target_link_libraries(scenario_node ari_scenario_conversions)
+target_link_libraries(scenario_node ari_scenario_conversions ari_dialogue_conversions)
 
 # run_episodes: the batch tool (cores in one process, rosbags written without a master).
 add_library(ari_episode_bag src/tools/episode_bag.cpp)
-target_link_libraries(ari_episode_bag PUBLIC ari_scenario_conversions ari_perception_conversions)
+target_link_libraries(ari_episode_bag
+  PUBLIC ari_scenario_conversions ari_perception_conversions ari_dialogue_conversions)
 add_executable(run_episodes src/tools/run_episodes.cpp)
 target_link_libraries(run_episodes ari_episode_bag)
 target_compile_definitions(run_episodes PRIVATE

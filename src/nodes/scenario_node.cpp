@@ -5,6 +5,7 @@
 
 #include <actionlib/client/simple_action_client.h>
 #include <move_base_msgs/MoveBaseAction.h>
+#include <ros/package.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
@@ -12,10 +13,14 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "ari_social_sim/AddGroupMembers.h"
 #include "ari_social_sim/ApproachAction.h"
 #include "ari_social_sim/CreateGroup.h"
+#include "ari_social_sim/DialogueOutcome.h"
+#include "ari_social_sim/DialogueUtterance.h"
 #include "ari_social_sim/Group.h"
 #include "ari_social_sim/RemoveHuman.h"
 #include "ari_social_sim/Say.h"
@@ -27,12 +32,15 @@
 #include "ari_social_sim/StepSimulation.h"
 #include "ari_social_sim/TtsAction.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/episode_report.hpp"
 #include "ari_social_sim/scenario/scenario_run_config.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
+#include "conversions/dialogue.hpp"
 #include "conversions/scenario_status.hpp"
 #include "conversions/world_state.hpp"
+#include "frames.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -42,7 +50,6 @@ using TtsClient = actionlib::SimpleActionClient<TtsAction>;
 using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
 using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
 
-constexpr char kMapFrame[] = "map";
 constexpr char kLanguage[] = "en_GB";
 
 geometry_msgs::Pose2D to_pose2d(const core::Pose2& pose) {
@@ -170,7 +177,7 @@ class RosCommands : public scenario::Commands {
     ApproachGoal goal;
     goal.target_type =
         join_group ? ApproachGoal::TARGET_GROUP_OF_PERSON : ApproachGoal::TARGET_PERSON;
-    goal.target_id = scenario::person_id_of(person);
+    goal.target_id = perception::person_id_of(person);
     approach_->sendGoal(goal);
     active_ = Navigation::kApproach;
   }
@@ -253,11 +260,15 @@ class RosCommands : public scenario::Commands {
 
 class ScenarioNode {
  public:
-  ScenarioNode(const scenario::ScenarioRunConfig& config, scenario::Scenario scenario)
+  /// `dialogue` is needed by scripts that converse.
+  ScenarioNode(const scenario::ScenarioRunConfig& config, scenario::Scenario scenario,
+               std::unique_ptr<dialogue::DialogueSetup> dialogue)
       : config_(config),
         scenario_(std::move(scenario)),
+        dialogue_(std::move(dialogue)),
         runner_(scenario_,
-                config.seed >= 0 ? static_cast<uint64_t>(config.seed) : scenario_.scene.seed) {
+                config.seed >= 0 ? static_cast<uint64_t>(config.seed) : scenario_.scene.seed,
+                dialogue_.get()) {
     status_pub_ = nh_.advertise<ScenarioStatus>("/scenario/status", 1, /*latch=*/true);
   }
 
@@ -308,6 +319,9 @@ class ScenarioNode {
         ++group;
       }
     }
+    observations.heard = std::move(heard_);
+    heard_.clear();
+    observations.dialogue_end = dialogue_end_;
     const size_t visits = runner_.visits().size();
     runner_.update(observations, commands_);
     metrics_.observe(observations);
@@ -337,6 +351,23 @@ class ScenarioNode {
     ros::service::call("/sim/step", step);
   }
 
+  // What ARI perceived of a human utterance (the dialogue's error layer applied).
+  void on_utterance(const DialogueUtterance& msg) {
+    if (msg.speaker == dialogue::kRobot) {
+      return;
+    }
+    try {
+      heard_.push_back(from_msg(msg.heard));
+    } catch (const core::Error& e) {
+      ROS_WARN("/sim/dialogue/utterances: %s", e.what());
+    }
+  }
+
+  void on_outcome(const DialogueOutcome& msg) {
+    dialogue_end_ = scenario::DialogueEnd{msg.complete,    msg.success,    msg.truncated,
+                                          msg.robot_turns, msg.utterances, msg.total_reward};
+  }
+
   void set_paused(bool paused) {
     std_srvs::SetBool pause;
     pause.request.data = paused;
@@ -352,13 +383,16 @@ class ScenarioNode {
 
   scenario::ScenarioRunConfig config_;
   scenario::Scenario scenario_;
+  std::unique_ptr<dialogue::DialogueSetup> dialogue_;
   scenario::ScriptRunner runner_;
+  std::vector<dialogue::Perception> heard_;  // since the last world state
+  std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::MetricsRecorder metrics_;
   std::map<std::string, PerceivedGroupEntry> groups_;
   ros::NodeHandle nh_;
   RosCommands commands_;
   ros::Publisher status_pub_;
-  ros::Subscriber state_sub_, groups_sub_;
+  ros::Subscriber state_sub_, groups_sub_, utterances_sub_, outcome_sub_;
 };
 
 }  // namespace
@@ -370,14 +404,23 @@ int main(int argc, char** argv) {
   ros::NodeHandle private_handle("~");
   scenario::ScenarioRunConfig config;
   scenario::Scenario scenario;
+  std::unique_ptr<dialogue::DialogueSetup> dialogue;
   try {
     config = scenario::ScenarioRunConfig::from_yaml(nodes::read_private_params(private_handle));
     scenario = scenario::load_scenario_file(config.scenario);
+    if (scenario.script.interfaces().dialogue) {
+      if (config.dialogue_config.empty()) {
+        config.dialogue_config =
+            ros::package::getPath("ari_social_sim") + "/config/dialogue/simulation.yaml";
+      }
+      dialogue =
+          dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(config.dialogue_config));
+    }
   } catch (const core::Error& e) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  nodes::ScenarioNode node(config, std::move(scenario));
+  nodes::ScenarioNode node(config, std::move(scenario), std::move(dialogue));
   try {
     return node.run();
   } catch (const core::Error& e) {

@@ -50,10 +50,6 @@ AgentRef read_agent_ref(const core::YamlMap& map, const std::string& key) {
   return *ref;
 }
 
-std::string person_id_of(world::ObjectId human_id) {
-  return kPersonPrefix + std::to_string(human_id);
-}
-
 world::ObjectId human_of_person_id(const std::string& person_id) {
   const std::string prefix = kPersonPrefix;
   if (person_id.compare(0, prefix.size(), prefix) != 0) {

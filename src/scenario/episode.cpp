@@ -5,15 +5,19 @@
 namespace ari_social_sim::scenario {
 
 /// The script's commands applied to the cores directly, with the semantics of the services and
-/// actions scenario_node calls (README, world_node's services).
+/// actions scenario_node calls (README, world_node's services; /tts of dialogue_node).
 class Episode::InProcessCommands : public Commands {
  public:
-  InProcessCommands(world::Simulation& world, std::vector<SpokenByAri>& ari_speech)
-      : world_(world), ari_speech_(ari_speech) {}
+  InProcessCommands(world::Simulation& world, dialogue::SpokenDialogue& dialogue)
+      : world_(world), dialogue_(dialogue) {}
 
   void say(const AgentRef& speaker, const std::string& act, const std::string& text) override {
     if (speaker.is_ari()) {
-      throw core::RequestError("ARI's text-to-speech is not composed in batch runs yet");
+      const std::string refused = dialogue_.request_robot(text, 0.0);
+      if (!refused.empty()) {
+        throw core::RequestError("/tts: " + refused);
+      }
+      return;
     }
     world_.speech_of(speaker.human_id).say(act, text, world_.time_s());
   }
@@ -60,7 +64,7 @@ class Episode::InProcessCommands : public Commands {
   }
 
   world::Simulation& world_;
-  std::vector<SpokenByAri>& ari_speech_;
+  dialogue::SpokenDialogue& dialogue_;
 };
 
 namespace {
@@ -70,12 +74,40 @@ perception::PerceptionConfig seeded(perception::PerceptionConfig config, uint64_
   return config;
 }
 
+// dialogue_node's cast in world mode, from the scene's humans.
+std::vector<uint32_t> cast_humans(const dialogue::DialogueRunConfig& run,
+                                  const dialogue::DialogueSetup& setup,
+                                  const world::Simulation& simulation, const Scenario& scenario) {
+  if (!run.humans) {
+    return {};
+  }
+  std::vector<std::pair<uint32_t, std::string>> humans;
+  for (const auto& human : simulation.humans()) {
+    humans.emplace_back(human->id(), human->spec().role);
+  }
+  return run.cast(humans, setup.config.users.roles, scenario.scene.path, "dialogue settings");
+}
+
 }  // namespace
 
 EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   EpisodeConfig config;
   config.perception = perception::PerceptionConfig::load_file(config_dir + "/perception.yaml");
+  auto setup = dialogue::DialogueSetup::create(
+      dialogue::DialogueConfig::load(config_dir + "/dialogue/simulation.yaml"));
+  config.nlu =
+      std::make_shared<const dialogue::RobotNlu>(*setup->nlg, setup->domain, &setup->corpus);
+  config.dialogue = std::move(setup);
   return config;
+}
+
+dialogue::DialogueRunConfig dialogue_run_for(const Script& script,
+                                             dialogue::DialogueRunConfig run) {
+  run.mode = dialogue::DialogueMode::kWorld;
+  run.humans = script.interfaces().dialogue;
+  run.start = dialogue::DialogueStart::kRobotSpeaks;
+  run.dialogues = 1;
+  return run;
 }
 
 Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& config)
@@ -83,14 +115,24 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
       seed_(seed),
       config_(config),
       perception_(seeded(config.perception, seed)),
-      runner_(scenario, seed) {
+      dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
+      runner_(scenario, seed, config.dialogue.get()) {
+  if (!config.dialogue || !config.nlu) {
+    throw core::ConfigError(
+        "episode: expected the dialogue settings (EpisodeConfig::load), got none");
+  }
   world::Scene scene = scenario.scene;
   scene.seed = seed;
   simulation_ = world::build_simulation(scene, config.simulation);
   map_ = world::rasterize_static_map(scene.world, config.simulation.map_resolution_m);
   // hri_perception_node sees through /map: walls and furniture block sight and sound.
   perception_.set_sight_map(map_);
-  commands_ = std::make_unique<InProcessCommands>(*simulation_, ari_speech_);
+  dialogue_run_.seed = seed;
+  stage_ = std::make_unique<WorldSpeechStage>(
+      *simulation_, cast_humans(dialogue_run_, *config.dialogue, *simulation_, scenario));
+  dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
+                                                         dialogue_run_, *stage_);
+  commands_ = std::make_unique<InProcessCommands>(*simulation_, *dialogue_);
   observations_.world = world::WorldSnapshot::of(*simulation_);
 }
 
@@ -100,10 +142,10 @@ void Episode::step() {
   if (finished()) {
     return;
   }
-  ari_speech_.clear();
   simulation_->step();
   observations_.world = world::WorldSnapshot::of(*simulation_);
   perceive();
+  converse();
   runner_.update(observations_, *commands_);
   metrics_.observe(observations_);
 }
@@ -121,6 +163,26 @@ void Episode::perceive() {
   observations_.perceived_groups.clear();
   for (const perception::PerceivedGroup& group : perceived_->groups) {
     observations_.perceived_groups.push_back(perceived_group(group.group_id, group.members));
+  }
+}
+
+// As dialogue_node in world mode on each /sim/world_state, and what scenario_node hears of it on
+// /sim/dialogue/utterances and /sim/dialogue/outcome.
+void Episode::converse() {
+  stage_->follow(observations_.world);
+  dialogue_->tick();
+  dialogue_events_ = dialogue_->take_events();
+  observations_.heard.clear();
+  for (const dialogue::UtteranceEvent& event : dialogue_events_.utterances) {
+    const dialogue::Utterance& u = dialogue_->live().env().transcript()[event.index];
+    if (!u.is_robot()) {
+      observations_.heard.push_back(u.heard);
+    }
+  }
+  for (const dialogue::OutcomeEvent& outcome : dialogue_events_.outcomes) {
+    observations_.dialogue_end =
+        DialogueEnd{outcome.complete,    outcome.success,    outcome.truncated,
+                    outcome.robot_turns, outcome.utterances, outcome.total_reward};
   }
 }
 

@@ -10,6 +10,7 @@ ScenarioRunConfig ScenarioRunConfig::from_yaml(const core::YamlMap& map) {
       map.optional<double>("server_timeout", config.server_timeout_s, core::positive());
   config.group_timeout_s =
       map.optional<double>("group_timeout", config.group_timeout_s, core::positive());
+  config.dialogue_config = map.optional<std::string>("dialogue_config", config.dialogue_config);
   map.finish();
   return config;
 }

@@ -3,6 +3,7 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "../nodes/conversions/ari_base.hpp"
+#include "../nodes/conversions/dialogue.hpp"
 #include "../nodes/conversions/hri_messages.hpp"
 #include "../nodes/conversions/scenario_status.hpp"
 #include "../nodes/conversions/world_state.hpp"
@@ -42,6 +43,15 @@ void EpisodeBag::record_step(const scenario::Episode& episode) {
   record_world(episode);
   if (const perception::PerceptionFrame* frame = episode.perception_frame()) {
     record_perception(*frame, episode.perception_config());
+  }
+  // What dialogue_node publishes.
+  const dialogue::SpokenDialogueEvents& said = episode.dialogue_events();
+  for (const dialogue::UtteranceEvent& event : said.utterances) {
+    const dialogue::Utterance& u = episode.dialogue().live().env().transcript()[event.index];
+    write("/sim/dialogue/utterances", now_s, nodes::to_msg(u, event));
+  }
+  for (const dialogue::OutcomeEvent& outcome : said.outcomes) {
+    write("/sim/dialogue/outcome", now_s, nodes::to_msg(outcome));
   }
   const auto& visits = episode.runner().visits();
   if (visits.size() != visits_recorded_ || episode.finished()) {

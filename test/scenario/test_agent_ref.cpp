@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "expect_config_error.hpp"
 
@@ -24,7 +25,7 @@ TEST(AgentRef, RejectsAnythingElseNamingTheField) {
 }
 
 TEST(AgentRef, PersonIdsFollowTheSuiteConvention) {
-  EXPECT_EQ(person_id_of(11), "human11");
+  EXPECT_EQ(human_of_person_id(perception::person_id_of(11)), 11u);
   EXPECT_EQ(human_of_person_id("human11"), 11u);
   EXPECT_EQ(human_of_person_id("human0"), world::kNoObject);
   EXPECT_EQ(human_of_person_id("abcde"), world::kNoObject);  // an anonymous transient id

@@ -37,7 +37,9 @@ scenario::Scenario random_group_scenario() {
 std::string run_to_bag(const scenario::Scenario& scenario, uint64_t seed, const std::string& name) {
   const std::string path = ::testing::TempDir() + name + ".bag";
   {
-    scenario::Episode episode(scenario, seed, scenario::EpisodeConfig::load(kSource + "/config"));
+    static const scenario::EpisodeConfig config =
+        scenario::EpisodeConfig::load(kSource + "/config");
+    scenario::Episode episode(scenario, seed, config);
     EpisodeBag bag(path, scenario.name);
     while (!episode.finished()) {
       episode.step();

@@ -16,6 +16,9 @@ struct ScenarioRunConfig {
   /// Sim seconds after which a perceived group that was not published again counts as gone
   /// (ROS4HRI publishes one message per group, repeatedly, and no "gone" message).
   double group_timeout_s{1.0};
+  /// The dialogue settings ARI's `converse` uses (its policy's domain and NLG); empty = the
+  /// package's config/dialogue/simulation.yaml. Read only by scripts that converse.
+  std::string dialogue_config;
 
   /// Reads every field; unknown keys and out-of-range values throw core::ConfigError naming the
   /// parameter.

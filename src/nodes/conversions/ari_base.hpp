@@ -3,13 +3,10 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 
+#include "../frames.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::nodes {
-
-constexpr char kMapFrame[] = "map";
-constexpr char kOdomFrame[] = "odom";
-constexpr char kBaseFrame[] = "base_footprint";
 
 /// map -> odom: identity in 2D mode, where the base pose is exact.
 geometry_msgs::TransformStamped map_to_odom(double stamp_s);
