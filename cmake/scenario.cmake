@@ -7,6 +7,7 @@ add_library(ari_scenario
   src/scenario/episode.cpp
   src/scenario/episode_csv.cpp
   src/scenario/episode_metrics.cpp
+  src/scenario/in_process_navigation.cpp
   src/scenario/episode_report.cpp
   src/scenario/progress_bar.cpp
   src/scenario/observations.cpp
@@ -17,7 +18,7 @@ add_library(ari_scenario
   src/scenario/script_runner.cpp
   src/scenario/transcript.cpp
   src/scenario/world_speech_stage.cpp)
-target_link_libraries(ari_scenario PUBLIC ari_world ari_perception ari_dialogue)
+target_link_libraries(ari_scenario PUBLIC ari_world ari_perception ari_dialogue ari_navigation)
 
 add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
 target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
@@ -54,6 +55,8 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(test_scenario PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
+  add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
+    social_mpc_node dialogue_node scenario_node run_episodes)
 endif()
 
 if(CATKIN_ENABLE_TESTING)

@@ -290,7 +290,9 @@ class ScenarioNode {
       }
       ros::WallDuration(0.01).sleep();
     }
-    set_paused(false);  // world_node may wait paused for the suite to come up
+    if (config_.start_world) {
+      set_paused(false);  // world_node may wait paused for the suite to come up
+    }
     while (ros::ok() && !runner_.finished()) {
       ros::spinOnce();
       ros::WallDuration(0.001).sleep();

@@ -45,7 +45,7 @@
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kHeadPanJoint[] = "head_1_joint";
+constexpr double kPausedClockPeriodS = 0.1;  // wall seconds between /clock messages while paused
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
   return {{pose.x, pose.y}, pose.theta};
@@ -75,11 +75,15 @@ class WorldNode {
     paused_ = config_.start_paused;
 
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10);
+    // Latched: a node that comes up while the world waits paused still gets its state.
+    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10, /*latch=*/true);
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
     if (config_.ari_source == world::AriSource::kInternal) {
       odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
+      // The head's joint states come from here only in 2D mode; in 3D mode ari_physics_node
+      // publishes /joint_states and this node reads them.
+      joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("/joint_states", 10);
       cmd_vel_sub_ =
           nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
       head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
@@ -121,6 +125,11 @@ class WorldNode {
       ros::spinOnce();
       if (paused_) {
         ros::WallDuration(0.01).sleep();
+        // A paused world keeps publishing its clock (as Gazebo does), so that a node that comes
+        // up meanwhile gets a valid sim time.
+        if (ros::WallTime::now() - last_clock_wall_ > ros::WallDuration(kPausedClockPeriodS)) {
+          publish_clock(ros::Time(simulation_->time_s()));
+        }
         start = ros::WallTime::now();
         start_sim_s = simulation_->time_s();
         continue;
@@ -155,12 +164,17 @@ class WorldNode {
     publish_state();
   }
 
-  void publish_state() {
-    const world::WorldSnapshot snapshot = world::WorldSnapshot::of(*simulation_);
-    const ros::Time stamp(snapshot.time_s);
+  void publish_clock(const ros::Time& stamp) {
     rosgraph_msgs::Clock clock;
     clock.clock = stamp;
     clock_pub_.publish(clock);
+    last_clock_wall_ = ros::WallTime::now();
+  }
+
+  void publish_state() {
+    const world::WorldSnapshot snapshot = world::WorldSnapshot::of(*simulation_);
+    const ros::Time stamp(snapshot.time_s);
+    publish_clock(stamp);
     state_pub_.publish(to_msg(snapshot, kMapFrame));
     if (snapshot.ari && config_.ari_source == world::AriSource::kInternal) {
       publish_base(*snapshot.ari, stamp);
@@ -182,6 +196,14 @@ class WorldNode {
   void publish_base(const world::AriSnapshot& ari, const ros::Time& stamp) {
     tf_.sendTransform(odom_to_base(ari, stamp.toSec()));
     odom_pub_.publish(to_odometry(ari, stamp.toSec()));
+
+    // The head joints, as ARI's joint_state_controller reports them (tilt stays level in 2D).
+    sensor_msgs::JointState joints;
+    joints.header.stamp = stamp;
+    joints.name = {kHeadPanJoint, kHeadTiltJoint};
+    joints.position = {ari.head_pan_rad, 0.0};
+    joints.velocity = {ari.head_pan_velocity_rps, 0.0};
+    joint_states_pub_.publish(joints);
   }
 
   void publish_map() { map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s())); }
@@ -404,11 +426,12 @@ class WorldNode {
   std::unique_ptr<world::Simulation> simulation_;
   world::OccupancyGrid map_;
   bool paused_{false};
+  ros::WallTime last_clock_wall_;
   uint64_t reported_clamps_{0};
   ros::WallTime last_markers_;
 
   ros::NodeHandle nh_;
-  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_;
+  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_, joint_states_pub_;
   ros::Subscriber cmd_vel_sub_, head_sub_, ground_truth_sub_, joint_state_sub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;

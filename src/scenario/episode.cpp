@@ -8,8 +8,9 @@ namespace ari_social_sim::scenario {
 /// actions scenario_node calls (README, world_node's services; /tts of dialogue_node).
 class Episode::InProcessCommands : public Commands {
  public:
-  InProcessCommands(world::Simulation& world, dialogue::SpokenDialogue& dialogue)
-      : world_(world), dialogue_(dialogue) {}
+  InProcessCommands(world::Simulation& world, dialogue::SpokenDialogue& dialogue,
+                    InProcessNavigation& navigation)
+      : world_(world), dialogue_(dialogue), navigation_(navigation) {}
 
   void say(const AgentRef& speaker, const std::string& act, const std::string& text) override {
     if (speaker.is_ari()) {
@@ -26,9 +27,23 @@ class Episode::InProcessCommands : public Commands {
     world_.set_human_goal(human, goal);
   }
 
-  void navigate(const core::Pose2&) override { no_navigation(); }
-  void approach(world::ObjectId, bool) override { no_navigation(); }
-  void cancel_navigation() override { no_navigation(); }
+  // As scenario_node: the current goal is cancelled before the next one is sent.
+  void navigate(const core::Pose2& goal) override {
+    navigation_.cancel();
+    navigation_.start(navigation::PoseTarget{goal});
+  }
+
+  void approach(world::ObjectId person, bool join_group) override {
+    navigation_.cancel();
+    const std::string id = perception::person_id_of(person);
+    if (join_group) {
+      navigation_.start(navigation::GroupOfPersonTarget{id});
+    } else {
+      navigation_.start(navigation::PersonTarget{id});
+    }
+  }
+
+  void cancel_navigation() override { navigation_.cancel(); }
 
   void add_human(const world::HumanSpec& spec) override {
     // As /sim/spawn_human, then /sim/set_goal and /sim/set_gaze_targets.
@@ -59,12 +74,9 @@ class Episode::InProcessCommands : public Commands {
   }
 
  private:
-  [[noreturn]] static void no_navigation() {
-    throw core::RequestError("ARI's navigation is not composed in batch runs yet");
-  }
-
   world::Simulation& world_;
   dialogue::SpokenDialogue& dialogue_;
+  InProcessNavigation& navigation_;
 };
 
 namespace {
@@ -93,6 +105,7 @@ std::vector<uint32_t> cast_humans(const dialogue::DialogueRunConfig& run,
 EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   EpisodeConfig config;
   config.perception = perception::PerceptionConfig::load_file(config_dir + "/perception.yaml");
+  config.navigation = navigation::NavigationConfig::load_file(config_dir + "/social_mpc.yaml");
   auto setup = dialogue::DialogueSetup::create(
       dialogue::DialogueConfig::load(config_dir + "/dialogue/simulation.yaml"));
   config.nlu =
@@ -127,12 +140,14 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
   map_ = world::rasterize_static_map(scene.world, config.simulation.map_resolution_m);
   // hri_perception_node sees through /map: walls and furniture block sight and sound.
   perception_.set_sight_map(map_);
+  // social_mpc_node plans on the same /map.
+  navigation_ = std::make_unique<InProcessNavigation>(config.navigation, map_, *simulation_);
   dialogue_run_.seed = seed;
   stage_ = std::make_unique<WorldSpeechStage>(
       *simulation_, cast_humans(dialogue_run_, *config.dialogue, *simulation_, scenario));
   dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
                                                          dialogue_run_, *stage_);
-  commands_ = std::make_unique<InProcessCommands>(*simulation_, *dialogue_);
+  commands_ = std::make_unique<InProcessCommands>(*simulation_, *dialogue_, *navigation_);
   observations_.world = world::WorldSnapshot::of(*simulation_);
 }
 
@@ -145,6 +160,7 @@ void Episode::step() {
   simulation_->step();
   observations_.world = world::WorldSnapshot::of(*simulation_);
   perceive();
+  navigate();
   converse();
   runner_.update(observations_, *commands_);
   metrics_.observe(observations_);
@@ -164,6 +180,16 @@ void Episode::perceive() {
   for (const perception::PerceivedGroup& group : perceived_->groups) {
     observations_.perceived_groups.push_back(perceived_group(group.group_id, group.members));
   }
+}
+
+// As social_mpc_node: what perception published, then its control timer.
+void Episode::navigate() {
+  if (perceived_ != nullptr) {
+    navigation_->observe(*perceived_);
+  }
+  navigation_->control();
+  navigation_commands_ = navigation_->take_commands();
+  observations_.navigation = navigation_->status();
 }
 
 // As dialogue_node in world mode on each /sim/world_state, and what scenario_node hears of it on

@@ -11,6 +11,7 @@ ScenarioRunConfig ScenarioRunConfig::from_yaml(const core::YamlMap& map) {
   config.group_timeout_s =
       map.optional<double>("group_timeout", config.group_timeout_s, core::positive());
   config.dialogue_config = map.optional<std::string>("dialogue_config", config.dialogue_config);
+  config.start_world = map.optional<bool>("start_world", config.start_world);
   map.finish();
   return config;
 }

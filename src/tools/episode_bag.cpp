@@ -1,12 +1,16 @@
 #include "episode_bag.hpp"
 
+#include <geometry_msgs/Twist.h>
+#include <rosgraph_msgs/Clock.h>
 #include <tf2_msgs/TFMessage.h>
+#include <trajectory_msgs/JointTrajectory.h>
 
 #include "../nodes/conversions/ari_base.hpp"
 #include "../nodes/conversions/dialogue.hpp"
 #include "../nodes/conversions/hri_messages.hpp"
 #include "../nodes/conversions/scenario_status.hpp"
 #include "../nodes/conversions/world_state.hpp"
+#include "../nodes/frames.hpp"
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::tools {
@@ -44,6 +48,7 @@ void EpisodeBag::record_step(const scenario::Episode& episode) {
   if (const perception::PerceptionFrame* frame = episode.perception_frame()) {
     record_perception(*frame, episode.perception_config());
   }
+  record_navigation(episode);
   // What dialogue_node publishes.
   const dialogue::SpokenDialogueEvents& said = episode.dialogue_events();
   for (const dialogue::UtteranceEvent& event : said.utterances) {
@@ -64,12 +69,37 @@ void EpisodeBag::record_step(const scenario::Episode& episode) {
 void EpisodeBag::record_world(const scenario::Episode& episode) {
   const world::WorldSnapshot& snapshot = episode.snapshot();
   const double now_s = snapshot.time_s;
+  rosgraph_msgs::Clock clock;
+  clock.clock = ros::Time(now_s);
+  write("/clock", now_s, clock);
   write("/sim/world_state", now_s, nodes::to_msg(snapshot, nodes::kMapFrame));
   if (snapshot.ari) {
     tf2_msgs::TFMessage tf;
     tf.transforms.push_back(nodes::odom_to_base(*snapshot.ari, now_s));
     write("/tf", now_s, tf);
     write("/mobile_base_controller/odom", now_s, nodes::to_odometry(*snapshot.ari, now_s));
+  }
+}
+
+// What social_mpc_node publishes on each control cycle: the base twist and the head's pan target
+// (reached within one cycle), or a stop.
+void EpisodeBag::record_navigation(const scenario::Episode& episode) {
+  const double now_s = episode.snapshot().time_s;
+  for (const scenario::SentCommand& command : episode.navigation_commands()) {
+    geometry_msgs::Twist twist;
+    twist.linear.x = command.linear_mps;
+    twist.angular.z = command.angular_rps;
+    write("/mobile_base_controller/cmd_vel", now_s, twist);
+    if (command.pan_rad) {
+      trajectory_msgs::JointTrajectory head;
+      head.header.stamp = ros::Time(now_s);
+      head.joint_names = {nodes::kHeadPanJoint, nodes::kHeadTiltJoint};
+      trajectory_msgs::JointTrajectoryPoint point;
+      point.positions = {*command.pan_rad, 0.0};
+      point.time_from_start = ros::Duration(1.0 / episode.navigation_rate_hz());
+      head.points.push_back(point);
+      write("/head_controller/command", now_s, head);
+    }
   }
 }
 

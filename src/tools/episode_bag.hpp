@@ -27,6 +27,7 @@ class EpisodeBag {
   template <class Message>
   void write(const std::string& topic, double stamp_s, const Message& message);
   void record_world(const scenario::Episode& episode);
+  void record_navigation(const scenario::Episode& episode);
   void record_perception(const perception::PerceptionFrame& frame,
                          const perception::PerceptionConfig& config);
 

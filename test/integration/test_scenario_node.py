@@ -5,8 +5,10 @@ import threading
 import time
 import unittest
 
+import rosgraph
 import rospy
 import rostest
+from std_srvs.srv import SetBool
 
 from ari_social_sim.msg import ScenarioStatus, WorldState
 
@@ -20,7 +22,8 @@ class Recorder:
         self.state = None
         self.status = None
         self._speaking = {}
-        rospy.Subscriber("/sim/world_state", WorldState, self.on_state, queue_size=100)
+        self.state_sub = rospy.Subscriber("/sim/world_state", WorldState, self.on_state,
+                                          queue_size=100)
         rospy.Subscriber("/scenario/status", ScenarioStatus, self.on_status, queue_size=10)
 
     def on_state(self, msg):
@@ -40,6 +43,16 @@ class Recorder:
 class ScenarioNodeTest(unittest.TestCase):
     def test_script_runs_to_its_stop(self):
         recorder = Recorder()
+        master = rosgraph.Master("/test_scenario_node")
+        limit = time.monotonic() + 60.0
+        while time.monotonic() < limit:
+            _, subscribers, _ = master.getSystemState()
+            listeners = dict(subscribers).get("/sim/world_state", [])
+            if "/scenario_node" in listeners and recorder.state_sub.get_num_connections() > 0:
+                break
+            time.sleep(0.05)
+        rospy.wait_for_service("/sim/pause", 30.0)
+        self.assertTrue(rospy.ServiceProxy("/sim/pause", SetBool)(False).success)
         limit = time.monotonic() + 90.0
         while time.monotonic() < limit:
             with recorder.lock:

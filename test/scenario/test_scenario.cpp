@@ -36,21 +36,24 @@ void expect_rejected(const std::string& script, const std::vector<std::string>& 
   world::test::expect_config_error([&] { load_scenario_file(path); }, path, fragments);
 }
 
-TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStates) {
+TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStatesAfterLooking) {
   const Scenario s = load_scenario_file(kSource + "/scenarios/group_discussion.yaml");
   EXPECT_EQ(s.name, "group_discussion");
   EXPECT_EQ(s.scene.humans.size(), 2u);
   ASSERT_TRUE(s.scene.ari.has_value());
   EXPECT_DOUBLE_EQ(s.scene.ari->pose.position.x(), 1.0);
   EXPECT_DOUBLE_EQ(s.script.time_limit_s, 120.0);
-  ASSERT_EQ(s.script.states.size(), 6u);
-  EXPECT_EQ(s.script.start, "grouping");
-  const std::vector<std::string> names = {"grouping",    "ask_help",  "ask_time",
+  ASSERT_EQ(s.script.states.size(), 7u);
+  EXPECT_EQ(s.script.start, "look");
+  const std::vector<std::string> names = {"look",        "grouping",  "ask_help", "ask_time",
                                           "answer_time", "thank_ari", "leave"};
   for (size_t i = 0; i < names.size(); ++i) {
     EXPECT_EQ(s.script.states[i].name, names[i]);
   }
-  const State& grouping = s.script.states[0];
+  const auto& seen = std::get<PerceivedGroupCondition>(s.script.states[0].transitions[0].when[0]);
+  ASSERT_EQ(seen.members.size(), 2u);
+  EXPECT_EQ(seen.members[1].human_id, 11u);
+  const State& grouping = s.script.states[1];
   ASSERT_EQ(grouping.on_enter.size(), 1u);
   EXPECT_EQ(std::get<JoinGroupAction>(grouping.on_enter[0]).person, 11u);
   const auto& near_irene = std::get<DistanceCondition>(grouping.transitions[0].when[0]);
@@ -63,7 +66,7 @@ TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStates) {
   EXPECT_EQ(grouping.transitions[0].next, "ask_help");
   const auto& failed = std::get<StopAction>(grouping.transitions[1].actions[0]);
   EXPECT_FALSE(failed.success);
-  const auto& home = std::get<DistanceCondition>(s.script.states[5].transitions[0].when[0]);
+  const auto& home = std::get<DistanceCondition>(s.script.states[6].transitions[0].when[0]);
   EXPECT_FALSE(home.to_agent.has_value());
   EXPECT_EQ(home.to_point, Eigen::Vector2d(1.0, 5.0));
   EXPECT_DOUBLE_EQ(home.distance_m, 0.5);
@@ -75,7 +78,7 @@ TEST(Scenario, EveryShippedScenarioLoads) {
     const char* name;
     size_t humans, states;
     bool dialogue;
-  } shipped[] = {{"group_discussion", 2, 6, false},
+  } shipped[] = {{"group_discussion", 2, 7, false},
                  {"waiting_room", 6, 3, true},
                  {"corridor", 6, 1, false},
                  {"join_group", 0, 2, false}};
@@ -87,13 +90,13 @@ TEST(Scenario, EveryShippedScenarioLoads) {
   }
 }
 
-TEST(Scenario, GroupDiscussionNeedsSpeechAndBothNavigationActions) {
+TEST(Scenario, GroupDiscussionNeedsSpeechPerceivedGroupsAndBothNavigationActions) {
   const ScriptInterfaces uses =
       load_scenario_file(kSource + "/scenarios/group_discussion.yaml").script.interfaces();
   EXPECT_TRUE(uses.text_to_speech);
   EXPECT_TRUE(uses.approach);
   EXPECT_TRUE(uses.move_base);
-  EXPECT_FALSE(uses.perceived_groups);
+  EXPECT_TRUE(uses.perceived_groups);
 }
 
 TEST(Scenario, EveryConditionAndActionTypeReads) {

@@ -50,7 +50,8 @@ class RecordingCommands : public Commands {
   }
 };
 
-// A hand-made world: ARI and Paul (10) and Irene (11) where the test puts them.
+// A hand-made world: ARI and Paul (10) and Irene (11) where the test puts them; perception
+// reports them as a group.
 struct Stage {
   Observations obs;
 
@@ -63,6 +64,7 @@ struct Stage {
       human.pose.position = id == 10 ? Eigen::Vector2d(3.0, 2.0) : Eigen::Vector2d(4.0, 2.0);
       obs.world.humans.push_back(human);
     }
+    obs.perceived_groups.push_back(perceived_group("group1", {"human10", "human11"}));
   }
   world::SpeechSnapshot& speech(const AgentRef& who) {
     return who.is_ari() ? obs.world.ari->speech : obs.world.humans[who.human_id - 10].speech;
@@ -150,8 +152,8 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   for (const StateVisit& v : runner.visits()) {
     visited.push_back(v.state);
   }
-  EXPECT_EQ(visited, (std::vector<std::string>{"grouping", "ask_help", "ask_time", "answer_time",
-                                               "thank_ari", "leave"}));
+  EXPECT_EQ(visited, (std::vector<std::string>{"look", "grouping", "ask_help", "ask_time",
+                                               "answer_time", "thank_ari", "leave"}));
   ASSERT_EQ(runner.transcript().lines().size(), 4u);
   EXPECT_EQ(runner.transcript().lines()[1].speaker_name, "human 11");
 

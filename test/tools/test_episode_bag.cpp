@@ -75,6 +75,7 @@ TEST(EpisodeBag, TopicsTypesAndCounts) {
     last_s = std::max(last_s, m.getTime().toSec());
   }
   const std::map<std::string, std::string> expected = {
+      {"/clock", "rosgraph_msgs/Clock"},
       {"/humans/bodies/tracked", "ari_social_sim/IdsList"},
       {"/humans/faces/tracked", "ari_social_sim/IdsList"},
       {"/humans/persons/known", "ari_social_sim/IdsList"},

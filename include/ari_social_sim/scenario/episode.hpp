@@ -10,9 +10,11 @@
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
+#include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
+#include "ari_social_sim/scenario/in_process_navigation.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "ari_social_sim/scenario/world_speech_stage.hpp"
@@ -29,6 +31,8 @@ struct EpisodeConfig {
   /// hri_perception_node's config/perception.yaml; its seed is replaced by the episode's.
   perception::PerceptionConfig perception;
   double perception_max_rate_hz{30.0};  // hri_perception_node's ~max_rate
+  /// social_mpc_node's parameters (config/social_mpc.yaml).
+  navigation::NavigationConfig navigation;
   /// dialogue_node's settings (config/dialogue/simulation.yaml) and parameters in world mode;
   /// the seed is replaced by the episode's, `humans` and `start` follow the script (section 6 of
   /// docs/scenario.md).
@@ -74,6 +78,9 @@ class Episode {
   /// What perception reported in the last step; null when it skipped the step (its ~max_rate).
   const perception::PerceptionFrame* perception_frame() const { return perceived_; }
   const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
+  /// What social_mpc_node commanded in the last step.
+  const std::vector<SentCommand>& navigation_commands() const { return navigation_commands_; }
+  double navigation_rate_hz() const { return config_.navigation.navigator.rate_hz; }
   /// What the dialogue reported in the last step (utterances that started, dialogues that ended).
   const dialogue::SpokenDialogueEvents& dialogue_events() const { return dialogue_events_; }
   const dialogue::SpokenDialogue& dialogue() const { return *dialogue_; }
@@ -82,6 +89,7 @@ class Episode {
   class InProcessCommands;
 
   void perceive();
+  void navigate();
   void converse();
 
   const Scenario& scenario_;
@@ -92,6 +100,8 @@ class Episode {
   perception::PerceptionPipeline perception_;
   std::optional<double> last_perceived_s_;
   const perception::PerceptionFrame* perceived_{nullptr};
+  std::unique_ptr<InProcessNavigation> navigation_;
+  std::vector<SentCommand> navigation_commands_;
   dialogue::DialogueRunConfig dialogue_run_;
   std::unique_ptr<WorldSpeechStage> stage_;
   std::unique_ptr<dialogue::SpokenDialogue> dialogue_;

@@ -19,6 +19,9 @@ struct ScenarioRunConfig {
   /// The dialogue settings ARI's `converse` uses (its policy's domain and NLG); empty = the
   /// package's config/dialogue/simulation.yaml. Read only by scripts that converse.
   std::string dialogue_config;
+  /// Unpause the world once the suite is up; false leaves that to another node (a test that
+  /// must see every state from the first, a user's rqt).
+  bool start_world{true};
 
   /// Reads every field; unknown keys and out-of-range values throw core::ConfigError naming the
   /// parameter.

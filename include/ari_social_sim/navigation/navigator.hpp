@@ -1,0 +1,107 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/navigation/geodesic_field.hpp"
+#include "ari_social_sim/navigation/goal_finder.hpp"
+#include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/social_mpc.hpp"
+#include "ari_social_sim/world/occupancy_grid.hpp"
+
+namespace ari_social_sim::navigation {
+
+/// ARI as the control loop measures it.
+struct RobotObservation {
+  core::Pose2 pose;           // base_footprint in the map frame
+  double linear_mps{0.0};     // base velocities (odometry)
+  double angular_rps{0.0};
+  double pan_rad{0.0};        // head_1_joint
+  double pan_rps{0.0};
+};
+
+/// What to send to ARI now.
+struct NavigationCommand {
+  double linear_mps{0.0};
+  double angular_rps{0.0};
+  double pan_rad{0.0};  // head_1_joint position target
+};
+
+enum class NavigationState { kIdle, kActive, kSucceeded, kAborted };
+
+/// The outcome of one control cycle.
+struct NavigatorStep {
+  NavigationState state{NavigationState::kIdle};
+  std::string phase;   // "approaching", "aligning", "waiting for the target", ...
+  std::string reason;  // why the goal was aborted
+  NavigationCommand command;
+  double distance_to_goal_m{0.0};  // along the geodesic field
+  bool replanned{false};           // this cycle ran the MPC
+};
+
+/// The control loop shared by social_mpc_node and the benchmark: resolves the target into a goal
+/// pose each cycle (GoalFinder), keeps the geodesic field to it up to date, runs the MPC, detects
+/// arrival, and aborts with a reason when the goal is unreachable, the target is lost beyond the
+/// timeout, or ARI makes no progress. Holds the static map's signed distance field.
+class Navigator {
+ public:
+  Navigator(const NavigationConfig& config, const world::OccupancyGrid& map);
+  Navigator(const Navigator&) = delete;
+  Navigator& operator=(const Navigator&) = delete;
+
+  /// Starts a new goal, replacing any other. Throws UnknownTarget when the target's id is not in
+  /// `scene`, GoalUnreachable when the goal pose cannot be placed or reached from `robot`.
+  void start(const NavigationTarget& target, const PerceivedScene& scene,
+             const RobotObservation& robot, double time_s);
+  /// Stops pursuing the goal (state back to idle).
+  void cancel();
+  /// One control cycle at sim time `time_s`.
+  NavigatorStep update(double time_s, const RobotObservation& robot, const PerceivedScene& scene);
+
+  NavigationState state() const { return state_; }
+  const GridField& sdf() const { return sdf_; }
+  const FootprintModel& footprint() const { return footprint_; }
+  const NavigationConfig& config() const { return config_; }
+  /// The current goal and its geodesic field (null before the first goal).
+  const std::optional<Goal>& goal() const { return goal_; }
+  const GeodesicField* geodesic() const { return geodesic_.get(); }
+  /// The last plan and the problem it solved.
+  const MpcSolution& plan() const { return plan_; }
+  const MpcProblem& problem() const { return problem_; }
+  const std::optional<NavigationTarget>& target() const { return target_; }
+
+ private:
+  /// The areas the geodesic field routes around: standing people, groups not joined.
+  std::vector<CostDisc> cost_discs(const PerceivedScene& scene, const Goal& goal) const;
+  bool discs_changed(const std::vector<CostDisc>& discs) const;
+  /// The geodesic field to `goal`; throws GoalUnreachable when the goal or ARI cannot reach it.
+  std::unique_ptr<GeodesicField> field_to(const Goal& goal, const core::Pose2& robot,
+                                          const std::vector<CostDisc>& discs) const;
+  /// Sets goal_, rebuilding the geodesic field when the goal or the people moved; throws
+  /// GoalUnreachable.
+  void adopt_goal(const Goal& goal, const core::Pose2& robot, const PerceivedScene& scene);
+  NavigatorStep finish(NavigationState state, const std::string& reason);
+  void build_problem(double time_s, const RobotObservation& robot, const PerceivedScene& scene);
+
+  NavigationConfig config_;
+  FootprintModel footprint_;
+  GridField sdf_;
+  GoalFinder goal_finder_;
+  SocialMpc mpc_;
+  NavigationState state_{NavigationState::kIdle};
+  std::optional<NavigationTarget> target_;
+  std::optional<Goal> goal_;
+  std::unique_ptr<GeodesicField> geodesic_;
+  std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
+  double target_seen_s_{0.0};
+  bool aligning_{false};  // at the goal position, turning to the goal heading
+  std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
+  double best_distance_m_{0.0};
+  double best_distance_time_s_{0.0};
+  MpcProblem problem_;
+  MpcSolution plan_;
+};
+
+}  // namespace ari_social_sim::navigation

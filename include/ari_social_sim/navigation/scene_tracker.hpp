@@ -1,0 +1,65 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/navigation/perceived_scene.hpp"
+
+namespace ari_social_sim::navigation {
+
+/// How perception reports become a PerceivedScene (social_mpc_node).
+struct SceneTrackerConfig {
+  double position_noise_m{0.1};         // std. dev. of a reported position (perception's noise)
+  double acceleration_noise_mps2{1.0};  // how fast people change velocity (filter's process)
+  double heading_time_constant_s{0.3};  // smoothing of reported headings
+  double person_timeout_s{2.0};         // a person not reported for this long is dropped
+  double group_timeout_s{2.0};          // a group, or a member of it, not reported for this long
+  double group_stride_m{0.5};           // GCFF stride that places a group's o-space centre
+
+  void read(const core::YamlMap& map);
+};
+
+/// Keeps what perception last said about each person and group, and turns it into the scene the
+/// navigator plans with. ROS4HRI reports noisy positions and no velocities, so each person runs a
+/// constant-velocity Kalman filter per axis (white-noise acceleration), which estimates their
+/// velocity and steadies their position; headings are smoothed on the unit circle. A group keeps
+/// a member for the group timeout after perception last listed it, so a member missed for a frame
+/// does not reshape the group (and move the gap ARI is heading for). Ids are ROS4HRI ids.
+class SceneTracker {
+ public:
+  explicit SceneTracker(const SceneTrackerConfig& config) : config_(config) {}
+
+  /// A person seen at `time_s` (map frame).
+  void observe_person(const std::string& id, double time_s, const Eigen::Vector2d& position,
+                      double heading);
+  /// A group reported at `time_s` with these person ids (non-person ids are ignored later).
+  void observe_group(const std::string& id, double time_s, const std::vector<std::string>& members);
+  /// People reported within the person timeout, at their filtered state carried forward to
+  /// `time_s` at their estimated velocity, and groups reported
+  /// within the group timeout that have at least two known members, each with its o-space from
+  /// the members' poses.
+  PerceivedScene scene(double time_s) const;
+  void clear();
+
+ private:
+  struct Track {
+    std::string id;
+    double time_s{0.0};
+    Eigen::Vector2d position{Eigen::Vector2d::Zero()};
+    Eigen::Vector2d velocity{Eigen::Vector2d::Zero()};
+    Eigen::Matrix2d covariance{Eigen::Matrix2d::Zero()};  // of (p, v), the same for x and y
+    Eigen::Vector2d facing{1.0, 0.0};                     // smoothed unit heading
+  };
+  struct GroupReport {
+    std::map<std::string, double> members;  // person id -> last time listed
+    double time_s{0.0};
+  };
+  SceneTrackerConfig config_;
+  std::map<std::string, Track> people_;
+  std::map<std::string, GroupReport> groups_;
+};
+
+}  // namespace ari_social_sim::navigation

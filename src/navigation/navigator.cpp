@@ -1,0 +1,269 @@
+#include "ari_social_sim/navigation/navigator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/navigation/navigation_errors.hpp"
+#include "ari_social_sim/navigation/signed_distance_field.hpp"
+
+namespace ari_social_sim::navigation {
+namespace {
+
+std::string format_seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f s", s);
+  return text;
+}
+
+std::string format_point(const Eigen::Vector2d& p) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "(%.2f, %.2f)", p.x(), p.y());
+  return text;
+}
+
+}  // namespace
+
+Navigator::Navigator(const NavigationConfig& config, const world::OccupancyGrid& map)
+    : config_(config),
+      footprint_(FootprintModel::covering(world::AriFootprint{}, config.mpc.footprint_circles)),
+      sdf_(signed_distance_field(map)),
+      goal_finder_(config.goal_finder, footprint_, config.mpc.personal_space),
+      mpc_(config.mpc, footprint_) {}
+
+void Navigator::start(const NavigationTarget& target, const PerceivedScene& scene,
+                      const RobotObservation& robot, double time_s) {
+  Goal goal = goal_finder_.find(target, scene, sdf_, robot.pose);
+  std::vector<CostDisc> discs = cost_discs(scene, goal);
+  std::unique_ptr<GeodesicField> field = field_to(goal, robot.pose, discs);
+  field_discs_ = std::move(discs);
+  goal_ = std::move(goal);
+  geodesic_ = std::move(field);
+  target_ = target;
+  state_ = NavigationState::kActive;
+  target_seen_s_ = time_s;
+  aligning_ = false;
+  jump_since_s_.reset();
+  best_distance_m_ = geodesic_->cost(robot.pose.position);
+  best_distance_time_s_ = time_s;
+  mpc_.reset();
+}
+
+void Navigator::cancel() {
+  state_ = NavigationState::kIdle;
+  target_.reset();
+}
+
+std::vector<CostDisc> Navigator::cost_discs(const PerceivedScene& scene, const Goal& goal) const {
+  // People standing still and groups stand in the way as areas to go around; walking people are
+  // the MPC's, which predicts them. The person approached and the members joined keep only their
+  // body plus ARI's inscribed radius, so the way goes round them but reaches the goal beside them.
+  constexpr double kStandingSpeed = 0.3;  // m/s
+  const GeodesicParams& g = config_.navigator.geodesic;
+  std::vector<CostDisc> discs;
+  if (g.person_cost > 0.0) {
+    for (const PersonEstimate& person : scene.people) {
+      if (person.velocity.norm() >= kStandingSpeed) {
+        continue;
+      }
+      const bool is_target = std::find(goal.target_people.begin(), goal.target_people.end(),
+                                       person.id) != goal.target_people.end();
+      discs.push_back({person.position,
+                       config_.mpc.personal_space.person_radius_m + g.inscribed_radius_m +
+                           (is_target ? 0.0 : g.person_clearance_m),
+                       g.person_cost});
+    }
+  }
+  // Other groups' whole circle; the joined group's o-space only, which ARI's goal at the rim of
+  // barely enters, so the way comes in through the gap rather than across the o-space.
+  if (g.group_cost > 0.0) {
+    for (const GroupEstimate& group : scene.groups) {
+      const double radius = group.id == goal.group_id
+                                ? ospace_radius(group, config_.mpc.personal_space)
+                                : group.radius_m;
+      discs.push_back({group.centre, radius, g.group_cost});
+    }
+  }
+  return discs;
+}
+
+bool Navigator::discs_changed(const std::vector<CostDisc>& discs) const {
+  constexpr double kMoved = 0.2;  // m
+  if (discs.size() != field_discs_.size()) {
+    return true;
+  }
+  for (size_t i = 0; i < discs.size(); ++i) {
+    if ((discs[i].centre - field_discs_[i].centre).norm() > kMoved ||
+        std::abs(discs[i].radius_m - field_discs_[i].radius_m) > kMoved) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal, const core::Pose2& robot,
+                                                   const std::vector<CostDisc>& discs) const {
+  auto field =
+      std::make_unique<GeodesicField>(sdf_, goal.pose.position, config_.navigator.geodesic, discs);
+  if (!field->reachable(goal.pose.position)) {
+    throw GoalUnreachable("goal " + format_point(goal.pose.position) +
+                          " is too close to walls or furniture for ARI to reach");
+  }
+  if (!field->reachable(robot.position)) {
+    throw GoalUnreachable("no collision-free path from ARI at " + format_point(robot.position) +
+                          " to the goal " + format_point(goal.pose.position));
+  }
+  return field;
+}
+
+void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
+                           const PerceivedScene& scene) {
+  std::vector<CostDisc> discs = cost_discs(scene, goal);
+  if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m ||
+      discs_changed(discs)) {
+    geodesic_ = field_to(goal, robot, discs);
+    field_discs_ = std::move(discs);
+  }
+  goal_ = goal;
+}
+
+NavigatorStep Navigator::finish(NavigationState state, const std::string& reason) {
+  state_ = state;
+  NavigatorStep step;
+  step.state = state;
+  step.reason = reason;
+  step.phase = state == NavigationState::kSucceeded ? "arrived" : "aborted";
+  step.command.pan_rad = problem_.start.pan;
+  return step;
+}
+
+NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
+                                const PerceivedScene& scene) {
+  NavigatorStep step;
+  step.state = state_;
+  step.command.pan_rad = robot.pan_rad;
+  if (state_ != NavigationState::kActive) {
+    return step;
+  }
+  problem_.start.pan = robot.pan_rad;
+
+  // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
+  bool target_visible = true;
+  try {
+    const Goal found = goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_);
+    target_seen_s_ = time_s;
+    // A goal that jumps (another gap, another side of the person) must hold for a while before
+    // ARI follows it: perception's noise can make a group look different for a frame or two.
+    const bool jumped = (found.pose.position - goal_->pose.position).norm() >
+                        config_.navigator.goal_switch_distance_m;
+    if (!jumped) {
+      jump_since_s_.reset();
+      adopt_goal(found, robot.pose, scene);
+    } else if (!jump_since_s_) {
+      jump_since_s_ = time_s;
+    } else if (time_s - *jump_since_s_ >= config_.navigator.goal_switch_time_s) {
+      jump_since_s_.reset();
+      adopt_goal(found, robot.pose, scene);
+    }
+  } catch (const UnknownTarget& e) {
+    target_visible = false;
+    if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
+      return finish(NavigationState::kAborted, describe(*target_) + " lost for " +
+                                                   format_seconds(time_s - target_seen_s_) + " (" +
+                                                   e.what() + ")");
+    }
+  } catch (const GoalUnreachable& e) {
+    // A pose stays unreachable; a person or group may make room again (or perception may have
+    // misjudged them for a moment): keep the last goal up to the lost-target timeout.
+    if (std::holds_alternative<PoseTarget>(*target_) ||
+        time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
+      return finish(NavigationState::kAborted, e.what());
+    }
+    target_visible = false;
+  }
+
+  // Arrival, judged on base_footprint against the goal pose.
+  const double position_error = (robot.pose.position - goal_->pose.position).norm();
+  const double heading_error =
+      std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
+  step.distance_to_goal_m = geodesic_->cost(robot.pose.position);
+  // Arriving where the target was last seen counts: a member hidden behind another as ARI
+  // steps into the gap is still there.
+  if (position_error <= config_.navigator.goal_tolerance_m &&
+      heading_error <= config_.navigator.yaw_tolerance) {
+    NavigatorStep done = finish(NavigationState::kSucceeded, "");
+    done.distance_to_goal_m = step.distance_to_goal_m;
+    done.command.pan_rad = robot.pan_rad;
+    return done;
+  }
+
+  // Progress watchdog on the geodesic distance.
+  if (step.distance_to_goal_m < best_distance_m_ - config_.navigator.progress_distance_m) {
+    best_distance_m_ = step.distance_to_goal_m;
+    best_distance_time_s_ = time_s;
+  } else if (position_error > config_.navigator.goal_tolerance_m &&
+             time_s - best_distance_time_s_ > config_.navigator.progress_timeout_s) {
+    return finish(NavigationState::kAborted,
+                  "no progress toward " + describe(*target_) + " for " +
+                      format_seconds(time_s - best_distance_time_s_) + " (" +
+                      format_point(robot.pose.position) + ", " +
+                      std::to_string(step.distance_to_goal_m).substr(0, 4) + " m to go)");
+  }
+
+  build_problem(time_s, robot, scene);
+  plan_ = mpc_.solve(problem_);
+  step.replanned = true;
+  step.command = {plan_.linear_mps(), plan_.angular_rps(), plan_.pan_target()};
+  step.phase = !target_visible ? "waiting for the target" : aligning_ ? "aligning" : "approaching";
+  return step;
+}
+
+void Navigator::build_problem(double time_s, const RobotObservation& robot,
+                              const PerceivedScene& scene) {
+  problem_.start.position = robot.pose.position;
+  problem_.start.theta = robot.pose.theta;
+  problem_.start.pan = robot.pan_rad;
+  problem_.start_linear_mps = robot.linear_mps;
+  problem_.start_angular_rps = robot.angular_rps;
+  problem_.start_pan_rps = robot.pan_rps;
+  problem_.sdf = &sdf_;
+  problem_.geodesic = geodesic_.get();
+  problem_.goal = goal_->pose;
+  // Turning on the spot once at the goal position, until pushed out to twice the tolerance: the
+  // turn about base_footprint may shift it a little, and the phase must not flicker.
+  const double position_error = (robot.pose.position - goal_->pose.position).norm();
+  if (position_error <= config_.navigator.goal_tolerance_m) {
+    aligning_ = true;
+  } else if (position_error > 2.0 * config_.navigator.goal_tolerance_m) {
+    aligning_ = false;
+  }
+  problem_.at_goal_position = aligning_;
+  problem_.look_at = goal_->look_at;
+  // The person approached or the members joined keep a share of their personal space while ARI
+  // is far, so it comes in from the front rather than brushing past them, fading to nothing over
+  // the last metres where ARI must stand within it: from the fade distance to half of it.
+  const double distance = geodesic_->cost(robot.pose.position);
+  const double fade_start = config_.mpc.target_space_fade_m;
+  const double fade_end = 0.5 * fade_start;
+  const double target_scale = config_.mpc.target_space_scale *
+                              std::clamp((distance - fade_end) / (fade_start - fade_end), 0.0, 1.0);
+  // Patience: when someone's space blocks the only way (a person standing in a doorway), ARI
+  // waits, then claims the way bit by bit, halving the personal-space weights every
+  // patience_halving seconds; people step aside from a robot pressing on.
+  const NavigatorConfig& nav = config_.navigator;
+  const double stalled_s = time_s - best_distance_time_s_ - nav.patience_s;
+  const double patience = stalled_s > 0.0 ? std::pow(0.5, stalled_s / nav.patience_halving_s) : 1.0;
+  problem_.people.clear();
+  for (const PersonEstimate& person : scene.people) {
+    const bool is_target = std::find(goal_->target_people.begin(), goal_->target_people.end(),
+                                     person.id) != goal_->target_people.end();
+    problem_.people.push_back({person, patience * (is_target ? target_scale : 1.0)});
+  }
+  problem_.groups.clear();
+  for (const GroupEstimate& group : scene.groups) {
+    problem_.groups.push_back({group, group.id == goal_->group_id});
+  }
+}
+
+}  // namespace ari_social_sim::navigation

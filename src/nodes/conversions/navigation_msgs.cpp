@@ -1,0 +1,136 @@
+#include "navigation_msgs.hpp"
+
+#include <cmath>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/navigation/social_cost_map.hpp"
+#include "marker_builder.hpp"
+
+namespace ari_social_sim::nodes {
+namespace {
+
+using visualization_msgs::Marker;
+
+geometry_msgs::Point at(const Eigen::Vector2d& p, double z) {
+  return point(p.x(), p.y(), z);
+}
+
+// Heat colour of a social cost density in [0, 1+]: yellow (low) to red (high).
+std_msgs::ColorRGBA heat(double value) {
+  const float t = static_cast<float>(std::min(value, 1.0));
+  return rgba(1.0f, 1.0f - 0.9f * t, 0.1f, 0.15f + 0.45f * t);
+}
+
+}  // namespace
+
+std::optional<core::Pose2> planar_pose(const geometry_msgs::Pose& pose) {
+  const geometry_msgs::Quaternion& q = pose.orientation;
+  const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  if (!std::isfinite(norm) || norm < 1e-6 || !std::isfinite(pose.position.x) ||
+      !std::isfinite(pose.position.y)) {
+    return std::nullopt;
+  }
+  core::Pose2 planar;
+  planar.position = {pose.position.x, pose.position.y};
+  planar.theta = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+  return planar;
+}
+
+nav_msgs::Path plan_msg(const navigation::MpcSolution& plan, const std::string& frame_id,
+                        const ros::Time& stamp) {
+  nav_msgs::Path path;
+  path.header.frame_id = frame_id;
+  path.header.stamp = stamp;
+  for (const navigation::RobotState& state : plan.states) {
+    geometry_msgs::PoseStamped pose;
+    pose.header = path.header;
+    pose.pose.position = at(state.position, 0.0);
+    pose.pose.orientation = yaw_quaternion(state.theta);
+    path.poses.push_back(pose);
+  }
+  return path;
+}
+
+visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& navigator,
+                                                   bool active, const std::string& frame_id) {
+  visualization_msgs::MarkerArray out;
+  MarkerBuilder markers(frame_id, out);
+  markers.delete_all();
+  if (!active || !navigator.goal()) {
+    return out;
+  }
+  const navigation::Goal& goal = *navigator.goal();
+  const navigation::MpcProblem& problem = navigator.problem();
+  const navigation::PersonalSpaceParams& spaces = navigator.config().mpc.personal_space;
+  const std_msgs::ColorRGBA green = rgba(0.1f, 0.85f, 0.2f);
+
+  // Goal pose and what the head camera keeps in view.
+  markers.arrow("goal", 0, goal.pose.position.x(), goal.pose.position.y(), 0.05, goal.pose.theta,
+                0.5, green);
+  if (goal.look_at) {
+    Marker& target = markers.add("look_at", 0, Marker::SPHERE, green);
+    target.pose.position = at(*goal.look_at, 1.2);
+    target.scale.x = target.scale.y = target.scale.z = 0.15;
+  }
+
+  // The predicted footprint outline every few steps of the plan.
+  const std::vector<Eigen::Vector2d> outline = navigator.footprint().outline(0.76);
+  const std::vector<navigation::RobotState>& states = navigator.plan().states;
+  for (size_t i = 0; i < states.size(); i += 4) {
+    core::Pose2 pose;
+    pose.position = states[i].position;
+    pose.theta = states[i].theta;
+    Marker& box = markers.add("plan_footprint", static_cast<int>(i), Marker::LINE_STRIP,
+                              rgba(0.2f, 0.4f, 1.0f, 0.7f));
+    box.scale.x = 0.02;
+    for (size_t k = 0; k <= outline.size(); ++k) {
+      box.points.push_back(at(pose.transform(outline[k % outline.size()]), 0.02));
+    }
+  }
+
+  // Personal-space edges (farther ahead than behind; green when reduced for the person approached
+  // or the members joined) and o-space circles (green for the group joined).
+  int id = 0;
+  for (const navigation::ProblemPerson& person : problem.people) {
+    Marker& ring = markers.add("personal_space", id++, Marker::LINE_STRIP,
+                               person.space_scale < 1.0 ? green : rgba(1.0f, 0.5f, 0.0f, 0.9f));
+    ring.scale.x = 0.025;
+    const navigation::PersonEstimate& p = person.estimate;
+    const double front = spaces.sigma_front_m + spaces.front_per_speed_s * p.velocity.norm();
+    core::Pose2 frame;
+    frame.position = p.position;
+    frame.theta = p.heading;
+    constexpr int kPieces = 48;
+    for (int k = 0; k <= kPieces; ++k) {
+      const double a = 2.0 * core::kPi * k / kPieces;
+      const double along = std::cos(a) * (std::cos(a) > 0 ? front : spaces.sigma_rear_m);
+      const double across = std::sin(a) * spaces.sigma_side_m;
+      ring.points.push_back(
+          at(frame.transform(spaces.boundary_sigmas * Eigen::Vector2d(along, across)), 0.03));
+    }
+  }
+  id = 0;
+  for (const navigation::ProblemGroup& group : problem.groups) {
+    const Eigen::Vector2d& c = group.estimate.centre;
+    markers.circle("ospace", id++, c.x(), c.y(), 0.04,
+                   navigation::ospace_radius(group.estimate, spaces), 0.04,
+                   group.is_target ? green : rgba(0.9f, 0.1f, 0.1f));
+  }
+
+  // Social cost density around ARI (rviz rejects an empty list, so none when all is clear).
+  constexpr double kSpacing = 0.2;
+  const std::vector<navigation::CostSample> samples =
+      navigation::sample_social_cost(problem, spaces, problem.start.position, 5.0, kSpacing, 0.05);
+  if (!samples.empty()) {
+    Marker& cost = markers.add("social_cost", 0, Marker::CUBE_LIST, rgba(1, 1, 1));
+    cost.scale.x = cost.scale.y = kSpacing;
+    cost.scale.z = 0.01;
+    for (const navigation::CostSample& sample : samples) {
+      cost.points.push_back(at(sample.position, 0.01));
+      cost.colors.push_back(heat(sample.value));
+    }
+  }
+  return out;
+}
+
+}  // namespace ari_social_sim::nodes

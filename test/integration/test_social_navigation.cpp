@@ -1,0 +1,287 @@
+// rostest (test/integration/social_navigation.test): social_mpc_node driving ARI in world_node,
+// seeing people only through hri_perception_node.
+
+#include <actionlib/client/simple_action_client.h>
+#include <gtest/gtest.h>
+#include <move_base_msgs/MoveBaseAction.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <tf2/utils.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include "ari_social_sim/ApproachAction.h"
+#include "ari_social_sim/Group.h"
+#include "ari_social_sim/IdsList.h"
+#include "ari_social_sim/WorldState.h"
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/perception/gcff.hpp"
+
+namespace ari_social_sim {
+namespace {
+
+using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
+using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
+
+const std::set<std::string> kGroupOfThree = {"human10", "human11", "human12"};
+// hri_perception_node's GCFF parameters (config/perception.yaml, groups).
+constexpr double kGcffStride = 0.6;
+constexpr double kGcffMdl = 0.8;
+// ARI's body centre is 0.22 m behind base_footprint (world::AriFootprint).
+constexpr double kBodyCentreBehindBase = 0.22;
+
+class SocialNavigation : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    nh_ = new ros::NodeHandle;
+    tf_buffer_ = new tf2_ros::Buffer;
+    tf_listener_ = new tf2_ros::TransformListener(*tf_buffer_);
+    subscribers_.push_back(nh_->subscribe<Group>("/humans/interactions/groups", 20, on_group));
+    subscribers_.push_back(nh_->subscribe<IdsList>("/humans/persons/tracked", 1, on_persons));
+    subscribers_.push_back(nh_->subscribe<WorldState>(
+        "/sim/world_state", 1,
+        boost::function<void(const WorldState::ConstPtr&)>([](const WorldState::ConstPtr& msg) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          truth_ = *msg;
+        })));
+    subscribers_.push_back(nh_->subscribe<nav_msgs::Path>(
+        "/social_mpc/plan", 1,
+        boost::function<void(const nav_msgs::Path::ConstPtr&)>(
+            [](const nav_msgs::Path::ConstPtr& msg) {
+              std::lock_guard<std::mutex> lock(mutex_);
+              plan_poses_ = std::max(plan_poses_, msg->poses.size());
+            })));
+    spinner_ = new ros::AsyncSpinner(2);
+    spinner_->start();
+    approach_ = new ApproachClient("/social_mpc/approach", false);
+    move_base_ = new MoveBaseClient("move_base", false);
+    ASSERT_TRUE(approach_->waitForServer(ros::Duration(60)));
+    ASSERT_TRUE(move_base_->waitForServer(ros::Duration(60)));
+  }
+
+  static void on_group(const Group::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    groups_[msg->group_id] = std::set<std::string>(msg->members.begin(), msg->members.end());
+  }
+
+  static void on_persons(const IdsList::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const std::string& id : msg->ids) {
+      if (body_id_subs_.count(id) == 0) {
+        body_id_subs_[id] = nh_->subscribe<std_msgs::String>(
+            "/humans/persons/" + id + "/body_id", 1, [id](const std_msgs::String::ConstPtr& b) {
+              std::lock_guard<std::mutex> inner(mutex_);
+              body_ids_[id] = b->data;
+            });
+      }
+    }
+    tracked_ = msg->ids;
+  }
+
+  // The id of the group perception reports with exactly the three members, waiting for it.
+  static std::string group_of_three(double timeout_s) {
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    while (ros::WallTime::now() < until) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const auto& [id, members] : groups_) {
+          if (members == kGroupOfThree) {
+            return id;
+          }
+        }
+      }
+      ros::WallDuration(0.1).sleep();
+    }
+    return "";
+  }
+
+  // Waits until perception has matched a body to each of `persons` (their latched body_id), then
+  // a second more, so that social_mpc_node, listening to the same topics, knows them too.
+  static bool wait_for_bodies(const std::vector<std::string>& persons, double timeout_s) {
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    while (ros::WallTime::now() < until) {
+      bool all = true;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (const std::string& id : persons) {
+          all = all && body_ids_.count(id) > 0;
+        }
+      }
+      if (all) {
+        ros::Duration(1.0).sleep();
+        return true;
+      }
+      ros::WallDuration(0.1).sleep();
+    }
+    return false;
+  }
+
+  static bool lookup(const std::string& frame, Eigen::Vector2d& position, double& yaw) {
+    try {
+      const geometry_msgs::TransformStamped t =
+          tf_buffer_->lookupTransform("map", frame, ros::Time(0), ros::Duration(1.0));
+      position = {t.transform.translation.x, t.transform.translation.y};
+      yaw = tf2::getYaw(t.transform.rotation);
+      return true;
+    } catch (const tf2::TransformException&) {
+      return false;
+    }
+  }
+
+  template <class Client, class Goal>
+  static actionlib::SimpleClientGoalState run(Client& client, const Goal& goal, double timeout_s) {
+    client.sendGoal(goal);
+    client.waitForResult(ros::Duration(timeout_s));
+    return client.getState();
+  }
+
+  static ros::NodeHandle* nh_;
+  static tf2_ros::Buffer* tf_buffer_;
+  static tf2_ros::TransformListener* tf_listener_;
+  static ros::AsyncSpinner* spinner_;
+  static ApproachClient* approach_;
+  static MoveBaseClient* move_base_;
+  static std::vector<ros::Subscriber> subscribers_;
+  static std::map<std::string, ros::Subscriber> body_id_subs_;
+  static std::mutex mutex_;
+  static std::map<std::string, std::set<std::string>> groups_;
+  static std::map<std::string, std::string> body_ids_;
+  static std::vector<std::string> tracked_;
+  static WorldState truth_;
+  static size_t plan_poses_;
+};
+
+ros::NodeHandle* SocialNavigation::nh_ = nullptr;
+tf2_ros::Buffer* SocialNavigation::tf_buffer_ = nullptr;
+tf2_ros::TransformListener* SocialNavigation::tf_listener_ = nullptr;
+ros::AsyncSpinner* SocialNavigation::spinner_ = nullptr;
+ApproachClient* SocialNavigation::approach_ = nullptr;
+MoveBaseClient* SocialNavigation::move_base_ = nullptr;
+std::vector<ros::Subscriber> SocialNavigation::subscribers_;
+std::map<std::string, ros::Subscriber> SocialNavigation::body_id_subs_;
+std::mutex SocialNavigation::mutex_;
+std::map<std::string, std::set<std::string>> SocialNavigation::groups_;
+std::map<std::string, std::string> SocialNavigation::body_ids_;
+std::vector<std::string> SocialNavigation::tracked_;
+WorldState SocialNavigation::truth_;
+size_t SocialNavigation::plan_poses_ = 0;
+
+TEST_F(SocialNavigation, UnknownIdIsRejectedWithTheReason) {
+  ApproachGoal goal;
+  goal.target_type = ApproachGoal::TARGET_PERSON;
+  goal.target_id = "human99";
+  EXPECT_EQ(run(*approach_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_NE(approach_->getResult()->reason.find("person human99 is not tracked"),
+            std::string::npos)
+      << approach_->getResult()->reason;
+  goal.target_type = 7;
+  EXPECT_EQ(run(*approach_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_NE(approach_->getResult()->reason.find("target_type"), std::string::npos);
+}
+
+TEST_F(SocialNavigation, GoalInTheClosedStoreroomIsAbortedWithTheReason) {
+  move_base_msgs::MoveBaseGoal goal;
+  goal.target_pose.header.frame_id = "map";
+  goal.target_pose.pose.position.x = 9.0;
+  goal.target_pose.pose.position.y = 7.0;
+  goal.target_pose.pose.orientation.w = 1.0;
+  EXPECT_EQ(run(*move_base_, goal, 10.0), actionlib::SimpleClientGoalState::ABORTED);
+  EXPECT_NE(move_base_->getState().getText().find("no collision-free path from ARI"),
+            std::string::npos)
+      << move_base_->getState().getText();
+}
+
+TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
+  ASSERT_TRUE(wait_for_bodies({"human20"}, 30.0)) << "perception never matched Ana's body";
+  ApproachGoal goal;
+  goal.target_type = ApproachGoal::TARGET_PERSON;
+  goal.target_id = "human20";
+  ASSERT_EQ(run(*approach_, goal, 90.0), actionlib::SimpleClientGoalState::SUCCEEDED)
+      << approach_->getState().getText();
+  const ApproachResult& result = *approach_->getResult();
+  // 1.1 m from base_footprint to her (goal_finder.approach_distance), within the tolerances.
+  EXPECT_NEAR(result.final_distance, 1.1, 0.2);
+  EXPECT_LT(result.final_heading_error, 0.25);
+  // Ground truth: ARI stands in front of her, within 35 deg of where she faces.
+  WorldState truth;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    truth = truth_;
+  }
+  const auto ana = std::find_if(truth.humans.begin(), truth.humans.end(),
+                                [](const HumanState& h) { return h.id == 20; });
+  ASSERT_NE(ana, truth.humans.end());
+  const double dx = truth.ari.pose.x - ana->pose.x, dy = truth.ari.pose.y - ana->pose.y;
+  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)), 35.0 * M_PI / 180.0);
+  EXPECT_NEAR(std::hypot(dx, dy), 1.1, 0.25);
+}
+
+TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
+  const std::string group_id = group_of_three(30.0);
+  ASSERT_FALSE(group_id.empty()) << "perception never reported the group of three";
+  ASSERT_TRUE(wait_for_bodies({"human10", "human11", "human12"}, 30.0));
+  ApproachGoal goal;
+  goal.target_type = ApproachGoal::TARGET_GROUP;
+  goal.target_id = group_id;
+  ASSERT_EQ(run(*approach_, goal, 90.0), actionlib::SimpleClientGoalState::SUCCEEDED)
+      << approach_->getState().getText();
+  const ApproachResult& result = *approach_->getResult();
+  EXPECT_TRUE(result.reason.empty()) << result.reason;
+  // base_footprint stands 0.22 m inside the circle of radius ~0.64 m, facing the centre.
+  EXPECT_GT(result.final_distance, 0.2);
+  EXPECT_LT(result.final_distance, 0.8);
+  EXPECT_LT(result.final_heading_error, 0.3);
+  EXPECT_GT(plan_poses_, 10u);  // the plan was published while driving
+  ros::Duration(1.0).sleep();   // perception catches up with the final poses
+
+  // GCFF, as hri_perception_node runs it, on the bodies perception reports plus ARI at its body
+  // centre, facing its heading: ARI shares the label of the three members.
+  std::vector<perception::GcffPerson> persons;
+  std::vector<std::string> tracked;
+  std::map<std::string, std::string> body_ids;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    tracked = tracked_;
+    body_ids = body_ids_;
+  }
+  for (const std::string& id : tracked) {
+    Eigen::Vector2d position;
+    double yaw;
+    if (body_ids.count(id) && lookup("body_" + body_ids[id], position, yaw)) {
+      persons.push_back({id, position.x(), position.y(), yaw});
+    }
+  }
+  Eigen::Vector2d base;
+  double heading;
+  ASSERT_TRUE(lookup("base_footprint", base, heading));
+  const Eigen::Vector2d ari = base - kBodyCentreBehindBase * Eigen::Vector2d(std::cos(heading),
+                                                                            std::sin(heading));
+  persons.push_back({"ari", ari.x(), ari.y(), heading});
+  perception::GcffDetector detector(perception::GcffParams{kGcffStride, kGcffMdl});
+  const perception::GcffResult gcff = detector.detect(persons);
+  int with_ari = 0;
+  for (size_t i = 0; i + 1 < persons.size(); ++i) {
+    if (kGroupOfThree.count(persons[i].id) && gcff.labels[i] == gcff.labels.back()) {
+      ++with_ari;
+    }
+  }
+  EXPECT_EQ(with_ari, 3) << persons.size() - 1 << " bodies perceived";
+  // And the members are still reported as one group by perception.
+  EXPECT_EQ(group_of_three(5.0), group_id);
+}
+
+}  // namespace
+}  // namespace ari_social_sim
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_social_navigation");
+  return RUN_ALL_TESTS();
+}

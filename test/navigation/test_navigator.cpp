@@ -1,0 +1,169 @@
+// The control loop closed over a perfect unicycle: ARI reaches goals with every solver, keeps its
+// distance from a person in its way, and aborts with a reason when it must.
+
+#include "ari_social_sim/navigation/navigator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/navigation/navigation_errors.hpp"
+#include "navigation_fixtures.hpp"
+
+namespace ari_social_sim::navigation {
+namespace {
+
+// Drives `navigator` from `start` for up to `limit_s`, integrating its commands exactly.
+struct DriveResult {
+  NavigationState state{NavigationState::kActive};
+  std::string reason;
+  double time_s{0.0};
+  RobotObservation robot;
+  double min_distance_to_person_m{1e9};
+};
+
+DriveResult drive(Navigator& navigator, const core::Pose2& start, const PerceivedScene& scene,
+          double limit_s) {
+  DriveResult run;
+  run.robot.pose = start;
+  const double dt = 1.0 / navigator.config().navigator.rate_hz;
+  for (double t = 0.0; t < limit_s; t += dt) {
+    const NavigatorStep step = navigator.update(t, run.robot, scene);
+    run.time_s = t;
+    if (step.state != NavigationState::kActive) {
+      run.state = step.state;
+      run.reason = step.reason;
+      return run;
+    }
+    const double v = step.command.linear_mps, w = step.command.angular_rps;
+    const double mid = run.robot.pose.theta + 0.5 * w * dt;
+    run.robot.pose.position += v * dt * Eigen::Vector2d(std::cos(mid), std::sin(mid));
+    run.robot.pose.theta = core::wrap_angle(run.robot.pose.theta + w * dt);
+    run.robot.linear_mps = v;
+    run.robot.angular_rps = w;
+    run.robot.pan_rad = step.command.pan_rad;
+    for (const PersonEstimate& person : scene.people) {
+      run.min_distance_to_person_m =
+          std::min(run.min_distance_to_person_m,
+                   navigator.footprint().distance_to(run.robot.pose, person.position) - 0.2);
+    }
+  }
+  run.state = navigator.state();
+  return run;
+}
+
+class EverySolver : public ::testing::TestWithParam<SolverKind> {};
+
+TEST_P(EverySolver, ReachesAPoseAcrossAnEmptyRoom) {
+  NavigationConfig config;
+  config.mpc.solver = GetParam();
+  Navigator navigator(config, test::room_map(6.0));
+  const core::Pose2 start = test::pose(1.0, 1.0, 0.0);
+  const core::Pose2 goal = test::pose(4.5, 4.0, M_PI / 2);
+  navigator.start(PoseTarget{goal}, {}, RobotObservation{start}, 0.0);
+  const DriveResult run = drive(navigator, start, {}, 30.0);
+  ASSERT_EQ(run.state, NavigationState::kSucceeded) << run.reason;
+  EXPECT_LE((run.robot.pose.position - goal.position).norm(), 0.15);
+  EXPECT_LE(std::abs(core::angle_difference(goal.theta, run.robot.pose.theta)), 0.15);
+  // 4.6 m at up to 0.8 m/s with 1 m/s^2 and the final turn: well under 15 s.
+  EXPECT_LT(run.time_s, 15.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver,
+                         ::testing::Values(SolverKind::kLbfgs, SolverKind::kSlsqp,
+                                           SolverKind::kMppi));
+
+TEST(Navigator, GivesAPersonInTheWayMoreRoomThanTheNonSocialBaseline) {
+  // Someone stands 0.2 m off the straight line from (1, 4) to (7, 4), facing it.
+  PerceivedScene scene;
+  scene.people.push_back(test::person("human1", 4.0, 4.2, -M_PI / 2));
+  auto min_distance = [&](bool social) {
+    NavigationConfig config;
+    if (!social) {
+      config.mpc.weights.personal_space = 0.0;
+    }
+    Navigator navigator(config, test::room_map(8.0));
+    const core::Pose2 start = test::pose(1.0, 4.0, 0.0);
+    navigator.start(PoseTarget{test::pose(7.0, 4.0, 0.0)}, scene, RobotObservation{start}, 0.0);
+    const DriveResult run = drive(navigator, start, scene, 40.0);
+    EXPECT_EQ(run.state, NavigationState::kSucceeded) << run.reason;
+    return run.min_distance_to_person_m;
+  };
+  const double social = min_distance(true);
+  const double baseline = min_distance(false);
+  // The person's 2-sigma side edge is 0.8 m from their centre, 0.6 m from their body.
+  EXPECT_GT(social, 0.5);
+  EXPECT_GT(social, baseline + 0.2);
+  EXPECT_GT(baseline, 0.0);  // the baseline still does not touch them
+}
+
+TEST(Navigator, UnreachableGoalIsRefusedWithTheReason) {
+  // A closed 2 m box in the room: a goal inside it has free floor but no way in.
+  world::WorldDescription world = world::test::square_room(8.0);
+  const double xs[4][4] = {{5.0, 4.0, 2.1, 0.0}, {5.0, 6.0, 2.1, 0.0}, {4.0, 5.0, 2.0, M_PI / 2},
+                           {6.0, 5.0, 2.0, M_PI / 2}};
+  for (int i = 0; i < 4; ++i) {
+    world::StaticObject wall;
+    wall.id = i + 1;
+    wall.type = world::ShapeType::kWall;
+    wall.pose = test::pose(xs[i][0], xs[i][1], xs[i][3]);
+    wall.size = {xs[i][2], 0.1};
+    world.objects.push_back(wall);
+  }
+  Navigator navigator(NavigationConfig{}, world::rasterize_static_map(world, 0.05));
+  try {
+    navigator.start(PoseTarget{test::pose(5.0, 5.0, 0.0)}, {},
+                    RobotObservation{test::pose(1.5, 1.5, 0.0)}, 0.0);
+    FAIL() << "accepted a goal inside a closed box";
+  } catch (const GoalUnreachable& e) {
+    EXPECT_NE(std::string(e.what()).find("no collision-free path from ARI at (1.50, 1.50)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(navigator.state(), NavigationState::kIdle);
+}
+
+TEST(Navigator, AbortsWhenTheTargetIsLostBeyondTheTimeout) {
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  PerceivedScene scene;
+  scene.people.push_back(test::person("human3", 6.0, 4.0, M_PI));
+  const RobotObservation robot{test::pose(1.0, 4.0, 0.0)};
+  EXPECT_THROW(navigator.start(PersonTarget{"human9"}, scene, robot, 0.0), UnknownTarget);
+  navigator.start(PersonTarget{"human3"}, scene, robot, 0.0);
+  EXPECT_EQ(navigator.update(0.1, robot, scene).state, NavigationState::kActive);
+  // Gone from perception: ARI keeps heading for the last goal for 5 s, then gives up.
+  const PerceivedScene empty;
+  EXPECT_EQ(navigator.update(4.0, robot, empty).state, NavigationState::kActive);
+  EXPECT_EQ(navigator.update(5.0, robot, empty).phase, "waiting for the target");
+  const NavigatorStep lost = navigator.update(5.2, robot, empty);
+  EXPECT_EQ(lost.state, NavigationState::kAborted);
+  EXPECT_NE(lost.reason.find("person human3 lost for 5.1 s"), std::string::npos) << lost.reason;
+}
+
+TEST(Navigator, JoinsAGroupAndEndsFacingItsCentre) {
+  PerceivedScene scene;
+  for (int i = 0; i < 3; ++i) {
+    const double a = M_PI / 2 + 2.0 * M_PI * i / 3.0;
+    scene.people.push_back(test::person("human" + std::to_string(10 + i),
+                                        5.0 + 0.64 * std::cos(a), 5.0 + 0.64 * std::sin(a),
+                                        a + M_PI));
+  }
+  scene.groups.push_back(estimate_group("g1", scene.people, 0.64));
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const core::Pose2 start = test::pose(1.5, 1.5, 0.0);
+  navigator.start(GroupTarget{"g1"}, scene, RobotObservation{start}, 0.0);
+  const DriveResult run = drive(navigator, start, scene, 40.0);
+  ASSERT_EQ(run.state, NavigationState::kSucceeded) << run.reason;
+  // On the circle (body centre 0.64 m from the centre, within the 0.15 m tolerance), facing it.
+  const Eigen::Vector2d body = navigator.footprint().centre(run.robot.pose);
+  EXPECT_NEAR((body - Eigen::Vector2d(5.0, 5.0)).norm(), 0.64, 0.15);
+  const Eigen::Vector2d to_centre = Eigen::Vector2d(5.0, 5.0) - run.robot.pose.position;
+  EXPECT_LT(std::abs(core::angle_difference(std::atan2(to_centre.y(), to_centre.x()),
+                                            run.robot.pose.theta)),
+            0.2);
+  EXPECT_GT(run.min_distance_to_person_m, 0.0);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::navigation
