@@ -25,6 +25,7 @@ add_library(ari_dialogue
   src/dialogue/robot_nlu.cpp
   src/dialogue/live_dialogue.cpp
   src/dialogue/dialogue_run_config.cpp
+  src/dialogue/playback_stage.cpp
   src/dialogue/speech_playback.cpp
   src/dialogue/spoken_dialogue.cpp)
 target_include_directories(ari_dialogue PUBLIC include)

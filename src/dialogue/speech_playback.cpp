@@ -1,5 +1,7 @@
 #include "ari_social_sim/dialogue/speech_playback.hpp"
 
+#include "ari_social_sim/dialogue/text.hpp"
+
 namespace ari_social_sim::dialogue {
 
 void SpeechPlayback::begin(uint32_t speaker_id, const std::string& content, double called_s) {
@@ -31,6 +33,8 @@ void SpeechPlayback::follow(const SpeakerState* speaker) {
   if (saying_it && speaker->start_s == start_s_) {
     words_started_ = speaker->word_index + 1;
   } else {
+    // Played to its end: every word was started, including any whose states were missed.
+    words_started_ = split_words(content_).size();
     done_ = true;
   }
 }

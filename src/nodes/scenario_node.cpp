@@ -95,7 +95,9 @@ class RosCommands : public scenario::Commands {
  public:
   // Creates the action clients the script uses and waits (wall time, as sim time may stand
   // still) for them and the world's services. Sim time must be valid (> 0): actionlib waits for it.
-  void connect(const scenario::ScriptInterfaces& uses, double timeout_s) {
+  // `while_waiting` runs about once a wall second while a server is missing.
+  void connect(const scenario::ScriptInterfaces& uses, double timeout_s,
+               const std::function<void()>& while_waiting) {
     std::vector<std::pair<std::string, std::function<bool()>>> needed = {
         {"/sim/say", [] { return ros::service::exists("/sim/say", false); }}};
     if (uses.text_to_speech) {
@@ -113,11 +115,16 @@ class RosCommands : public scenario::Commands {
                         [this] { return approach_->isServerConnected(); }});
     }
     const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    ros::WallTime last_waited = ros::WallTime::now();
     for (const auto& [name, ready] : needed) {
       while (!ready()) {
         if (ros::WallTime::now() > limit || !ros::ok()) {
           throw core::RequestError(name + " did not appear within " + std::to_string(timeout_s) +
                                    " s (server_timeout)");
+        }
+        if (ros::WallTime::now() - last_waited > ros::WallDuration(1.0)) {
+          while_waiting();
+          last_waited = ros::WallTime::now();
         }
         ros::spinOnce();
         ros::WallDuration(0.05).sleep();
@@ -275,7 +282,10 @@ class ScenarioNode {
   /// Waits for the suite, starts the world and plays the script; returns the exit code.
   int run() {
     step_paused_world();
-    commands_.connect(scenario_.script.interfaces(), config_.server_timeout_s);
+    // A node that waits for a first world state before it serves (dialogue_node's /tts) may have
+    // missed the one step: the paused world steps once a second until everything is up.
+    commands_.connect(scenario_.script.interfaces(), config_.server_timeout_s,
+                      [this] { step_paused_world(); });
     state_sub_ = nh_.subscribe("/sim/world_state", 100, &ScenarioNode::on_world_state, this);
     if (scenario_.script.interfaces().perceived_groups) {
       groups_sub_ =

@@ -75,8 +75,7 @@ class WorldNode {
     paused_ = config_.start_paused;
 
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    // Latched: a node that comes up while the world waits paused still gets its state.
-    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10, /*latch=*/true);
+    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10);
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
     if (config_.ari_source == world::AriSource::kInternal) {

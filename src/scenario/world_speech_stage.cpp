@@ -14,43 +14,33 @@ dialogue::SpeakerState speaker_state(const world::SpeechSnapshot& speech) {
 }  // namespace
 
 WorldSpeechStage::WorldSpeechStage(world::Simulation& simulation, std::vector<uint32_t> human_ids)
-    : simulation_(simulation), human_ids_(std::move(human_ids)), now_s_(simulation.time_s()) {}
+    : PlaybackStage(std::move(human_ids)), simulation_(simulation) {}
 
 uint32_t WorldSpeechStage::robot_id() const {
   return simulation_.ari() != nullptr ? simulation_.ari()->id() : 0;
 }
 
 void WorldSpeechStage::follow(const world::WorldSnapshot& snapshot) {
-  now_s_ = snapshot.time_s;
   std::optional<dialogue::SpeakerState> robot, human;
-  if (snapshot.ari && snapshot.ari->id == robot_.speaker_id()) {
+  if (snapshot.ari && snapshot.ari->id == robot_speaker()) {
     robot = speaker_state(snapshot.ari->speech);
   }
   for (const world::HumanSnapshot& h : snapshot.humans) {
-    if (h.id == human_.speaker_id()) {
+    if (h.id == human_speaker()) {
       human = speaker_state(h.speech);
     }
   }
-  robot_.follow(robot ? &*robot : nullptr);
-  human_.follow(human ? &*human : nullptr);
+  PlaybackStage::follow(snapshot.time_s, robot ? &*robot : nullptr, human ? &*human : nullptr);
 }
 
-void WorldSpeechStage::start_human(const dialogue::Utterance& utterance, size_t human) {
-  say(human_, human_ids_.at(human), dialogue::world_act(utterance), utterance.text);
-}
-
-void WorldSpeechStage::start_robot(const std::string& text) {
-  say(robot_, robot_id(), dialogue::kRobotSpeechAct, text);
-}
-
-void WorldSpeechStage::say(dialogue::SpeechPlayback& playback, uint32_t speaker_id,
-                           const std::string& act, const std::string& content) {
-  playback.begin(speaker_id, content, now_s_);
+bool WorldSpeechStage::play(uint32_t speaker_id, const std::string& act,
+                            const std::string& content) {
   try {
     simulation_.speech_of(speaker_id).say(act, content, simulation_.time_s());
   } catch (const core::RequestError&) {
-    playback.fail();  // as /sim/say refusing: nothing plays, the dialogue goes on
+    return false;  // as /sim/say refusing
   }
+  return true;
 }
 
 }  // namespace ari_social_sim::scenario

@@ -25,6 +25,18 @@ TEST(SpeechPlayback, StartsWhenTheWorldSaysItAndEndsWhenItStops) {
   EXPECT_EQ(playback.words_started(), 4u);
 }
 
+TEST(SpeechPlayback, PlayedToItsEndCountsEveryWordEvenMissedStates) {
+  SpeechPlayback playback;
+  playback.begin(10, "where is the toilet", 2.0);
+  const SpeakerState first_word{true, "where is the toilet", 2.05, 0};
+  playback.follow(&first_word);
+  EXPECT_EQ(playback.words_started(), 1u);
+  const SpeakerState silent{false, "", 0.0, 0};  // the states of words 2-4 were missed
+  playback.follow(&silent);
+  EXPECT_TRUE(playback.done());
+  EXPECT_EQ(playback.words_started(), 4u);
+}
+
 TEST(SpeechPlayback, AnotherActOrALeavingSpeakerEndsIt) {
   SpeechPlayback playback;
   playback.begin(10, "hello", 0.0);

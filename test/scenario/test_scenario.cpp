@@ -79,9 +79,9 @@ TEST(Scenario, EveryShippedScenarioLoads) {
     size_t humans, states;
     bool dialogue;
   } shipped[] = {{"group_discussion", 2, 7, false},
-                 {"waiting_room", 6, 3, true},
+                 {"waiting_room", 6, 4, true},
                  {"corridor", 6, 1, false},
-                 {"join_group", 0, 2, false}};
+                 {"join_group", 0, 3, false}};
   for (const auto& expected : shipped) {
     const Scenario s = load_scenario_file(kSource + "/scenarios/" + expected.name + ".yaml");
     EXPECT_EQ(s.scene.humans.size(), expected.humans) << expected.name;
