@@ -2,8 +2,8 @@
 
 namespace ari_social_sim::navigation {
 
-double GoalCost::evaluate(const MpcProblem& problem, const Rollout& rollout,
-                          const Eigen::VectorXd&, RolloutGradient* gradient) const {
+double GoalCost::evaluate(const MpcProblem& problem, const Rollout& rollout, const Eigen::VectorXd&,
+                          RolloutGradient* gradient) const {
   double total = 0.0;
   const int steps = rollout.steps();
   for (int t = 1; t <= steps; ++t) {

@@ -75,8 +75,7 @@ std::string unknown_target_reason(const NavigationTarget& target, const Perceive
                                                 : "person " + person->person_id + " is not tracked";
   }
   if (const auto* group = std::get_if<GroupTarget>(&target)) {
-    return scene.find_group(group->group_id) ? ""
-                                             : "group " + group->group_id + " is not reported";
+    return scene.find_group(group->group_id) ? "" : "group " + group->group_id + " is not reported";
   }
   if (const auto* member = std::get_if<GroupOfPersonTarget>(&target)) {
     if (!scene.find_person(member->person_id)) {
@@ -112,8 +111,8 @@ Goal GoalFinder::find(const NavigationTarget& target, const PerceivedScene& scen
   return find_group(*group, scene, sdf, robot, previous);
 }
 
-bool GoalFinder::is_free(const core::Pose2& base, const PerceivedScene& scene,
-                         const GridField& sdf, double margin_m) const {
+bool GoalFinder::is_free(const core::Pose2& base, const PerceivedScene& scene, const GridField& sdf,
+                         double margin_m) const {
   const Eigen::Vector2d axis = base.heading();
   for (double offset : footprint_.circle_offsets_x_m) {
     if (sdf.sample(base.position + offset * axis) < footprint_.circle_radius_m + margin_m) {
@@ -272,8 +271,9 @@ Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& sc
   }
   // A gap used before comes first while it still has room.
   if (previous && previous->group_id == group.id) {
-    const auto kept = std::find_if(gaps.begin(), gaps.end(),
-                                   [&](const Gap& gap) { return gap.contains(previous->gap_angle); });
+    const auto kept = std::find_if(gaps.begin(), gaps.end(), [&](const Gap& gap) {
+      return gap.contains(previous->gap_angle);
+    });
     if (kept != gaps.end()) {
       std::rotate(gaps.begin(), kept, kept + 1);
     }

@@ -49,7 +49,8 @@ double GridField::sample(const Eigen::Vector2d& point, Eigen::Vector2d* gradient
     *gradient = {clamped_x ? 0.0 : dx, clamped_y ? 0.0 : dy};
   }
   if (cross != nullptr) {
-    *cross = clamped_x || clamped_y ? 0.0 : (v11 - v01 - v10 + v00) / (resolution_m_ * resolution_m_);
+    *cross =
+        clamped_x || clamped_y ? 0.0 : (v11 - v01 - v10 + v00) / (resolution_m_ * resolution_m_);
   }
   return bottom + ty * (top - bottom);
 }

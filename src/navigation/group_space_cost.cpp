@@ -19,8 +19,8 @@ double GroupSpaceCost::evaluate(const MpcProblem& problem, const Rollout& rollou
       for (int i = 0; i < rollout.circle_count; ++i) {
         const Eigen::Vector2d& circle = rollout.circle(t, i);
         Eigen::Matrix2d jacobian;
-        const Eigen::Vector2d edge = nearest_point_of_disc(circle, circle_radius_m_, centre,
-                                                           gradient ? &jacobian : nullptr);
+        const Eigen::Vector2d edge =
+            nearest_point_of_disc(circle, circle_radius_m_, centre, gradient ? &jacobian : nullptr);
         const Eigen::Vector2d d = edge - centre;
         const double soft = std::exp(-d.squaredNorm() * inv_2s2);
         const Eigen::Vector2d offset = circle - centre;

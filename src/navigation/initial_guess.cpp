@@ -9,10 +9,10 @@ namespace ari_social_sim::navigation {
 
 Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& config,
                                 const ControlBounds& bounds, double turn_bias_rps) {
-  constexpr double kTurnGain = 2.0;       // 1/s, heading error to angular velocity
-  constexpr double kPanGain = 4.0;        // 1/s, pan error to pan velocity
-  constexpr double kSlowRadius = 0.8;     // m, full speed beyond this travel distance
-  constexpr double kDirectRadius = 0.5;   // m, head straight for the goal point within this
+  constexpr double kTurnGain = 2.0;      // 1/s, heading error to angular velocity
+  constexpr double kPanGain = 4.0;       // 1/s, pan error to pan velocity
+  constexpr double kSlowRadius = 0.8;    // m, full speed beyond this travel distance
+  constexpr double kDirectRadius = 0.5;  // m, head straight for the goal point within this
   const double dt = config.step_s;
   const double max_dv = config.limits.max_linear_accel_mps2 * dt;
   const double max_dw = config.limits.max_angular_accel_rps2 * dt;
@@ -47,9 +47,9 @@ Eigen::VectorXd follow_geodesic(const MpcProblem& problem, const MpcConfig& conf
     }
     const double pan_rate = kPanGain * (pan_target - s.pan);
     controls.segment<3>(3 * t) << v, w, pan_rate;
-    controls.segment<3>(3 * t) =
-        controls.segment<3>(3 * t).cwiseMax(bounds.lower.segment<3>(3 * t)).cwiseMin(
-            bounds.upper.segment<3>(3 * t));
+    controls.segment<3>(3 * t) = controls.segment<3>(3 * t)
+                                     .cwiseMax(bounds.lower.segment<3>(3 * t))
+                                     .cwiseMin(bounds.upper.segment<3>(3 * t));
     const double applied_v = controls[3 * t], applied_w = controls[3 * t + 1];
     v_prev = applied_v;
     w_prev = applied_w;

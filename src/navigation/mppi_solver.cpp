@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ari_social_sim::navigation {
 namespace {
@@ -29,7 +30,10 @@ double MppiSolver::minimise(TrajectoryCost& cost, const ControlBounds& bounds,
   double best_cost = cost.evaluate(best);
   Eigen::VectorXd nominal = best;
   for (int iteration = 0; iteration < config_.mppi_iterations; ++iteration) {
-    double min_cost = best_cost;
+    // The weights are taken against the cheapest sample of this round, not the best so far: when
+    // every sample is far dearer than the start, weights against the start would all underflow
+    // to 0 and the average be 0 / 0.
+    double min_cost = std::numeric_limits<double>::infinity();
     for (size_t k = 0; k < samples_.size(); ++k) {
       Eigen::VectorXd& sample = samples_[k];
       double noise[3] = {0.0, 0.0, 0.0};

@@ -49,6 +49,7 @@ void CostWeights::read(const core::YamlMap& map) {
   read_number(map, "obstacle", obstacle, w);
   read_number(map, "agent_clearance", agent_clearance, w);
   read_number(map, "personal_space", personal_space, w);
+  read_number(map, "personal_space_edge", personal_space_edge, w);
   read_number(map, "group_space", group_space, w);
   read_number(map, "ospace_edge", ospace_edge, w);
   read_number(map, "effort_linear", effort_linear, w);
@@ -83,6 +84,7 @@ void MpcConfig::read(const core::YamlMap& map) {
   read_number(map, "obstacle_margin", obstacle_margin_m, core::between(0.0, 1.0));
   read_number(map, "agent_margin", agent_margin_m, core::between(0.0, 1.0));
   read_number(map, "ospace_margin", ospace_margin_m, core::between(0.0, 1.0));
+  read_number(map, "personal_space_margin", personal_space_margin_sigmas, core::between(0.0, 2.0));
   read_number(map, "goal_huber", goal_huber_m, {0.0, 10.0, true});
   read_number(map, "heading_radius", heading_radius_m, {0.0, 10.0, true});
   read_number(map, "target_space_scale", target_space_scale, core::between(0.0, 1.0));
@@ -157,8 +159,8 @@ NavigationConfig NavigationConfig::from_yaml(const core::YamlMap& map) {
     read_number(geo, "group_cost", g.group_cost, core::non_negative());
     geo.finish();
     if (g.preferred_clearance_m < g.inscribed_radius_m) {
-      geo.fail("preferred_clearance", "a value >= inscribed_radius (" +
-                                          std::to_string(g.inscribed_radius_m) + ")",
+      geo.fail("preferred_clearance",
+               "a value >= inscribed_radius (" + std::to_string(g.inscribed_radius_m) + ")",
                std::to_string(g.preferred_clearance_m));
     }
   }

@@ -231,11 +231,16 @@ void Navigator::build_problem(double time_s, const RobotObservation& robot,
   problem_.geodesic = geodesic_.get();
   problem_.goal = goal_->pose;
   // Turning on the spot once at the goal position, until pushed out to twice the tolerance: the
-  // turn about base_footprint may shift it a little, and the phase must not flicker.
+  // turn about base_footprint may shift it a little, and the phase must not flicker. Once turned
+  // but still outside the tolerance, ARI drives again: turning on the spot cannot close a
+  // sideways offset, and the arrival heading would hold it there.
   const double position_error = (robot.pose.position - goal_->pose.position).norm();
-  if (position_error <= config_.navigator.goal_tolerance_m) {
+  const double heading_error =
+      std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
+  const double tolerance = config_.navigator.goal_tolerance_m;
+  if (position_error <= tolerance) {
     aligning_ = true;
-  } else if (position_error > 2.0 * config_.navigator.goal_tolerance_m) {
+  } else if (position_error > 2.0 * tolerance || heading_error <= config_.navigator.yaw_tolerance) {
     aligning_ = false;
   }
   problem_.at_goal_position = aligning_;

@@ -38,7 +38,8 @@ GridField signed_distance_field(const world::OccupancyGrid& grid) {
       if (free_mask.at<uint8_t>(y, x) != 0) {
         field.at(x, y) = static_cast<float>((to_occupied.at<float>(y, x) - 0.5) * res);
       } else {
-        const double cells = any_free ? to_free.at<float>(y, x) : std::hypot(grid.width, grid.height);
+        const double cells =
+            any_free ? to_free.at<float>(y, x) : std::hypot(grid.width, grid.height);
         field.at(x, y) = static_cast<float>(-(cells - 0.5) * res);
       }
     }

@@ -27,13 +27,14 @@ TrajectoryCost::TrajectoryCost(const MpcConfig& config, const UnicycleModel& mod
         std::make_unique<ObstacleCost>(w.obstacle, footprint, config.obstacle_margin_m));
   }
   if (w.agent_clearance > 0.0) {
-    terms_.push_back(std::make_unique<AgentClearanceCost>(
-        w.agent_clearance, footprint, config.personal_space.person_radius_m,
-        config.agent_margin_m, dt));
+    terms_.push_back(std::make_unique<AgentClearanceCost>(w.agent_clearance, footprint,
+                                                          config.personal_space.person_radius_m,
+                                                          config.agent_margin_m, dt));
   }
-  if (w.personal_space > 0.0) {
-    terms_.push_back(std::make_unique<PersonalSpaceCost>(w.personal_space, footprint,
-                                                         config.personal_space, dt));
+  if (w.personal_space > 0.0 || w.personal_space_edge > 0.0) {
+    terms_.push_back(std::make_unique<PersonalSpaceCost>(w.personal_space, w.personal_space_edge,
+                                                         footprint, config.personal_space,
+                                                         config.personal_space_margin_sigmas, dt));
   }
   if (w.group_space > 0.0 || w.ospace_edge > 0.0) {
     terms_.push_back(std::make_unique<GroupSpaceCost>(

@@ -64,7 +64,8 @@ void UnicycleModel::backpropagate(const Rollout& rollout, const Eigen::VectorXd&
     // d(x+, y+)/d(mid) = v dt (-sin m, cos m).
     const double d_mid = v * step_s_ * (-s * lambda[0] + c * lambda[1]);
     gradient.controls[kControlsPerStep * (t - 1)] += step_s_ * (c * lambda[0] + s * lambda[1]);
-    gradient.controls[kControlsPerStep * (t - 1) + 1] += 0.5 * step_s_ * d_mid + step_s_ * lambda[2];
+    gradient.controls[kControlsPerStep * (t - 1) + 1] +=
+        0.5 * step_s_ * d_mid + step_s_ * lambda[2];
     gradient.controls[kControlsPerStep * (t - 1) + 2] += step_s_ * lambda[3];
     lambda[2] += d_mid;
     lambda += gradient.states[t - 1];

@@ -4,8 +4,8 @@
 
 namespace ari_social_sim::navigation {
 
-double ViewCost::evaluate(const MpcProblem& problem, const Rollout& rollout,
-                          const Eigen::VectorXd&, RolloutGradient* gradient) const {
+double ViewCost::evaluate(const MpcProblem& problem, const Rollout& rollout, const Eigen::VectorXd&,
+                          RolloutGradient* gradient) const {
   // Closer than this to the head pan axis the bearing turns too fast to be worth following.
   constexpr double kMinBearingDistance = 0.3;
   double total = 0.0;

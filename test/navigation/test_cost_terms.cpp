@@ -166,7 +166,8 @@ TEST(AgentClearanceCost, PenalisesBodiesCloserThanTheMargin) {
   const double front_gap = 2.5 - (2.0 + kFootprint.circle_offsets_x_m[2]);
   const double expected = 100.0 * std::pow(kFootprint.circle_radius_m + 0.35 - front_gap, 2);
   EXPECT_NEAR(cost.evaluate(room.problem, still.rollout, still.controls, nullptr), expected, 1e-9);
-  // A person walking away at 1 m/s is clear one step later: 0.467 + 0.15 > ... still inside, but less.
+  // A person walking away at 1 m/s is clear one step later: 0.467 + 0.15 > ... still inside, but
+  // less.
   room.problem.people[0].estimate.velocity = {1.0, 0.0};
   EXPECT_LT(cost.evaluate(room.problem, still.rollout, still.controls, nullptr), expected);
 }
@@ -181,15 +182,15 @@ TEST(PersonalSpaceCost, AsymmetricGaussianAtTheBodyEdge) {
   EXPECT_NEAR(params.boundary_value(), std::exp(-2.0), 1e-12);
   // Walking at 1 m/s widens the front sigma to 0.9 m: 1.2 m ahead is then exp(-0.889).
   const PersonEstimate walker = test::person("w", 0.0, 0.0, 0.0, {1.0, 0.0});
-  EXPECT_NEAR(personal_space_value(walker, params, {1.2, 0.0}, 0.0),
-              std::exp(-0.5 * 1.44 / 0.81), 1e-12);
+  EXPECT_NEAR(personal_space_value(walker, params, {1.2, 0.0}, 0.0), std::exp(-0.5 * 1.44 / 0.81),
+              1e-12);
 
   // The cost reads the circle point nearest the person: ARI facing away from a person 1.5 m
   // ahead of its base... put the person 1.0 m in front of ARI's front circle centre, facing ARI.
   test::RoomProblem room(8.0, test::pose(2.0, 4.0, 0.0), test::pose(5.0, 4.0, 0.0));
   const double front = 2.0 + kFootprint.circle_offsets_x_m[2];
   room.problem.people.push_back({test::person("p", front + 1.0, 4.0, M_PI), 0.5});
-  const PersonalSpaceCost cost(3.0, kFootprint, params, kStep);
+  const PersonalSpaceCost cost(3.0, 0.0, kFootprint, params, 0.2, kStep);
   Still still(state(2.0, 4.0, 0.0), 1);
   double expected = 0.0;
   for (double offset : kFootprint.circle_offsets_x_m) {
@@ -197,6 +198,31 @@ TEST(PersonalSpaceCost, AsymmetricGaussianAtTheBodyEdge) {
     expected += 3.0 * 0.5 * std::exp(-0.5 * edge_distance * edge_distance / 0.36);
   }
   EXPECT_NEAR(cost.evaluate(room.problem, still.rollout, still.controls, nullptr), expected, 1e-9);
+}
+
+TEST(PersonalSpaceCost, StiffEdgeGrowsWithTheSquaredDepthInsideTheSpaceOnly) {
+  PersonalSpaceParams params;  // front sigma 0.6 m, edge at 2 sigma, stiff edge 0.2 sigma beyond
+  test::RoomProblem room(8.0, test::pose(2.0, 4.0, 0.0), test::pose(5.0, 4.0, 0.0));
+  const double front = 2.0 + kFootprint.circle_offsets_x_m[2];
+  room.problem.people.push_back({test::person("p", front + 1.0, 4.0, M_PI), 0.5});
+  const PersonalSpaceCost edge_only(0.0, 50.0, kFootprint, params, 0.2, kStep);
+  Still still(state(2.0, 4.0, 0.0), 1);
+  // Depth of each circle's nearest point, in ln f: (2.2^2 - m^2) / 2 with m its distance in front
+  // sigmas; the front circle's edge is 0.7 m from the person (m = 1.17, depth 1.74).
+  double expected = 0.0;
+  for (double offset : kFootprint.circle_offsets_x_m) {
+    const double m = (front + 1.0 - (2.0 + offset) - kFootprint.circle_radius_m) / 0.6;
+    const double depth = std::max(0.0, 0.5 * (2.2 * 2.2 - m * m));
+    expected += 50.0 * 0.5 * depth * depth;
+  }
+  const double front_m = (1.0 - kFootprint.circle_radius_m) / 0.6;
+  EXPECT_GT(expected, 50.0 * 0.5 * std::pow(0.5 * (4.84 - front_m * front_m), 2) - 1e-9);
+  EXPECT_NEAR(edge_only.evaluate(room.problem, still.rollout, still.controls, nullptr), expected,
+              1e-9);
+  // Beyond 2.2 front sigmas (1.32 m) of every circle it is exactly zero: the Gaussian's tail, not
+  // the edge, is all that reaches there.
+  room.problem.people[0].estimate.position.x() = front + kFootprint.circle_radius_m + 1.4;
+  EXPECT_EQ(edge_only.evaluate(room.problem, still.rollout, still.controls, nullptr), 0.0);
 }
 
 TEST(GroupSpaceCost, KeepsOutOfOtherGroupsButNotTheOneJoined) {
@@ -297,7 +323,7 @@ TEST_P(TermGradient, MatchesFiniteDifferences) {
   terms.push_back(std::make_unique<HeadingCost>(2.0, 3.0, 3.0));
   terms.push_back(std::make_unique<ObstacleCost>(100.0, kFootprint, 0.3));
   terms.push_back(std::make_unique<AgentClearanceCost>(100.0, kFootprint, 0.2, 0.3, kStep));
-  terms.push_back(std::make_unique<PersonalSpaceCost>(3.0, kFootprint, spaces, kStep));
+  terms.push_back(std::make_unique<PersonalSpaceCost>(3.0, 50.0, kFootprint, spaces, 0.2, kStep));
   terms.push_back(std::make_unique<GroupSpaceCost>(3.0, 200.0, kFootprint, spaces, 0.1));
   terms.push_back(std::make_unique<ControlCost>(weights, world::AriLimits{}, kStep));
   terms.push_back(std::make_unique<ViewCost>(1.0, 100.0, kFootprint, 0.3));

@@ -82,6 +82,7 @@ TEST(Navigator, GivesAPersonInTheWayMoreRoomThanTheNonSocialBaseline) {
     NavigationConfig config;
     if (!social) {
       config.mpc.weights.personal_space = 0.0;
+      config.mpc.weights.personal_space_edge = 0.0;
     }
     Navigator navigator(config, test::room_map(8.0));
     const core::Pose2 start = test::pose(1.0, 4.0, 0.0);

@@ -13,23 +13,23 @@ namespace ari_social_sim::navigation {
 /// Ground truth at one tick of an episode.
 struct ScoredTick {
   double time_s{0.0};
-  core::Pose2 ari;                       // base_footprint
-  double linear_mps{0.0};                // ARI's base speed
-  std::vector<PersonEstimate> people;    // true poses and velocities
-  std::vector<GroupEstimate> groups;     // true groups (o-space from the members)
-  double static_penetration_m{0.0};      // how deep ARI's body reaches into walls or furniture
+  core::Pose2 ari;                     // base_footprint
+  double linear_mps{0.0};              // ARI's base speed
+  std::vector<PersonEstimate> people;  // true poses and velocities
+  std::vector<GroupEstimate> groups;   // true groups (o-space from the members)
+  double static_penetration_m{0.0};    // how deep ARI's body reaches into walls or furniture
 };
 
 /// Social-navigation metrics of one episode (specs/algorithms.md 5 suggests the set).
 struct EpisodeScore {
   double duration_s{0.0};
-  double path_length_m{0.0};           // base_footprint path
-  int person_collisions{0};            // contacts begun: footprint reaching a person's body
-  int static_collisions{0};            // contacts begun with walls or furniture (> 1 cm deep)
-  double min_person_distance_m{1e9};   // footprint to the nearest body surface
-  double personal_space_share{0.0};    // share of ticks inside a personal space (exempt excepted)
-  int ospace_intrusions{0};            // entries of the footprint into other groups' o-space disc
-  double mean_abs_jerk{0.0};           // m/s^3, of the base's linear velocity
+  double path_length_m{0.0};          // base_footprint path
+  int person_collisions{0};           // contacts begun: footprint reaching a person's body
+  int static_collisions{0};           // contacts begun with walls or furniture (> 1 cm deep)
+  double min_person_distance_m{1e9};  // footprint to the nearest body surface
+  double personal_space_share{0.0};   // share of ticks inside a personal space (exempt excepted)
+  int ospace_intrusions{0};           // entries of the footprint into other groups' o-space disc
+  double mean_abs_jerk{0.0};          // m/s^3, of the base's linear velocity
 };
 
 /// Accumulates EpisodeScore tick by tick. People in `exempt_people` (the person approached, the

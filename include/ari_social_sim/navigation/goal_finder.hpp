@@ -78,9 +78,8 @@ class GoalFinder {
 
  private:
   Goal find_pose(const PoseTarget& target, const GridField& sdf) const;
-  Goal find_person(const PersonEstimate& person, const PerceivedScene& scene,
-                   const GridField& sdf, const core::Pose2& robot,
-                   const std::optional<Goal>& previous) const;
+  Goal find_person(const PersonEstimate& person, const PerceivedScene& scene, const GridField& sdf,
+                   const core::Pose2& robot, const std::optional<Goal>& previous) const;
   Goal find_group(const GroupEstimate& group, const PerceivedScene& scene, const GridField& sdf,
                   const core::Pose2& robot, const std::optional<Goal>& previous) const;
   /// Free and outside every o-space but `group_id`'s and every personal space but `exempt`'s.

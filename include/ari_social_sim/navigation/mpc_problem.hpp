@@ -32,11 +32,11 @@ struct MpcProblem {
   double start_linear_mps{0.0};   // measured base velocities, for the smoothness and
   double start_angular_rps{0.0};  // acceleration terms of the first step
   double start_pan_rps{0.0};
-  const GridField* sdf{nullptr};            // signed distance to walls and furniture
-  const GeodesicField* geodesic{nullptr};   // travel cost to goal.position
-  core::Pose2 goal;                         // base_footprint goal pose
-  bool at_goal_position{false};             // ARI stands at goal.position: now turn to its heading
-  std::optional<Eigen::Vector2d> look_at;   // what the head camera should keep in view
+  const GridField* sdf{nullptr};           // signed distance to walls and furniture
+  const GeodesicField* geodesic{nullptr};  // travel cost to goal.position
+  core::Pose2 goal;                        // base_footprint goal pose
+  bool at_goal_position{false};            // ARI stands at goal.position: now turn to its heading
+  std::optional<Eigen::Vector2d> look_at;  // what the head camera should keep in view
   std::vector<ProblemPerson> people;
   std::vector<ProblemGroup> groups;
 };

@@ -15,10 +15,10 @@ namespace ari_social_sim::navigation {
 
 /// ARI as the control loop measures it.
 struct RobotObservation {
-  core::Pose2 pose;           // base_footprint in the map frame
-  double linear_mps{0.0};     // base velocities (odometry)
+  core::Pose2 pose;        // base_footprint in the map frame
+  double linear_mps{0.0};  // base velocities (odometry)
   double angular_rps{0.0};
-  double pan_rad{0.0};        // head_1_joint
+  double pan_rad{0.0};  // head_1_joint
   double pan_rps{0.0};
 };
 
@@ -96,7 +96,7 @@ class Navigator {
   std::unique_ptr<GeodesicField> geodesic_;
   std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
-  bool aligning_{false};  // at the goal position, turning to the goal heading
+  bool aligning_{false};                // at the goal position, turning to the goal heading
   std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};

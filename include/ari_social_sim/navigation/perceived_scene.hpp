@@ -8,7 +8,7 @@ namespace ari_social_sim::navigation {
 
 /// A person as perception reports them, in the map frame.
 struct PersonEstimate {
-  std::string id;  // ROS4HRI person id, e.g. "human12"
+  std::string id;                                     // ROS4HRI person id, e.g. "human12"
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};  // m, body centre
   double heading{0.0};                                // rad, facing direction of the body
   Eigen::Vector2d velocity{Eigen::Vector2d::Zero()};  // m/s
@@ -19,8 +19,8 @@ struct PersonEstimate {
 
 /// A conversational group (F-formation) with its o-space, from its members' poses.
 struct GroupEstimate {
-  std::string id;                    // ROS4HRI group id
-  std::vector<std::string> members;  // person ids of the members perception knows
+  std::string id;                                   // ROS4HRI group id
+  std::vector<std::string> members;                 // person ids of the members perception knows
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};  // m, o-space centre
   double radius_m{0.0};  // mean distance of the members from the centre (where they stand)
 };

@@ -5,24 +5,26 @@
 namespace ari_social_sim::navigation {
 
 /// Personal spaces (specs/algorithms.md 2.5): for every person j, footprint circle and step,
-/// w s_j f_j(q), f_j the asymmetric Gaussian of PersonalSpaceParams around the person predicted at
-/// constant velocity, q the point of the circle nearest to the person (ARI's body edge, not its
-/// axis), s_j the person's space scale (reduced for the person approached or the group joined).
+///   s_j (w f_j(q) + w_e max(0, ln(f_j(q) / f_e))^2),
+/// f_j the asymmetric Gaussian of PersonalSpaceParams around the person predicted at constant
+/// velocity, q the point of the circle nearest to the person (ARI's body edge, not its axis), s_j
+/// the person's space scale (reduced for the person approached or the group joined). The soft
+/// Gaussian alone either lets ARI cut through a space when the way round is longer or, weighted
+/// up, pushes ARI off goals that lie just outside one; the stiff edge term is zero outside the
+/// contour f_e (the space's edge `margin_sigmas` beyond boundary_sigmas) and grows with the
+/// squared Mahalanobis depth inside it (ln f = -m^2 / 2), so it keeps ARI out without reaching
+/// farther than the space itself.
 class PersonalSpaceCost : public CostTerm {
  public:
-  PersonalSpaceCost(double weight, const FootprintModel& footprint,
-                    const PersonalSpaceParams& params, double step_s)
-      : weight_(weight),
-        offsets_(footprint.circle_offsets_x_m),
-        circle_radius_m_(footprint.circle_radius_m),
-        params_(params),
-        step_s_(step_s) {}
+  PersonalSpaceCost(double weight, double edge_weight, const FootprintModel& footprint,
+                    const PersonalSpaceParams& params, double margin_sigmas, double step_s);
   const char* name() const override { return "personal_space"; }
   double evaluate(const MpcProblem& problem, const Rollout& rollout,
                   const Eigen::VectorXd& controls, RolloutGradient* gradient) const override;
 
  private:
-  double weight_;
+  double weight_, edge_weight_;
+  double log_edge_value_;  // ln f_e
   std::vector<double> offsets_;
   double circle_radius_m_;
   PersonalSpaceParams params_;

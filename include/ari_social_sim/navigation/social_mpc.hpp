@@ -16,10 +16,10 @@ struct MpcSolution {
   Eigen::VectorXd controls;        // 3 N: the first step is the command to apply now
   std::vector<RobotState> states;  // predicted states 0..N under those controls
   double cost{0.0};
-  std::vector<TermCost> terms;     // each term's share of the cost
-  int evaluations{0};              // cost evaluations, start-point candidates included
-  double solve_time_s{0.0};        // wall time of solve()
-  double solve_cpu_s{0.0};         // CPU time of solve() on its thread (one core)
+  std::vector<TermCost> terms;  // each term's share of the cost
+  int evaluations{0};           // cost evaluations, start-point candidates included
+  double solve_time_s{0.0};     // wall time of solve()
+  double solve_cpu_s{0.0};      // CPU time of solve() on its thread (one core)
 
   double linear_mps() const { return controls[0]; }
   double angular_rps() const { return controls[1]; }

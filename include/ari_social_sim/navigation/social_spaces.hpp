@@ -11,12 +11,12 @@ namespace ari_social_sim::navigation {
 /// ahead of the person and rear sigma behind. The front sigma grows with walking speed, as people
 /// claim more room ahead when they walk. The space's edge is the contour at `boundary_sigmas`.
 struct PersonalSpaceParams {
-  double sigma_front_m{0.6};        // standing person: edge 1.2 m ahead at 2 sigma
-  double sigma_side_m{0.4};         // edge 0.8 m to the side
-  double sigma_rear_m{0.3};         // edge 0.6 m behind
-  double front_per_speed_s{0.3};    // m of front sigma per m/s of walking speed
-  double boundary_sigmas{2.0};      // where "inside the personal space" ends
-  double person_radius_m{0.2};      // body radius, for clearance and the o-space edge
+  double sigma_front_m{0.6};      // standing person: edge 1.2 m ahead at 2 sigma
+  double sigma_side_m{0.4};       // edge 0.8 m to the side
+  double sigma_rear_m{0.3};       // edge 0.6 m behind
+  double front_per_speed_s{0.3};  // m of front sigma per m/s of walking speed
+  double boundary_sigmas{2.0};    // where "inside the personal space" ends
+  double person_radius_m{0.2};    // body radius, for clearance and the o-space edge
 
   /// Value at which the edge lies: exp(-boundary_sigmas^2 / 2).
   double boundary_value() const;

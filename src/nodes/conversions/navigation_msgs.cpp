@@ -1,5 +1,6 @@
 #include "navigation_msgs.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ari_social_sim/core/angles.hpp"
@@ -88,12 +89,14 @@ visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& 
     }
   }
 
-  // Personal-space edges (farther ahead than behind; green when reduced for the person approached
-  // or the members joined) and o-space circles (green for the group joined).
+  // Personal-space edges (farther ahead than behind; green for the person approached or the
+  // members joined, whose spaces ARI may enter) and o-space circles (green for the group joined).
   int id = 0;
   for (const navigation::ProblemPerson& person : problem.people) {
+    const bool is_target = std::find(goal.target_people.begin(), goal.target_people.end(),
+                                     person.estimate.id) != goal.target_people.end();
     Marker& ring = markers.add("personal_space", id++, Marker::LINE_STRIP,
-                               person.space_scale < 1.0 ? green : rgba(1.0f, 0.5f, 0.0f, 0.9f));
+                               is_target ? green : rgba(1.0f, 0.5f, 0.0f, 0.9f));
     ring.scale.x = 0.025;
     const navigation::PersonEstimate& p = person.estimate;
     const double front = spaces.sigma_front_m + spaces.front_per_speed_s * p.velocity.norm();

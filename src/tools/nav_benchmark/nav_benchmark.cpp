@@ -45,7 +45,8 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
   --types LIST      comma-separated subset of pose, corridor, crossing, approach, join2, join3,
                     join4 (default all)
   --controllers L   social, baseline or both (default social,baseline); baseline = the same MPC
-                    with the personal-space, o-space and o-space-edge weights set to 0 and no
+                    with the personal-space, personal-space-edge, o-space and o-space-edge
+                    weights set to 0 and no
                     group areas in its geodesic field (people remain obstacles)
   --solver NAME     overrides the config's mpc.solver
   --config FILE     SocialMPC parameters (default: the package's config/social_mpc.yaml)
@@ -114,8 +115,10 @@ Options parse(int argc, char** argv) {
       for (const std::string& name : split(value)) {
         EpisodeType type;
         if (!tools::parse_type(name, type)) {
-          throw core::ConfigError("--types: expected pose, corridor, crossing, approach, join2, "
-                                  "join3 or join4, got '" + name + "'");
+          throw core::ConfigError(
+              "--types: expected pose, corridor, crossing, approach, join2, "
+              "join3 or join4, got '" +
+              name + "'");
         }
         options.types.push_back(type);
       }
@@ -149,9 +152,9 @@ navigation::NavigationConfig controller_config(const Options& options,
                                                const std::string& controller) {
   navigation::NavigationConfig config = navigation::NavigationConfig::load_file(options.config);
   if (!options.solver.empty()) {
-    for (navigation::SolverKind kind : {navigation::SolverKind::kLbfgs,
-                                        navigation::SolverKind::kSlsqp,
-                                        navigation::SolverKind::kMppi}) {
+    for (navigation::SolverKind kind :
+         {navigation::SolverKind::kLbfgs, navigation::SolverKind::kSlsqp,
+          navigation::SolverKind::kMppi}) {
       if (options.solver == navigation::solver_name(kind)) {
         config.mpc.solver = kind;
       }
@@ -159,6 +162,7 @@ navigation::NavigationConfig controller_config(const Options& options,
   }
   if (controller == "baseline") {
     config.mpc.weights.personal_space = 0.0;
+    config.mpc.weights.personal_space_edge = 0.0;
     config.mpc.weights.group_space = 0.0;
     config.mpc.weights.ospace_edge = 0.0;
     config.navigator.geodesic.group_cost = 0.0;
@@ -236,7 +240,7 @@ struct EpisodeRecord {
   navigation::EpisodeScore score;
   double final_position_error_m{-1.0};
   double final_heading_error_rad{-1.0};
-  int gcff_includes_ari{-1};  // -1 = not a joining episode
+  int gcff_includes_ari{-1};               // -1 = not a joining episode
   std::vector<double> solve_times_s;       // CPU time of each solve on its thread
   std::vector<double> solve_wall_times_s;  // wall time of each solve (grows with machine load)
 };
@@ -246,8 +250,8 @@ double percentile(std::vector<double> values, double q) {
     return 0.0;
   }
   std::sort(values.begin(), values.end());
-  const size_t index = std::min(values.size() - 1,
-                                static_cast<size_t>(std::ceil(q * values.size())) - (q > 0 ? 1 : 0));
+  const size_t index = std::min(
+      values.size() - 1, static_cast<size_t>(std::ceil(q * values.size())) - (q > 0 ? 1 : 0));
   return values[index];
 }
 
@@ -261,10 +265,9 @@ void print_trace(const world::Simulation& sim, const navigation::Navigator& navi
                "t=%.1f ari=(%.2f,%.2f,%.2f) v=%.2f w=%.2f goal=(%.2f,%.2f,%.2f) d=%.2f "
                "cmd=(%.2f,%.2f) %s J=%.3f:",
                sim.time_s(), ari.position.x(), ari.position.y(), ari.theta,
-               sim.ari()->drive().linear_mps(), sim.ari()->drive().angular_rps(),
-               goal.position.x(), goal.position.y(), goal.theta, step.distance_to_goal_m,
-               step.command.linear_mps, step.command.angular_rps, step.phase.c_str(),
-               navigator.plan().cost);
+               sim.ari()->drive().linear_mps(), sim.ari()->drive().angular_rps(), goal.position.x(),
+               goal.position.y(), goal.theta, step.distance_to_goal_m, step.command.linear_mps,
+               step.command.angular_rps, step.phase.c_str(), navigator.plan().cost);
   for (const navigation::TermCost& term : navigator.plan().terms) {
     std::fprintf(stderr, " %s=%.3f", term.name, term.cost);
   }
@@ -381,11 +384,11 @@ void write_csv(const std::string& path, const std::vector<EpisodeRecord>& record
   out << "type,episode,seed,controller,success,outcome,time_to_goal_s,path_length_m,"
          "path_length_ratio,person_collisions,static_collisions,min_person_distance_m,"
          "personal_space_share,ospace_intrusions,final_position_error_m,"
-         "final_heading_error_rad,gcff_includes_ari,mean_abs_jerk,solve_cpu_median_ms,solve_cpu_max_ms,"
+         "final_heading_error_rad,gcff_includes_ari,mean_abs_jerk,solve_cpu_median_ms,solve_cpu_"
+         "max_ms,"
          "solves,reason\n";
   for (const EpisodeRecord& r : records) {
-    const double ratio =
-        r.shortest_path_m > 0.0 ? r.score.path_length_m / r.shortest_path_m : 0.0;
+    const double ratio = r.shortest_path_m > 0.0 ? r.score.path_length_m / r.shortest_path_m : 0.0;
     std::string reason = r.reason;
     std::replace(reason.begin(), reason.end(), '"', '\'');
     char line[1024];
@@ -396,10 +399,10 @@ void write_csv(const std::string& path, const std::vector<EpisodeRecord>& record
                   r.controller.c_str(), r.success ? 1 : 0, r.outcome.c_str(), r.time_to_goal_s,
                   r.score.path_length_m, ratio, r.score.person_collisions,
                   r.score.static_collisions, r.score.min_person_distance_m,
-                  r.score.personal_space_share, r.score.ospace_intrusions,
-                  r.final_position_error_m, r.final_heading_error_rad, r.gcff_includes_ari,
-                  r.score.mean_abs_jerk, 1e3 * percentile(r.solve_times_s, 0.5),
-                  1e3 * percentile(r.solve_times_s, 1.0), r.solve_times_s.size(), reason.c_str());
+                  r.score.personal_space_share, r.score.ospace_intrusions, r.final_position_error_m,
+                  r.final_heading_error_rad, r.gcff_includes_ari, r.score.mean_abs_jerk,
+                  1e3 * percentile(r.solve_times_s, 0.5), 1e3 * percentile(r.solve_times_s, 1.0),
+                  r.solve_times_s.size(), reason.c_str());
     out << line;
   }
 }
