@@ -375,10 +375,7 @@ class ScenarioNode {
     }
   }
 
-  void on_outcome(const DialogueOutcome& msg) {
-    dialogue_end_ = scenario::DialogueEnd{msg.complete,    msg.success,    msg.truncated,
-                                          msg.robot_turns, msg.utterances, msg.total_reward};
-  }
+  void on_outcome(const DialogueOutcome& msg) { dialogue_end_ = from_msg(msg); }
 
   void set_paused(bool paused) {
     std_srvs::SetBool pause;

@@ -206,9 +206,7 @@ void Episode::converse() {
     }
   }
   for (const dialogue::OutcomeEvent& outcome : dialogue_events_.outcomes) {
-    observations_.dialogue_end =
-        DialogueEnd{outcome.complete,    outcome.success,    outcome.truncated,
-                    outcome.robot_turns, outcome.utterances, outcome.total_reward};
+    observations_.dialogue_end = outcome;
   }
 }
 

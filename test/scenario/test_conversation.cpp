@@ -80,7 +80,11 @@ TEST_F(ConversationTest, OpensWithTheGreetingThenAnswersWhatIsAddressedToAri) {
 
   // The dialogue ends: ARI stops taking turns.
   obs.heard = {request("request(location(cafe))")};
-  obs.dialogue_end = DialogueEnd{true, true, false, 2, 6, 70.0};
+  DialogueEnd end;
+  end.complete = end.success = true;
+  end.robot_turns = 2;
+  end.utterances = 6;
+  obs.dialogue_end = end;
   commands.take(conversation.update(obs));
   EXPECT_FALSE(conversation.active());
   EXPECT_EQ(commands.acts.size(), 2u);

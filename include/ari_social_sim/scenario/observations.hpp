@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/dialogue/spoken_dialogue.hpp"
 #include "ari_social_sim/dialogue/utterance.hpp"
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
@@ -31,14 +32,7 @@ PerceivedGroup perceived_group(const std::string& group_id,
                                const std::vector<std::string>& person_ids);
 
 /// How the dialogue with the simulated humans ended (dialogue_node: /sim/dialogue/outcome).
-struct DialogueEnd {
-  bool complete{false};
-  bool success{false};
-  bool truncated{false};
-  int robot_turns{0};
-  int utterances{0};
-  double total_reward{0.0};
-};
+using DialogueEnd = dialogue::OutcomeEvent;
 
 /// What a script sees at one tick: ground truth of the world (scenario_node: /sim/world_state),
 /// ARI's navigation (the move_base and /social_mpc/approach clients) and the perceived groups

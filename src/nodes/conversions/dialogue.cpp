@@ -102,6 +102,21 @@ DialogueOutcome to_msg(const dialogue::OutcomeEvent& outcome) {
   return msg;
 }
 
+dialogue::OutcomeEvent from_msg(const DialogueOutcome& msg) {
+  dialogue::OutcomeEvent outcome;
+  outcome.stamp_s = msg.header.stamp.toSec();
+  outcome.dialogue = msg.dialogue;
+  outcome.seed = msg.seed;
+  outcome.complete = msg.complete;
+  outcome.success = msg.success;
+  outcome.truncated = msg.truncated;
+  outcome.robot_turns = msg.robot_turns;
+  outcome.utterances = msg.utterances;
+  outcome.total_reward = msg.total_reward;
+  outcome.goals = msg.goals;
+  return outcome;
+}
+
 std::vector<dialogue::DialogueAct> acts_from_msg(const std::vector<std::string>& acts,
                                                  const std::string& field) {
   std::vector<dialogue::DialogueAct> out;

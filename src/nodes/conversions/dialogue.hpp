@@ -28,8 +28,9 @@ DialogueInfo to_msg(const dialogue::StepInfo& info, const std::vector<std::strin
 /// the stamp and the speaker's world id; a human speaker also gets its person id `human<N>`.
 DialogueUtterance to_msg(const dialogue::Utterance& utterance,
                          const dialogue::UtteranceEvent& event);
-/// A dialogue's end (/sim/dialogue/outcome).
+/// A dialogue's end (/sim/dialogue/outcome), and its inverse.
 DialogueOutcome to_msg(const dialogue::OutcomeEvent& outcome);
+dialogue::OutcomeEvent from_msg(const DialogueOutcome& msg);
 
 /// Acts from MPGT strings; throws core::RequestError naming `field[i]` on a malformed act or an
 /// unknown intent.
