@@ -7,7 +7,9 @@ add_library(ari_physics
   src/physics/ari_controllers.cpp
   src/physics/ari_physics.cpp
   src/physics/diff_drive_controller.cpp
+  src/physics/lean_multibody_solver.cpp
   src/physics/imu_model.cpp
+  src/physics/joint_servo.cpp
   src/physics/joint_trajectory.cpp
   src/physics/multibody_layout.cpp
   src/physics/person_shape.cpp
@@ -52,7 +54,11 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_static_scene.cpp
       test/physics/test_physics_config.cpp
       test/physics/test_ari_physics.cpp
+      test/physics/test_lean_multibody_solver.cpp
     LIBRARIES ari_physics)
+  # The Bullet-level test builds its own worlds with the solver's private headers.
+  target_include_directories(test_physics SYSTEM PRIVATE /usr/include/bullet)
+  target_include_directories(test_physics PRIVATE src/physics)
   target_compile_definitions(test_physics PRIVATE ARI_URDF="${ari_urdf}"
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()

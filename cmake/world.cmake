@@ -1,5 +1,6 @@
 # world/: the 2D multi-party world on Box2D (seed section 3), and world_node.
 add_library(ari_world
+  src/world/agent_grid.cpp
   src/world/ari.cpp
   src/world/box2d_shapes.cpp
   src/world/differential_drive.cpp
@@ -25,6 +26,7 @@ target_link_libraries(ari_world PUBLIC ari_core box2d::box2d)
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_world
     SOURCES
+      test/world/test_agent_grid.cpp
       test/world/test_gaze_generator.cpp
       test/world/test_group_navigation.cpp
       test/world/test_map_sensor.cpp

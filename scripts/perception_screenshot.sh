@@ -4,13 +4,7 @@
 # by side on a virtual screen: the ground truth (/sim/markers) on the left, what ARI perceives
 # (/hri_perception/markers) on the right. Needs a build (scripts/build.sh), xvfb and ImageMagick.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-export PATH=/usr/bin:$PATH
-set +u
-source _build/devel/setup.bash
-set -u
-port=${ARI_SCREENSHOT_ROS_PORT:-11397}
-export ROS_MASTER_URI=http://localhost:${port}
+source "$(dirname "$0")/screenshot_env.sh" 11397
 work=$(mktemp -d)
 
 roslaunch -p "${port}" ari_social_sim world_perception.launch \

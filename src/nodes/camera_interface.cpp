@@ -164,9 +164,13 @@ void CameraInterface::publish_map(const ros::Time& stamp) {
   if (voxels_pub_.getNumSubscribers() == 0) {
     return;
   }
-  // One cube list per voxel size: the octree merges uniform regions into larger leaves.
+  // One cube list per voxel size: the octree merges uniform regions into larger leaves. Only the
+  // voxels of the height band that makes /map: the floor's would hide the map under them.
   std::map<double, visualization_msgs::Marker> by_size;
   for (const physics::Voxel& voxel : mapper_->occupied_voxels()) {
+    if (voxel.centre.z() < mapper_->config().min_height_m) {
+      continue;
+    }
     visualization_msgs::Marker& cubes = by_size[voxel.size_m];
     if (cubes.points.empty()) {
       cubes.header.frame_id = kMapFrame;

@@ -19,6 +19,8 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/physics/ari_controllers.hpp"
 #include "ari_social_sim/physics/multibody_layout.hpp"
+#include "joint_servo.hpp"
+#include "lean_multibody_solver.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -130,7 +132,7 @@ struct AriPhysics::Engine {
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::unique_ptr<LeanMultiBodySolver> solver;
   std::unique_ptr<btMultiBodyDynamicsWorld> dynamics;
   std::vector<std::unique_ptr<btCollisionShape>> shapes;
   std::vector<std::unique_ptr<btCollisionObject>> statics;
@@ -198,7 +200,7 @@ AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDesc
   collision_config = std::make_unique<btDefaultCollisionConfiguration>();
   dispatcher = std::make_unique<btCollisionDispatcher>(collision_config.get());
   broadphase = std::make_unique<btDbvtBroadphase>();
-  solver = std::make_unique<btMultiBodyConstraintSolver>();
+  solver = std::make_unique<LeanMultiBodySolver>();
   dynamics = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
                                                         solver.get(), collision_config.get());
   dynamics->setGravity(btVector3(0.0, 0.0, -config.gravity_mps2));
@@ -208,6 +210,8 @@ AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDesc
   // Two friction directions per contact (the classic pyramid) instead of the implicit cone:
   // cheaper, and with it a parked ARI drifts no more than with twice the iterations.
   dynamics->getSolverInfo().m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
+  // Only awake objects get their bounding boxes updated: the robot and the people, not the room.
+  dynamics->setForceUpdateAllAabbs(false);
   build_world(config);
   build_robot(start, config);
   // One shape for every person: a cylinder to the shoulders and the head's sphere.
@@ -250,6 +254,9 @@ void AriPhysics::Engine::add_static(btCollisionShape* shape, const Eigen::Isomet
   object->setCollisionShape(shape);
   object->setWorldTransform(to_bt(X));
   object->setFriction(friction);
+  // Never moves: asleep, its bounding box is not recomputed every step (setForceUpdateAllAabbs
+  // is off); a sleeping object still collides with the awake robot and people.
+  object->setActivationState(ISLAND_SLEEPING);
   dynamics->addCollisionObject(object.get(), group, mask);
   statics.push_back(std::move(object));
 }
@@ -416,8 +423,8 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   for (size_t j = 0; j < joint_names.size(); ++j) {
     const RobotJoint& joint = model.joint(joint_names[j]);
     if (joint_link[j] >= 0 && joint.max_effort_nm > 0.0) {
-      auto motor = std::make_unique<btMultiBodyJointMotor>(robot.get(), joint_link[j], 0.0,
-                                                           joint.max_effort_nm * step_s);
+      auto motor =
+          std::make_unique<JointServo>(robot.get(), joint_link[j], joint.max_effort_nm * step_s);
       motors.push_back(motor.get());
       dynamics->addMultiBodyConstraint(motor.get());
       constraints.push_back(std::move(motor));

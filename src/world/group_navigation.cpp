@@ -85,7 +85,6 @@ void GroupNavigation::step(const StepContext& context) {
   for (ObjectId id : spec_.members) {
     member_positions_.push_back(simulation.find_human(id)->pose().position);
   }
-  const double s = ospace_radius_m();
   const double member_personal_distance = member_personal_distance_m();
   const int group_size = static_cast<int>(spec_.members.size());
   const double cohesion_radius = cohesion_radius_m();

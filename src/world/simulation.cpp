@@ -21,6 +21,8 @@ constexpr float kAriMassKg = 50.0f;
 constexpr float kHumanMassKg = 70.0f;
 // The first id handed out by next_free_id for humans spawned without one.
 constexpr ObjectId kFirstAutomaticAgentId = 10;
+// About one personal distance: a neighbour query then visits a 3 x 3 block of cells.
+constexpr double kAgentGridCellM = 1.0;
 
 b2Vec2 to_b2(const Eigen::Vector2d& v) {
   return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
@@ -79,7 +81,10 @@ void SimulationConfig::validate() const {
 }
 
 Simulation::Simulation(WorldDescription world, SimulationConfig config)
-    : world_(std::move(world)), config_(config), physics_(std::make_unique<b2World>(b2Vec2(0, 0))) {
+    : world_(std::move(world)),
+      config_(config),
+      physics_(std::make_unique<b2World>(b2Vec2(0, 0))),
+      agent_grid_(kAgentGridCellM) {
   config_.validate();
   for (const StaticObject& description : world_.objects) {
     auto object = std::make_unique<StaticBody>(description);
@@ -193,6 +198,7 @@ Human& Simulation::add_human(const HumanSpec& spec) {
   body->CreateFixture(&fixture);
   human->attach_body(body);
   register_object(*human);
+  agents_changed();
   Human& ref = *human;
   insert_sorted(humans_, std::move(human));
   return ref;
@@ -206,6 +212,7 @@ void Simulation::remove_human(ObjectId id) {
   release_from_group(id);
   physics_->DestroyBody(human->body());
   objects_by_id_.erase(id);
+  agents_changed();
   humans_.erase(std::find_if(humans_.begin(), humans_.end(),
                              [id](const std::unique_ptr<Human>& h) { return h->id() == id; }));
 }
@@ -236,6 +243,7 @@ Ari& Simulation::add_ari(const AriSpec& spec) {
   body->SetMassData(&mass);
   ari_->attach_body(body);
   register_object(*ari_);
+  agents_changed();
   return *ari_;
 }
 
@@ -351,6 +359,7 @@ void Simulation::set_pose(ObjectId id, const core::Pose2& pose) {
   body->SetTransform(to_b2(pose.position), static_cast<float>(pose.theta));
   body->SetLinearVelocity(b2Vec2(0, 0));
   object->sync_from_body(config_.step_s);
+  agents_changed();
   if (object->kind() == ObjectKind::kHuman) {
     static_cast<Human*>(object)->set_orientation(pose.theta);
   }
@@ -391,38 +400,31 @@ void Simulation::command_ari_head_pan_velocity(double pan_velocity_rps) {
 void Simulation::agent_centres_near(const Eigen::Vector2d& point, double radius_m,
                                     const Object* exclude, std::vector<Eigen::Vector2d>& out,
                                     ObjectId exclude_group) const {
-  out.clear();
-  struct NeighbourQuery : b2QueryCallback {
-    Eigen::Vector2d point;
-    double radius_sq;
-    const Object* exclude;
-    ObjectId exclude_group;
-    std::vector<Eigen::Vector2d>* out;
-    bool ReportFixture(b2Fixture* fixture) override {
-      const Object* other = object_of(fixture->GetBody());
-      if (other == exclude || other->kind() == ObjectKind::kStatic) {
-        return true;
-      }
-      if (exclude_group != kNoObject && other->kind() == ObjectKind::kHuman &&
-          static_cast<const Human*>(other)->group_id() == exclude_group) {
-        return true;
-      }
-      const Eigen::Vector2d centre = other->centre();
-      if ((centre - point).squaredNorm() < radius_sq) {
-        out->push_back(centre);
-      }
-      return true;
+  if (agent_grid_stale_) {
+    std::vector<const Object*> agents;
+    agents.reserve(humans_.size() + 1);
+    for (const std::unique_ptr<Human>& human : humans_) {
+      agents.push_back(human.get());
     }
-  } query;
-  query.point = point;
-  query.radius_sq = radius_m * radius_m;
-  query.exclude = exclude;
-  query.exclude_group = exclude_group;
-  query.out = &out;
-  b2AABB box;
-  box.lowerBound = to_b2(point - Eigen::Vector2d::Constant(radius_m));
-  box.upperBound = to_b2(point + Eigen::Vector2d::Constant(radius_m));
-  physics_->QueryAABB(&query, box);
+    if (ari_) {
+      agents.push_back(ari_.get());
+    }
+    agent_grid_.rebuild(agents);
+    agent_grid_stale_ = false;
+  }
+  out.clear();
+  const double radius_sq = radius_m * radius_m;
+  agent_grid_.for_each_near(
+      point, radius_m, [&](const Object& other, const Eigen::Vector2d& centre) {
+        if (&other == exclude || (centre - point).squaredNorm() >= radius_sq) {
+          return;
+        }
+        if (exclude_group != kNoObject && other.kind() == ObjectKind::kHuman &&
+            static_cast<const Human&>(other).group_id() == exclude_group) {
+          return;
+        }
+        out.push_back(centre);
+      });
 }
 
 double Simulation::static_penetration_m(const Object& agent) const {
@@ -473,6 +475,7 @@ void Simulation::step() {
   if (ari_) {
     ari_->sync_from_body(config_.step_s);
   }
+  agents_changed();
 
   // 3. Sensor components.
   for (const std::unique_ptr<Human>& human : humans_) {

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "ari_social_sim/core/error.hpp"
@@ -52,6 +53,11 @@ TEST(GazeGenerator, SharesOfTimeAndMeanDwellMatchTheModel) {
   // Each event starts a dwell; 10,000 s / events is the mean dwell (about 20,000 events, standard
   // error 1 / sqrt(20000) = 0.7%).
   EXPECT_NEAR(10000.0 / events, 0.5, 0.05 * 0.5);
+  std::printf(
+      "shares of time 11/12/13: %.4f %.4f %.4f (model 0.5 0.3 0.2), mean dwell %.4f s "
+      "(mean_duration 0.5 s) over %d dwells\n",
+      steps_on[11] / double(steps), steps_on[12] / double(steps), steps_on[13] / double(steps),
+      10000.0 / events, events);
 }
 
 TEST(GazeGenerator, DirectionFollowsTheTargetAndDistributionModeSamplesAroundTheHeading) {

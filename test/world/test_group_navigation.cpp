@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/group_report.hpp"
@@ -68,6 +70,11 @@ TEST(GroupNavigation, Eq3_9To3_12OneStepOfIsolatedMembers) {
 TEST(GroupNavigation, GroupsOf2To5FormCircularFformationsFromRandomStarts) {
   constexpr double kSide = 6.0;
   constexpr int kTrialsPerSize = 8;
+  // Worst figures over all trials, printed for the performance and issue notes.
+  double worst_off_circle_m = 0.0;
+  double worst_facing_rad = 0.0;
+  double closest_members_m = std::numeric_limits<double>::infinity();
+  double deepest_overall_m = -1.0;
   for (int size = 2; size <= 5; ++size) {
     for (int trial = 0; trial < kTrialsPerSize; ++trial) {
       SCOPED_TRACE("group of " + std::to_string(size) + ", trial " + std::to_string(trial));
@@ -94,8 +101,17 @@ TEST(GroupNavigation, GroupsOf2To5FormCircularFformationsFromRandomStarts) {
           << report.to_text();
       // Box2D keeps bodies out of walls up to its contact slop (5 mm).
       EXPECT_LT(deepest_into_wall, 0.005);
+      worst_off_circle_m = std::max(worst_off_circle_m, report.max_distance_to_circle_m());
+      worst_facing_rad = std::max(worst_facing_rad, report.max_facing_error_rad());
+      closest_members_m = std::min(closest_members_m, report.min_member_distance_m());
+      deepest_overall_m = std::max(deepest_overall_m, deepest_into_wall);
     }
   }
+  std::printf(
+      "worst of %d groups after 30 s: %.3f m off the circle, facing error %.2f deg, closest "
+      "members %.3f m apart, deepest into a wall %.4f m\n",
+      4 * kTrialsPerSize, worst_off_circle_m, worst_facing_rad * 180.0 / M_PI, closest_members_m,
+      deepest_overall_m);
 }
 
 TEST(GroupNavigation, RemovingAMemberKeepsTheRestGrouped) {

@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "ari_social_sim/world/agent_grid.hpp"
 #include "ari_social_sim/world/ari.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
@@ -94,7 +95,7 @@ class Simulation {
   const std::vector<std::unique_ptr<GroupNavigation>>& groups() const { return groups_; }
 
   /// Fills `out` with the centres of agents (humans and ARI) closer than `radius_m` to `point`,
-  /// except `exclude` and members of group `exclude_group`. Uses Box2D's broad phase.
+  /// except `exclude` and members of group `exclude_group`, in a deterministic order.
   void agent_centres_near(const Eigen::Vector2d& point, double radius_m, const Object* exclude,
                           std::vector<Eigen::Vector2d>& out,
                           ObjectId exclude_group = kNoObject) const;
@@ -105,6 +106,8 @@ class Simulation {
   void check_placement(const b2Shape& shape, const core::Pose2& pose, const Object* ignore,
                        const std::string& what) const;
   void register_object(Object& object);
+  /// Marks the neighbour grid out of date: call whenever an agent moves, appears or disappears.
+  void agents_changed() { agent_grid_stale_ = true; }
 
   WorldDescription world_;
   SimulationConfig config_;
@@ -117,6 +120,9 @@ class Simulation {
   std::unordered_map<ObjectId, Object*> objects_by_id_;
   uint64_t step_count_{0};
   StepDiagnostics diagnostics_;
+  // Rebuilt lazily by the first neighbour query after agents changed; a cache, hence mutable.
+  mutable AgentGrid agent_grid_;
+  mutable bool agent_grid_stale_{true};
 };
 
 }  // namespace ari_social_sim::world
