@@ -107,7 +107,12 @@ void BM_SocialMpcSolve(benchmark::State& state) {
   state.counters["evaluations"] = evaluations;
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_SocialMpcSolve)->ArgName("solver")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SocialMpcSolve)
+    ->ArgName("solver")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
 
 // The signed distance field of the waiting room; items = fields.
 void BM_SignedDistanceField(benchmark::State& state) {

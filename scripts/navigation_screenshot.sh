@@ -63,10 +63,10 @@ xvfb-run -a -s "-screen 0 1280x800x24" bash -c "
   import -window root ${work}/joined.png
   kill %1"
 label() {  # image, caption
-  convert "$1" -gravity NorthWest -font DejaVu-Sans-Bold -pointsize 17 -fill white \
+  convert "$1" -gravity NorthWest -font DejaVu-Sans-Bold -pointsize 16 -fill white \
     -undercolor '#000000b0' -annotate +10+10 "$2" "$1"
 }
-label "${work}/on_the_way.png" ' on the way: plan and footprints (blue), personal spaces (orange; green: the members to join), o-space (red), social cost (yellow to red) '
+label "${work}/on_the_way.png" ' on the way: plan and footprints (blue), personal spaces (orange; green: members to join), o-space (red), social cost (yellow-red) '
 label "${work}/joined.png" ' joined: ARI in the gap of the group it was sent to, facing its centre (cyan: the group perception reports) '
 convert "${work}/on_the_way.png" "${work}/joined.png" -append -resize 75% docs/navigation_rviz.png
 echo "wrote docs/navigation_rviz.png"

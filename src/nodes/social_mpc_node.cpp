@@ -68,9 +68,11 @@ class SocialMpcNode {
     simple_goal_sub_ =
         nh_.subscribe("/move_base_simple/goal", 1, &SocialMpcNode::on_simple_goal, this);
     move_base_.registerGoalCallback([this](MoveBaseServer::GoalHandle h) { on_move_base(h); });
-    move_base_.registerCancelCallback([this](MoveBaseServer::GoalHandle h) { on_cancel(h.getGoalID()); });
+    move_base_.registerCancelCallback(
+        [this](MoveBaseServer::GoalHandle h) { on_cancel(h.getGoalID()); });
     approach_.registerGoalCallback([this](ApproachServer::GoalHandle h) { on_approach(h); });
-    approach_.registerCancelCallback([this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
+    approach_.registerCancelCallback(
+        [this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
     move_base_.start();
     approach_.start();
     timer_ = nh_.createTimer(ros::Duration(1.0 / config_.navigator.rate_hz),
@@ -177,8 +179,8 @@ class SocialMpcNode {
     }
     const std::optional<navigation::RobotObservation> robot = observe_robot();
     if (!robot) {
-      throw core::RequestError(std::string("no transform from ") + kMapFrame + " to " +
-                               kBaseFrame + " yet");
+      throw core::RequestError(std::string("no transform from ") + kMapFrame + " to " + kBaseFrame +
+                               " yet");
     }
     observe_people();
     const double now = ros::Time::now().toSec();
@@ -286,16 +288,18 @@ class SocialMpcNode {
         target = navigation::GroupOfPersonTarget{goal->target_id};
         break;
       default:
-        problem = "target_type: expected TARGET_PERSON (0), TARGET_GROUP (1) or "
-                  "TARGET_GROUP_OF_PERSON (2), got " + std::to_string(goal->target_type);
+        problem =
+            "target_type: expected TARGET_PERSON (0), TARGET_GROUP (1) or "
+            "TARGET_GROUP_OF_PERSON (2), got " +
+            std::to_string(goal->target_type);
     }
     if (problem.empty() && goal->target_id.empty()) {
       problem = "target_id: expected a person or group id, got ''";
     }
     if (problem.empty()) {
       observe_people();
-      problem = navigation::unknown_target_reason(
-          *target, tracker_.scene(ros::Time::now().toSec()));
+      problem =
+          navigation::unknown_target_reason(*target, tracker_.scene(ros::Time::now().toSec()));
     }
     if (!problem.empty()) {
       ROS_WARN("approach goal rejected: %s", problem.c_str());
@@ -360,9 +364,9 @@ class SocialMpcNode {
 
   void finish(navigation::NavigationState state, const std::string& reason) {
     const bool succeeded = state == navigation::NavigationState::kSucceeded;
-    end_active(succeeded ? actionlib_msgs::GoalStatus::SUCCEEDED
-                         : actionlib_msgs::GoalStatus::ABORTED,
-               reason);
+    end_active(
+        succeeded ? actionlib_msgs::GoalStatus::SUCCEEDED : actionlib_msgs::GoalStatus::ABORTED,
+        reason);
     if (!succeeded) {
       ROS_WARN("navigation aborted: %s", reason.c_str());
     }
@@ -488,8 +492,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   ROS_INFO("social_mpc_node: %s solver, horizon %d x %.2f s, replanning at %.0f Hz",
-           navigation::solver_name(config.mpc.solver), config.mpc.horizon_steps,
-           config.mpc.step_s, config.navigator.rate_hz);
+           navigation::solver_name(config.mpc.solver), config.mpc.horizon_steps, config.mpc.step_s,
+           config.navigator.rate_hz);
   nodes::SocialMpcNode node(config);
   ros::spin();
   return 0;

@@ -51,13 +51,13 @@ class SocialNavigation : public ::testing::Test {
           std::lock_guard<std::mutex> lock(mutex_);
           truth_ = *msg;
         })));
-    subscribers_.push_back(nh_->subscribe<nav_msgs::Path>(
-        "/social_mpc/plan", 1,
-        boost::function<void(const nav_msgs::Path::ConstPtr&)>(
-            [](const nav_msgs::Path::ConstPtr& msg) {
-              std::lock_guard<std::mutex> lock(mutex_);
-              plan_poses_ = std::max(plan_poses_, msg->poses.size());
-            })));
+    subscribers_.push_back(
+        nh_->subscribe<nav_msgs::Path>("/social_mpc/plan", 1,
+                                       boost::function<void(const nav_msgs::Path::ConstPtr&)>(
+                                           [](const nav_msgs::Path::ConstPtr& msg) {
+                                             std::lock_guard<std::mutex> lock(mutex_);
+                                             plan_poses_ = std::max(plan_poses_, msg->poses.size());
+                                           })));
     spinner_ = new ros::AsyncSpinner(2);
     spinner_->start();
     approach_ = new ApproachClient("/social_mpc/approach", false);
@@ -178,8 +178,7 @@ TEST_F(SocialNavigation, UnknownIdIsRejectedWithTheReason) {
   goal.target_type = ApproachGoal::TARGET_PERSON;
   goal.target_id = "human99";
   EXPECT_EQ(run(*approach_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
-  EXPECT_NE(approach_->getResult()->reason.find("person human99 is not tracked"),
-            std::string::npos)
+  EXPECT_NE(approach_->getResult()->reason.find("person human99 is not tracked"), std::string::npos)
       << approach_->getResult()->reason;
   goal.target_type = 7;
   EXPECT_EQ(run(*approach_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
@@ -219,7 +218,8 @@ TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
                                 [](const HumanState& h) { return h.id == 20; });
   ASSERT_NE(ana, truth.humans.end());
   const double dx = truth.ari.pose.x - ana->pose.x, dy = truth.ari.pose.y - ana->pose.y;
-  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)), 35.0 * M_PI / 180.0);
+  EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)),
+            35.0 * M_PI / 180.0);
   EXPECT_NEAR(std::hypot(dx, dy), 1.1, 0.25);
 }
 
@@ -242,27 +242,38 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   ros::Duration(1.0).sleep();   // perception catches up with the final poses
 
   // GCFF, as hri_perception_node runs it, on the bodies perception reports plus ARI at its body
-  // centre, facing its heading: ARI shares the label of the three members.
+  // centre, facing its heading: ARI shares the label of the three members. Standing in the gap,
+  // ARI may see a member beside it only now and then, so the bodies are read until perception
+  // reports all three at once (within 10 s).
   std::vector<perception::GcffPerson> persons;
-  std::vector<std::string> tracked;
-  std::map<std::string, std::string> body_ids;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    tracked = tracked_;
-    body_ids = body_ids_;
-  }
-  for (const std::string& id : tracked) {
-    Eigen::Vector2d position;
-    double yaw;
-    if (body_ids.count(id) && lookup("body_" + body_ids[id], position, yaw)) {
-      persons.push_back({id, position.x(), position.y(), yaw});
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(10.0);
+  size_t members_seen = 0;
+  while (members_seen < kGroupOfThree.size() && ros::WallTime::now() < until) {
+    std::vector<std::string> tracked;
+    std::map<std::string, std::string> body_ids;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      tracked = tracked_;
+      body_ids = body_ids_;
     }
+    persons.clear();
+    members_seen = 0;
+    for (const std::string& id : tracked) {
+      Eigen::Vector2d position;
+      double yaw;
+      if (body_ids.count(id) && lookup("body_" + body_ids[id], position, yaw)) {
+        persons.push_back({id, position.x(), position.y(), yaw});
+        members_seen += kGroupOfThree.count(id);
+      }
+    }
+    ros::WallDuration(0.2).sleep();
   }
+  ASSERT_EQ(members_seen, kGroupOfThree.size()) << "perception never reported all three at once";
   Eigen::Vector2d base;
-  double heading;
+  double heading = 0.0;
   ASSERT_TRUE(lookup("base_footprint", base, heading));
-  const Eigen::Vector2d ari = base - kBodyCentreBehindBase * Eigen::Vector2d(std::cos(heading),
-                                                                            std::sin(heading));
+  const Eigen::Vector2d ari =
+      base - kBodyCentreBehindBase * Eigen::Vector2d(std::cos(heading), std::sin(heading));
   persons.push_back({"ari", ari.x(), ari.y(), heading});
   perception::GcffDetector detector(perception::GcffParams{kGcffStride, kGcffMdl});
   const perception::GcffResult gcff = detector.detect(persons);

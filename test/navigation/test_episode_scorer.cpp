@@ -1,7 +1,6 @@
-#include "ari_social_sim/navigation/episode_scorer.hpp"
-
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/navigation/episode_scorer.hpp"
 #include "navigation_fixtures.hpp"
 
 namespace ari_social_sim::navigation {

@@ -1,12 +1,11 @@
 // The goal finder on hand-made people and groups: where ARI stands for a pose, a person and a
 // group, which gap it picks, and why it refuses.
 
-#include "ari_social_sim/navigation/goal_finder.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "ari_social_sim/navigation/goal_finder.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "navigation_fixtures.hpp"
 
@@ -32,9 +31,8 @@ class GoalFinderTest : public ::testing::Test {
     for (size_t i = 0; i < angles_deg.size(); ++i) {
       const double a = angles_deg[i] * M_PI / 180.0;
       const std::string person_id = "human" + std::to_string(first_member + i);
-      scene_.people.push_back(test::person(
-          person_id, centre.x() + radius * std::cos(a), centre.y() + radius * std::sin(a),
-          a + M_PI));
+      scene_.people.push_back(test::person(person_id, centre.x() + radius * std::cos(a),
+                                           centre.y() + radius * std::sin(a), a + M_PI));
       group.members.push_back(person_id);
     }
     scene_.groups.push_back(group);

@@ -1,7 +1,6 @@
-#include "ari_social_sim/navigation/navigation_config.hpp"
-
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/navigation/navigation_config.hpp"
 #include "expect_config_error.hpp"
 
 namespace ari_social_sim::navigation {
@@ -27,7 +26,8 @@ TEST(NavigationConfig, ShippedFileSpellsOutTheDefaults) {
   EXPECT_DOUBLE_EQ(file.mpc.weights.personal_space, defaults.mpc.weights.personal_space);
   EXPECT_DOUBLE_EQ(file.mpc.weights.reverse, defaults.mpc.weights.reverse);
   EXPECT_DOUBLE_EQ(file.mpc.weights.pan_limit, defaults.mpc.weights.pan_limit);
-  EXPECT_DOUBLE_EQ(file.mpc.personal_space.sigma_front_m, defaults.mpc.personal_space.sigma_front_m);
+  EXPECT_DOUBLE_EQ(file.mpc.personal_space.sigma_front_m,
+                   defaults.mpc.personal_space.sigma_front_m);
   EXPECT_DOUBLE_EQ(file.mpc.personal_space.person_radius_m,
                    defaults.mpc.personal_space.person_radius_m);
   EXPECT_DOUBLE_EQ(file.goal_finder.approach_distance_m, defaults.goal_finder.approach_distance_m);
@@ -41,9 +41,9 @@ TEST(NavigationConfig, ShippedFileSpellsOutTheDefaults) {
 TEST(NavigationConfig, EmptyMappingGivesTheDefaultsAndKeysOverrideThem) {
   const NavigationConfig empty = parse("{}");
   EXPECT_EQ(empty.mpc.horizon_steps, 20);
-  const NavigationConfig tuned =
-      parse("mpc: {solver: mppi, horizon_steps: 30}\nweights: {personal_space: 0}\n"
-            "controller: {rate: 20}\ngeodesic: {group_cost: 0}\n");
+  const NavigationConfig tuned = parse(
+      "mpc: {solver: mppi, horizon_steps: 30}\nweights: {personal_space: 0}\n"
+      "controller: {rate: 20}\ngeodesic: {group_cost: 0}\n");
   EXPECT_EQ(tuned.mpc.solver, SolverKind::kMppi);
   EXPECT_EQ(tuned.mpc.horizon_steps, 30);
   EXPECT_EQ(tuned.mpc.control_count(), 90);

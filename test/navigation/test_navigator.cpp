@@ -1,14 +1,13 @@
 // The control loop closed over a perfect unicycle: ARI reaches goals with every solver, keeps its
 // distance from a person in its way, and aborts with a reason when it must.
 
-#include "ari_social_sim/navigation/navigator.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
+#include "ari_social_sim/navigation/navigator.hpp"
 #include "navigation_fixtures.hpp"
 
 namespace ari_social_sim::navigation {
@@ -24,7 +23,7 @@ struct DriveResult {
 };
 
 DriveResult drive(Navigator& navigator, const core::Pose2& start, const PerceivedScene& scene,
-          double limit_s) {
+                  double limit_s) {
   DriveResult run;
   run.robot.pose = start;
   const double dt = 1.0 / navigator.config().navigator.rate_hz;
@@ -102,7 +101,9 @@ TEST(Navigator, GivesAPersonInTheWayMoreRoomThanTheNonSocialBaseline) {
 TEST(Navigator, UnreachableGoalIsRefusedWithTheReason) {
   // A closed 2 m box in the room: a goal inside it has free floor but no way in.
   world::WorldDescription world = world::test::square_room(8.0);
-  const double xs[4][4] = {{5.0, 4.0, 2.1, 0.0}, {5.0, 6.0, 2.1, 0.0}, {4.0, 5.0, 2.0, M_PI / 2},
+  const double xs[4][4] = {{5.0, 4.0, 2.1, 0.0},
+                           {5.0, 6.0, 2.1, 0.0},
+                           {4.0, 5.0, 2.0, M_PI / 2},
                            {6.0, 5.0, 2.0, M_PI / 2}};
   for (int i = 0; i < 4; ++i) {
     world::StaticObject wall;
@@ -146,9 +147,8 @@ TEST(Navigator, JoinsAGroupAndEndsFacingItsCentre) {
   PerceivedScene scene;
   for (int i = 0; i < 3; ++i) {
     const double a = M_PI / 2 + 2.0 * M_PI * i / 3.0;
-    scene.people.push_back(test::person("human" + std::to_string(10 + i),
-                                        5.0 + 0.64 * std::cos(a), 5.0 + 0.64 * std::sin(a),
-                                        a + M_PI));
+    scene.people.push_back(test::person("human" + std::to_string(10 + i), 5.0 + 0.64 * std::cos(a),
+                                        5.0 + 0.64 * std::sin(a), a + M_PI));
   }
   scene.groups.push_back(estimate_group("g1", scene.people, 0.64));
   Navigator navigator(NavigationConfig{}, test::room_map(8.0));

@@ -109,8 +109,8 @@ std::vector<ObjectId> place_group(world::Simulation& sim, core::Rng& rng, Object
     const double angle = phase + 2.0 * kPi * i / size + rng.uniform(-0.15, 0.15);
     world::HumanSpec member;
     member.id = first_member + i;
-    member.pose = pose(centre + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)),
-                       angle + kPi);
+    member.pose =
+        pose(centre + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)), angle + kPi);
     sim.add_human(member);
     spec.members.push_back(member.id);
   }
@@ -154,7 +154,8 @@ bool footprint_clear(const navigation::GridField& sdf, const core::Pose2& base, 
   static const navigation::FootprintModel footprint =
       navigation::FootprintModel::covering(world::AriFootprint{}, 3);
   for (double offset : footprint.circle_offsets_x_m) {
-    if (sdf.sample(base.position + offset * base.heading()) < footprint.circle_radius_m + margin_m) {
+    if (sdf.sample(base.position + offset * base.heading()) <
+        footprint.circle_radius_m + margin_m) {
       return false;
     }
   }
@@ -168,7 +169,8 @@ Episode pose_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
   const navigation::GridField sdf =
       navigation::signed_distance_field(world::rasterize_static_map(sim.world(), 0.05));
   const Eigen::Vector2d low(0.6, 0.6), high(9.4, 5.4);
-  place_ari(sim, rng, low, high, [&](const core::Pose2& p) { return footprint_clear(sdf, p, 0.1); });
+  place_ari(sim, rng, low, high,
+            [&](const core::Pose2& p) { return footprint_clear(sdf, p, 0.1); });
   const Eigen::Vector2d start = sim.ari()->pose().position;
   // Two people standing about, never in the door or a narrow passage (0.7 m from any wall).
   for (ObjectId id : {10, 11}) {
@@ -239,8 +241,8 @@ Episode crossing_episode(Episode e, core::Rng& rng) {
   oncoming.id = 12;
   oncoming.pose = pose({11.2, 4.0 + rng.uniform(-0.8, 0.8)}, kPi);
   sim.add_human(oncoming);
-  e.walks.push_back({rng.uniform(0.0, 3.0), oncoming.id,
-                     pose({0.8, 4.0 + rng.uniform(-0.8, 0.8)}, kPi)});
+  e.walks.push_back(
+      {rng.uniform(0.0, 3.0), oncoming.id, pose({0.8, 4.0 + rng.uniform(-0.8, 0.8)}, kPi)});
   e.target = navigation::PoseTarget{pose({10.8, 4.0}, 0.0)};
   e.time_limit_s = 60.0;
   return e;
@@ -260,9 +262,8 @@ Episode approach_episode(Episode e, core::Rng& rng) {
   target.pose = pose(target_at, std::atan2(inward.y(), inward.x()) + rng.uniform(-1.2, 1.2));
   sim.add_human(target);
   for (ObjectId id : {11, 12}) {
-    place_person(sim, rng, id, {0.8, 0.8}, {7.2, 7.2}, [&](const core::Pose2& p) {
-      return (p.position - target_at).norm() > 2.0;
-    });
+    place_person(sim, rng, id, {0.8, 0.8}, {7.2, 7.2},
+                 [&](const core::Pose2& p) { return (p.position - target_at).norm() > 2.0; });
   }
   place_ari(sim, rng, {0.8, 0.8}, {7.2, 7.2}, [&](const core::Pose2& p) {
     bool clear = (p.position - target_at).norm() > 3.0;
@@ -309,9 +310,8 @@ Episode join_episode(Episode e, core::Rng& rng, int size) {
 
 const std::vector<EpisodeType>& all_episode_types() {
   static const std::vector<EpisodeType> types = {
-      EpisodeType::kPose,     EpisodeType::kCorridor, EpisodeType::kCrossing,
-      EpisodeType::kApproach, EpisodeType::kJoin2,    EpisodeType::kJoin3,
-      EpisodeType::kJoin4};
+      EpisodeType::kPose,  EpisodeType::kCorridor, EpisodeType::kCrossing, EpisodeType::kApproach,
+      EpisodeType::kJoin2, EpisodeType::kJoin3,    EpisodeType::kJoin4};
   return types;
 }
 
