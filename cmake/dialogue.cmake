@@ -24,7 +24,10 @@ add_library(ari_dialogue
   src/dialogue/json_lines.cpp
   src/dialogue/robot_nlu.cpp
   src/dialogue/live_dialogue.cpp
-  src/dialogue/dialogue_run_config.cpp)
+  src/dialogue/dialogue_run_config.cpp
+  src/dialogue/playback_stage.cpp
+  src/dialogue/speech_playback.cpp
+  src/dialogue/spoken_dialogue.cpp)
 target_include_directories(ari_dialogue PUBLIC include)
 target_link_libraries(ari_dialogue PUBLIC ari_core)
 target_compile_definitions(ari_dialogue PRIVATE
@@ -60,6 +63,8 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_robot_nlu.cpp
       test/dialogue/test_live_dialogue.cpp
       test/dialogue/test_dialogue_run_config.cpp
+      test/dialogue/test_speech_playback.cpp
+      test/dialogue/test_spoken_dialogue.cpp
     LIBRARIES ari_dialogue)
   target_compile_definitions(test_dialogue PRIVATE
     ARI_MPGT_DIR="${ARI_MPGT_DIR}"
@@ -67,18 +72,20 @@ if(CATKIN_ENABLE_TESTING)
 endif()
 
 # dialogue_node: thin ROS adapter over the dialogue core, three modes (docs/dialogue.md).
+add_library(ari_dialogue_conversions src/nodes/conversions/dialogue.cpp)
+target_include_directories(ari_dialogue_conversions PUBLIC
+  ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS} PRIVATE src/nodes)
+target_link_libraries(ari_dialogue_conversions PUBLIC ari_dialogue ari_world ${catkin_LIBRARIES})
+add_dependencies(ari_dialogue_conversions ${PROJECT_NAME}_generate_messages_cpp)
 add_executable(dialogue_node
   src/nodes/dialogue_node.cpp
   src/nodes/dialogue/asr_stage.cpp
   src/nodes/dialogue/live_dialogue_node.cpp
   src/nodes/dialogue/rl_env_services.cpp
   src/nodes/dialogue/world_stage.cpp
-  src/nodes/conversions/dialogue.cpp
   src/nodes/ros_params.cpp)
-target_include_directories(dialogue_node PRIVATE
-  src/nodes ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
-target_link_libraries(dialogue_node ari_dialogue ${catkin_LIBRARIES})
-add_dependencies(dialogue_node ${PROJECT_NAME}_generate_messages_cpp)
+target_include_directories(dialogue_node PRIVATE src/nodes)
+target_link_libraries(dialogue_node ari_dialogue_conversions)
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/dialogue_world.test DEPENDENCIES dialogue_node world_node)

@@ -42,6 +42,7 @@ endif()
 
 # world_node: thin ROS adapter over the world core.
 add_library(ari_world_conversions
+  src/nodes/conversions/ari_base.cpp
   src/nodes/conversions/marker_builder.cpp
   src/nodes/conversions/world_markers.cpp
   src/nodes/conversions/world_state.cpp

@@ -11,6 +11,7 @@ packages=(
   python3-rosservice python3-rosnode python3-rosparam python3-rosmsg python3-rosgraph
   ros-robot-state-publisher tf2-tools python3-tf2-ros libtf2-ros-dev libtf2-geometry-msgs-dev
   libactionlib-dev python3-actionlib libmove-base-msgs-dev python3-move-base-msgs
+  librosbag-dev
   python3-std-msgs python3-geometry-msgs python3-nav-msgs python3-sensor-msgs
   python3-visualization-msgs python3-actionlib-msgs python3-rosgraph-msgs python3-std-srvs
   python3-trajectory-msgs python3-rospy

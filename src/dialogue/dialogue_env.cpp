@@ -9,14 +9,16 @@ DialogueEnv::DialogueEnv(const DialogueSetup& setup)
       users_(setup.config.users, setup.domain, setup.model, setup.config.model_file, *setup.nlg,
              *setup.errors, *setup.timing) {}
 
-Observation DialogueEnv::reset(uint64_t seed) {
+Observation DialogueEnv::reset(uint64_t seed, Opening opening) {
   rng_ = core::Rng(seed);
   transcript_.clear();
   robot_turns_ = 0;
   humans_finished_ = false;
   over_ = false;
   users_.reset(rng_);
-  if (!rng_.bernoulli(setup_.model.robot_opens)) {
+  // The draw is made either way, so that the rest of the episode's draws do not depend on it.
+  const bool robot_opens = rng_.bernoulli(setup_.model.robot_opens);
+  if (!robot_opens && opening == Opening::kDrawn) {
     users_.open(transcript_, rng_);
   }
   return observe(0);

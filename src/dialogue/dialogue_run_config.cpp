@@ -1,5 +1,6 @@
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "ari_social_sim/core/error.hpp"
@@ -43,6 +44,15 @@ DialogueRunConfig DialogueRunConfig::from_yaml(const core::YamlMap& map) {
   if (c.language.empty()) {
     map.fail("language", "an IETF language tag such as en-GB", "''");
   }
+  c.humans = map.optional<bool>("humans", c.humans);
+  const std::string start = map.optional<std::string>("start", "at_once");
+  if (start == "at_once") {
+    c.start = DialogueStart::kAtOnce;
+  } else if (start == "robot_speaks") {
+    c.start = DialogueStart::kRobotSpeaks;
+  } else {
+    map.fail("start", "at_once or robot_speaks", "'" + start + "'");
+  }
   map.finish();
   return c;
 }
@@ -62,6 +72,27 @@ void DialogueRunConfig::check_human_ids(const std::vector<std::string>& roles,
     throw core::ConfigError(source + ": human_ids: expected one distinct id > 0 per role (" +
                             expected + "), got " + std::to_string(human_ids.size()) + " ids");
   }
+}
+
+std::vector<uint32_t> DialogueRunConfig::cast(
+    const std::vector<std::pair<uint32_t, std::string>>& humans,
+    const std::vector<std::string>& roles, const std::string& world,
+    const std::string& source) const {
+  std::vector<uint32_t> ids;
+  for (size_t r = 0; r < roles.size(); ++r) {
+    const auto chosen = std::find_if(humans.begin(), humans.end(), [&](const auto& human) {
+      return human_ids.empty() ? human.second == roles[r] : human.first == human_ids[r];
+    });
+    if (chosen == humans.end()) {
+      throw core::ConfigError(
+          human_ids.empty() ? world + ": no human with role '" + roles[r] +
+                                  "' in the world; give " + source + ": human_ids"
+                            : source + ": human_ids[" + std::to_string(r) + "]: no human with id " +
+                                  std::to_string(human_ids[r]) + " in the world");
+    }
+    ids.push_back(chosen->first);
+  }
+  return ids;
 }
 
 }  // namespace ari_social_sim::dialogue

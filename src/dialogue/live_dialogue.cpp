@@ -14,14 +14,14 @@ LiveDialogue::LiveDialogue(const DialogueSetup& setup, const RobotNlu& nlu,
   config_.validate();
 }
 
-void LiveDialogue::start(uint64_t seed, double now_s) {
+void LiveDialogue::start(uint64_t seed, double now_s, Opening opening) {
   seed_ = seed;
   queue_.clear();
   human_playing_ = false;
   robot_wants_floor_ = false;
   last_result_ = StepResult{};
   total_reward_ = 0.0;
-  env_.reset(seed);
+  env_.reset(seed, opening);
   // The opening's first utterance starts now; its own gap (from the dialogue's start) is kept.
   last_end_s_ = now_s;
   gap_done_ = false;

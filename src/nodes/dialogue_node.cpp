@@ -14,6 +14,7 @@
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
+#include "ari_social_sim/perception/perception_frame.hpp"
 #include "dialogue/asr_stage.hpp"
 #include "dialogue/live_dialogue_node.hpp"
 #include "dialogue/rl_env_services.hpp"
@@ -26,40 +27,35 @@ namespace {
 constexpr double kAsrTickHz = 50.0;
 constexpr double kTrackedHz = 10.0;
 
-/// World ids of ARI and of one human per role, from the first world state: ~human_ids when
-/// given (each must exist), else the lowest id with the role. Throws core::ConfigError otherwise.
+/// World ids of ARI and of one human per role, from the first world state (DialogueRunConfig::
+/// cast). Throws core::ConfigError when the world has no ARI or lacks a role.
 struct WorldCast {
   uint32_t robot_id{0};
   std::vector<uint32_t> human_ids;
 };
 
-WorldCast cast_from_world(const WorldState& state, const std::vector<std::string>& roles,
-                          const std::vector<unsigned>& requested, const std::string& source) {
+WorldCast cast_from_world(const WorldState& state, const dialogue::DialogueRunConfig& run,
+                          const std::vector<std::string>& roles, const std::string& source) {
   if (!state.has_ari) {
     throw core::ConfigError("/sim/world_state: the world has no ARI to speak the /tts goals");
   }
   WorldCast cast;
   cast.robot_id = state.ari.id;
+  if (!run.humans) {
+    return cast;  // ARI's voice only
+  }
+  std::vector<std::pair<uint32_t, std::string>> humans;
+  for (const HumanState& human : state.humans) {
+    humans.emplace_back(human.id, human.role);
+  }
+  cast.human_ids = run.cast(humans, roles, "/sim/world_state", source);
   for (size_t r = 0; r < roles.size(); ++r) {
-    const HumanState* chosen = nullptr;
-    for (const HumanState& human : state.humans) {  // ordered by id
-      const bool wanted = requested.empty() ? human.role == roles[r] : human.id == requested[r];
-      if (wanted && chosen == nullptr) {
-        chosen = &human;
-      }
+    const auto& human = *std::find_if(humans.begin(), humans.end(),
+                                      [&](const auto& h) { return h.first == cast.human_ids[r]; });
+    if (human.second != roles[r]) {
+      ROS_WARN("human %u plays the %s but the world calls it a %s", human.first, roles[r].c_str(),
+               human.second.c_str());
     }
-    if (chosen == nullptr) {
-      throw core::ConfigError(
-          requested.empty() ? "/sim/world_state: no human with role '" + roles[r] +
-                                  "' in the world; give " + source + ": human_ids"
-                            : source + ": human_ids[" + std::to_string(r) + "]: no human with id " +
-                                  std::to_string(requested[r]) + " in the world");
-    }
-    if (chosen->role != roles[r]) {
-      ROS_WARN("human %u plays the %s but the world calls it a %s", chosen->id, roles[r].c_str(),
-               chosen->role.c_str());
-    }
-    cast.human_ids.push_back(chosen->id);
   }
   return cast;
 }
@@ -105,14 +101,17 @@ int main(int argc, char** argv) {
     }
     nodes::WorldCast cast;
     try {
-      cast = nodes::cast_from_world(*state, roles, run.human_ids, source);
+      cast = nodes::cast_from_world(*state, run, roles, source);
     } catch (const core::Error& e) {
       ROS_FATAL("%s", e.what());
       return 2;
     }
-    for (size_t r = 0; r < roles.size(); ++r) {
+    for (size_t r = 0; r < cast.human_ids.size(); ++r) {
       ROS_INFO("dialogue_node: the %s is human %u (%s)", roles[r].c_str(), cast.human_ids[r],
-               nodes::person_id(cast.human_ids[r]).c_str());
+               perception::person_id_of(cast.human_ids[r]).c_str());
+    }
+    if (!run.humans) {
+      ROS_INFO("dialogue_node: no simulated humans (~humans false): /tts voices ARI only");
     }
     std::unique_ptr<nodes::LiveDialogueNode> node;
     nodes::WorldStage stage(nh, cast.robot_id, cast.human_ids, [&node] {

@@ -191,13 +191,11 @@ class HriPerceptionNode {
     header.stamp = stamp;
     header.frame_id = kRobotFrame;
     const double now_s = frame.time_s;
-    std::vector<std::string> body_ids, face_ids, voice_ids, tracked_persons, known_persons;
 
+    // Per-id subtopics first, so that a listener diffing the tracked lists below finds every
+    // new id's topics already there.
     for (const perception::PerceivedBody& body : frame.bodies) {
       bodies_.of(body.body_id, now_s).roi.publish(roi_msg(body.roi, body.visible_fraction, header));
-      matches_.publish(
-          match_msg(body.body_id, IdsMatch::BODY, body.person_id, IdsMatch::PERSON, 1.0));
-      body_ids.push_back(body.body_id);
     }
     for (const perception::PerceivedFace& face : frame.faces) {
       FaceTopics& topics = faces_.of(face.face_id, now_s);
@@ -207,9 +205,6 @@ class HriPerceptionNode {
       std_msgs::Bool mask;
       mask.data = face.mask;
       topics.mask.publish(mask);
-      matches_.publish(
-          match_msg(face.face_id, IdsMatch::FACE, face.person_id, IdsMatch::PERSON, 1.0));
-      face_ids.push_back(face.face_id);
     }
     const std::string& language = pipeline_.config().microphone.language;
     for (const perception::PerceivedVoice& voice : frame.voices) {
@@ -220,9 +215,6 @@ class HriPerceptionNode {
       for (const perception::SpeechResult& result : voice.speech) {
         topics.speech.publish(speech_msg(result, language, header));
       }
-      matches_.publish(
-          match_msg(voice.voice_id, IdsMatch::VOICE, voice.person_id, IdsMatch::PERSON, 1.0));
-      voice_ids.push_back(voice.voice_id);
     }
     for (const perception::PersonReport& person : frame.persons) {
       PersonTopics& topics = person_topics(person.person_id);
@@ -234,30 +226,27 @@ class HriPerceptionNode {
       std_msgs::Float32 confidence;
       confidence.data = static_cast<float>(person.location_confidence);
       topics.location_confidence.publish(confidence);
-      known_persons.push_back(person.person_id);
-      if (person.tracked) {
-        tracked_persons.push_back(person.person_id);
-      }
-    }
-    for (const perception::PerceivedGroup& group : frame.groups) {
-      groups_.publish(group_msg(group, header));
-    }
-    for (const perception::GazeRelation& gaze : frame.gazes) {
-      gazing_.publish(gaze_msg(gaze, header));
     }
 
-    std_msgs::Header map_header = header;
-    map_header.frame_id = kMapFrame;
-    if (frame.has_ari) {
-      tf_.sendTransform(
-          hri_transforms(frame, pipeline_.config().human_model, map_header, kRobotFrame));
+    const HriFrameMessages messages =
+        hri_frame_messages(frame, pipeline_.config().human_model, stamp, kRobotFrame, kMapFrame);
+    for (const IdsMatch& match : messages.matches) {
+      matches_.publish(match);
     }
-    // The lists last: a listener that diffs them finds every new id's topics already there.
-    faces_tracked_.publish(ids_msg(face_ids, header));
-    bodies_tracked_.publish(ids_msg(body_ids, header));
-    voices_tracked_.publish(ids_msg(voice_ids, header));
-    persons_tracked_.publish(ids_msg(tracked_persons, header));
-    persons_known_.publish(ids_msg(known_persons, header));
+    for (const Group& group : messages.groups) {
+      groups_.publish(group);
+    }
+    for (const Gaze& gaze : messages.gazes) {
+      gazing_.publish(gaze);
+    }
+    if (!messages.transforms.empty()) {
+      tf_.sendTransform(messages.transforms);
+    }
+    faces_tracked_.publish(messages.faces_tracked);
+    bodies_tracked_.publish(messages.bodies_tracked);
+    voices_tracked_.publish(messages.voices_tracked);
+    persons_tracked_.publish(messages.persons_tracked);
+    persons_known_.publish(messages.persons_known);
 
     bodies_.retire(now_s, run_.id_linger_s);
     faces_.retire(now_s, run_.id_linger_s);

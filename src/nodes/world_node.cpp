@@ -36,6 +36,7 @@
 #include "ari_social_sim/world/scene.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
+#include "conversions/ari_base.hpp"
 #include "conversions/world_markers.hpp"
 #include "conversions/world_state.hpp"
 #include "frames.hpp"
@@ -44,18 +45,10 @@
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kHeadPanJoint[] = "head_1_joint";
-constexpr char kHeadTiltJoint[] = "head_2_joint";
+constexpr double kPausedClockPeriodS = 0.1;  // wall seconds between /clock messages while paused
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
   return {{pose.x, pose.y}, pose.theta};
-}
-
-geometry_msgs::Quaternion yaw_quaternion(double theta) {
-  geometry_msgs::Quaternion q;
-  q.z = std::sin(0.5 * theta);
-  q.w = std::cos(0.5 * theta);
-  return q;
 }
 
 // Runs a service body; a core::Error becomes success = false with its text, as ROS users expect
@@ -118,11 +111,7 @@ class WorldNode {
     services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));
 
     // In 2D mode the base pose is exact, so map and odom coincide.
-    geometry_msgs::TransformStamped map_to_odom;
-    map_to_odom.header.frame_id = kMapFrame;
-    map_to_odom.child_frame_id = kOdomFrame;
-    map_to_odom.transform.rotation.w = 1.0;
-    static_tf_.sendTransform(map_to_odom);
+    static_tf_.sendTransform(map_to_odom(0.0));
     publish_map();
     publish_state();
   }
@@ -135,6 +124,11 @@ class WorldNode {
       ros::spinOnce();
       if (paused_) {
         ros::WallDuration(0.01).sleep();
+        // A paused world keeps publishing its clock (as Gazebo does), so that a node that comes
+        // up meanwhile gets a valid sim time.
+        if (ros::WallTime::now() - last_clock_wall_ > ros::WallDuration(kPausedClockPeriodS)) {
+          publish_clock(ros::Time(simulation_->time_s()));
+        }
         start = ros::WallTime::now();
         start_sim_s = simulation_->time_s();
         continue;
@@ -169,12 +163,17 @@ class WorldNode {
     publish_state();
   }
 
-  void publish_state() {
-    const world::WorldSnapshot snapshot = world::WorldSnapshot::of(*simulation_);
-    const ros::Time stamp(snapshot.time_s);
+  void publish_clock(const ros::Time& stamp) {
     rosgraph_msgs::Clock clock;
     clock.clock = stamp;
     clock_pub_.publish(clock);
+    last_clock_wall_ = ros::WallTime::now();
+  }
+
+  void publish_state() {
+    const world::WorldSnapshot snapshot = world::WorldSnapshot::of(*simulation_);
+    const ros::Time stamp(snapshot.time_s);
+    publish_clock(stamp);
     state_pub_.publish(to_msg(snapshot, kMapFrame));
     if (snapshot.ari && config_.ari_source == world::AriSource::kInternal) {
       publish_base(*snapshot.ari, stamp);
@@ -194,24 +193,8 @@ class WorldNode {
   }
 
   void publish_base(const world::AriSnapshot& ari, const ros::Time& stamp) {
-    geometry_msgs::TransformStamped odom_to_base;
-    odom_to_base.header.stamp = stamp;
-    odom_to_base.header.frame_id = kOdomFrame;
-    odom_to_base.child_frame_id = kBaseFrame;
-    odom_to_base.transform.translation.x = ari.pose.position.x();
-    odom_to_base.transform.translation.y = ari.pose.position.y();
-    odom_to_base.transform.rotation = yaw_quaternion(ari.pose.theta);
-    tf_.sendTransform(odom_to_base);
-
-    nav_msgs::Odometry odom;
-    odom.header = odom_to_base.header;
-    odom.child_frame_id = kBaseFrame;
-    odom.pose.pose.position.x = ari.pose.position.x();
-    odom.pose.pose.position.y = ari.pose.position.y();
-    odom.pose.pose.orientation = odom_to_base.transform.rotation;
-    odom.twist.twist.linear.x = ari.linear_mps;
-    odom.twist.twist.angular.z = ari.angular_rps;
-    odom_pub_.publish(odom);
+    tf_.sendTransform(odom_to_base(ari, stamp.toSec()));
+    odom_pub_.publish(to_odometry(ari, stamp.toSec()));
 
     // The head joints, as ARI's joint_state_controller reports them (tilt stays level in 2D).
     sensor_msgs::JointState joints;
@@ -327,11 +310,7 @@ class WorldNode {
   }
 
   bool set_goal(SetGoal::Request& req, SetGoal::Response& res) {
-    return answer(res, [&] {
-      world::Human& h = human(req.id);
-      simulation_->release_from_group(req.id);
-      h.set_goal(from_msg(req.goal));
-    });
+    return answer(res, [&] { simulation_->set_human_goal(req.id, from_msg(req.goal)); });
   }
 
   bool set_velocity(SetVelocity::Request& req, SetVelocity::Response& res) {
@@ -385,14 +364,9 @@ class WorldNode {
 
   bool say(Say::Request& req, Say::Response& res) {
     return answer(res, [&] {
-      world::SpeechGenerator* speech = nullptr;
-      if (simulation_->ari() != nullptr && simulation_->ari()->id() == req.speaker_id) {
-        speech = &simulation_->ari()->speech();
-      } else {
-        speech = &human(req.speaker_id).speech();
-      }
-      speech->say(req.act, req.content, simulation_->time_s());
-      res.duration = speech->duration_s(req.content);
+      world::SpeechGenerator& speech = simulation_->speech_of(req.speaker_id);
+      speech.say(req.act, req.content, simulation_->time_s());
+      res.duration = speech.duration_s(req.content);
     });
   }
 
@@ -451,6 +425,7 @@ class WorldNode {
   std::unique_ptr<world::Simulation> simulation_;
   world::OccupancyGrid map_;
   bool paused_{false};
+  ros::WallTime last_clock_wall_;
   uint64_t reported_clamps_{0};
   ros::WallTime last_markers_;
 

@@ -316,6 +316,22 @@ void Simulation::remove_group(ObjectId group_id) {
       [group_id](const std::unique_ptr<GroupNavigation>& g) { return g->id() == group_id; }));
 }
 
+void Simulation::set_human_goal(ObjectId human_id, const core::Pose2& goal) {
+  release_from_group(human_id);  // throws for an unknown id
+  find_human(human_id)->set_goal(goal);
+}
+
+SpeechGenerator& Simulation::speech_of(ObjectId speaker_id) {
+  if (ari_ && ari_->id() == speaker_id) {
+    return ari_->speech();
+  }
+  Human* human = find_human(speaker_id);
+  if (human == nullptr) {
+    throw core::RequestError("no human or ARI with id " + std::to_string(speaker_id));
+  }
+  return human->speech();
+}
+
 void Simulation::release_from_group(ObjectId human_id) {
   Human* human = find_human(human_id);
   if (human == nullptr) {

@@ -185,5 +185,27 @@ TEST(Simulation, SpawnRequestsAreCheckedAgainstWallsPeopleAndIds) {
   EXPECT_EQ(simulation.next_free_id(10), 11u);
 }
 
+TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeechIsFoundById) {
+  Simulation simulation(test::square_room(6.0), SimulationConfig{});
+  simulation.add_human(person(10, 2.0, 3.0));
+  simulation.add_human(person(11, 4.0, 3.0));
+  AriSpec ari;
+  ari.pose = {{1.0, 1.0}, 0.0};
+  simulation.add_ari(ari);
+  GroupSpec group;
+  group.id = 1;
+  group.members = {10, 11};
+  group.centre = {3.0, 3.0};
+  simulation.add_group(group);
+  simulation.set_human_goal(10, {{1.0, 5.0}, 0.0});
+  EXPECT_EQ(simulation.find_human(10)->group_id(), kNoObject);
+  EXPECT_EQ(simulation.find_human(10)->motion_mode(), MotionMode::kNavigation);
+  EXPECT_EQ(simulation.find_group(1)->members(), std::vector<ObjectId>{11});
+  EXPECT_THROW(simulation.set_human_goal(12, {{1.0, 5.0}, 0.0}), core::RequestError);
+  EXPECT_EQ(&simulation.speech_of(1), &simulation.ari()->speech());
+  EXPECT_EQ(&simulation.speech_of(11), &simulation.find_human(11)->speech());
+  EXPECT_THROW(simulation.speech_of(1002), core::RequestError);  // a wall says nothing
+}
+
 }  // namespace
 }  // namespace ari_social_sim::world

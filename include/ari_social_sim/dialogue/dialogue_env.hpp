@@ -45,6 +45,10 @@ struct StepResult {
   StepInfo info;
 };
 
+/// Who opens a dialogue: drawn from the fitted model (P(robot opens), the corpus's share), or
+/// ARI (a live robot that walked up to the humans and spoke first).
+enum class Opening { kDrawn, kRobot };
+
 /// The RL environment (Gymnasium-style, specs/dialogue.md section 4): reset(seed) / step(robot
 /// action). One seed reproduces an episode exactly. Holds a reference to the setup, which must
 /// outlive it.
@@ -52,7 +56,7 @@ class DialogueEnv {
  public:
   explicit DialogueEnv(const DialogueSetup& setup);
 
-  Observation reset(uint64_t seed);
+  Observation reset(uint64_t seed, Opening opening = Opening::kDrawn);
   /// Precondition: reset was called and the episode has not ended.
   StepResult step(const RobotAction& action);
 

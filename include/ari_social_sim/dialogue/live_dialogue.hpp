@@ -35,7 +35,7 @@ class LiveDialogue {
   LiveDialogue(const DialogueSetup& setup, const RobotNlu& nlu, LiveDialogueConfig config);
 
   /// Starts a dialogue: reset(seed); the humans' opening (if they open) is queued.
-  void start(uint64_t seed, double now_s);
+  void start(uint64_t seed, double now_s, Opening opening = Opening::kDrawn);
 
   /// ARI wants to speak: the silence timer stops until robot_finished.
   void request_floor();

@@ -16,8 +16,9 @@
 namespace ari_social_sim::world {
 
 /// Who is in a world at the start of a run: the world file, the seed, ARI, humans and groups.
-/// Read from scenes/*.yaml (format in docs/world.md); the scenario files of later modules extend
-/// it with a script.
+/// Read from scenes/*.yaml (format in docs/world.md). Scenario files (scenarios/*.yaml,
+/// docs/scenario.md) are scene files with a `script` section, which this loader leaves to the
+/// scenario loader, so world_node plays a scenario's scene directly.
 struct Scene {
   std::string path;        // the scene file, for messages
   std::string world_path;  // resolved path of the world file
@@ -36,6 +37,12 @@ struct Scene {
 Scene load_scene_file(const std::string& path);
 /// The same from a parsed mapping; `base_dir` resolves the world path.
 Scene parse_scene(const core::YamlMap& root, const std::string& base_dir);
+
+/// Reads and validates one `humans[i]` entry (docs/world.md section 3.3). Throws
+/// core::ConfigError naming the entry and the field.
+HumanSpec parse_human(const core::YamlMap& entry);
+/// The same for one `groups[i]` entry (section 3.6).
+GroupSpec parse_group(const core::YamlMap& entry);
 
 /// Builds the simulation a scene describes. Errors found only when placing bodies (overlapping
 /// spawn positions, unknown group members, ids used twice) throw core::ConfigError naming the

@@ -57,6 +57,11 @@ class Simulation {
   void remove_group(ObjectId group_id);
   /// Takes a human out of its group (if any) so a goal, velocity or pose command can drive it.
   void release_from_group(ObjectId human_id);
+  /// Sends a human walking to a goal with HumanNavigation, out of its group (world_node's
+  /// /sim/set_goal). Throws for an unknown id.
+  void set_human_goal(ObjectId human_id, const core::Pose2& goal);
+  /// The speech generator of ARI or of a human, by id; throws for any other id.
+  SpeechGenerator& speech_of(ObjectId speaker_id);
   /// Places a human or ARI directly; throws if the new pose overlaps anything.
   void set_pose(ObjectId id, const core::Pose2& pose);
   void add_process(std::unique_ptr<Process> process);

@@ -1,6 +1,7 @@
 #include "conversions/dialogue.hpp"
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/perception_frame.hpp"
 
 namespace ari_social_sim::nodes {
 
@@ -32,6 +33,18 @@ DialoguePerception to_msg(const dialogue::Perception& heard) {
   return msg;
 }
 
+dialogue::Perception from_msg(const DialoguePerception& msg) {
+  dialogue::Perception heard;
+  heard.dropped = msg.dropped;
+  heard.speaker = msg.speaker;
+  heard.addressees = msg.addressees;
+  heard.text = msg.text;
+  heard.acts = acts_from_msg(msg.acts, "heard.acts");
+  heard.confidence = msg.confidence;
+  heard.word_errors = msg.word_errors;
+  return heard;
+}
+
 DialogueObservation to_msg(const dialogue::Observation& observation) {
   DialogueObservation msg;
   for (const dialogue::Perception& heard : observation.heard) {
@@ -53,10 +66,12 @@ DialogueInfo to_msg(const dialogue::StepInfo& info, const std::vector<std::strin
   return msg;
 }
 
-DialogueUtterance to_msg(const dialogue::Utterance& utterance, uint32_t dialogue, double stamp_s) {
+DialogueUtterance to_msg(const dialogue::Utterance& utterance,
+                         const dialogue::UtteranceEvent& event) {
   DialogueUtterance msg;
-  msg.header.stamp = ros::Time(stamp_s);
-  msg.dialogue = dialogue;
+  msg.header.stamp = ros::Time(event.stamp_s);
+  msg.dialogue = event.dialogue;
+  msg.speaker_id = event.speaker_id;
   msg.turn = static_cast<uint32_t>(utterance.turn);
   msg.speaker = utterance.speaker;
   msg.addressees = utterance.addressees;
@@ -66,9 +81,40 @@ DialogueUtterance to_msg(const dialogue::Utterance& utterance, uint32_t dialogue
   msg.planned_start = utterance.start_s;
   msg.planned_end = utterance.end_s;
   if (!utterance.is_robot()) {
+    msg.person_id = perception::person_id_of(event.speaker_id);
     msg.heard = to_msg(utterance.heard);
   }
   return msg;
+}
+
+DialogueOutcome to_msg(const dialogue::OutcomeEvent& outcome) {
+  DialogueOutcome msg;
+  msg.header.stamp = ros::Time(outcome.stamp_s);
+  msg.dialogue = outcome.dialogue;
+  msg.seed = outcome.seed;
+  msg.complete = outcome.complete;
+  msg.success = outcome.success;
+  msg.truncated = outcome.truncated;
+  msg.robot_turns = outcome.robot_turns;
+  msg.utterances = outcome.utterances;
+  msg.total_reward = outcome.total_reward;
+  msg.goals = outcome.goals;
+  return msg;
+}
+
+dialogue::OutcomeEvent from_msg(const DialogueOutcome& msg) {
+  dialogue::OutcomeEvent outcome;
+  outcome.stamp_s = msg.header.stamp.toSec();
+  outcome.dialogue = msg.dialogue;
+  outcome.seed = msg.seed;
+  outcome.complete = msg.complete;
+  outcome.success = msg.success;
+  outcome.truncated = msg.truncated;
+  outcome.robot_turns = msg.robot_turns;
+  outcome.utterances = msg.utterances;
+  outcome.total_reward = msg.total_reward;
+  outcome.goals = msg.goals;
+  return outcome;
 }
 
 std::vector<dialogue::DialogueAct> acts_from_msg(const std::vector<std::string>& acts,

@@ -202,4 +202,53 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
   return transforms;
 }
 
+HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
+                                    const perception::HumanModelConfig& human_model,
+                                    const ros::Time& stamp, const std::string& robot_frame,
+                                    const std::string& map_frame) {
+  std_msgs::Header header;
+  header.stamp = stamp;
+  header.frame_id = robot_frame;
+  HriFrameMessages out;
+  std::vector<std::string> body_ids, face_ids, voice_ids, tracked, known;
+  for (const perception::PerceivedBody& body : frame.bodies) {
+    out.matches.push_back(
+        match_msg(body.body_id, IdsMatch::BODY, body.person_id, IdsMatch::PERSON, 1.0));
+    body_ids.push_back(body.body_id);
+  }
+  for (const perception::PerceivedFace& face : frame.faces) {
+    out.matches.push_back(
+        match_msg(face.face_id, IdsMatch::FACE, face.person_id, IdsMatch::PERSON, 1.0));
+    face_ids.push_back(face.face_id);
+  }
+  for (const perception::PerceivedVoice& voice : frame.voices) {
+    out.matches.push_back(
+        match_msg(voice.voice_id, IdsMatch::VOICE, voice.person_id, IdsMatch::PERSON, 1.0));
+    voice_ids.push_back(voice.voice_id);
+  }
+  for (const perception::PersonReport& person : frame.persons) {
+    known.push_back(person.person_id);
+    if (person.tracked) {
+      tracked.push_back(person.person_id);
+    }
+  }
+  for (const perception::PerceivedGroup& group : frame.groups) {
+    out.groups.push_back(group_msg(group, header));
+  }
+  for (const perception::GazeRelation& gaze : frame.gazes) {
+    out.gazes.push_back(gaze_msg(gaze, header));
+  }
+  if (frame.has_ari) {
+    std_msgs::Header map_header = header;
+    map_header.frame_id = map_frame;
+    out.transforms = hri_transforms(frame, human_model, map_header, robot_frame);
+  }
+  out.faces_tracked = ids_msg(face_ids, header);
+  out.bodies_tracked = ids_msg(body_ids, header);
+  out.voices_tracked = ids_msg(voice_ids, header);
+  out.persons_tracked = ids_msg(tracked, header);
+  out.persons_known = ids_msg(known, header);
+  return out;
+}
+
 }  // namespace ari_social_sim::nodes

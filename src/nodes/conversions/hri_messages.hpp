@@ -55,4 +55,20 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
     const perception::PerceptionFrame& frame, const perception::HumanModelConfig& human_model,
     const std_msgs::Header& header, const std::string& robot_frame);
 
+/// What hri_perception_node publishes once per frame besides the per-id subtopics, so that
+/// run_episodes records exactly what the node publishes: the tracked and known id lists (headers
+/// in `robot_frame`), a candidate match per body, face and voice, one Group per group, one Gaze
+/// per relation, and the ROS4HRI frames (none without ARI).
+struct HriFrameMessages {
+  IdsList faces_tracked, bodies_tracked, voices_tracked, persons_tracked, persons_known;
+  std::vector<IdsMatch> matches;
+  std::vector<Group> groups;
+  std::vector<Gaze> gazes;
+  std::vector<geometry_msgs::TransformStamped> transforms;
+};
+HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
+                                    const perception::HumanModelConfig& human_model,
+                                    const ros::Time& stamp, const std::string& robot_frame,
+                                    const std::string& map_frame);
+
 }  // namespace ari_social_sim::nodes

@@ -10,6 +10,7 @@
 #include "ari_social_sim/IdsList.h"
 #include "ari_social_sim/LiveSpeech.h"
 #include "ari_social_sim/dialogue/text.hpp"
+#include "ari_social_sim/perception/perception_frame.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -40,7 +41,7 @@ AsrStage::AsrStage(ros::NodeHandle& nh, const dialogue::TurnTiming& timing,
     voice.is_speaking =
         nh.advertise<std_msgs::Bool>("/humans/voices/" + voice.id + "/is_speaking", 10, true);
     // REP-155 latches the person's voice_id and anonymous flags.
-    const std::string person = "/humans/persons/" + person_id(id);
+    const std::string person = "/humans/persons/" + perception::person_id_of(id);
     ros::Publisher voice_of = nh.advertise<std_msgs::String>(person + "/voice_id", 1, true);
     ros::Publisher anonymous = nh.advertise<std_msgs::Bool>(person + "/anonymous", 1, true);
     std_msgs::String voice_name;
@@ -72,7 +73,7 @@ void AsrStage::publish_tracked() {
   voices.header.stamp = persons.header.stamp = ros::Time::now();
   for (size_t i = 0; i < voices_.size(); ++i) {
     voices.ids.push_back(voices_[i].id);
-    persons.ids.push_back(person_id(human_ids_[i]));
+    persons.ids.push_back(perception::person_id_of(human_ids_[i]));
   }
   voices_tracked_.publish(voices);
   persons_tracked_.publish(persons);

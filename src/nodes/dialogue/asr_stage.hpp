@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/dialogue/speech_stage.hpp"
 #include "ari_social_sim/dialogue/turn_timing.hpp"
-#include "dialogue/speech_stage.hpp"
 
 namespace ari_social_sim::nodes {
 
@@ -19,7 +19,7 @@ namespace ari_social_sim::nodes {
 /// perceives after the error layer: ASR-like text, the confidence, a dropped utterance not at all,
 /// a misattributed one under the other human's voice. Utterances last the turn timing's duration
 /// on ROS time; ARI's /tts words take the same rate.
-class AsrStage : public SpeechStage {
+class AsrStage : public dialogue::SpeechStage {
  public:
   /// `roles` and `human_ids` in the same order; ids give person ids `human<N>`, voices `voice<N>`.
   AsrStage(ros::NodeHandle& nh, const dialogue::TurnTiming& timing, std::vector<std::string> roles,

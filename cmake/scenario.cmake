@@ -1,0 +1,73 @@
+# scenario/: scenario files (a scene plus a script), the state machine that plays them, and
+# scenario_node, which plays them through the suite's public services and actions.
+add_library(ari_scenario
+  src/scenario/agent_ref.cpp
+  src/scenario/batch_plan.cpp
+  src/scenario/conversation.cpp
+  src/scenario/episode.cpp
+  src/scenario/episode_csv.cpp
+  src/scenario/episode_metrics.cpp
+  src/scenario/in_process_navigation.cpp
+  src/scenario/episode_report.cpp
+  src/scenario/progress_bar.cpp
+  src/scenario/observations.cpp
+  src/scenario/random_group.cpp
+  src/scenario/scenario.cpp
+  src/scenario/scenario_run_config.cpp
+  src/scenario/script.cpp
+  src/scenario/script_runner.cpp
+  src/scenario/transcript.cpp
+  src/scenario/world_speech_stage.cpp)
+target_link_libraries(ari_scenario PUBLIC ari_world ari_perception ari_dialogue ari_navigation)
+
+add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
+target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
+target_include_directories(ari_scenario_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include)
+add_executable(scenario_node src/nodes/scenario_node.cpp)
+target_link_libraries(scenario_node ari_scenario_conversions ari_dialogue_conversions)
+
+# run_episodes: the batch tool (cores in one process, rosbags written without a master).
+add_library(ari_episode_bag src/tools/episode_bag.cpp)
+target_link_libraries(ari_episode_bag
+  PUBLIC ari_scenario_conversions ari_perception_conversions ari_dialogue_conversions)
+add_executable(run_episodes src/tools/run_episodes.cpp)
+target_link_libraries(run_episodes ari_episode_bag)
+target_compile_definitions(run_episodes PRIVATE
+  ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios"
+  ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_scenario
+    SOURCES
+      test/scenario/test_agent_ref.cpp
+      test/scenario/test_batch_plan.cpp
+      test/scenario/test_conversation.cpp
+      test/scenario/test_episode_csv.cpp
+      test/scenario/test_episode_metrics.cpp
+      test/scenario/test_progress_bar.cpp
+      test/scenario/test_random_group.cpp
+      test/scenario/test_scenario.cpp
+      test/scenario/test_scenario_run_config.cpp
+      test/scenario/test_script_runner.cpp
+      test/scenario/test_transcript.cpp
+    LIBRARIES ari_scenario)
+  target_compile_definitions(test_scenario PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_include_directories(test_scenario PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+
+  add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
+  add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
+    social_mpc_node dialogue_node scenario_node run_episodes)
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_episode_bag
+    SOURCES test/tools/test_episode_bag.cpp
+    LIBRARIES ari_episode_bag)
+  target_compile_definitions(test_episode_bag PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_scenario SOURCES bench/bench_scenario.cpp LIBRARIES ari_episode_bag)
+  target_compile_definitions(bench_scenario PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_include_directories(bench_scenario PRIVATE ${PROJECT_SOURCE_DIR}/src/tools)
+endif()

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/world/types.hpp"
+
+namespace ari_social_sim::scenario {
+
+/// Who a script line is about: ARI or one simulated human, by its world id. Written `ari` or the
+/// human's id in scenario files.
+struct AgentRef {
+  world::ObjectId human_id{world::kNoObject};  // kNoObject means ARI
+
+  static AgentRef ari() { return {}; }
+  static AgentRef human(world::ObjectId id) { return {id}; }
+  bool is_ari() const { return human_id == world::kNoObject; }
+  /// `ARI` or `human 11`, for messages and transcripts.
+  std::string describe() const;
+
+  bool operator==(const AgentRef& other) const { return human_id == other.human_id; }
+  bool operator!=(const AgentRef& other) const { return !(*this == other); }
+  bool operator<(const AgentRef& other) const { return human_id < other.human_id; }
+};
+
+/// `ari` or a positive human id; nothing for any other text.
+std::optional<AgentRef> parse_agent_ref(const std::string& text);
+/// Reads `key` as `ari` or a positive human id. Throws core::ConfigError naming the field.
+AgentRef read_agent_ref(const core::YamlMap& map, const std::string& key);
+
+/// The simulated human a ROS4HRI person id stands for (the suite's convention, see
+/// perception::person_id_of: human N is person `humanN`); kNoObject for any other id.
+world::ObjectId human_of_person_id(const std::string& person_id);
+
+}  // namespace ari_social_sim::scenario

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/scenario/agent_ref.hpp"
+#include "ari_social_sim/world/group_navigation.hpp"
+#include "ari_social_sim/world/human.hpp"
+
+namespace ari_social_sim::scenario {
+
+/// What a script can ask of the run. scenario_node implements it with the public services and
+/// actions (/sim/..., /tts, move_base, /social_mpc/approach); the batch tool with the cores
+/// in-process. Every method throws core::RequestError when the request is refused (unknown id,
+/// spawn overlapping someone, no server), with the refusal's text.
+class Commands {
+ public:
+  virtual ~Commands() = default;
+
+  /// A human or ARI says `text` as speech act `act`; ARI speaks through its text-to-speech.
+  virtual void say(const AgentRef& speaker, const std::string& act, const std::string& text) = 0;
+  /// A human walks to a pose (leaving its group).
+  virtual void set_human_goal(world::ObjectId human, const core::Pose2& goal) = 0;
+  /// ARI navigates to a pose (move_base). Replaces any navigation goal in progress.
+  virtual void navigate(const core::Pose2& goal) = 0;
+  /// ARI approaches a person, or joins the group the person belongs to (/social_mpc/approach).
+  virtual void approach(world::ObjectId person, bool join_group) = 0;
+  /// ARI cancels its navigation goal.
+  virtual void cancel_navigation() = 0;
+  /// Spawns a human (profile and pose), then sets its goal and gaze targets if the spec has them.
+  virtual void add_human(const world::HumanSpec& spec) = 0;
+  virtual void remove_human(world::ObjectId human) = 0;
+  virtual void create_group(const world::GroupSpec& spec) = 0;
+  virtual void add_group_members(world::ObjectId group,
+                                 const std::vector<world::ObjectId>& members) = 0;
+  virtual void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) = 0;
+};
+
+}  // namespace ari_social_sim::scenario

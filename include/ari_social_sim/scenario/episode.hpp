@@ -1,0 +1,115 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/dialogue/dialogue_config.hpp"
+#include "ari_social_sim/dialogue/dialogue_run_config.hpp"
+#include "ari_social_sim/dialogue/robot_nlu.hpp"
+#include "ari_social_sim/dialogue/spoken_dialogue.hpp"
+#include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/perception/perception_config.hpp"
+#include "ari_social_sim/perception/perception_pipeline.hpp"
+#include "ari_social_sim/scenario/episode_metrics.hpp"
+#include "ari_social_sim/scenario/in_process_navigation.hpp"
+#include "ari_social_sim/scenario/scenario.hpp"
+#include "ari_social_sim/scenario/script_runner.hpp"
+#include "ari_social_sim/scenario/world_speech_stage.hpp"
+#include "ari_social_sim/world/occupancy_grid.hpp"
+#include "ari_social_sim/world/simulation.hpp"
+
+namespace ari_social_sim::scenario {
+
+/// What the batch tool runs every episode with; the defaults are those of the live nodes, and
+/// the parts that every episode shares (the dialogue's domain, models, corpus and NLU) are loaded
+/// once.
+struct EpisodeConfig {
+  world::SimulationConfig simulation;  // step and map resolution (world_node's ~step, ...)
+  /// hri_perception_node's config/perception.yaml; its seed is replaced by the episode's.
+  perception::PerceptionConfig perception;
+  double perception_max_rate_hz{30.0};  // hri_perception_node's ~max_rate
+  /// social_mpc_node's parameters (config/social_mpc.yaml).
+  navigation::NavigationConfig navigation;
+  /// dialogue_node's settings (config/dialogue/simulation.yaml) and parameters in world mode;
+  /// the seed is replaced by the episode's, `humans` and `start` follow the script (section 6 of
+  /// docs/scenario.md).
+  std::shared_ptr<const dialogue::DialogueSetup> dialogue;
+  std::shared_ptr<const dialogue::RobotNlu> nlu;
+  dialogue::DialogueRunConfig dialogue_run;
+
+  /// The live nodes' defaults, read from the package's config files under `config_dir`.
+  /// Throws core::ConfigError naming the file and field.
+  static EpisodeConfig load(const std::string& config_dir);
+};
+
+/// dialogue_node's parameters for a scenario: simulated humans (who wait for ARI to open the
+/// dialogue) when the script converses or waits for the dialogue's end, else ARI's voice only.
+dialogue::DialogueRunConfig dialogue_run_for(const Script& script, dialogue::DialogueRunConfig run);
+
+/// One run of a scenario with the suite's cores composed in one process, as fast as the machine
+/// allows (the batch tool's engine). Each step, in order: the world advances; perception
+/// perceives it (at most at its rate); the dialogue follows what the world played and voices
+/// what is due; the script runs on what the step produced, as scenario_node does on each
+/// /sim/world_state. Seeded: the same scenario, configuration and seed give the same run.
+class Episode {
+ public:
+  /// `seed` replaces the scene's seed, perception's and the dialogue's, and draws the script's
+  /// random groups. Throws core::ConfigError when the scene cannot be built or the dialogue's
+  /// roles are not in it.
+  Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& config);
+  ~Episode();
+  Episode(const Episode&) = delete;
+  Episode& operator=(const Episode&) = delete;
+
+  /// One world step and everything that follows it. Does nothing once the script has ended.
+  void step();
+  bool finished() const { return runner_.finished(); }
+
+  const world::Simulation& simulation() const { return *simulation_; }
+  /// The world after the last step (before the first: the initial state).
+  const world::WorldSnapshot& snapshot() const { return observations_.world; }
+  const world::OccupancyGrid& map() const { return map_; }
+  const ScriptRunner& runner() const { return runner_; }
+  const EpisodeMetrics& metrics() const { return metrics_.metrics(); }
+  uint64_t seed() const { return seed_; }
+  /// What perception reported in the last step; null when it skipped the step (its ~max_rate).
+  const perception::PerceptionFrame* perception_frame() const { return perceived_; }
+  const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
+  /// What social_mpc_node commanded in the last step.
+  const std::vector<SentCommand>& navigation_commands() const { return navigation_commands_; }
+  double navigation_rate_hz() const { return config_.navigation.navigator.rate_hz; }
+  /// What the dialogue reported in the last step (utterances that started, dialogues that ended).
+  const dialogue::SpokenDialogueEvents& dialogue_events() const { return dialogue_events_; }
+  const dialogue::SpokenDialogue& dialogue() const { return *dialogue_; }
+
+ private:
+  class InProcessCommands;
+
+  void perceive();
+  void navigate();
+  void converse();
+
+  const Scenario& scenario_;
+  uint64_t seed_;
+  EpisodeConfig config_;
+  std::unique_ptr<world::Simulation> simulation_;
+  world::OccupancyGrid map_;
+  perception::PerceptionPipeline perception_;
+  std::optional<double> last_perceived_s_;
+  const perception::PerceptionFrame* perceived_{nullptr};
+  std::unique_ptr<InProcessNavigation> navigation_;
+  std::vector<SentCommand> navigation_commands_;
+  dialogue::DialogueRunConfig dialogue_run_;
+  std::unique_ptr<WorldSpeechStage> stage_;
+  std::unique_ptr<dialogue::SpokenDialogue> dialogue_;
+  dialogue::SpokenDialogueEvents dialogue_events_;
+  std::unique_ptr<InProcessCommands> commands_;
+  ScriptRunner runner_;
+  MetricsRecorder metrics_;
+  Observations observations_;
+};
+
+}  // namespace ari_social_sim::scenario

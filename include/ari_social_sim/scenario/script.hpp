@@ -1,0 +1,170 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/scenario/agent_ref.hpp"
+#include "ari_social_sim/scenario/random_group.hpp"
+#include "ari_social_sim/world/group_navigation.hpp"
+#include "ari_social_sim/world/human.hpp"
+
+namespace ari_social_sim::scenario {
+
+// ---- Conditions: what a transition waits for (docs/scenario.md section 4) ----
+
+/// Centre-to-centre distance (m) from an agent to another agent or a fixed point, below or above
+/// a threshold. ARI's position is base_footprint; a human's is the centre of its body.
+struct DistanceCondition {
+  AgentRef from;
+  std::optional<AgentRef> to_agent;  // set: to an agent; unset: to `to_point`
+  Eigen::Vector2d to_point{Eigen::Vector2d::Zero()};
+  double distance_m{0.0};
+  bool below{true};  // distance_below (true) or distance_above (false)
+};
+
+/// An utterance of `speaker` whose act matches `act` finished after the current state was entered
+/// (the seed's `previous_speech_act == act`). `act` is exact, or a prefix ending in `*`; `*` alone
+/// matches any act.
+struct SpeechFinishedCondition {
+  AgentRef speaker;
+  std::string act;
+};
+
+/// ARI: its last navigation goal (set_goal, approach, join_group) succeeded. A human: it has a goal
+/// and stands within `tolerance_m` of it.
+struct GoalReachedCondition {
+  AgentRef who;
+  double tolerance_m{0.3};
+};
+
+/// ARI's last navigation goal was aborted or rejected.
+struct NavigationFailedCondition {};
+
+/// At least `seconds` of sim time since the current state was entered.
+struct TimeElapsedCondition {
+  double seconds{0.0};
+};
+
+/// Perception reports a group (/humans/interactions/groups) that contains every listed agent.
+struct PerceivedGroupCondition {
+  std::vector<AgentRef> members;
+};
+
+/// The dialogue with the simulated humans (dialogue_node) has ended.
+struct DialogueFinishedCondition {};
+
+using Condition = std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
+                               NavigationFailedCondition, TimeElapsedCondition,
+                               PerceivedGroupCondition, DialogueFinishedCondition>;
+
+// ---- Actions: what entering a state or firing a transition does (section 5) ----
+
+/// An agent says an act, word by word. ARI speaks through its text-to-speech (/tts).
+struct SayAction {
+  AgentRef speaker;
+  std::string act;
+  std::string text;
+};
+
+/// ARI: navigate to a pose (move_base). A human: walk to a pose (leaves its group).
+struct SetGoalAction {
+  AgentRef who;
+  core::Pose2 goal;
+};
+
+/// ARI approaches a person (/social_mpc/approach, person target).
+struct ApproachAction {
+  world::ObjectId person{world::kNoObject};
+};
+
+/// ARI joins the group the person belongs to (/social_mpc/approach, group-of-person target).
+struct JoinGroupAction {
+  world::ObjectId person{world::kNoObject};
+};
+
+/// ARI cancels its navigation goal and stops.
+struct CancelNavigationAction {};
+
+struct AddHumanAction {
+  world::HumanSpec human;
+};
+
+struct RemoveHumanAction {
+  world::ObjectId human{world::kNoObject};
+};
+
+struct CreateGroupAction {
+  world::GroupSpec group;
+};
+
+struct AddGroupMembersAction {
+  world::ObjectId group{world::kNoObject};
+  std::vector<world::ObjectId> members;
+};
+
+struct SetGroupCentreAction {
+  world::ObjectId group{world::kNoObject};
+  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
+};
+
+/// ARI takes part in the dialogue with the simulated humans, answering what it hears with the
+/// dialogue core's rule-based policy (dialogue::RulePolicy, opening with its greeting) until the
+/// script leaves the state.
+struct ConverseAction {};
+
+/// Ends the run with an outcome (the seed's `simulation.stop()`).
+struct StopAction {
+  bool success{true};
+  std::string reason;
+};
+
+using Action =
+    std::variant<SayAction, SetGoalAction, ApproachAction, JoinGroupAction, CancelNavigationAction,
+                 AddHumanAction, RemoveHumanAction, CreateGroupAction, AddGroupMembersAction,
+                 SetGroupCentreAction, ConverseAction, StopAction>;
+
+// ---- The state machine ----
+
+/// Fires when every condition holds (an empty list fires at once): runs its actions, then enters
+/// `next` (which may be the same state, entered afresh). `next` is empty only when the actions
+/// stop the run.
+struct Transition {
+  std::vector<Condition> when;
+  std::vector<Action> actions;
+  std::string next;
+  std::string field;  // where it was written, e.g. `script.states[1].transitions[0]`
+};
+
+struct State {
+  std::string name;
+  std::vector<Action> on_enter;
+  std::vector<Transition> transitions;  // checked in order; the first that holds fires
+};
+
+/// The run interfaces a script uses beyond the world's services, so that a runner waits for
+/// exactly those before it starts.
+struct ScriptInterfaces {
+  bool text_to_speech{false};    // ARI says something (/tts)
+  bool move_base{false};         // ARI goes to a pose
+  bool approach{false};          // ARI approaches a person or joins a group
+  bool perceived_groups{false};  // a condition on /humans/interactions/groups
+  bool dialogue{false};          // ARI converses or a condition waits for the dialogue's end
+};
+
+/// The scripted part of a scenario (the seed's Script, 3.7, as data).
+struct Script {
+  double time_limit_s{0.0};  // sim time after which the run ends as a failure
+  std::vector<RandomGroup> random_groups;
+  std::string start;
+  std::vector<State> states;
+
+  /// Index of the state with this name; throws std::out_of_range when there is none.
+  size_t state_index(const std::string& name) const;
+  ScriptInterfaces interfaces() const;
+};
+
+}  // namespace ari_social_sim::scenario

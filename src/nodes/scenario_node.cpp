@@ -1,0 +1,439 @@
+// scenario_node: plays a scenario's script (seed 3.7) against a running suite through its public
+// interfaces only: /sim/world_state and the /sim/... services of world_node, /tts (dialogue_node),
+// move_base and /social_mpc/approach (social_mpc_node), /humans/interactions/groups (perception).
+// Prints the transcript and the outcome at the end and exits 0 on success, 1 on failure.
+
+#include <actionlib/client/simple_action_client.h>
+#include <move_base_msgs/MoveBaseAction.h>
+#include <ros/package.h>
+#include <ros/ros.h>
+#include <std_srvs/SetBool.h>
+
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ari_social_sim/AddGroupMembers.h"
+#include "ari_social_sim/ApproachAction.h"
+#include "ari_social_sim/CreateGroup.h"
+#include "ari_social_sim/DialogueOutcome.h"
+#include "ari_social_sim/DialogueUtterance.h"
+#include "ari_social_sim/Group.h"
+#include "ari_social_sim/RemoveHuman.h"
+#include "ari_social_sim/Say.h"
+#include "ari_social_sim/ScenarioStatus.h"
+#include "ari_social_sim/SetGazeTargets.h"
+#include "ari_social_sim/SetGoal.h"
+#include "ari_social_sim/SetGroupCentre.h"
+#include "ari_social_sim/SpawnHuman.h"
+#include "ari_social_sim/StepSimulation.h"
+#include "ari_social_sim/TtsAction.h"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/perception_frame.hpp"
+#include "ari_social_sim/scenario/episode_metrics.hpp"
+#include "ari_social_sim/scenario/episode_report.hpp"
+#include "ari_social_sim/scenario/scenario_run_config.hpp"
+#include "ari_social_sim/scenario/script_runner.hpp"
+#include "conversions/dialogue.hpp"
+#include "conversions/scenario_status.hpp"
+#include "conversions/world_state.hpp"
+#include "frames.hpp"
+#include "ros_params.hpp"
+
+namespace ari_social_sim::nodes {
+namespace {
+
+using TtsClient = actionlib::SimpleActionClient<TtsAction>;
+using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
+using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
+
+constexpr char kLanguage[] = "en_GB";
+
+geometry_msgs::Pose2D to_pose2d(const core::Pose2& pose) {
+  geometry_msgs::Pose2D msg;
+  msg.x = pose.position.x();
+  msg.y = pose.position.y();
+  msg.theta = pose.theta;
+  return msg;
+}
+
+// Calls a /sim/... service; a refusal or an unreachable server becomes a core::RequestError.
+template <class Service>
+void call(const std::string& name, Service& service) {
+  if (!ros::service::call(name, service)) {
+    throw core::RequestError("service " + name + " is not available");
+  }
+  if (!service.response.success) {
+    throw core::RequestError(service.response.message);
+  }
+}
+
+// Maps an action client's state to the script's view of ARI's navigation.
+scenario::NavigationStatus status_of(const actionlib::SimpleClientGoalState& state,
+                                     const std::string& reason) {
+  using State = actionlib::SimpleClientGoalState;
+  switch (state.state_) {
+    case State::PENDING:
+    case State::ACTIVE:
+      return {scenario::NavigationState::kActive, ""};
+    case State::SUCCEEDED:
+      return {scenario::NavigationState::kSucceeded, ""};
+    case State::ABORTED:
+    case State::REJECTED:
+    case State::LOST:
+      return {scenario::NavigationState::kFailed, reason.empty() ? state.toString() : reason};
+    default:  // PREEMPTED, RECALLED: we cancelled it
+      return {scenario::NavigationState::kIdle, ""};
+  }
+}
+
+// The script's commands as requests to the suite's public services and actions.
+class RosCommands : public scenario::Commands {
+ public:
+  // Creates the action clients the script uses and waits (wall time, as sim time may stand
+  // still) for them and the world's services. Sim time must be valid (> 0): actionlib waits for it.
+  // `while_waiting` runs about once a wall second while a server is missing.
+  void connect(const scenario::ScriptInterfaces& uses, double timeout_s,
+               const std::function<void()>& while_waiting) {
+    std::vector<std::pair<std::string, std::function<bool()>>> needed = {
+        {"/sim/say", [] { return ros::service::exists("/sim/say", false); }}};
+    if (uses.text_to_speech) {
+      tts_ = std::make_unique<TtsClient>("/tts", true);
+      needed.push_back({"/tts action server", [this] { return tts_->isServerConnected(); }});
+    }
+    if (uses.move_base) {
+      move_base_ = std::make_unique<MoveBaseClient>("move_base", true);
+      needed.push_back(
+          {"move_base action server", [this] { return move_base_->isServerConnected(); }});
+    }
+    if (uses.approach) {
+      approach_ = std::make_unique<ApproachClient>("/social_mpc/approach", true);
+      needed.push_back({"/social_mpc/approach action server",
+                        [this] { return approach_->isServerConnected(); }});
+    }
+    const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    ros::WallTime last_waited = ros::WallTime::now();
+    for (const auto& [name, ready] : needed) {
+      while (!ready()) {
+        if (ros::WallTime::now() > limit || !ros::ok()) {
+          throw core::RequestError(name + " did not appear within " + std::to_string(timeout_s) +
+                                   " s (server_timeout)");
+        }
+        if (ros::WallTime::now() - last_waited > ros::WallDuration(1.0)) {
+          while_waiting();
+          last_waited = ros::WallTime::now();
+        }
+        ros::spinOnce();
+        ros::WallDuration(0.05).sleep();
+      }
+    }
+  }
+
+  scenario::NavigationStatus navigation() const {
+    if (active_ == Navigation::kMoveBase) {
+      return status_of(move_base_->getState(), "");
+    }
+    if (active_ == Navigation::kApproach) {
+      const auto result = approach_->getResult();
+      return status_of(approach_->getState(), result ? result->reason : "");
+    }
+    return {};
+  }
+
+  void say(const scenario::AgentRef& speaker, const std::string& act,
+           const std::string& text) override {
+    if (speaker.is_ari()) {
+      TtsGoal goal;
+      goal.rawtext.text = text;
+      goal.rawtext.lang_id = kLanguage;
+      tts_->sendGoal(goal);
+      return;
+    }
+    Say service;
+    service.request.speaker_id = speaker.human_id;
+    service.request.act = act;
+    service.request.content = text;
+    call("/sim/say", service);
+  }
+
+  void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
+    SetGoal service;
+    service.request.id = human;
+    service.request.goal = to_pose2d(goal);
+    call("/sim/set_goal", service);
+  }
+
+  void navigate(const core::Pose2& goal) override {
+    cancel_navigation();
+    move_base_msgs::MoveBaseGoal target;
+    target.target_pose.header.frame_id = kMapFrame;
+    target.target_pose.header.stamp = ros::Time::now();
+    target.target_pose.pose.position.x = goal.position.x();
+    target.target_pose.pose.position.y = goal.position.y();
+    target.target_pose.pose.orientation.z = std::sin(0.5 * goal.theta);
+    target.target_pose.pose.orientation.w = std::cos(0.5 * goal.theta);
+    move_base_->sendGoal(target);
+    active_ = Navigation::kMoveBase;
+  }
+
+  void approach(world::ObjectId person, bool join_group) override {
+    cancel_navigation();
+    ApproachGoal goal;
+    goal.target_type =
+        join_group ? ApproachGoal::TARGET_GROUP_OF_PERSON : ApproachGoal::TARGET_PERSON;
+    goal.target_id = perception::person_id_of(person);
+    approach_->sendGoal(goal);
+    active_ = Navigation::kApproach;
+  }
+
+  void cancel_navigation() override {
+    if (active_ == Navigation::kMoveBase) {
+      move_base_->cancelGoal();
+    } else if (active_ == Navigation::kApproach) {
+      approach_->cancelGoal();
+    }
+    active_ = Navigation::kNone;
+  }
+
+  void add_human(const world::HumanSpec& spec) override {
+    SpawnHuman spawn;
+    spawn.request.id = spec.id;
+    spawn.request.name = spec.name;
+    spawn.request.role = spec.role;
+    spawn.request.pose = to_pose2d(spec.pose);
+    spawn.request.age = static_cast<float>(spec.age_years);
+    spawn.request.gender = world::to_string(spec.gender);
+    spawn.request.mask = spec.mask;
+    spawn.request.emotion = world::to_string(spec.emotion);
+    call("/sim/spawn_human", spawn);
+    if (spec.goal) {
+      set_human_goal(spec.id, *spec.goal);
+    }
+    if (spec.gaze) {
+      SetGazeTargets gaze;
+      gaze.request.id = spec.id;
+      for (const world::GazeTarget& target : spec.gaze->targets) {
+        gaze.request.targets.push_back(target.id);
+        gaze.request.probabilities.push_back(target.probability);
+      }
+      gaze.request.mean_duration = spec.gaze->mean_duration_s;
+      call("/sim/set_gaze_targets", gaze);
+    }
+  }
+
+  void remove_human(world::ObjectId human) override {
+    RemoveHuman service;
+    service.request.id = human;
+    call("/sim/remove_human", service);
+  }
+
+  void create_group(const world::GroupSpec& spec) override {
+    CreateGroup service;
+    service.request.id = spec.id;
+    service.request.members = spec.members;
+    service.request.centre.x = spec.centre.x();
+    service.request.centre.y = spec.centre.y();
+    service.request.ospace_radius = spec.ospace_radius_m;
+    call("/sim/create_group", service);
+  }
+
+  void add_group_members(world::ObjectId group,
+                         const std::vector<world::ObjectId>& members) override {
+    AddGroupMembers service;
+    service.request.group_id = group;
+    service.request.members = members;
+    call("/sim/add_group_members", service);
+  }
+
+  void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) override {
+    SetGroupCentre service;
+    service.request.group_id = group;
+    service.request.centre.x = centre.x();
+    service.request.centre.y = centre.y();
+    call("/sim/set_group_centre", service);
+  }
+
+ private:
+  enum class Navigation { kNone, kMoveBase, kApproach };  // the client of ARI's current goal
+
+  std::unique_ptr<TtsClient> tts_;
+  std::unique_ptr<MoveBaseClient> move_base_;
+  std::unique_ptr<ApproachClient> approach_;
+  Navigation active_{Navigation::kNone};
+};
+
+class ScenarioNode {
+ public:
+  /// `dialogue` is needed by scripts that converse.
+  ScenarioNode(const scenario::ScenarioRunConfig& config, scenario::Scenario scenario,
+               std::unique_ptr<dialogue::DialogueSetup> dialogue)
+      : config_(config),
+        scenario_(std::move(scenario)),
+        dialogue_(std::move(dialogue)),
+        runner_(scenario_,
+                config.seed >= 0 ? static_cast<uint64_t>(config.seed) : scenario_.scene.seed,
+                dialogue_.get()) {
+    status_pub_ = nh_.advertise<ScenarioStatus>("/scenario/status", 1, /*latch=*/true);
+  }
+
+  /// Waits for the suite, starts the world and plays the script; returns the exit code.
+  int run() {
+    step_paused_world();
+    // A node that waits for a first world state before it serves (dialogue_node's /tts) may have
+    // missed the one step: the paused world steps once a second until everything is up.
+    commands_.connect(scenario_.script.interfaces(), config_.server_timeout_s,
+                      [this] { step_paused_world(); });
+    state_sub_ = nh_.subscribe("/sim/world_state", 100, &ScenarioNode::on_world_state, this);
+    if (scenario_.script.interfaces().perceived_groups) {
+      groups_sub_ =
+          nh_.subscribe("/humans/interactions/groups", 100, &ScenarioNode::on_group, this);
+    }
+    // Connected before the world runs, so that the script sees every step from the first.
+    const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(config_.server_timeout_s);
+    while (state_sub_.getNumPublishers() == 0 && ros::ok()) {
+      if (ros::WallTime::now() > limit) {
+        throw core::RequestError("/sim/world_state has no publisher after " +
+                                 std::to_string(config_.server_timeout_s) + " s (server_timeout)");
+      }
+      ros::WallDuration(0.01).sleep();
+    }
+    if (config_.start_world) {
+      set_paused(false);  // world_node may wait paused for the suite to come up
+    }
+    while (ros::ok() && !runner_.finished()) {
+      ros::spinOnce();
+      ros::WallDuration(0.001).sleep();
+    }
+    if (!runner_.finished()) {
+      return 1;
+    }
+    set_paused(true);  // the recording ends with the script
+    std::cout << scenario::format_report(scenario_.name, runner_, metrics_.metrics()) << std::flush;
+    return runner_.outcome()->success ? 0 : 1;
+  }
+
+ private:
+  void on_world_state(const WorldState& msg) {
+    if (runner_.finished()) {
+      return;
+    }
+    scenario::Observations observations;
+    observations.world = from_msg(msg);
+    observations.navigation = commands_.navigation();
+    for (auto group = groups_.begin(); group != groups_.end();) {
+      if (observations.world.time_s - group->second.stamp_s > config_.group_timeout_s) {
+        group = groups_.erase(group);
+      } else {
+        observations.perceived_groups.push_back(group->second.group);
+        ++group;
+      }
+    }
+    observations.heard = std::move(heard_);
+    heard_.clear();
+    observations.dialogue_end = dialogue_end_;
+    const size_t visits = runner_.visits().size();
+    runner_.update(observations, commands_);
+    metrics_.observe(observations);
+    if (runner_.visits().size() != visits || runner_.finished()) {
+      status_pub_.publish(to_msg(scenario_.name, runner_, msg.header.stamp.toSec()));
+      ROS_INFO("scenario %s: %s at %.2f s", scenario_.name.c_str(),
+               runner_.finished() ? "finished" : ("state " + runner_.state()).c_str(),
+               observations.world.time_s);
+    }
+  }
+
+  void on_group(const Group& msg) {
+    PerceivedGroupEntry& entry = groups_[msg.group_id];
+    entry.stamp_s = msg.header.stamp.toSec();
+    entry.group = scenario::perceived_group(msg.group_id, msg.members);
+  }
+
+  // A world started paused stands at sim time 0, which ROS takes for "no time yet"; one step
+  // makes it valid for the action clients. A running world refuses the step, which is fine.
+  void step_paused_world() {
+    StepSimulation step;
+    step.request.steps = 1;
+    if (!ros::service::waitForService("/sim/step", ros::Duration(config_.server_timeout_s))) {
+      throw core::RequestError("world_node's /sim/step did not appear within " +
+                               std::to_string(config_.server_timeout_s) + " s (server_timeout)");
+    }
+    ros::service::call("/sim/step", step);
+  }
+
+  // What ARI perceived of a human utterance (the dialogue's error layer applied).
+  void on_utterance(const DialogueUtterance& msg) {
+    if (msg.speaker == dialogue::kRobot) {
+      return;
+    }
+    try {
+      heard_.push_back(from_msg(msg.heard));
+    } catch (const core::Error& e) {
+      ROS_WARN("/sim/dialogue/utterances: %s", e.what());
+    }
+  }
+
+  void on_outcome(const DialogueOutcome& msg) { dialogue_end_ = from_msg(msg); }
+
+  void set_paused(bool paused) {
+    std_srvs::SetBool pause;
+    pause.request.data = paused;
+    if (!ros::service::call("/sim/pause", pause)) {
+      ROS_WARN("scenario_node: /sim/pause is not available");
+    }
+  }
+
+  struct PerceivedGroupEntry {
+    double stamp_s{0.0};
+    scenario::PerceivedGroup group;
+  };
+
+  scenario::ScenarioRunConfig config_;
+  scenario::Scenario scenario_;
+  std::unique_ptr<dialogue::DialogueSetup> dialogue_;
+  scenario::ScriptRunner runner_;
+  std::vector<dialogue::Perception> heard_;  // since the last world state
+  std::optional<scenario::DialogueEnd> dialogue_end_;
+  scenario::MetricsRecorder metrics_;
+  std::map<std::string, PerceivedGroupEntry> groups_;
+  ros::NodeHandle nh_;
+  RosCommands commands_;
+  ros::Publisher status_pub_;
+  ros::Subscriber state_sub_, groups_sub_, utterances_sub_, outcome_sub_;
+};
+
+}  // namespace
+}  // namespace ari_social_sim::nodes
+
+int main(int argc, char** argv) {
+  using namespace ari_social_sim;
+  ros::init(argc, argv, "scenario_node");
+  ros::NodeHandle private_handle("~");
+  scenario::ScenarioRunConfig config;
+  scenario::Scenario scenario;
+  std::unique_ptr<dialogue::DialogueSetup> dialogue;
+  try {
+    config = scenario::ScenarioRunConfig::from_yaml(nodes::read_private_params(private_handle));
+    scenario = scenario::load_scenario_file(config.scenario);
+    if (scenario.script.interfaces().dialogue) {
+      if (config.dialogue_config.empty()) {
+        config.dialogue_config =
+            ros::package::getPath("ari_social_sim") + "/config/dialogue/simulation.yaml";
+      }
+      dialogue =
+          dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(config.dialogue_config));
+    }
+  } catch (const core::Error& e) {
+    ROS_FATAL("%s", e.what());
+    return 2;
+  }
+  nodes::ScenarioNode node(config, std::move(scenario), std::move(dialogue));
+  try {
+    return node.run();
+  } catch (const core::Error& e) {
+    ROS_FATAL("scenario_node: %s", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,213 @@
+#include "ari_social_sim/scenario/episode.hpp"
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::scenario {
+
+/// The script's commands applied to the cores directly, with the semantics of the services and
+/// actions scenario_node calls (README, world_node's services; /tts of dialogue_node).
+class Episode::InProcessCommands : public Commands {
+ public:
+  InProcessCommands(world::Simulation& world, dialogue::SpokenDialogue& dialogue,
+                    InProcessNavigation& navigation)
+      : world_(world), dialogue_(dialogue), navigation_(navigation) {}
+
+  void say(const AgentRef& speaker, const std::string& act, const std::string& text) override {
+    if (speaker.is_ari()) {
+      const std::string refused = dialogue_.request_robot(text, 0.0);
+      if (!refused.empty()) {
+        throw core::RequestError("/tts: " + refused);
+      }
+      return;
+    }
+    world_.speech_of(speaker.human_id).say(act, text, world_.time_s());
+  }
+
+  void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
+    world_.set_human_goal(human, goal);
+  }
+
+  // As scenario_node: the current goal is cancelled before the next one is sent.
+  void navigate(const core::Pose2& goal) override {
+    navigation_.cancel();
+    navigation_.start(navigation::PoseTarget{goal});
+  }
+
+  void approach(world::ObjectId person, bool join_group) override {
+    navigation_.cancel();
+    const std::string id = perception::person_id_of(person);
+    if (join_group) {
+      navigation_.start(navigation::GroupOfPersonTarget{id});
+    } else {
+      navigation_.start(navigation::PersonTarget{id});
+    }
+  }
+
+  void cancel_navigation() override { navigation_.cancel(); }
+
+  void add_human(const world::HumanSpec& spec) override {
+    // As /sim/spawn_human, then /sim/set_goal and /sim/set_gaze_targets.
+    world::HumanSpec spawned = spec;
+    spawned.goal.reset();
+    spawned.gaze.reset();
+    world_.add_human(spawned);
+    if (spec.goal) {
+      set_human_goal(spec.id, *spec.goal);
+    }
+    if (spec.gaze) {
+      world_.find_human(spec.id)->set_gaze_model(*spec.gaze);
+    }
+  }
+
+  void remove_human(world::ObjectId human) override { world_.remove_human(human); }
+  void create_group(const world::GroupSpec& spec) override { world_.add_group(spec); }
+  void add_group_members(world::ObjectId group,
+                         const std::vector<world::ObjectId>& members) override {
+    world_.add_group_members(group, members);
+  }
+  void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) override {
+    world::GroupNavigation* found = world_.find_group(group);
+    if (found == nullptr) {
+      throw core::RequestError("no group with id " + std::to_string(group));
+    }
+    found->set_centre(centre);
+  }
+
+ private:
+  world::Simulation& world_;
+  dialogue::SpokenDialogue& dialogue_;
+  InProcessNavigation& navigation_;
+};
+
+namespace {
+
+perception::PerceptionConfig seeded(perception::PerceptionConfig config, uint64_t seed) {
+  config.seed = static_cast<unsigned>(seed);
+  return config;
+}
+
+// dialogue_node's cast in world mode, from the scene's humans.
+std::vector<uint32_t> cast_humans(const dialogue::DialogueRunConfig& run,
+                                  const dialogue::DialogueSetup& setup,
+                                  const world::Simulation& simulation, const Scenario& scenario) {
+  if (!run.humans) {
+    return {};
+  }
+  std::vector<std::pair<uint32_t, std::string>> humans;
+  for (const auto& human : simulation.humans()) {
+    humans.emplace_back(human->id(), human->spec().role);
+  }
+  return run.cast(humans, setup.config.users.roles, scenario.scene.path, "dialogue settings");
+}
+
+}  // namespace
+
+EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
+  EpisodeConfig config;
+  config.perception = perception::PerceptionConfig::load_file(config_dir + "/perception.yaml");
+  config.navigation = navigation::NavigationConfig::load_file(config_dir + "/social_mpc.yaml");
+  auto setup = dialogue::DialogueSetup::create(
+      dialogue::DialogueConfig::load(config_dir + "/dialogue/simulation.yaml"));
+  config.nlu =
+      std::make_shared<const dialogue::RobotNlu>(*setup->nlg, setup->domain, &setup->corpus);
+  config.dialogue = std::move(setup);
+  return config;
+}
+
+dialogue::DialogueRunConfig dialogue_run_for(const Script& script,
+                                             dialogue::DialogueRunConfig run) {
+  run.mode = dialogue::DialogueMode::kWorld;
+  run.humans = script.interfaces().dialogue;
+  run.start = dialogue::DialogueStart::kRobotSpeaks;
+  run.dialogues = 1;
+  return run;
+}
+
+Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& config)
+    : scenario_(scenario),
+      seed_(seed),
+      config_(config),
+      perception_(seeded(config.perception, seed)),
+      dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
+      runner_(scenario, seed, config.dialogue.get()) {
+  if (!config.dialogue || !config.nlu) {
+    throw core::ConfigError(
+        "episode: expected the dialogue settings (EpisodeConfig::load), got none");
+  }
+  world::Scene scene = scenario.scene;
+  scene.seed = seed;
+  simulation_ = world::build_simulation(scene, config.simulation);
+  map_ = world::rasterize_static_map(scene.world, config.simulation.map_resolution_m);
+  // hri_perception_node sees through /map: walls and furniture block sight and sound.
+  perception_.set_sight_map(map_);
+  // social_mpc_node plans on the same /map.
+  navigation_ = std::make_unique<InProcessNavigation>(config.navigation, map_, *simulation_);
+  dialogue_run_.seed = seed;
+  stage_ = std::make_unique<WorldSpeechStage>(
+      *simulation_, cast_humans(dialogue_run_, *config.dialogue, *simulation_, scenario));
+  dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
+                                                         dialogue_run_, *stage_);
+  commands_ = std::make_unique<InProcessCommands>(*simulation_, *dialogue_, *navigation_);
+  observations_.world = world::WorldSnapshot::of(*simulation_);
+}
+
+Episode::~Episode() = default;
+
+void Episode::step() {
+  if (finished()) {
+    return;
+  }
+  simulation_->step();
+  observations_.world = world::WorldSnapshot::of(*simulation_);
+  perceive();
+  navigate();
+  converse();
+  runner_.update(observations_, *commands_);
+  metrics_.observe(observations_);
+}
+
+// As hri_perception_node: every world state unless closer than its maximum rate to the last one.
+void Episode::perceive() {
+  perceived_ = nullptr;
+  const double time_s = observations_.world.time_s;
+  const double period_s = 1.0 / config_.perception_max_rate_hz;
+  if (last_perceived_s_ && time_s - *last_perceived_s_ < 0.999 * period_s) {
+    return;
+  }
+  last_perceived_s_ = time_s;
+  perceived_ = &perception_.update(observations_.world);
+  observations_.perceived_groups.clear();
+  for (const perception::PerceivedGroup& group : perceived_->groups) {
+    observations_.perceived_groups.push_back(perceived_group(group.group_id, group.members));
+  }
+}
+
+// As social_mpc_node: what perception published, then its control timer.
+void Episode::navigate() {
+  if (perceived_ != nullptr) {
+    navigation_->observe(*perceived_);
+  }
+  navigation_->control();
+  navigation_commands_ = navigation_->take_commands();
+  observations_.navigation = navigation_->status();
+}
+
+// As dialogue_node in world mode on each /sim/world_state, and what scenario_node hears of it on
+// /sim/dialogue/utterances and /sim/dialogue/outcome.
+void Episode::converse() {
+  stage_->follow(observations_.world);
+  dialogue_->tick();
+  dialogue_events_ = dialogue_->take_events();
+  observations_.heard.clear();
+  for (const dialogue::UtteranceEvent& event : dialogue_events_.utterances) {
+    const dialogue::Utterance& u = dialogue_->live().env().transcript()[event.index];
+    if (!u.is_robot()) {
+      observations_.heard.push_back(u.heard);
+    }
+  }
+  for (const dialogue::OutcomeEvent& outcome : dialogue_events_.outcomes) {
+    observations_.dialogue_end = outcome;
+  }
+}
+
+}  // namespace ari_social_sim::scenario

@@ -1,0 +1,55 @@
+#include "ari_social_sim/scenario/episode_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ari_social_sim::scenario {
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char text[160];
+  std::snprintf(text, sizeof(text), pattern, a, b, c);
+  return text;
+}
+
+}  // namespace
+
+std::string format_report(const std::string& scenario_name, const ScriptRunner& runner,
+                          const EpisodeMetrics& metrics) {
+  std::string report = "scenario " + scenario_name + " (times from the script's start)\n";
+  report += "transcript:\n";
+  for (const TranscriptLine& line : runner.transcript().lines()) {
+    report += format("  [%7.2f s] ", line.start_s - runner.start_time_s()) + line.speaker_name +
+              " (" + line.act + "): " + line.text + "\n";
+  }
+  report += "states:";
+  for (const StateVisit& visit : runner.visits()) {
+    report += " " + visit.state + format(" %.2f s,", visit.enter_s);
+  }
+  if (!runner.visits().empty()) {
+    report.pop_back();
+  }
+  report += "\n";
+  if (const auto& outcome = runner.outcome()) {
+    report += std::string("outcome: ") + (outcome->success ? "success" : "failure") +
+              format(" after %.2f s", outcome->end_time_s) + " in state " + outcome->final_state +
+              (outcome->reason.empty() ? "" : ": " + outcome->reason) + "\n";
+  } else {
+    report += "outcome: not finished\n";
+  }
+  if (!metrics.has_ari) {
+    return report + "navigation: no ARI in the scene\n";
+  }
+  report += format("navigation: path %.2f m, ", metrics.ari_path_length_m) +
+            (std::isfinite(metrics.min_clearance_m)
+                 ? format("min clearance %.2f m, ", metrics.min_clearance_m)
+                 : std::string("nobody around, ")) +
+            std::to_string(metrics.contacts) + " contacts, " +
+            format("%.2f s in personal space, ", metrics.personal_space_time_s) +
+            std::to_string(metrics.navigation_goals) + " goals (" +
+            std::to_string(metrics.navigation_failures) + " failed) " +
+            format("active for %.2f s\n", metrics.navigation_time_s);
+  return report;
+}
+
+}  // namespace ari_social_sim::scenario

@@ -1,0 +1,107 @@
+#include "ari_social_sim/scenario/in_process_navigation.hpp"
+
+#include <algorithm>
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::scenario {
+
+InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& config,
+                                         const world::OccupancyGrid& map,
+                                         world::Simulation& simulation)
+    : config_(config), simulation_(simulation), tracker_(config.scene), navigator_(config, map) {}
+
+void InProcessNavigation::observe(const perception::PerceptionFrame& frame) {
+  // As social_mpc_node: a tracked person is placed at their body's frame; one without a body
+  // (heard, or not yet matched) is left out, as the planner needs a facing direction.
+  for (const perception::PersonReport& person : frame.persons) {
+    if (!person.tracked || person.body_id.empty()) {
+      continue;
+    }
+    const auto body = std::find_if(
+        frame.bodies.begin(), frame.bodies.end(),
+        [&](const perception::PerceivedBody& b) { return b.body_id == person.body_id; });
+    if (body != frame.bodies.end()) {
+      tracker_.observe_person(person.person_id, frame.time_s, body->X_map_body.position,
+                              body->X_map_body.theta);
+    }
+  }
+  for (const perception::PerceivedGroup& group : frame.groups) {
+    tracker_.observe_group(group.group_id, frame.time_s, group.members);
+  }
+}
+
+navigation::RobotObservation InProcessNavigation::observe_robot() const {
+  const world::Ari& ari = *simulation_.ari();
+  navigation::RobotObservation robot;
+  robot.pose = ari.pose();
+  robot.linear_mps = ari.drive().linear_mps();
+  robot.angular_rps = ari.drive().angular_rps();
+  robot.pan_rad = ari.head().pan_rad();
+  robot.pan_rps = ari.head().pan_velocity_rps();
+  return robot;
+}
+
+void InProcessNavigation::start(const navigation::NavigationTarget& target) {
+  const double now = simulation_.time_s();
+  try {
+    if (simulation_.ari() == nullptr) {
+      throw core::RequestError("no transform from map to base_footprint: the scene has no ARI");
+    }
+    navigator_.start(target, tracker_.scene(now), observe_robot(), now);
+  } catch (const core::Error& e) {
+    // The previous goal stays as it was, as with an action server that rejects a new goal.
+    status_ = {NavigationState::kFailed, e.what()};
+    return;
+  }
+  status_ = {NavigationState::kActive, ""};
+}
+
+void InProcessNavigation::cancel() {
+  if (status_.state == NavigationState::kActive) {
+    navigator_.cancel();
+    stop();
+  }
+  status_ = {};
+}
+
+void InProcessNavigation::control() {
+  const double now = simulation_.time_s();
+  if (now < next_control_s_ - 1e-9) {
+    return;
+  }
+  next_control_s_ = now + 1.0 / config_.navigator.rate_hz;
+  if (navigator_.state() != navigation::NavigationState::kActive || simulation_.ari() == nullptr) {
+    return;
+  }
+  const navigation::NavigatorStep step =
+      navigator_.update(now, observe_robot(), tracker_.scene(now));
+  if (step.state == navigation::NavigationState::kSucceeded) {
+    status_ = {NavigationState::kSucceeded, ""};
+    stop();
+    return;
+  }
+  if (step.state == navigation::NavigationState::kAborted) {
+    status_ = {NavigationState::kFailed, step.reason};
+    stop();
+    return;
+  }
+  simulation_.command_ari_twist(step.command.linear_mps, step.command.angular_rps);
+  simulation_.command_ari_head_pan(step.command.pan_rad);
+  sent_.push_back({step.command.linear_mps, step.command.angular_rps, step.command.pan_rad});
+}
+
+void InProcessNavigation::stop() {
+  if (simulation_.ari() != nullptr) {
+    simulation_.command_ari_twist(0.0, 0.0);
+  }
+  sent_.push_back({});
+}
+
+std::vector<SentCommand> InProcessNavigation::take_commands() {
+  std::vector<SentCommand> taken = std::move(sent_);
+  sent_.clear();
+  return taken;
+}
+
+}  // namespace ari_social_sim::scenario

@@ -1,0 +1,16 @@
+#include "ari_social_sim/scenario/observations.hpp"
+
+namespace ari_social_sim::scenario {
+
+PerceivedGroup perceived_group(const std::string& group_id,
+                               const std::vector<std::string>& person_ids) {
+  PerceivedGroup group{group_id, {}};
+  for (const std::string& person : person_ids) {
+    if (const world::ObjectId human = human_of_person_id(person)) {
+      group.members.push_back(AgentRef::human(human));
+    }
+  }
+  return group;
+}
+
+}  // namespace ari_social_sim::scenario

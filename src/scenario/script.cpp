@@ -1,0 +1,54 @@
+#include "ari_social_sim/scenario/script.hpp"
+
+#include <stdexcept>
+
+namespace ari_social_sim::scenario {
+namespace {
+
+void note(const Action& action, ScriptInterfaces& uses) {
+  if (const auto* say = std::get_if<SayAction>(&action)) {
+    uses.text_to_speech = uses.text_to_speech || say->speaker.is_ari();
+  } else if (const auto* goal = std::get_if<SetGoalAction>(&action)) {
+    uses.move_base = uses.move_base || goal->who.is_ari();
+  } else if (std::holds_alternative<ApproachAction>(action) ||
+             std::holds_alternative<JoinGroupAction>(action)) {
+    uses.approach = true;
+  } else if (std::holds_alternative<ConverseAction>(action)) {
+    uses.dialogue = true;
+    uses.text_to_speech = true;
+  }
+}
+
+}  // namespace
+
+size_t Script::state_index(const std::string& name) const {
+  for (size_t i = 0; i < states.size(); ++i) {
+    if (states[i].name == name) {
+      return i;
+    }
+  }
+  throw std::out_of_range("no state named " + name);
+}
+
+ScriptInterfaces Script::interfaces() const {
+  ScriptInterfaces uses;
+  for (const State& state : states) {
+    for (const Action& action : state.on_enter) {
+      note(action, uses);
+    }
+    for (const Transition& transition : state.transitions) {
+      for (const Action& action : transition.actions) {
+        note(action, uses);
+      }
+      for (const Condition& condition : transition.when) {
+        uses.perceived_groups =
+            uses.perceived_groups || std::holds_alternative<PerceivedGroupCondition>(condition);
+        uses.dialogue =
+            uses.dialogue || std::holds_alternative<DialogueFinishedCondition>(condition);
+      }
+    }
+  }
+  return uses;
+}
+
+}  // namespace ari_social_sim::scenario

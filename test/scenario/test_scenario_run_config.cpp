@@ -1,0 +1,38 @@
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/scenario/scenario_run_config.hpp"
+#include "expect_config_error.hpp"
+
+namespace ari_social_sim::scenario {
+namespace {
+
+ScenarioRunConfig read(const std::string& text) {
+  return ScenarioRunConfig::from_yaml(core::YamlMap::parse(text, "/scenario_node parameter"));
+}
+
+TEST(ScenarioRunConfig, DefaultsAndOverrides) {
+  const ScenarioRunConfig defaults = read("{scenario: a.yaml}");
+  EXPECT_EQ(defaults.scenario, "a.yaml");
+  EXPECT_EQ(defaults.seed, -1);
+  EXPECT_DOUBLE_EQ(defaults.server_timeout_s, 60.0);
+  EXPECT_DOUBLE_EQ(defaults.group_timeout_s, 1.0);
+  const ScenarioRunConfig set =
+      read("{scenario: b.yaml, seed: 12, server_timeout: 5, group_timeout: 0.5}");
+  EXPECT_EQ(set.seed, 12);
+  EXPECT_DOUBLE_EQ(set.server_timeout_s, 5.0);
+  EXPECT_DOUBLE_EQ(set.group_timeout_s, 0.5);
+}
+
+TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
+  const std::string source = "/scenario_node parameter";
+  world::test::expect_config_error([] { read("{seed: 1}"); }, source, {"scenario", "required"});
+  world::test::expect_config_error([] { read("{scenario: a, seed: -2}"); }, source,
+                                   {"seed", "[-1, 2.14748e+09]", "-2"});
+  world::test::expect_config_error([] { read("{scenario: a, server_timeout: 0}"); }, source,
+                                   {"server_timeout", "> 0", "0"});
+  world::test::expect_config_error([] { read("{scenario: a, group_timout: 1}"); }, source,
+                                   {"unknown field(s) group_timout"});
+}
+
+}  // namespace
+}  // namespace ari_social_sim::scenario

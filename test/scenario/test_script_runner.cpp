@@ -1,0 +1,322 @@
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/scenario/script_runner.hpp"
+
+namespace ari_social_sim::scenario {
+namespace {
+
+const std::string kSource = ARI_SOURCE_DIR;
+
+// Records every command as a line of text; refuses those whose text starts with `refuse_`.
+class RecordingCommands : public Commands {
+ public:
+  std::vector<std::string> log;
+  std::string refuse;
+
+  void say(const AgentRef& speaker, const std::string& act, const std::string&) override {
+    record("say " + speaker.describe() + " " + act);
+  }
+  void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
+    record("goal " + std::to_string(human) + " " + std::to_string(goal.position.x()));
+  }
+  void navigate(const core::Pose2& goal) override {
+    record("navigate " + std::to_string(goal.position.x()));
+  }
+  void approach(world::ObjectId person, bool join_group) override {
+    record((join_group ? "join " : "approach ") + std::to_string(person));
+  }
+  void cancel_navigation() override { record("cancel"); }
+  void add_human(const world::HumanSpec& spec) override {
+    record("add " + std::to_string(spec.id));
+  }
+  void remove_human(world::ObjectId human) override { record("remove " + std::to_string(human)); }
+  void create_group(const world::GroupSpec& spec) override {
+    record("group " + std::to_string(spec.id) + " of " + std::to_string(spec.members.size()));
+  }
+  void add_group_members(world::ObjectId group, const std::vector<world::ObjectId>&) override {
+    record("members " + std::to_string(group));
+  }
+  void set_group_centre(world::ObjectId group, const Eigen::Vector2d&) override {
+    record("centre " + std::to_string(group));
+  }
+
+ private:
+  void record(const std::string& line) {
+    if (!refuse.empty() && line.rfind(refuse, 0) == 0) {
+      throw core::RequestError("no human with id 99");
+    }
+    log.push_back(line);
+  }
+};
+
+// A hand-made world: ARI and Paul (10) and Irene (11) where the test puts them; perception
+// reports them as a group.
+struct Stage {
+  Observations obs;
+
+  Stage() {
+    obs.world.ari = world::AriSnapshot{};
+    obs.world.ari->pose.position = {1.0, 5.0};
+    for (world::ObjectId id : {10u, 11u}) {
+      world::HumanSnapshot human;
+      human.id = id;
+      human.pose.position = id == 10 ? Eigen::Vector2d(3.0, 2.0) : Eigen::Vector2d(4.0, 2.0);
+      obs.world.humans.push_back(human);
+    }
+    obs.perceived_groups.push_back(perceived_group("group1", {"human10", "human11"}));
+  }
+  world::SpeechSnapshot& speech(const AgentRef& who) {
+    return who.is_ari() ? obs.world.ari->speech : obs.world.humans[who.human_id - 10].speech;
+  }
+  // `who` starts saying `act` now.
+  void start(const AgentRef& who, const std::string& act, const std::string& text = "words") {
+    speech(who) = {act, text, text, 0, true, obs.world.time_s, "", ""};
+  }
+  void stop(const AgentRef& who) {
+    world::SpeechSnapshot& s = speech(who);
+    s = {"", "", "", 0, false, 0.0, s.act, s.content};
+  }
+  void tick(ScriptRunner& runner, Commands& commands, double dt_s = 0.05) {
+    obs.world.time_s += dt_s;
+    ++obs.world.step;
+    runner.update(obs, commands);
+  }
+};
+
+class GroupDiscussionRunner : public ::testing::Test {
+ protected:
+  Scenario scenario = load_scenario_file(kSource + "/scenarios/group_discussion.yaml");
+  ScriptRunner runner{scenario, 1};
+  RecordingCommands commands;
+  Stage stage;
+};
+
+TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
+  const AgentRef ari = AgentRef::ari(), irene = AgentRef::human(11);
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "grouping");
+  EXPECT_EQ(commands.log, std::vector<std::string>{"join 11"});
+
+  // 1.6 m from Irene: still grouping; 1.4 m: ARI asks (seed: closer than 1.5 m).
+  stage.obs.world.ari->pose.position = {4.0, 3.6};
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "grouping");
+  stage.obs.world.ari->pose.position = {4.0, 3.4};
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "ask_help");
+  EXPECT_EQ(commands.log.back(), "say ARI QUESTION:HELP");
+
+  // Irene asks only once ARI's question has finished.
+  stage.start(ari, "QUESTION:HELP");
+  stage.tick(runner, commands, 2.0);
+  EXPECT_EQ(runner.state(), "ask_help");
+  stage.stop(ari);
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "ask_time");
+  EXPECT_EQ(commands.log.back(), "say human 11 QUESTION:TIME");
+
+  stage.start(irene, "QUESTION:TIME");
+  stage.tick(runner, commands, 1.5);
+  stage.stop(irene);
+  stage.tick(runner, commands);
+  EXPECT_EQ(commands.log.back(), "say ARI ANSWER:TIME");
+  stage.start(ari, "ANSWER:TIME");
+  stage.tick(runner, commands, 1.0);
+  stage.stop(ari);
+  stage.tick(runner, commands);
+  EXPECT_EQ(commands.log.back(), "say human 11 GOODBYE");
+  stage.start(irene, "GOODBYE");
+  stage.tick(runner, commands, 1.0);
+  stage.stop(irene);
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "leave");
+  const std::vector<std::string> tail(commands.log.end() - 2, commands.log.end());
+  EXPECT_EQ(tail, (std::vector<std::string>{"say ARI GOODBYE", "navigate 1.000000"}));
+
+  // Back within 0.5 m of (1, 5): 0.6 m away is not enough, 0.4 m is.
+  stage.obs.world.ari->pose.position = {1.6, 5.0};
+  stage.tick(runner, commands);
+  EXPECT_FALSE(runner.finished());
+  stage.obs.world.ari->pose.position = {1.4, 5.0};
+  stage.tick(runner, commands);
+  ASSERT_TRUE(runner.finished());
+  EXPECT_TRUE(runner.outcome()->success);
+  EXPECT_EQ(runner.outcome()->reason, "ARI left the group");
+  EXPECT_EQ(runner.outcome()->final_state, "leave");
+  // The first tick starts the script; then 2 approach ticks, 4 ticks that end an utterance and 2
+  // return ticks of 0.05 s each, and 2.0 + 1.5 + 1.0 + 1.0 s of speech.
+  EXPECT_NEAR(runner.outcome()->end_time_s, 5.5 + 8 * 0.05, 1e-9);
+
+  std::vector<std::string> visited;
+  for (const StateVisit& v : runner.visits()) {
+    visited.push_back(v.state);
+  }
+  EXPECT_EQ(visited, (std::vector<std::string>{"look", "grouping", "ask_help", "ask_time",
+                                               "answer_time", "thank_ari", "leave"}));
+  ASSERT_EQ(runner.transcript().lines().size(), 4u);
+  EXPECT_EQ(runner.transcript().lines()[1].speaker_name, "human 11");
+
+  // Once finished, nothing more happens.
+  const size_t commands_sent = commands.log.size();
+  stage.tick(runner, commands);
+  EXPECT_EQ(commands.log.size(), commands_sent);
+}
+
+TEST_F(GroupDiscussionRunner, AnActFinishedBeforeTheStateWasEnteredDoesNotCount) {
+  // ARI says QUESTION:HELP on its own before it reaches the group; the script's own question,
+  // asked on arrival, is the one Irene must wait for.
+  stage.tick(runner, commands);
+  stage.start(AgentRef::ari(), "QUESTION:HELP");
+  stage.tick(runner, commands);
+  stage.stop(AgentRef::ari());
+  stage.tick(runner, commands);
+  stage.obs.world.ari->pose.position = {4.0, 3.0};
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "ask_help");
+  for (int i = 0; i < 20; ++i) {
+    stage.tick(runner, commands);
+  }
+  EXPECT_EQ(runner.state(), "ask_help");
+}
+
+TEST_F(GroupDiscussionRunner, AriSpeechThroughTtsTakesTheScriptsAct) {
+  // dialogue_node voices /tts goals with the act `tts`: the script's own act is recognised by the
+  // text it asked ARI to say.
+  stage.tick(runner, commands);
+  stage.obs.world.ari->pose.position = {4.0, 3.0};
+  stage.tick(runner, commands);
+  ASSERT_EQ(runner.state(), "ask_help");
+  stage.start(AgentRef::ari(), "tts", "Hello, I am ARI. Can I help you?");
+  stage.tick(runner, commands);
+  stage.stop(AgentRef::ari());
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "ask_time");
+  ASSERT_EQ(runner.transcript().lines().size(), 1u);
+  EXPECT_EQ(runner.transcript().lines()[0].act, "QUESTION:HELP");
+}
+
+TEST_F(GroupDiscussionRunner, NavigationFailureEndsTheRunAsAFailure) {
+  stage.tick(runner, commands);
+  stage.obs.navigation = {NavigationState::kFailed, "target lost"};
+  stage.tick(runner, commands);
+  ASSERT_TRUE(runner.finished());
+  EXPECT_FALSE(runner.outcome()->success);
+  EXPECT_EQ(runner.outcome()->reason, "ARI could not join the group");
+}
+
+TEST_F(GroupDiscussionRunner, TheTimeLimitEndsTheRunNamingTheState) {
+  stage.tick(runner, commands);
+  stage.tick(runner, commands, 119.0);
+  EXPECT_FALSE(runner.finished());
+  stage.tick(runner, commands, 1.0);
+  ASSERT_TRUE(runner.finished());
+  EXPECT_FALSE(runner.outcome()->success);
+  EXPECT_NE(runner.outcome()->reason.find("time limit of 120"), std::string::npos);
+  EXPECT_NE(runner.outcome()->reason.find("grouping"), std::string::npos);
+  EXPECT_NEAR(runner.outcome()->end_time_s, 120.0, 1e-9);
+}
+
+TEST_F(GroupDiscussionRunner, ARefusedCommandEndsTheRunNamingStateAndAction) {
+  commands.refuse = "join";
+  stage.tick(runner, commands);
+  ASSERT_TRUE(runner.finished());
+  EXPECT_FALSE(runner.outcome()->success);
+  EXPECT_EQ(runner.outcome()->reason,
+            "state grouping: join_group (of human 11) refused: no human with id 99");
+}
+
+// A scenario from inline text, for the conditions the seed's script does not use.
+Scenario inline_scenario(const std::string& script) {
+  const std::string text = "world: " + kSource + "/worlds/room_6x6.yaml\nseed: 2\n" +
+                           "ari: {position: [1, 5]}\n"
+                           "humans: [{id: 10, position: [3, 2]}, {id: 11, position: [4, 2]}]\n"
+                           "script:\n" +
+                           script;
+  return parse_scenario(core::YamlMap::parse(text, "inline.yaml"), kSource + "/scenarios",
+                        "inline");
+}
+
+TEST(ScriptRunner, TimeElapsedCountsFromEnteringTheState) {
+  const Scenario s = inline_scenario(
+      "  time_limit: 60\n  start: a\n  states:\n"
+      "    - name: a\n      transitions: [{when: [{type: time_elapsed, seconds: 2}], next: b}]\n"
+      "    - name: b\n      transitions: [{when: [{type: time_elapsed, seconds: 3}], do: "
+      "[{type: stop, success: true}]}]\n");
+  ScriptRunner runner(s, 2);
+  RecordingCommands commands;
+  Stage stage;
+  stage.obs.world.time_s = 10.0;  // the run started before the script: times are relative
+  int ticks = 0;
+  while (!runner.finished() && ticks < 1000) {
+    stage.tick(runner, commands, 0.5);
+    ++ticks;
+  }
+  ASSERT_TRUE(runner.finished());
+  // a entered at 0 (first tick at 10.5 s), b at 2.0 s, stop at 5.0 s.
+  EXPECT_NEAR(runner.visits()[1].enter_s, 2.0, 1e-9);
+  EXPECT_NEAR(runner.outcome()->end_time_s, 5.0, 1e-9);
+}
+
+TEST(ScriptRunner, HumanGoalReachedWithinTheTolerance) {
+  const Scenario s = inline_scenario(
+      "  time_limit: 60\n  start: a\n  states:\n"
+      "    - name: a\n      enter: [{type: set_goal, who: 10, position: [5, 2]}]\n"
+      "      transitions: [{when: [{type: goal_reached, who: 10, tolerance: 0.25}], do: "
+      "[{type: stop, success: true}]}]\n");
+  ScriptRunner runner(s, 2);
+  RecordingCommands commands;
+  Stage stage;
+  world::HumanSnapshot& paul = stage.obs.world.humans[0];
+  paul.goal = core::Pose2{{5.0, 2.0}, 0.0};
+  stage.tick(runner, commands);
+  EXPECT_EQ(commands.log, std::vector<std::string>{"goal 10 5.000000"});
+  paul.pose.position = {4.7, 2.0};  // 0.30 m away
+  stage.tick(runner, commands);
+  EXPECT_FALSE(runner.finished());
+  paul.pose.position = {4.8, 2.0};  // 0.20 m away
+  stage.tick(runner, commands);
+  EXPECT_TRUE(runner.finished());
+}
+
+TEST(ScriptRunner, PerceivedGroupNeedsEveryListedMember) {
+  const Scenario s = inline_scenario(
+      "  time_limit: 60\n  start: a\n  states:\n"
+      "    - name: a\n      transitions: [{when: [{type: perceived_group, members: [ari, 11]}], "
+      "do: [{type: stop, success: true}]}]\n");
+  ScriptRunner runner(s, 2);
+  RecordingCommands commands;
+  Stage stage;
+  stage.obs.perceived_groups = {{"g1", {AgentRef::human(10), AgentRef::human(11)}}};
+  stage.tick(runner, commands);
+  EXPECT_FALSE(runner.finished());
+  stage.obs.perceived_groups.push_back(
+      {"g2", {AgentRef::human(11), AgentRef::ari(), AgentRef::human(10)}});
+  stage.tick(runner, commands);
+  EXPECT_TRUE(runner.finished());
+}
+
+TEST(ScriptRunner, RandomGroupsAreAddedBeforeTheStartState) {
+  const Scenario s = inline_scenario(
+      "  time_limit: 60\n  start: a\n"
+      "  random_groups: [{id: 4, first_human_id: 30, size: [3, 3], centre_min: [2, 2], "
+      "centre_max: [3, 3]}]\n"
+      "  states: [{name: a, enter: [{type: join_group, person: 30}]}]\n");
+  ScriptRunner runner(s, 7);
+  RecordingCommands commands;
+  Stage stage;
+  stage.tick(runner, commands);
+  EXPECT_EQ(commands.log,
+            (std::vector<std::string>{"add 30", "add 31", "add 32", "group 4 of 3", "join 30"}));
+}
+
+TEST(ScriptRunner, ActPatterns) {
+  EXPECT_TRUE(act_matches("GOODBYE", "GOODBYE"));
+  EXPECT_FALSE(act_matches("GOODBYE", "GOODBYE2"));
+  EXPECT_TRUE(act_matches("inform*", "inform(location(toilet))"));
+  EXPECT_FALSE(act_matches("inform*", "request(location(toilet))"));
+  EXPECT_TRUE(act_matches("*", "anything"));
+}
+
+}  // namespace
+}  // namespace ari_social_sim::scenario
