@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and plays the main scenario, group_discussion (seed section
-# 3.7), with the whole suite: ARI joins Paul and Irene, answers Irene's question and goes back.
-# Prints the transcript and the outcome; with a display (DISPLAY set) rviz shows the run.
-# Extra arguments go to roslaunch (e.g. seed:=3 real_time_factor:=2 record:=true).
+# Installs what is missing, builds, and runs the two main scenarios headless:
+# 1. the seed's figure 3.5 (world only): three people walk from the middle of the left room of the
+#    two-room flat to a group centre and form an F-formation; prints their final positions,
+#    headings and mutual distances;
+# 2. group_discussion (seed section 3.7) with the whole suite: ARI joins Paul and Irene, answers
+#    Irene's question and goes back; prints the transcript and the outcome.
+# With a display (DISPLAY set) rviz shows the second. Extra arguments go to its roslaunch
+# (e.g. seed:=3 real_time_factor:=2 record:=true).
 set -euo pipefail
 source "$(dirname "$0")/prepare.sh"
+roslaunch ari_social_sim group_formation.launch
 gui=false
 if [[ -n "${DISPLAY:-}" ]]; then
   gui=true
