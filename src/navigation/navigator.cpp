@@ -9,6 +9,16 @@
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
 
 namespace ari_social_sim::navigation {
+
+RobotObservation RobotObservation::of(const world::Ari& ari) {
+  RobotObservation robot;
+  robot.pose = ari.pose();
+  robot.linear_mps = ari.drive().linear_mps();
+  robot.angular_rps = ari.drive().angular_rps();
+  robot.pan_rad = ari.head().pan_rad();
+  robot.pan_rps = ari.head().pan_velocity_rps();
+  return robot;
+}
 namespace {
 
 std::string format_seconds(double s) {

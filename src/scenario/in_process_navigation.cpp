@@ -31,24 +31,14 @@ void InProcessNavigation::observe(const perception::PerceptionFrame& frame) {
   }
 }
 
-navigation::RobotObservation InProcessNavigation::observe_robot() const {
-  const world::Ari& ari = *simulation_.ari();
-  navigation::RobotObservation robot;
-  robot.pose = ari.pose();
-  robot.linear_mps = ari.drive().linear_mps();
-  robot.angular_rps = ari.drive().angular_rps();
-  robot.pan_rad = ari.head().pan_rad();
-  robot.pan_rps = ari.head().pan_velocity_rps();
-  return robot;
-}
-
 void InProcessNavigation::start(const navigation::NavigationTarget& target) {
   const double now = simulation_.time_s();
   try {
     if (simulation_.ari() == nullptr) {
       throw core::RequestError("no transform from map to base_footprint: the scene has no ARI");
     }
-    navigator_.start(target, tracker_.scene(now), observe_robot(), now);
+    navigator_.start(target, tracker_.scene(now),
+                     navigation::RobotObservation::of(*simulation_.ari()), now);
   } catch (const core::Error& e) {
     // The previous goal stays as it was, as with an action server that rejects a new goal.
     status_ = {NavigationState::kFailed, e.what()};
@@ -74,8 +64,8 @@ void InProcessNavigation::control() {
   if (navigator_.state() != navigation::NavigationState::kActive || simulation_.ari() == nullptr) {
     return;
   }
-  const navigation::NavigatorStep step =
-      navigator_.update(now, observe_robot(), tracker_.scene(now));
+  const navigation::NavigatorStep step = navigator_.update(
+      now, navigation::RobotObservation::of(*simulation_.ari()), tracker_.scene(now));
   if (step.state == navigation::NavigationState::kSucceeded) {
     status_ = {NavigationState::kSucceeded, ""};
     stop();

@@ -9,6 +9,7 @@
 #include "ari_social_sim/navigation/goal_finder.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/social_mpc.hpp"
+#include "ari_social_sim/world/ari.hpp"
 #include "ari_social_sim/world/occupancy_grid.hpp"
 
 namespace ari_social_sim::navigation {
@@ -20,6 +21,9 @@ struct RobotObservation {
   double angular_rps{0.0};
   double pan_rad{0.0};  // head_1_joint
   double pan_rps{0.0};
+
+  /// The simulated 2D ARI's state, for loops that run the world in-process (batch, benchmark).
+  static RobotObservation of(const world::Ari& ari);
 };
 
 /// What to send to ARI now.

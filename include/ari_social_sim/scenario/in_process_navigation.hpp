@@ -48,7 +48,6 @@ class InProcessNavigation {
   std::vector<SentCommand> take_commands();
 
  private:
-  navigation::RobotObservation observe_robot() const;
   void stop();
 
   navigation::NavigationConfig config_;

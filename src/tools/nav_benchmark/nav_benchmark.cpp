@@ -197,16 +197,6 @@ navigation::PerceivedScene perceive(const world::Simulation& sim, double stride_
   return scene;
 }
 
-navigation::RobotObservation observe(const world::Ari& ari) {
-  navigation::RobotObservation robot;
-  robot.pose = ari.pose();
-  robot.linear_mps = ari.drive().linear_mps();
-  robot.angular_rps = ari.drive().angular_rps();
-  robot.pan_rad = ari.head().pan_rad();
-  robot.pan_rps = ari.head().pan_velocity_rps();
-  return robot;
-}
-
 // Whether GCFF (perception core, default parameters) run on the final scene with ARI as one more
 // participant, at its body centre facing its heading, puts ARI with most of the joined members.
 bool gcff_includes_ari(const world::Simulation& sim, const navigation::FootprintModel& footprint,
@@ -287,7 +277,8 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
   navigation::EpisodeScorer scorer(navigator.footprint(), config.mpc.personal_space,
                                    episode.exempt_people, episode.exempt_group);
   try {
-    navigator.start(episode.target, perceive(sim, stride), observe(*sim.ari()), sim.time_s());
+    navigator.start(episode.target, perceive(sim, stride),
+                    navigation::RobotObservation::of(*sim.ari()), sim.time_s());
   } catch (const core::Error& e) {
     record.outcome = "rejected";
     record.reason = e.what();
@@ -315,7 +306,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
     if (sim.time_s() >= next_control_s - 1e-9) {
       next_control_s += control_period;
       const navigation::NavigatorStep step =
-          navigator.update(sim.time_s(), observe(*sim.ari()), scene);
+          navigator.update(sim.time_s(), navigation::RobotObservation::of(*sim.ari()), scene);
       if (step.replanned) {
         record.solve_times_s.push_back(navigator.plan().solve_cpu_s);
         record.solve_wall_times_s.push_back(navigator.plan().solve_time_s);
