@@ -21,10 +21,7 @@ EpisodeScorer::EpisodeScorer(const FootprintModel& footprint, const PersonalSpac
 
 bool EpisodeScorer::inside_personal_space(const core::Pose2& ari,
                                           const PersonEstimate& person) const {
-  const double edge = spaces_.boundary_value();
-  return std::any_of(outline_.begin(), outline_.end(), [&](const Eigen::Vector2d& point) {
-    return personal_space_value(person, spaces_, ari.transform(point), 0.0) >= edge;
-  });
+  return outline_inside_personal_space(outline_, ari, person, spaces_);
 }
 
 void EpisodeScorer::add(const ScoredTick& tick) {
@@ -53,6 +50,7 @@ void EpisodeScorer::add(const ScoredTick& tick) {
   score_.static_collisions += static_touch && !touching_static_ ? 1 : 0;
   touching_static_ = static_touch;
   ticks_in_space_ += in_space ? 1 : 0;
+  last_tick_in_space_ = in_space;
   score_.personal_space_share = static_cast<double>(ticks_in_space_) / ticks_;
 
   std::vector<std::string> intruded;

@@ -7,6 +7,7 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
+#include "ari_social_sim/navigation/social_spaces.hpp"
 
 namespace ari_social_sim::navigation {
 
@@ -40,7 +41,8 @@ Navigator::Navigator(const NavigationConfig& config, const world::OccupancyGrid&
       footprint_(FootprintModel::covering(world::AriFootprint{}, config.mpc.footprint_circles)),
       sdf_(signed_distance_field(map)),
       goal_finder_(config.goal_finder, footprint_, config.mpc.personal_space),
-      mpc_(config.mpc, footprint_) {}
+      mpc_(config.mpc, footprint_),
+      outline_(footprint_.outline(0.1)) {}
 
 void Navigator::start(const NavigationTarget& target, const PerceivedScene& scene,
                       const RobotObservation& robot, double time_s) {
@@ -57,6 +59,7 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   jump_since_s_.reset();
   best_distance_m_ = geodesic_->cost(robot.pose.position);
   best_distance_time_s_ = time_s;
+  patience_clock_s_ = time_s;
   mpc_.reset();
 }
 
@@ -212,6 +215,9 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   if (step.distance_to_goal_m < best_distance_m_ - config_.navigator.progress_distance_m) {
     best_distance_m_ = step.distance_to_goal_m;
     best_distance_time_s_ = time_s;
+    if (patience(time_s) == 1.0 || !inside_bystander_space(robot.pose, scene)) {
+      patience_clock_s_ = time_s;
+    }
   } else if (position_error > config_.navigator.goal_tolerance_m &&
              time_s - best_distance_time_s_ > config_.navigator.progress_timeout_s) {
     return finish(NavigationState::kAborted,
@@ -227,6 +233,21 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   step.command = {plan_.linear_mps(), plan_.angular_rps(), plan_.pan_target()};
   step.phase = !target_visible ? "waiting for the target" : aligning_ ? "aligning" : "approaching";
   return step;
+}
+
+double Navigator::patience(double time_s) const {
+  const NavigatorConfig& nav = config_.navigator;
+  const double stalled_s = time_s - patience_clock_s_ - nav.patience_s;
+  return stalled_s > 0.0 ? std::pow(0.5, stalled_s / nav.patience_halving_s) : 1.0;
+}
+
+bool Navigator::inside_bystander_space(const core::Pose2& robot,
+                                       const PerceivedScene& scene) const {
+  return std::any_of(scene.people.begin(), scene.people.end(), [&](const PersonEstimate& person) {
+    return std::find(goal_->target_people.begin(), goal_->target_people.end(), person.id) ==
+               goal_->target_people.end() &&
+           outline_inside_personal_space(outline_, robot, person, config_.mpc.personal_space);
+  });
 }
 
 void Navigator::build_problem(double time_s, const RobotObservation& robot,
@@ -266,9 +287,7 @@ void Navigator::build_problem(double time_s, const RobotObservation& robot,
   // Patience: when someone's space blocks the only way (a person standing in a doorway), ARI
   // waits, then claims the way bit by bit, halving the personal-space weights every
   // patience_halving seconds; people step aside from a robot pressing on.
-  const NavigatorConfig& nav = config_.navigator;
-  const double stalled_s = time_s - best_distance_time_s_ - nav.patience_s;
-  const double patience = stalled_s > 0.0 ? std::pow(0.5, stalled_s / nav.patience_halving_s) : 1.0;
+  const double patience = this->patience(time_s);
   problem_.people.clear();
   for (const PersonEstimate& person : scene.people) {
     const bool is_target = std::find(goal_->target_people.begin(), goal_->target_people.end(),

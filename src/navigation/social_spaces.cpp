@@ -30,6 +30,15 @@ double personal_space_value(const PersonEstimate& person, const PersonalSpacePar
   return value;
 }
 
+bool outline_inside_personal_space(const std::vector<Eigen::Vector2d>& outline,
+                                   const core::Pose2& ari, const PersonEstimate& person,
+                                   const PersonalSpaceParams& params) {
+  const double edge = params.boundary_value();
+  return std::any_of(outline.begin(), outline.end(), [&](const Eigen::Vector2d& point) {
+    return personal_space_value(person, params, ari.transform(point), 0.0) >= edge;
+  });
+}
+
 Eigen::Vector2d nearest_point_of_disc(const Eigen::Vector2d& centre, double radius_m,
                                       const Eigen::Vector2d& target, Eigen::Matrix2d* jacobian) {
   const Eigen::Vector2d offset = target - centre;

@@ -98,6 +98,32 @@ TEST(Navigator, GivesAPersonInTheWayMoreRoomThanTheNonSocialBaseline) {
   EXPECT_GT(baseline, 0.0);  // the baseline still does not touch them
 }
 
+TEST(Navigator, KeepsTheWayItClaimedThroughAPersonalSpaceUntilClearOfIt) {
+  // Someone stands in the way, facing south. Held still, ARI waits 4 s (patience), then their
+  // personal space gives way, halving its weight every 2 s. Progress made inside their space
+  // must not restore the weight (that would trap ARI inside); progress made clear of it does.
+  PerceivedScene scene;
+  scene.people.push_back(test::person("human1", 5.0, 4.0, -M_PI / 2));
+  Navigator navigator(NavigationConfig{}, test::room_map(10.0));
+  navigator.start(PoseTarget{test::pose(9.0, 4.0, 0.0)}, scene,
+                  RobotObservation{test::pose(1.0, 4.0, 0.0)}, 0.0);
+  auto space_scale_at = [&](double t, double x) {
+    const NavigatorStep step =
+        navigator.update(t, RobotObservation{test::pose(x, 4.0, 0.0)}, scene);
+    EXPECT_EQ(step.state, NavigationState::kActive) << step.reason;
+    return navigator.problem().people.at(0).space_scale;
+  };
+  for (double t = 0.1; t < 3.95; t += 0.1) {
+    ASSERT_DOUBLE_EQ(space_scale_at(t, 1.0), 1.0) << "at " << t << " s";
+  }
+  EXPECT_NEAR(space_scale_at(7.0, 1.0), std::pow(0.5, 3.0 / 2.0), 1e-9);
+  // ARI's front (0.16 m ahead of base_footprint) 0.64 m from their side, inside the 0.8 m edge:
+  // still yielding, and further.
+  EXPECT_NEAR(space_scale_at(7.2, 4.2), std::pow(0.5, 3.2 / 2.0), 1e-9);
+  // 1.5 m to their side, ARI's 0.6 m rear clear of the edge: the way is passed.
+  EXPECT_DOUBLE_EQ(space_scale_at(7.4, 6.5), 1.0);
+}
+
 TEST(Navigator, UnreachableGoalIsRefusedWithTheReason) {
   // A closed 2 m box in the room: a goal inside it has free floor but no way in.
   world::WorldDescription world = world::test::square_room(8.0);

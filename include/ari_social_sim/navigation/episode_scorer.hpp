@@ -47,6 +47,8 @@ class EpisodeScorer {
   /// True when ARI's footprint outline at `ari` lies inside the personal space (edge contour of
   /// the asymmetric Gaussian) of `person`.
   bool inside_personal_space(const core::Pose2& ari, const PersonEstimate& person) const;
+  /// True when ARI was inside a personal space (exempt excepted) at the last tick added.
+  bool last_tick_in_space() const { return last_tick_in_space_; }
 
  private:
   FootprintModel footprint_;
@@ -57,6 +59,7 @@ class EpisodeScorer {
   EpisodeScore score_;
   int ticks_{0};
   int ticks_in_space_{0};
+  bool last_tick_in_space_{false};
   bool touching_person_{false};
   bool touching_static_{false};
   std::vector<std::string> groups_intruded_;

@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
@@ -87,6 +88,11 @@ class Navigator {
   /// GoalUnreachable.
   void adopt_goal(const Goal& goal, const core::Pose2& robot, const PerceivedScene& scene);
   NavigatorStep finish(NavigationState state, const std::string& reason);
+  /// Weight factor of personal spaces, 1 until ARI has been stalled for the patience time.
+  double patience(double time_s) const;
+  /// True when ARI's footprint at `robot` is inside the personal space of someone other than the
+  /// person approached or the members joined.
+  bool inside_bystander_space(const core::Pose2& robot, const PerceivedScene& scene) const;
   void build_problem(double time_s, const RobotObservation& robot, const PerceivedScene& scene);
 
   NavigationConfig config_;
@@ -104,6 +110,10 @@ class Navigator {
   std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
+  // Progress that restarts patience; once personal spaces have given way it only counts with
+  // ARI clear of them, so that the way claimed through someone's space is kept until through.
+  double patience_clock_s_{0.0};
+  std::vector<Eigen::Vector2d> outline_;  // ARI's footprint outline, for inside_bystander_space
   MpcProblem problem_;
   MpcSolution plan_;
 };

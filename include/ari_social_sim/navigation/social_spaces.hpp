@@ -1,7 +1,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
+#include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/navigation/perceived_scene.hpp"
 
 namespace ari_social_sim::navigation {
@@ -27,6 +29,12 @@ struct PersonalSpaceParams {
 double personal_space_value(const PersonEstimate& person, const PersonalSpaceParams& params,
                             const Eigen::Vector2d& point, double t_s,
                             Eigen::Vector2d* gradient = nullptr);
+
+/// True when a point of `outline` (ARI's footprint outline in base_footprint) placed at `ari`
+/// lies on or within the edge contour of `person`'s personal space.
+bool outline_inside_personal_space(const std::vector<Eigen::Vector2d>& outline,
+                                   const core::Pose2& ari, const PersonEstimate& person,
+                                   const PersonalSpaceParams& params);
 
 /// Point of a disc (centre `centre`, radius `radius_m`) nearest to `target`, and its Jacobian with
 /// respect to the disc centre (symmetric, written to `jacobian` when given). The target itself when

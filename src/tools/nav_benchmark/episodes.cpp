@@ -162,37 +162,86 @@ bool footprint_clear(const navigation::GridField& sdf, const core::Pose2& base, 
   return true;
 }
 
+// two_room_flat.yaml's door: the 1 m gap in the middle wall (x = 5) between y = 1 and 2.
+const Eigen::Vector2d kFlatDoor(5.0, 1.5);
+// A standing person this near the door's centre closes it: their personal space's front edge
+// (1.2 m) plus half of ARI's width reaches across.
+constexpr double kDoorClosingDistance = 1.5;
+
+// The flat with ARI placed anywhere ARI fits, its static map as a distance field.
+navigation::GridField flat_with_ari(Episode& e, core::Rng& rng, const std::string& worlds_dir,
+                                    const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
+  e.simulation = simulation_of(world::load_world_file(worlds_dir + "/two_room_flat.yaml"), e.seed);
+  navigation::GridField sdf =
+      navigation::signed_distance_field(world::rasterize_static_map(e.simulation->world(), 0.05));
+  place_ari(*e.simulation, rng, low, high,
+            [&](const core::Pose2& p) { return footprint_clear(sdf, p, 0.1); });
+  return sdf;
+}
+
+// A goal pose in the box, its footprint clear of furniture, 1.5 m from everyone and `accept`ed
+// (the goal finder checks the footprint against people when the run starts).
+template <class Accept>
+core::Pose2 flat_goal(const world::Simulation& sim, const navigation::GridField& sdf,
+                      core::Rng& rng, const Eigen::Vector2d& low, const Eigen::Vector2d& high,
+                      Accept accept) {
+  for (int draw = 0; draw < kMaxDraws; ++draw) {
+    const core::Pose2 goal = pose(uniform_point(rng, low, high), rng.uniform(-kPi, kPi));
+    bool far_from_people = true;
+    for (const auto& human : sim.humans()) {
+      far_from_people = far_from_people && (human->pose().position - goal.position).norm() > 1.5;
+    }
+    if (far_from_people && footprint_clear(sdf, goal, 0.1) && accept(goal)) {
+      return goal;
+    }
+  }
+  throw core::RequestError("nav_benchmark: no goal");
+}
+
 Episode pose_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
   // The furnished two-room flat (10 x 6 m): ARI crosses it, often through the 1 m door.
-  e.simulation = simulation_of(world::load_world_file(worlds_dir + "/two_room_flat.yaml"), e.seed);
-  world::Simulation& sim = *e.simulation;
-  const navigation::GridField sdf =
-      navigation::signed_distance_field(world::rasterize_static_map(sim.world(), 0.05));
   const Eigen::Vector2d low(0.6, 0.6), high(9.4, 5.4);
-  place_ari(sim, rng, low, high,
-            [&](const core::Pose2& p) { return footprint_clear(sdf, p, 0.1); });
+  const navigation::GridField sdf = flat_with_ari(e, rng, worlds_dir, low, high);
+  world::Simulation& sim = *e.simulation;
   const Eigen::Vector2d start = sim.ari()->pose().position;
-  // Two people standing about, never in the door or a narrow passage (0.7 m from any wall).
+  // Two people standing about, never in a narrow passage (0.7 m from any wall) nor closing the
+  // door (the doorway type has someone there).
   for (ObjectId id : {10, 11}) {
     place_person(sim, rng, id, low, high, [&](const core::Pose2& p) {
-      return (p.position - start).norm() > 1.5 && sdf.sample(p.position) > 0.7;
+      return (p.position - start).norm() > 1.5 && sdf.sample(p.position) > 0.7 &&
+             (p.position - kFlatDoor).norm() > kDoorClosingDistance;
     });
   }
-  // A goal at least 4 m away, its footprint clear of furniture and people (checked by the goal
-  // finder when the run starts; here only a distance rule).
-  const core::Pose2 goal = [&] {
-    for (int draw = 0; draw < kMaxDraws; ++draw) {
-      const core::Pose2 g = pose(uniform_point(rng, low, high), rng.uniform(-kPi, kPi));
-      bool far_from_people = true;
-      for (const auto& human : sim.humans()) {
-        far_from_people = far_from_people && (human->pose().position - g.position).norm() > 1.5;
-      }
-      if ((g.position - start).norm() > 4.0 && far_from_people && footprint_clear(sdf, g, 0.1)) {
-        return g;
-      }
-    }
-    throw core::RequestError("nav_benchmark: no goal");
-  }();
+  // A goal at least 4 m away.
+  const core::Pose2 goal = flat_goal(sim, sdf, rng, low, high, [&](const core::Pose2& g) {
+    return (g.position - start).norm() > 4.0;
+  });
+  e.target = navigation::PoseTarget{goal};
+  e.time_limit_s = 90.0;
+  return e;
+}
+
+Episode doorway_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
+  // The flat again, ARI going from one room to the other while someone stands near the door:
+  // every way passes through their personal space, so ARI must wait, then claim the way.
+  const bool from_living_room = rng.uniform(0.0, 1.0) < 0.5;
+  const Eigen::Vector2d living_low(0.6, 0.6), living_high(4.4, 5.4);
+  const Eigen::Vector2d kitchen_low(5.6, 0.6), kitchen_high(9.4, 5.4);
+  const navigation::GridField sdf =
+      flat_with_ari(e, rng, worlds_dir, from_living_room ? living_low : kitchen_low,
+                    from_living_room ? living_high : kitchen_high);
+  world::Simulation& sim = *e.simulation;
+  const Eigen::Vector2d start = sim.ari()->pose().position;
+  place_person(sim, rng, 10, kFlatDoor - Eigen::Vector2d(1.3, 1.3),
+               kFlatDoor + Eigen::Vector2d(1.3, 1.3), [&](const core::Pose2& p) {
+                 const double to_door = (p.position - kFlatDoor).norm();
+                 return to_door > 0.8 && to_door < 1.3 && sdf.sample(p.position) > 0.6 &&
+                        (p.position - start).norm() > 1.5;
+               });
+  const core::Pose2 goal =
+      flat_goal(sim, sdf, rng, from_living_room ? kitchen_low : living_low,
+                from_living_room ? kitchen_high : living_high,
+                [&](const core::Pose2& g) { return (g.position - kFlatDoor).norm() > 2.0; });
   e.target = navigation::PoseTarget{goal};
   e.time_limit_s = 90.0;
   return e;
@@ -310,8 +359,8 @@ Episode join_episode(Episode e, core::Rng& rng, int size) {
 
 const std::vector<EpisodeType>& all_episode_types() {
   static const std::vector<EpisodeType> types = {
-      EpisodeType::kPose,  EpisodeType::kCorridor, EpisodeType::kCrossing, EpisodeType::kApproach,
-      EpisodeType::kJoin2, EpisodeType::kJoin3,    EpisodeType::kJoin4};
+      EpisodeType::kPose,     EpisodeType::kDoorway, EpisodeType::kCorridor, EpisodeType::kCrossing,
+      EpisodeType::kApproach, EpisodeType::kJoin2,   EpisodeType::kJoin3,    EpisodeType::kJoin4};
   return types;
 }
 
@@ -319,6 +368,8 @@ const char* type_name(EpisodeType type) {
   switch (type) {
     case EpisodeType::kPose:
       return "pose";
+    case EpisodeType::kDoorway:
+      return "doorway";
     case EpisodeType::kCorridor:
       return "corridor";
     case EpisodeType::kCrossing:
@@ -364,6 +415,8 @@ Episode make_episode(EpisodeType type, int index, uint64_t base_seed,
   switch (type) {
     case EpisodeType::kPose:
       return pose_episode(std::move(e), rng, worlds_dir);
+    case EpisodeType::kDoorway:
+      return doorway_episode(std::move(e), rng, worlds_dir);
     case EpisodeType::kCorridor:
       return corridor_episode(std::move(e), rng);
     case EpisodeType::kCrossing:

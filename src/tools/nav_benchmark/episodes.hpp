@@ -13,7 +13,8 @@
 
 namespace ari_social_sim::tools {
 
-enum class EpisodeType { kPose, kCorridor, kCrossing, kApproach, kJoin2, kJoin3, kJoin4 };
+// The numbering seeds the episodes: a new type goes last, so that the others keep their worlds.
+enum class EpisodeType { kPose, kCorridor, kCrossing, kApproach, kJoin2, kJoin3, kJoin4, kDoorway };
 
 const std::vector<EpisodeType>& all_episode_types();
 const char* type_name(EpisodeType type);
@@ -40,7 +41,7 @@ struct Episode {
 };
 
 /// Builds episode `index` of `type` from `base_seed` (the same arguments give the same episode).
-/// `worlds_dir` holds the shipped worlds (two_room_flat.yaml for the pose episodes).
+/// `worlds_dir` holds the shipped worlds (two_room_flat.yaml for the pose and doorway episodes).
 Episode make_episode(EpisodeType type, int index, uint64_t base_seed,
                      const std::string& worlds_dir);
 

@@ -42,8 +42,8 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
 
   --episodes N      episodes per type (default 50)
   --seed S          base seed (default 1); episode i of a type always gets the same world
-  --types LIST      comma-separated subset of pose, corridor, crossing, approach, join2, join3,
-                    join4 (default all)
+  --types LIST      comma-separated subset of pose, doorway, corridor, crossing, approach,
+                    join2, join3, join4 (default all)
   --controllers L   social, baseline or both (default social,baseline); baseline = the same MPC
                     with the personal-space, personal-space-edge, o-space and o-space-edge
                     weights set to 0 and no
@@ -116,7 +116,7 @@ Options parse(int argc, char** argv) {
         EpisodeType type;
         if (!tools::parse_type(name, type)) {
           throw core::ConfigError(
-              "--types: expected pose, corridor, crossing, approach, join2, "
+              "--types: expected pose, doorway, corridor, crossing, approach, join2, "
               "join3 or join4, got '" +
               name + "'");
         }
@@ -245,19 +245,20 @@ double percentile(std::vector<double> values, double q) {
   return values[index];
 }
 
-// One line per replanning cycle: time, ARI's pose and speeds, the goal, the command, the plan's
-// cost by term (--trace, for tuning).
+// One line per replanning cycle: time, ARI's pose and speeds, whether ARI is inside someone's
+// personal space (as scored), the goal, the command, the plan's cost by term (--trace, for tuning).
 void print_trace(const world::Simulation& sim, const navigation::Navigator& navigator,
-                 const navigation::NavigatorStep& step) {
+                 const navigation::NavigatorStep& step, bool in_space) {
   const core::Pose2& ari = sim.ari()->pose();
   const core::Pose2& goal = navigator.goal()->pose;
   std::fprintf(stderr,
-               "t=%.1f ari=(%.2f,%.2f,%.2f) v=%.2f w=%.2f goal=(%.2f,%.2f,%.2f) d=%.2f "
+               "t=%.1f ari=(%.2f,%.2f,%.2f) v=%.2f w=%.2f %s goal=(%.2f,%.2f,%.2f) d=%.2f "
                "cmd=(%.2f,%.2f) %s J=%.3f:",
                sim.time_s(), ari.position.x(), ari.position.y(), ari.theta,
-               sim.ari()->drive().linear_mps(), sim.ari()->drive().angular_rps(), goal.position.x(),
-               goal.position.y(), goal.theta, step.distance_to_goal_m, step.command.linear_mps,
-               step.command.angular_rps, step.phase.c_str(), navigator.plan().cost);
+               sim.ari()->drive().linear_mps(), sim.ari()->drive().angular_rps(),
+               in_space ? "IN-SPACE" : "clear", goal.position.x(), goal.position.y(), goal.theta,
+               step.distance_to_goal_m, step.command.linear_mps, step.command.angular_rps,
+               step.phase.c_str(), navigator.plan().cost);
   for (const navigation::TermCost& term : navigator.plan().terms) {
     std::fprintf(stderr, " %s=%.3f", term.name, term.cost);
   }
@@ -311,7 +312,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
         record.solve_times_s.push_back(navigator.plan().solve_cpu_s);
         record.solve_wall_times_s.push_back(navigator.plan().solve_time_s);
         if (trace) {
-          print_trace(sim, navigator, step);
+          print_trace(sim, navigator, step, scorer.last_tick_in_space());
         }
       }
       if (step.state == navigation::NavigationState::kSucceeded) {
