@@ -17,6 +17,7 @@ add_library(ari_perception
   src/perception/group_perception.cpp
   src/perception/group_tracker.cpp
   src/perception/image_regions.cpp
+  src/perception/membership_filter.cpp
   src/perception/perception_config.cpp
   src/perception/perception_pipeline.cpp
   src/perception/perception_run_config.cpp
@@ -64,6 +65,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_grid_raycast.cpp
       test/perception/test_group_evaluation.cpp
       test/perception/test_group_perception.cpp
+      test/perception/test_membership_filter.cpp
       test/perception/test_group_tracker.cpp
       test/perception/test_image_regions.cpp
       test/perception/test_perception_config.cpp

@@ -1,5 +1,7 @@
 #include "ari_social_sim/perception/group_perception.hpp"
 
+#include <cmath>
+
 namespace ari_social_sim::perception {
 
 void GroupPerception::update(const std::vector<PerceivedBody>& bodies,
@@ -10,16 +12,32 @@ void GroupPerception::update(const std::vector<PerceivedBody>& bodies,
                         body.X_map_body.theta});
   }
   detector_.detect(persons_, result_);
-  grouping_.assign(result_.groups.size(), {});
-  for (size_t g = 0; g < result_.groups.size(); ++g) {
-    for (size_t member : result_.groups[g].members) {
-      grouping_[g].push_back(persons_[member].id);
+  ids_.clear();
+  for (const GcffPerson& person : persons_) {
+    ids_.push_back(person.id);
+  }
+  detected_.clear();
+  for (const GcffGroup& group : result_.groups) {
+    detected_.push_back(group.members);
+  }
+  const std::vector<std::vector<size_t>> steady = membership_.update(ids_, detected_);
+  // Names, and the o-space centre as GCFF computes it: the mean of the members' candidate
+  // centres, one stride ahead of each.
+  grouping_.assign(steady.size(), {});
+  std::vector<Eigen::Vector2d> centres(steady.size(), Eigen::Vector2d::Zero());
+  for (size_t g = 0; g < steady.size(); ++g) {
+    for (size_t member : steady[g]) {
+      const GcffPerson& person = persons_[member];
+      grouping_[g].push_back(person.id);
+      centres[g] += Eigen::Vector2d(person.x + stride_ * std::cos(person.theta),
+                                    person.y + stride_ * std::sin(person.theta));
     }
+    centres[g] /= static_cast<double>(steady[g].size());
   }
   const std::vector<std::string> ids = tracker_.update(grouping_);
   groups.clear();
   for (size_t g = 0; g < ids.size(); ++g) {
-    groups.push_back({ids[g], grouping_[g], result_.groups[g].centre});
+    groups.push_back({ids[g], grouping_[g], centres[g]});
   }
 }
 

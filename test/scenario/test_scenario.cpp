@@ -81,7 +81,7 @@ TEST(Scenario, EveryShippedScenarioLoads) {
   } shipped[] = {{"group_discussion", 2, 7, false},
                  {"waiting_room", 6, 4, true},
                  {"corridor", 6, 1, false},
-                 {"join_group", 0, 3, false}};
+                 {"join_group", 0, 4, false}};
   for (const auto& expected : shipped) {
     const Scenario s = load_scenario_file(kSource + "/scenarios/" + expected.name + ".yaml");
     EXPECT_EQ(s.scene.humans.size(), expected.humans) << expected.name;

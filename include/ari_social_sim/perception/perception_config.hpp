@@ -274,12 +274,16 @@ struct GroupConfig {
   /// A group not seen is remembered this many frames, so that one whose members were missed
   /// for a moment keeps its id (GroupTracker).
   int id_memory_frames{30};
+  /// Two people count as together when GCFF grouped them in most of this many frames
+  /// (MembershipFilter); 1 reports GCFF's grouping of each frame as it is.
+  int membership_window_frames{10};
 
   template <class V>
   void visit(V& v) {
     v.field("stride", gcff.stride, core::positive());
     v.field("mdl", gcff.mdl, core::positive());
     v.field("id_memory_frames", id_memory_frames, core::between(0.0, 10000.0));
+    v.field("membership_window_frames", membership_window_frames, core::between(1.0, 10000.0));
   }
 };
 
