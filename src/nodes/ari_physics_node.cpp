@@ -12,7 +12,6 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
@@ -73,6 +72,17 @@ Eigen::Isometry3d planar(const core::Pose2& pose) {
   X.translation() = Eigen::Vector3d(pose.position.x(), pose.position.y(), 0.0);
   X.linear() = Eigen::AngleAxisd(pose.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   return X;
+}
+
+// map -> odom as a localised robot knows it: the true planar base pose composed with the inverse
+// of the wheel odometry. The wheels slip (a fast turn on the spot can cost a metre), and ARI's own
+// localisation corrects for it; this stands in for that localisation, without its error.
+Eigen::Isometry3d map_to_odom(const physics::AriPhysics& physics) {
+  const Eigen::Isometry3d X_map_base = physics.frame_pose(kBaseFrame);
+  core::Pose2 base;
+  base.position = X_map_base.translation().head<2>();
+  base.theta = std::atan2(X_map_base.linear()(1, 0), X_map_base.linear()(0, 0));
+  return planar(base) * planar(physics.odometry().pose()).inverse();
 }
 
 void set_covariance(boost::array<double, 36>& covariance) {
@@ -308,7 +318,7 @@ class PointHeadInterface {
       return Eigen::Isometry3d::Identity();
     }
     if (frame == kOdomFrame) {
-      return physics_.frame_pose(kBaseFrame) * planar(physics_.odometry().pose()).inverse();
+      return map_to_odom(physics_);
     }
     if (physics_.model().link_index(frame) >= 0) {
       return physics_.frame_pose(frame);
@@ -412,12 +422,6 @@ class PhysicsNode {
     }
     if (config_.clock == physics::ClockSource::kOwn) {
       clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-      // Standalone, odom starts where map is; in a full run world_node publishes this.
-      geometry_msgs::TransformStamped map_to_odom;
-      map_to_odom.header.frame_id = kMapFrame;
-      map_to_odom.child_frame_id = kOdomFrame;
-      map_to_odom.transform.rotation.w = 1.0;
-      static_tf_.sendTransform(map_to_odom);
     }
     joint_state_pub_ = nh_.advertise<sensor_msgs::JointState>("/joint_states", 10);
     odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
@@ -567,7 +571,15 @@ class PhysicsNode {
     odom_to_base.transform.translation.x = odom.pose.pose.position.x;
     odom_to_base.transform.translation.y = odom.pose.pose.position.y;
     odom_to_base.transform.rotation = odom.pose.pose.orientation;
-    tf_broadcaster_.sendTransform(odom_to_base);
+    geometry_msgs::TransformStamped map_to_odom_tf;
+    map_to_odom_tf.header.stamp = stamp;
+    map_to_odom_tf.header.frame_id = kMapFrame;
+    map_to_odom_tf.child_frame_id = kOdomFrame;
+    const Eigen::Isometry3d X_map_odom = map_to_odom(*physics_);
+    map_to_odom_tf.transform.translation.x = X_map_odom.translation().x();
+    map_to_odom_tf.transform.translation.y = X_map_odom.translation().y();
+    map_to_odom_tf.transform.rotation = quaternion_msg(Eigen::Quaterniond(X_map_odom.linear()));
+    tf_broadcaster_.sendTransform({odom_to_base, map_to_odom_tf});
   }
 
   void publish_ground_truth(const ros::Time& stamp) {
@@ -641,7 +653,6 @@ class PhysicsNode {
   ros::Publisher clock_pub_, joint_state_pub_, odom_pub_, ground_truth_pub_, imu_pub_;
   ros::Subscriber cmd_vel_sub_, world_state_sub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  tf2_ros::StaticTransformBroadcaster static_tf_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   std::vector<std::unique_ptr<ControllerInterface>> controllers_;

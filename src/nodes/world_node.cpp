@@ -110,8 +110,11 @@ class WorldNode {
     services_.push_back(nh_.advertiseService("/sim/pause", &WorldNode::pause, this));
     services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));
 
-    // In 2D mode the base pose is exact, so map and odom coincide.
-    static_tf_.sendTransform(map_to_odom(0.0));
+    // In 2D mode the base pose is exact, so map and odom coincide; in 3D mode ari_physics_node
+    // publishes map -> odom, correcting its wheel odometry's drift.
+    if (config_.ari_source == world::AriSource::kInternal) {
+      static_tf_.sendTransform(map_to_odom(0.0));
+    }
     publish_map();
     publish_state();
   }

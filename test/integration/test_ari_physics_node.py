@@ -236,6 +236,34 @@ class AriPhysicsNodeContract(unittest.TestCase):
         rospy.loginfo("point_head: optical axis %.4f rad from the target", angle)
         self.assertLess(angle, 0.02)
 
+    def test_8_map_to_base_footprint_is_the_true_pose(self):
+        # Spin fast on the spot, then drive: wheel odometry drifts from the truth (slip, and the
+        # wall of test 6), but map -> odom corrects it, as ARI's localisation would.
+        end = rospy.Time.now() + rospy.Duration(3.0)
+        rate = rospy.Rate(20)
+        while rospy.Time.now() < end:
+            self.cmd_vel.publish(Twist(angular=Vector3(0, 0, 2.0)))
+            rate.sleep()
+        self.drive(0.3, 2.0)
+        self.drive(0.0, 1.5)
+        t = self.tf.lookup_transform("map", "base_footprint", rospy.Time(0), rospy.Duration(5))
+        truth = self.truth.msg.pose.pose
+        odom = self.odom.msg.pose.pose
+
+        def yaw(q):
+            return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+
+        tf_error = math.hypot(t.transform.translation.x - truth.position.x,
+                              t.transform.translation.y - truth.position.y)
+        odom_error = math.hypot(odom.position.x - truth.position.x,
+                                odom.position.y - truth.position.y)
+        turn = yaw(t.transform.rotation) - yaw(truth.orientation)
+        heading_error = abs(math.atan2(math.sin(turn), math.cos(turn)))
+        rospy.loginfo("map -> base_footprint off the truth by %.4f m, %.4f rad; odometry alone "
+                      "by %.4f m", tf_error, heading_error, odom_error)
+        self.assertLess(tf_error, 0.01)
+        self.assertLess(heading_error, 0.01)
+
 
 if __name__ == "__main__":
     rostest.rosrun("ari_social_sim", "ari_physics_node_contract", AriPhysicsNodeContract)
