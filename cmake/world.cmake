@@ -27,6 +27,7 @@ if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_world
     SOURCES
       test/world/test_agent_grid.cpp
+      test/world/test_crowd_scene.cpp
       test/world/test_gaze_generator.cpp
       test/world/test_group_navigation.cpp
       test/world/test_map_sensor.cpp
