@@ -199,12 +199,18 @@ class WorldNode {
     tf_.sendTransform(odom_to_base(ari, stamp.toSec()));
     odom_pub_.publish(to_odometry(ari, stamp.toSec()));
 
-    // The head joints, as ARI's joint_state_controller reports them (tilt stays level in 2D).
+    // Every joint, as ARI's joint_state_controller reports them: the head pans (its tilt stays
+    // level in 2D), the rest stays at rest.
     sensor_msgs::JointState joints;
     joints.header.stamp = stamp;
     joints.name = {kHeadPanJoint, kHeadTiltJoint};
     joints.position = {ari.head_pan_rad, 0.0};
     joints.velocity = {ari.head_pan_velocity_rps, 0.0};
+    for (const char* joint : kJointsAtRest) {
+      joints.name.push_back(joint);
+      joints.position.push_back(0.0);
+      joints.velocity.push_back(0.0);
+    }
     joint_states_pub_.publish(joints);
   }
 
