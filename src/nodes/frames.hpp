@@ -13,11 +13,11 @@ inline constexpr char kHeadTiltJoint[] = "head_2_joint";
 // them at rest (wheels and casters unturned, arms down, hands open), so that
 // robot_state_publisher can place every link of the robot model.
 inline constexpr const char* kJointsAtRest[] = {
-    "wheel_right_joint",         "wheel_left_joint",          "caster_right_joint",
-    "caster_left_joint",         "arm_left_1_joint",          "arm_left_2_joint",
-    "arm_left_3_joint",          "arm_left_4_joint",          "hand_left_fingers_joint",
-    "hand_left_virtual_1_joint", "hand_left_virtual_2_joint", "arm_right_1_joint",
-    "arm_right_2_joint",         "arm_right_3_joint",         "arm_right_4_joint",
+    "wheel_right_joint",         "wheel_left_joint",           "caster_right_joint",
+    "caster_left_joint",         "arm_left_1_joint",           "arm_left_2_joint",
+    "arm_left_3_joint",          "arm_left_4_joint",           "hand_left_fingers_joint",
+    "hand_left_virtual_1_joint", "hand_left_virtual_2_joint",  "arm_right_1_joint",
+    "arm_right_2_joint",         "arm_right_3_joint",          "arm_right_4_joint",
     "hand_right_fingers_joint",  "hand_right_virtual_1_joint", "hand_right_virtual_2_joint"};
 
 }  // namespace ari_social_sim::nodes
