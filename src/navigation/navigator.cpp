@@ -80,8 +80,7 @@ std::vector<CostDisc> Navigator::cost_discs(const PerceivedScene& scene, const G
       if (person.velocity.norm() >= kStandingSpeed) {
         continue;
       }
-      const bool is_target = std::find(goal.target_people.begin(), goal.target_people.end(),
-                                       person.id) != goal.target_people.end();
+      const bool is_target = goal.is_target(person.id);
       discs.push_back({person.position,
                        config_.mpc.personal_space.person_radius_m + g.inscribed_radius_m +
                            (is_target ? 0.0 : g.person_clearance_m),
@@ -244,8 +243,7 @@ double Navigator::patience(double time_s) const {
 bool Navigator::inside_bystander_space(const core::Pose2& robot,
                                        const PerceivedScene& scene) const {
   return std::any_of(scene.people.begin(), scene.people.end(), [&](const PersonEstimate& person) {
-    return std::find(goal_->target_people.begin(), goal_->target_people.end(), person.id) ==
-               goal_->target_people.end() &&
+    return !goal_->is_target(person.id) &&
            outline_inside_personal_space(outline_, robot, person, config_.mpc.personal_space);
   });
 }
@@ -290,8 +288,7 @@ void Navigator::build_problem(double time_s, const RobotObservation& robot,
   const double patience = this->patience(time_s);
   problem_.people.clear();
   for (const PersonEstimate& person : scene.people) {
-    const bool is_target = std::find(goal_->target_people.begin(), goal_->target_people.end(),
-                                     person.id) != goal_->target_people.end();
+    const bool is_target = goal_->is_target(person.id);
     problem_.people.push_back({person, patience * (is_target ? target_scale : 1.0)});
   }
   problem_.groups.clear();

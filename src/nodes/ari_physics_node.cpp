@@ -31,6 +31,7 @@
 #include "ari_social_sim/world/scene.hpp"
 #include "ari_social_sim/world/world_file.hpp"
 #include "camera_interface.hpp"
+#include "conversions/ari_base.hpp"
 #include "conversions/joint_trajectory.hpp"
 #include "frames.hpp"
 #include "ros_params.hpp"
@@ -74,15 +75,19 @@ Eigen::Isometry3d planar(const core::Pose2& pose) {
   return X;
 }
 
-// map -> odom as a localised robot knows it: the true planar base pose composed with the inverse
-// of the wheel odometry. The wheels slip (a fast turn on the spot can cost a metre), and ARI's own
-// localisation corrects for it; this stands in for that localisation, without its error.
-Eigen::Isometry3d map_to_odom(const physics::AriPhysics& physics) {
+// The odom frame in the map as a localised robot knows it: the true planar base pose composed
+// with the inverse of the wheel odometry. The wheels slip (a fast turn on the spot can cost a
+// metre), and ARI's own localisation corrects for it; this stands in for that localisation,
+// without its error.
+core::Pose2 odom_in_map(const physics::AriPhysics& physics) {
   const Eigen::Isometry3d X_map_base = physics.frame_pose(kBaseFrame);
-  core::Pose2 base;
-  base.position = X_map_base.translation().head<2>();
-  base.theta = std::atan2(X_map_base.linear()(1, 0), X_map_base.linear()(0, 0));
-  return planar(base) * planar(physics.odometry().pose()).inverse();
+  const core::Pose2& base_in_odom = physics.odometry().pose();
+  core::Pose2 odom;
+  odom.theta = core::wrap_angle(std::atan2(X_map_base.linear()(1, 0), X_map_base.linear()(0, 0)) -
+                                base_in_odom.theta);
+  odom.position =
+      X_map_base.translation().head<2>() - Eigen::Rotation2Dd(odom.theta) * base_in_odom.position;
+  return odom;
 }
 
 void set_covariance(boost::array<double, 36>& covariance) {
@@ -318,7 +323,7 @@ class PointHeadInterface {
       return Eigen::Isometry3d::Identity();
     }
     if (frame == kOdomFrame) {
-      return map_to_odom(physics_);
+      return planar(odom_in_map(physics_));
     }
     if (physics_.model().link_index(frame) >= 0) {
       return physics_.frame_pose(frame);
@@ -565,21 +570,8 @@ class PhysicsNode {
     set_covariance(odom.twist.covariance);
     odom_pub_.publish(odom);
 
-    geometry_msgs::TransformStamped odom_to_base;
-    odom_to_base.header = odom.header;
-    odom_to_base.child_frame_id = kBaseFrame;
-    odom_to_base.transform.translation.x = odom.pose.pose.position.x;
-    odom_to_base.transform.translation.y = odom.pose.pose.position.y;
-    odom_to_base.transform.rotation = odom.pose.pose.orientation;
-    geometry_msgs::TransformStamped map_to_odom_tf;
-    map_to_odom_tf.header.stamp = stamp;
-    map_to_odom_tf.header.frame_id = kMapFrame;
-    map_to_odom_tf.child_frame_id = kOdomFrame;
-    const Eigen::Isometry3d X_map_odom = map_to_odom(*physics_);
-    map_to_odom_tf.transform.translation.x = X_map_odom.translation().x();
-    map_to_odom_tf.transform.translation.y = X_map_odom.translation().y();
-    map_to_odom_tf.transform.rotation = quaternion_msg(Eigen::Quaterniond(X_map_odom.linear()));
-    tf_broadcaster_.sendTransform({odom_to_base, map_to_odom_tf});
+    tf_broadcaster_.sendTransform({odom_to_base(odometry.pose(), stamp.toSec()),
+                                   map_to_odom(stamp.toSec(), odom_in_map(*physics_))});
   }
 
   void publish_ground_truth(const ros::Time& stamp) {

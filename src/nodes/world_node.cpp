@@ -196,7 +196,7 @@ class WorldNode {
   }
 
   void publish_base(const world::AriSnapshot& ari, const ros::Time& stamp) {
-    tf_.sendTransform(odom_to_base(ari, stamp.toSec()));
+    tf_.sendTransform(odom_to_base(ari.pose, stamp.toSec()));
     odom_pub_.publish(to_odometry(ari, stamp.toSec()));
 
     // Every joint, as ARI's joint_state_controller reports them: the head pans (its tilt stays

@@ -1,7 +1,5 @@
 #include "ari_social_sim/perception/group_perception.hpp"
 
-#include <cmath>
-
 namespace ari_social_sim::perception {
 
 void GroupPerception::update(const std::vector<PerceivedBody>& bodies,
@@ -22,15 +20,14 @@ void GroupPerception::update(const std::vector<PerceivedBody>& bodies,
   }
   const std::vector<std::vector<size_t>> steady = membership_.update(ids_, detected_);
   // Names, and the o-space centre as GCFF computes it: the mean of the members' candidate
-  // centres, one stride ahead of each.
+  // centres.
   grouping_.assign(steady.size(), {});
   std::vector<Eigen::Vector2d> centres(steady.size(), Eigen::Vector2d::Zero());
   for (size_t g = 0; g < steady.size(); ++g) {
     for (size_t member : steady[g]) {
       const GcffPerson& person = persons_[member];
       grouping_[g].push_back(person.id);
-      centres[g] += Eigen::Vector2d(person.x + stride_ * std::cos(person.theta),
-                                    person.y + stride_ * std::sin(person.theta));
+      centres[g] += gcff_candidate_centre(person, stride_);
     }
     centres[g] /= static_cast<double>(steady[g].size());
   }

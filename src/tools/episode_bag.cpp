@@ -75,7 +75,7 @@ void EpisodeBag::record_world(const scenario::Episode& episode) {
   write("/sim/world_state", now_s, nodes::to_msg(snapshot, nodes::kMapFrame));
   if (snapshot.ari) {
     tf2_msgs::TFMessage tf;
-    tf.transforms.push_back(nodes::odom_to_base(*snapshot.ari, now_s));
+    tf.transforms.push_back(nodes::odom_to_base(snapshot.ari->pose, now_s));
     write("/tf", now_s, tf);
     write("/mobile_base_controller/odom", now_s, nodes::to_odometry(*snapshot.ari, now_s));
   }

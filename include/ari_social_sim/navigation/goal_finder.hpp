@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <variant>
@@ -48,6 +49,11 @@ struct Goal {
   double gap_angle{0.0};                   // rad, direction of the chosen gap from the centre
   double gap_width{0.0};                   // rad, width of that gap; 0 for other targets
   bool outside_circle{false};              // no gap had room: ARI stands just outside
+
+  /// True for the person approached or a member of the group joined.
+  bool is_target(const std::string& person_id) const {
+    return std::find(target_people.begin(), target_people.end(), person_id) != target_people.end();
+  }
 };
 
 /// Turns a target into a goal pose (specs/algorithms.md 2.4):

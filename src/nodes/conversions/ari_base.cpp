@@ -4,24 +4,29 @@
 
 namespace ari_social_sim::nodes {
 
-geometry_msgs::TransformStamped map_to_odom(double stamp_s) {
+namespace {
+
+geometry_msgs::TransformStamped planar_transform(const char* parent, const char* child,
+                                                 const core::Pose2& child_in_parent,
+                                                 double stamp_s) {
   geometry_msgs::TransformStamped transform;
   transform.header.stamp = ros::Time(stamp_s);
-  transform.header.frame_id = kMapFrame;
-  transform.child_frame_id = kOdomFrame;
-  transform.transform.rotation.w = 1.0;
+  transform.header.frame_id = parent;
+  transform.child_frame_id = child;
+  transform.transform.translation.x = child_in_parent.position.x();
+  transform.transform.translation.y = child_in_parent.position.y();
+  transform.transform.rotation = yaw_quaternion(child_in_parent.theta);
   return transform;
 }
 
-geometry_msgs::TransformStamped odom_to_base(const world::AriSnapshot& ari, double stamp_s) {
-  geometry_msgs::TransformStamped transform;
-  transform.header.stamp = ros::Time(stamp_s);
-  transform.header.frame_id = kOdomFrame;
-  transform.child_frame_id = kBaseFrame;
-  transform.transform.translation.x = ari.pose.position.x();
-  transform.transform.translation.y = ari.pose.position.y();
-  transform.transform.rotation = yaw_quaternion(ari.pose.theta);
-  return transform;
+}  // namespace
+
+geometry_msgs::TransformStamped map_to_odom(double stamp_s, const core::Pose2& odom_in_map) {
+  return planar_transform(kMapFrame, kOdomFrame, odom_in_map, stamp_s);
+}
+
+geometry_msgs::TransformStamped odom_to_base(const core::Pose2& base_in_odom, double stamp_s) {
+  return planar_transform(kOdomFrame, kBaseFrame, base_in_odom, stamp_s);
 }
 
 nav_msgs::Odometry to_odometry(const world::AriSnapshot& ari, double stamp_s) {

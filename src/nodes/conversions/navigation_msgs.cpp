@@ -93,8 +93,7 @@ visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& 
   // members joined, whose spaces ARI may enter) and o-space circles (green for the group joined).
   int id = 0;
   for (const navigation::ProblemPerson& person : problem.people) {
-    const bool is_target = std::find(goal.target_people.begin(), goal.target_people.end(),
-                                     person.estimate.id) != goal.target_people.end();
+    const bool is_target = goal.is_target(person.estimate.id);
     Marker& ring = markers.add("personal_space", id++, Marker::LINE_STRIP,
                                is_target ? green : rgba(1.0f, 0.5f, 0.0f, 0.9f));
     ring.scale.x = 0.025;
