@@ -52,14 +52,6 @@ using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
 
 constexpr char kLanguage[] = "en_GB";
 
-geometry_msgs::Pose2D to_pose2d(const core::Pose2& pose) {
-  geometry_msgs::Pose2D msg;
-  msg.x = pose.position.x();
-  msg.y = pose.position.y();
-  msg.theta = pose.theta;
-  return msg;
-}
-
 // Calls a /sim/... service; a refusal or an unreachable server becomes a core::RequestError.
 template <class Service>
 void call(const std::string& name, Service& service) {
@@ -162,7 +154,7 @@ class RosCommands : public scenario::Commands {
   void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
     SetGoal service;
     service.request.id = human;
-    service.request.goal = to_pose2d(goal);
+    service.request.goal = to_msg(goal);
     call("/sim/set_goal", service);
   }
 
@@ -203,7 +195,7 @@ class RosCommands : public scenario::Commands {
     spawn.request.id = spec.id;
     spawn.request.name = spec.name;
     spawn.request.role = spec.role;
-    spawn.request.pose = to_pose2d(spec.pose);
+    spawn.request.pose = to_msg(spec.pose);
     spawn.request.age = static_cast<float>(spec.age_years);
     spawn.request.gender = world::to_string(spec.gender);
     spawn.request.mask = spec.mask;

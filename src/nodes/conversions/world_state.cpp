@@ -1,7 +1,6 @@
 #include "world_state.hpp"
 
 namespace ari_social_sim::nodes {
-namespace {
 
 geometry_msgs::Pose2D to_msg(const core::Pose2& pose) {
   geometry_msgs::Pose2D msg;
@@ -10,6 +9,8 @@ geometry_msgs::Pose2D to_msg(const core::Pose2& pose) {
   msg.theta = pose.theta;
   return msg;
 }
+
+namespace {
 
 SpeechState to_msg(const world::SpeechSnapshot& speech) {
   SpeechState msg;

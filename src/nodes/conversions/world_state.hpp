@@ -1,12 +1,17 @@
 #pragma once
 
+#include <geometry_msgs/Pose2D.h>
 #include <nav_msgs/OccupancyGrid.h>
 
 #include "ari_social_sim/WorldState.h"
+#include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/world/occupancy_grid.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::nodes {
+
+/// geometry_msgs/Pose2D of a planar pose (the world services' poses and goals).
+geometry_msgs::Pose2D to_msg(const core::Pose2& pose);
 
 /// /sim/world_state from a snapshot; header stamped with the snapshot's sim time in `frame_id`.
 WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id);
