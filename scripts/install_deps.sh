@@ -17,7 +17,7 @@ packages=(
   python3-trajectory-msgs python3-rospy
   libstd-srvs-dev
   # simulation cores
-  libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev
+  libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev libnlopt-dev
   liburdfdom-dev liburdfdom-tools
   # headless camera rendering: OpenGL through EGL, Mesa's llvmpipe when there is no GPU
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
