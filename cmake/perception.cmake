@@ -5,6 +5,7 @@ add_library(ari_perception
   src/perception/ari_sensors.cpp
   src/perception/asr_errors.cpp
   src/perception/body_tracker.cpp
+  src/perception/candidate_matches.cpp
   src/perception/detection_model.cpp
   src/perception/engagement.cpp
   src/perception/expression.cpp
@@ -55,6 +56,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_ari_sensors.cpp
       test/perception/test_asr_errors.cpp
       test/perception/test_body_tracker.cpp
+      test/perception/test_candidate_matches.cpp
       test/perception/test_detection_model.cpp
       test/perception/test_engagement.cpp
       test/perception/test_face_tracker.cpp

@@ -16,8 +16,18 @@ const Observation* find_of(const std::vector<Observation>& observations, world::
 
 }  // namespace
 
-PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConfig& engagement)
-    : config_(persons), engagement_config_(engagement) {}
+PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConfig& engagement,
+                               core::Rng id_rng)
+    : config_(persons), engagement_config_(engagement), random_ids_(id_rng) {}
+
+const std::string& PersonRegistry::id_of(world::ObjectId human) {
+  auto [it, is_new] = ids_.try_emplace(human);
+  if (is_new) {
+    it->second = config_.id_style == "random" ? "anonymous_person_" + random_ids_.next()
+                                              : person_id_of(human);
+  }
+  return it->second;
+}
 
 void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSensors* sensors,
                             const std::vector<PerceivedBody>& bodies,
@@ -40,7 +50,7 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
     if (it == persons_.end()) {
       it = persons_.emplace(human.id, Person{{}, now, EngagementTracker(engagement_config_)}).first;
       it->second.report.human = human.id;
-      it->second.report.person_id = person_id_of(human.id);
+      it->second.report.person_id = id_of(human.id);
     }
     Person& person = it->second;
     PersonReport& report = person.report;

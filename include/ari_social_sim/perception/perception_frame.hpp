@@ -16,8 +16,9 @@
 
 namespace ari_social_sim::perception {
 
-/// The permanent ROS4HRI person id of simulated human N: "human<N>" (e.g. "human10"), as if ARI
-/// recognised everyone from a database of known persons. ARI itself is never a person.
+/// The permanent ROS4HRI person id of simulated human N in the "human" id style: "human<N>" (e.g.
+/// "human10"), as if ARI recognised everyone from a database of known persons. ARI itself is
+/// never a person.
 inline std::string person_id_of(world::ObjectId human) {
   return "human" + std::to_string(human);
 }
@@ -43,7 +44,7 @@ enum class EngagementLevel : uint8_t {
 struct PerceivedBody {
   world::ObjectId human{world::kNoObject};
   std::string body_id;
-  std::string person_id;
+  std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_body;  ///< Mid-hips; theta = body orientation. Noisy.
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};
   double distance_m{0.0};  ///< From the fisheye.
@@ -55,7 +56,7 @@ struct PerceivedBody {
 struct PerceivedFace {
   world::ObjectId human{world::kNoObject};
   std::string face_id;
-  std::string person_id;
+  std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_face;  ///< Sellion; theta = where the face points. Noisy.
   double gaze_rad{0.0};    ///< Gaze direction in the map frame.
   world::ObjectId gaze_target{world::kNoObject};  ///< Whom or what the person looks at.
@@ -83,7 +84,7 @@ struct SpeechResult {
 struct PerceivedVoice {
   world::ObjectId human{world::kNoObject};  ///< Whose voice it is taken to be.
   std::string voice_id;
-  std::string person_id;
+  std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};  ///< Sound source.
   bool is_speaking{false};
   std::vector<SpeechResult> speech;  ///< This frame's results, in order; often empty.
