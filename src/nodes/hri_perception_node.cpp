@@ -18,6 +18,7 @@
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
@@ -78,11 +79,10 @@ struct FaceTopics {
 struct VoiceTopics {
   ros::Publisher is_speaking, speech;
 };
-// Persons are permanent: their topics live as long as the node. Latched attributes are sent
-// only when they change.
+// Persons are permanent: their topics live as long as the node.
 struct PersonTopics {
   ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence;
-  std::optional<std::string> sent_name, sent_face, sent_body, sent_voice;
+  std::optional<std::string> sent_name;
 };
 
 std_msgs::String string_msg(const std::string& text) {
@@ -100,6 +100,9 @@ void publish_on_change(ros::Publisher& publisher, std::optional<std::string>& se
   }
 }
 
+// The matchers' own random stream, apart from the pipeline's (PerceptionPipeline's streams 1-5).
+constexpr uint64_t kMatcherStream = 6;
+
 class HriPerceptionNode {
  public:
   HriPerceptionNode(const perception::PerceptionRunConfig& run,
@@ -107,6 +110,8 @@ class HriPerceptionNode {
                     std::optional<world::OccupancyGrid> sound_map)
       : run_(run),
         pipeline_(config),
+        matcher_(pipeline_.config().matchers,
+                 core::Rng::for_stream(pipeline_.config().seed, kMatcherStream)),
         bodies_([this](const std::string& id) { return advertise_body(id); }),
         faces_([this](const std::string& id) { return advertise_face(id); }),
         voices_([this](const std::string& id) { return advertise_voice(id); }) {
@@ -116,8 +121,10 @@ class HriPerceptionNode {
     faces_tracked_ = nh_.advertise<IdsList>("/humans/faces/tracked", 1);
     bodies_tracked_ = nh_.advertise<IdsList>("/humans/bodies/tracked", 1);
     voices_tracked_ = nh_.advertise<IdsList>("/humans/voices/tracked", 1);
-    persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
-    persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
+    if (with_persons()) {
+      persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
+      persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
+    }
     matches_ = nh_.advertise<IdsMatch>("/humans/candidate_matches", 50);
     groups_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
     gazing_ = nh_.advertise<Gaze>("/humans/interactions/gazing", 50);
@@ -129,6 +136,9 @@ class HriPerceptionNode {
   }
 
  private:
+  // In detectors mode a person manager (hri_person_manager) makes the persons.
+  bool with_persons() const { return run_.mode == perception::PerceptionRunConfig::Mode::kSim; }
+
   BodyTopics advertise_body(const std::string& id) {
     const std::string ns = "/humans/bodies/" + id + "/";
     return {nh_.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1)};
@@ -216,20 +226,14 @@ class HriPerceptionNode {
         topics.speech.publish(speech_msg(result, language, header));
       }
     }
-    for (const perception::PersonReport& person : frame.persons) {
-      PersonTopics& topics = person_topics(person.person_id);
-      publish_on_change(topics.name, topics.sent_name, person.name);
-      publish_on_change(topics.face_id, topics.sent_face, person.face_id);
-      publish_on_change(topics.body_id, topics.sent_body, person.body_id);
-      publish_on_change(topics.voice_id, topics.sent_voice, person.voice_id);
-      topics.engagement.publish(engagement_msg(person.engagement, header));
-      std_msgs::Float32 confidence;
-      confidence.data = static_cast<float>(person.location_confidence);
-      topics.location_confidence.publish(confidence);
+    if (with_persons()) {
+      publish_persons(frame, header);
     }
 
+    const bool sim = with_persons();
     const HriFrameMessages messages =
-        hri_frame_messages(frame, pipeline_.config().human_model, stamp, kRobotFrame, kMapFrame);
+        hri_frame_messages(frame, sim ? perception::person_links(frame) : matcher_.update(frame),
+                           sim, pipeline_.config().human_model, stamp, kRobotFrame, kMapFrame);
     for (const IdsMatch& match : messages.matches) {
       matches_.publish(match);
     }
@@ -245,13 +249,33 @@ class HriPerceptionNode {
     faces_tracked_.publish(messages.faces_tracked);
     bodies_tracked_.publish(messages.bodies_tracked);
     voices_tracked_.publish(messages.voices_tracked);
-    persons_tracked_.publish(messages.persons_tracked);
-    persons_known_.publish(messages.persons_known);
+    if (sim) {
+      persons_tracked_.publish(messages.persons_tracked);
+      persons_known_.publish(messages.persons_known);
+    }
 
     bodies_.retire(now_s, run_.id_linger_s);
     faces_.retire(now_s, run_.id_linger_s);
     voices_.retire(now_s, run_.id_linger_s);
     publish_markers(frame);
+  }
+
+  // The person manager's per-person topics. The links are sent on every frame, as
+  // hri_person_manager does on every update: a client (pyhri) accepts a face or body link only if
+  // that face or body is already tracked when the link arrives, and a link sent once would be
+  // lost for good had it come first.
+  void publish_persons(const perception::PerceptionFrame& frame, const std_msgs::Header& header) {
+    for (const perception::PersonReport& person : frame.persons) {
+      PersonTopics& topics = person_topics(person.person_id);
+      publish_on_change(topics.name, topics.sent_name, person.name);
+      topics.face_id.publish(string_msg(person.face_id));
+      topics.body_id.publish(string_msg(person.body_id));
+      topics.voice_id.publish(string_msg(person.voice_id));
+      topics.engagement.publish(engagement_msg(person.engagement, header));
+      std_msgs::Float32 confidence;
+      confidence.data = static_cast<float>(person.location_confidence);
+      topics.location_confidence.publish(confidence);
+    }
   }
 
   void publish_markers(const perception::PerceptionFrame& frame) {
@@ -266,6 +290,7 @@ class HriPerceptionNode {
 
   perception::PerceptionRunConfig run_;
   perception::PerceptionPipeline pipeline_;
+  perception::CandidateMatcher matcher_;  ///< Detectors mode only.
   bool has_map_{false};
   std::optional<double> last_time_s_;
   ros::WallTime last_markers_;
@@ -304,6 +329,9 @@ int main(int argc, char** argv) {
     if (run.errors_enabled) {
       config.errors_enabled = *run.errors_enabled;
     }
+    if (run.person_ids) {
+      config.persons.id_style = *run.person_ids;
+    }
     if (!run.world.empty()) {
       sound_map = perception::rasterize_walls(world::load_world_file(run.world),
                                               nodes::kSoundMapResolution_m);
@@ -312,8 +340,10 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  ROS_INFO("hri_perception_node: %s, seed %u, error models %s, sound blocked by %s",
-           run.config.c_str(), config.seed, config.errors_enabled ? "on" : "off",
+  const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
+  ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
+           detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
+           config.errors_enabled ? "on" : "off",
            run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
   nodes::HriPerceptionNode node(run, config, std::move(sound_map));
   ros::spin();

@@ -49,9 +49,8 @@ std::vector<CandidateMatch> CandidateMatcher::update(const PerceptionFrame& fram
   std::unordered_map<std::string, bool> recognised;
   for (const PerceivedFace& face : frame.faces) {
     const auto known = recognised_.find(face.face_id);
-    const bool is_recognised = known != recognised_.end()
-                                   ? known->second
-                                   : rng_.uniform() < config_.recognition_rate;
+    const bool is_recognised =
+        known != recognised_.end() ? known->second : rng_.uniform() < config_.recognition_rate;
     recognised.emplace(face.face_id, is_recognised);
     if (is_recognised) {
       send(matches, {face.person_id, IdKind::kPerson, face.face_id, IdKind::kFace,

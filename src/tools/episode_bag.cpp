@@ -108,7 +108,8 @@ void EpisodeBag::record_perception(const perception::PerceptionFrame& frame,
                                    const perception::PerceptionConfig& config) {
   const double now_s = frame.time_s;
   const nodes::HriFrameMessages messages = nodes::hri_frame_messages(
-      frame, config.human_model, ros::Time(now_s), nodes::kBaseFrame, nodes::kMapFrame);
+      frame, perception::person_links(frame), /*with_persons=*/true, config.human_model,
+      ros::Time(now_s), nodes::kBaseFrame, nodes::kMapFrame);
   for (const IdsMatch& match : messages.matches) {
     write("/humans/candidate_matches", now_s, match);
   }

@@ -44,7 +44,7 @@ enum class EngagementLevel : uint8_t {
 struct PerceivedBody {
   world::ObjectId human{world::kNoObject};
   std::string body_id;
-  std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
+  std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_body;  ///< Mid-hips; theta = body orientation. Noisy.
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};
   double distance_m{0.0};  ///< From the fisheye.
@@ -56,7 +56,7 @@ struct PerceivedBody {
 struct PerceivedFace {
   world::ObjectId human{world::kNoObject};
   std::string face_id;
-  std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
+  std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_face;  ///< Sellion; theta = where the face points. Noisy.
   double gaze_rad{0.0};    ///< Gaze direction in the map frame.
   world::ObjectId gaze_target{world::kNoObject};  ///< Whom or what the person looks at.

@@ -14,11 +14,11 @@
 namespace ari_social_sim::perception {
 
 /// The person manager (hri_person_manager's role): one permanent person per simulated human,
-/// named by PersonConfig::id_style, linked to that human's face, body and voice of the frame. A person is tracked
-/// while any of the three is, and known from the first time it is. Its location is the face if
-/// seen, else the body, else the voice; once untracked it stays at the last place while
-/// location_confidence falls linearly from 1 to 0 over location_decay. Engagement is scored from
-/// the perceived face and ARI's head (no face: score 0) and reset to UNKNOWN when untracked.
+/// named by PersonConfig::id_style, linked to that human's face, body and voice of the frame. A
+/// person is tracked while any of the three is, and known from the first time it is. Its location
+/// is the face if seen, else the body, else the voice; once untracked it stays at the last place
+/// while location_confidence falls linearly from 1 to 0 over location_decay. Engagement is scored
+/// from the perceived face and ARI's head (no face: score 0) and reset to UNKNOWN when untracked.
 class PersonRegistry {
  public:
   /// `id_rng` draws the ids of the "random" id style.
