@@ -81,9 +81,25 @@ struct VoiceTopics {
 };
 // Persons are permanent: their topics live as long as the node.
 struct PersonTopics {
-  ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence;
-  std::optional<std::string> sent_name;
+  ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence,
+      proxemic_space;
+  std::optional<std::string> sent_name, sent_space;
 };
+
+// hri_person_manager's names of the proxemic zones.
+const char* space_name(perception::ProxemicSpace space) {
+  switch (space) {
+    case perception::ProxemicSpace::kPersonal:
+      return "personal";
+    case perception::ProxemicSpace::kSocial:
+      return "social";
+    case perception::ProxemicSpace::kPublic:
+      return "public";
+    case perception::ProxemicSpace::kUnknown:
+      break;
+  }
+  return "unknown";
+}
 
 std_msgs::String string_msg(const std::string& text) {
   std_msgs::String msg;
@@ -124,6 +140,12 @@ class HriPerceptionNode {
     if (with_persons()) {
       persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
       persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
+      for (const perception::ProxemicSpace space :
+           {perception::ProxemicSpace::kPersonal, perception::ProxemicSpace::kSocial,
+            perception::ProxemicSpace::kPublic}) {
+        in_space_[space] = nh_.advertise<IdsList>(
+            std::string("/humans/persons/in_") + space_name(space) + "_space", 1, true);
+      }
     }
     matches_ = nh_.advertise<IdsMatch>("/humans/candidate_matches", 50);
     groups_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
@@ -167,6 +189,7 @@ class HriPerceptionNode {
       topics.voice_id = nh_.advertise<std_msgs::String>(ns + "voice_id", 1, true);
       topics.engagement = nh_.advertise<EngagementLevel>(ns + "engagement_status", 1);
       topics.location_confidence = nh_.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
+      topics.proxemic_space = nh_.advertise<std_msgs::String>(ns + "proxemic_space", 1, true);
       // Everyone is recognised from ARI's database of known persons (person_id_of).
       std_msgs::Bool anonymous;
       anonymous.data = false;
@@ -265,7 +288,9 @@ class HriPerceptionNode {
   // that face or body is already tracked when the link arrives, and a link sent once would be
   // lost for good had it come first.
   void publish_persons(const perception::PerceptionFrame& frame, const std_msgs::Header& header) {
+    std::map<perception::ProxemicSpace, std::vector<std::string>> in_space;
     for (const perception::PersonReport& person : frame.persons) {
+      in_space[person.proxemic_space].push_back(person.person_id);
       PersonTopics& topics = person_topics(person.person_id);
       publish_on_change(topics.name, topics.sent_name, person.name);
       topics.face_id.publish(string_msg(person.face_id));
@@ -275,6 +300,16 @@ class HriPerceptionNode {
       std_msgs::Float32 confidence;
       confidence.data = static_cast<float>(person.location_confidence);
       topics.location_confidence.publish(confidence);
+      publish_on_change(topics.proxemic_space, topics.sent_space,
+                        space_name(person.proxemic_space));
+    }
+    // Latched, sent when they change, as hri_person_manager does.
+    for (auto& [space, publisher] : in_space_) {
+      const std::vector<std::string>& ids = in_space[space];
+      if (ids != sent_in_space_[space]) {
+        publisher.publish(ids_msg(ids, header));
+        sent_in_space_[space] = ids;
+      }
     }
   }
 
@@ -305,6 +340,8 @@ class HriPerceptionNode {
   PerIdTopics<FaceTopics> faces_;
   PerIdTopics<VoiceTopics> voices_;
   std::map<std::string, PersonTopics> persons_;
+  std::map<perception::ProxemicSpace, ros::Publisher> in_space_;
+  std::map<perception::ProxemicSpace, std::vector<std::string>> sent_in_space_;
 };
 
 }  // namespace

@@ -175,6 +175,14 @@ void PerceptionConfig::validate() const {
   if (persons.id_style != "human" && persons.id_style != "random") {
     fail("persons.id_style", "expected human or random, got '" + persons.id_style + "'");
   }
+  if (!(persons.personal_distance_m < persons.social_distance_m &&
+        persons.social_distance_m < persons.public_distance_m)) {
+    fail("persons.social_distance",
+         "expected personal_distance < social_distance < public_distance, got " +
+             std::to_string(persons.personal_distance_m) + ", " +
+             std::to_string(persons.social_distance_m) + ", " +
+             std::to_string(persons.public_distance_m));
+  }
   if (human_model.eye_height_m <= human_model.hip_height_m) {
     fail("human_model.eye_height", "expected more than hip_height (" +
                                        std::to_string(human_model.hip_height_m) + "), got " +

@@ -14,6 +14,16 @@ const Observation* find_of(const std::vector<Observation>& observations, world::
   return it != observations.end() && it->human == human ? &*it : nullptr;
 }
 
+ProxemicSpace zone_of(const PersonConfig& config, double distance_m) {
+  if (distance_m <= config.personal_distance_m) {
+    return ProxemicSpace::kPersonal;
+  }
+  if (distance_m <= config.social_distance_m) {
+    return ProxemicSpace::kSocial;
+  }
+  return distance_m <= config.public_distance_m ? ProxemicSpace::kPublic : ProxemicSpace::kUnknown;
+}
+
 }  // namespace
 
 PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConfig& engagement,
@@ -69,6 +79,9 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
                                {face->X_map_face.position, face->gaze_rad})
             : 0.0;
     report.engagement = person.engagement.update(now, report.engagement_score);
+    report.proxemic_space =
+        snapshot.ari ? zone_of(config_, (report.location - snapshot.ari->pose.position).norm())
+                     : ProxemicSpace::kUnknown;
   }
 
   reports.clear();
@@ -81,6 +94,7 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
       report.engagement_score = 0.0;
       person.engagement.reset();
       report.engagement = EngagementLevel::kUnknown;
+      report.proxemic_space = ProxemicSpace::kUnknown;
     }
     report.location_confidence =
         std::max(0.0, 1.0 - (now - person.last_tracked_s) / config_.location_decay_s);

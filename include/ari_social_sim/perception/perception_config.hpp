@@ -249,11 +249,19 @@ struct PersonConfig {
   /// five letters), as a person manager names the persons it makes up, so that consumers can be
   /// tested for relying on no naming at all.
   std::string id_style{"human"};
+  /// Outer edges of the proxemic zones, measured from ARI's base to the person (hri_person_manager
+  /// 1.1.0's defaults, after Hall's zones).
+  double personal_distance_m{1.2};
+  double social_distance_m{3.6};
+  double public_distance_m{20.0};
 
   template <class V>
   void visit(V& v) {
     v.field("location_decay", location_decay_s, core::positive());
     v.field("id_style", id_style);
+    v.field("personal_distance", personal_distance_m, core::positive());
+    v.field("social_distance", social_distance_m, core::positive());
+    v.field("public_distance", public_distance_m, core::positive());
   }
 };
 

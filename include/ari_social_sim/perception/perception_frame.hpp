@@ -92,6 +92,10 @@ struct PerceivedVoice {
   std::string transcript;
 };
 
+/// Hall's proxemic zone of a tracked person around ARI, as hri_person_manager reports it
+/// (`/humans/persons/<id>/proxemic_space`); kUnknown when not tracked or beyond the public zone.
+enum class ProxemicSpace : uint8_t { kUnknown, kPersonal, kSocial, kPublic };
+
 /// A permanent person as the person manager reports it: tracked while a face, body or voice of
 /// theirs is, known once ever tracked.
 struct PersonReport {
@@ -105,6 +109,7 @@ struct PersonReport {
   std::string body_id;
   std::string voice_id;
   EngagementLevel engagement{EngagementLevel::kUnknown};
+  ProxemicSpace proxemic_space{ProxemicSpace::kUnknown};
   double engagement_score{0.0};  ///< This frame's visual social engagement, [0, 1].
 };
 

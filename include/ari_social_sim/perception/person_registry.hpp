@@ -18,7 +18,8 @@ namespace ari_social_sim::perception {
 /// person is tracked while any of the three is, and known from the first time it is. Its location
 /// is the face if seen, else the body, else the voice; once untracked it stays at the last place
 /// while location_confidence falls linearly from 1 to 0 over location_decay. Engagement is scored
-/// from the perceived face and ARI's head (no face: score 0) and reset to UNKNOWN when untracked.
+/// from the perceived face and ARI's head (no face: score 0) and reset to UNKNOWN when untracked;
+/// so is the proxemic zone, from the distance between ARI's base and the person's location.
 class PersonRegistry {
  public:
   /// `id_rng` draws the ids of the "random" id style.
