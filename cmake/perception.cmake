@@ -1,6 +1,6 @@
 # perception/: what ARI perceives of the people around it (ROS4HRI bodies, faces, voices, persons,
-# groups, with error models), GCFF F-formation groups and their evaluation; the detect_groups tool
-# and hri_perception_node.
+# with error models), GCFF F-formation groups and their evaluation; the detect_groups tool and
+# hri_perception_node.
 add_library(ari_perception
   src/perception/ari_sensors.cpp
   src/perception/asr_errors.cpp
@@ -13,6 +13,7 @@ add_library(ari_perception
   src/perception/field_of_view.cpp
   src/perception/gcff.cpp
   src/perception/grid_raycast.cpp
+  src/perception/group_candidates.cpp
   src/perception/group_evaluation.cpp
   src/perception/group_perception.cpp
   src/perception/group_tracker.cpp
@@ -39,6 +40,7 @@ install(TARGETS detect_groups RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATI
 
 # hri_perception_node: thin ROS adapter over the perception core (ROS4HRI topics, tf, markers).
 add_library(ari_perception_conversions
+  src/nodes/conversions/group_markers.cpp
   src/nodes/conversions/hri_messages.cpp
   src/nodes/conversions/perception_markers.cpp)
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
@@ -63,6 +65,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_gcff.cpp
       test/perception/test_gcff_reference.cpp
       test/perception/test_grid_raycast.cpp
+      test/perception/test_group_candidates.cpp
       test/perception/test_group_evaluation.cpp
       test/perception/test_group_perception.cpp
       test/perception/test_membership_filter.cpp

@@ -22,8 +22,7 @@ PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
       bodies_(config_, ids_, core::Rng::for_stream(config.seed, kBodyStream)),
       faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),
       speech_(config_, ids_, core::Rng::for_stream(config.seed, kSpeechStream)),
-      persons_(config_.persons, config_.engagement),
-      groups_(config_.groups) {}
+      persons_(config_.persons, config_.engagement) {}
 
 void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
   sight_map_ = std::move(grid);
@@ -38,7 +37,6 @@ void PerceptionPipeline::forget_everyone() {
   faces_.track_ids().retain({});
   speech_.clear();
   persons_.clear();
-  groups_.clear();
 }
 
 std::vector<GazeRelation> PerceptionPipeline::gaze_relations(
@@ -72,7 +70,6 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   frame_.bodies.clear();
   frame_.faces.clear();
   frame_.voices.clear();
-  frame_.groups.clear();
   frame_.gazes.clear();
 
   std::set<world::ObjectId> present;
@@ -100,7 +97,6 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   persons_.update(snapshot, snapshot.ari ? &frame_.sensors : nullptr, frame_.bodies, frame_.faces,
                   frame_.voices, frame_.persons);
   frame_.gazes = gaze_relations(snapshot);
-  groups_.update(frame_.bodies, frame_.groups);
   return frame_;
 }
 

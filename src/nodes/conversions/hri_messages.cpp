@@ -232,9 +232,6 @@ HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
       tracked.push_back(person.person_id);
     }
   }
-  for (const perception::PerceivedGroup& group : frame.groups) {
-    out.groups.push_back(group_msg(group, header));
-  }
   for (const perception::GazeRelation& gaze : frame.gazes) {
     out.gazes.push_back(gaze_msg(gaze, header));
   }

@@ -15,6 +15,7 @@
 #include "ari_social_sim/LiveSpeech.h"
 #include "ari_social_sim/NormalizedRegionOfInterest2D.h"
 #include "ari_social_sim/SoftBiometrics.h"
+#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 
@@ -57,12 +58,11 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
 
 /// What hri_perception_node publishes once per frame besides the per-id subtopics, so that
 /// run_episodes records exactly what the node publishes: the tracked and known id lists (headers
-/// in `robot_frame`), a candidate match per body, face and voice, one Group per group, one Gaze
-/// per relation, and the ROS4HRI frames (none without ARI).
+/// in `robot_frame`), a candidate match per body, face and voice, one Gaze per relation, and the
+/// ROS4HRI frames (none without ARI). Groups are group_detection_node's (group_msg).
 struct HriFrameMessages {
   IdsList faces_tracked, bodies_tracked, voices_tracked, persons_tracked, persons_known;
   std::vector<IdsMatch> matches;
-  std::vector<Group> groups;
   std::vector<Gaze> gazes;
   std::vector<geometry_msgs::TransformStamped> transforms;
 };
