@@ -56,7 +56,7 @@ if(CATKIN_ENABLE_TESTING)
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
   add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
-    social_mpc_node dialogue_node scenario_node run_episodes)
+    group_detection_node social_mpc_node dialogue_node scenario_node run_episodes)
   # The same scenario with each kind of perception (README, "Swapping in real perception").
   foreach(perception_args "perception:=sim" "perception:=sim person_ids:=random"
                           "perception:=detectors")

@@ -148,7 +148,6 @@ class HriPerceptionNode {
       }
     }
     matches_ = nh_.advertise<IdsMatch>("/humans/candidate_matches", 50);
-    groups_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
     gazing_ = nh_.advertise<Gaze>("/humans/interactions/gazing", 50);
     markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     map_sub_ = nh_.subscribe("/map", 1, &HriPerceptionNode::on_map, this);
@@ -260,9 +259,6 @@ class HriPerceptionNode {
     for (const IdsMatch& match : messages.matches) {
       matches_.publish(match);
     }
-    for (const Group& group : messages.groups) {
-      groups_.publish(group);
-    }
     for (const Gaze& gaze : messages.gazes) {
       gazing_.publish(gaze);
     }
@@ -333,7 +329,7 @@ class HriPerceptionNode {
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_{"~"};
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
-      matches_, groups_, gazing_, markers_;
+      matches_, gazing_, markers_;
   ros::Subscriber map_sub_, state_sub_;
   tf2_ros::TransformBroadcaster tf_;
   PerIdTopics<BodyTopics> bodies_;

@@ -37,8 +37,7 @@ PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
       faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),
       speech_(config_, ids_, core::Rng::for_stream(config.seed, kSpeechStream)),
       persons_(config_.persons, config_.engagement,
-               core::Rng::for_stream(config.seed, kPersonIdStream)),
-      groups_(config_.groups) {}
+               core::Rng::for_stream(config.seed, kPersonIdStream)) {}
 
 void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
   sight_map_ = std::move(grid);
@@ -53,7 +52,6 @@ void PerceptionPipeline::forget_everyone() {
   faces_.track_ids().retain({});
   speech_.clear();
   persons_.clear();
-  groups_.clear();
 }
 
 std::vector<GazeRelation> PerceptionPipeline::gaze_relations(
@@ -87,7 +85,6 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   frame_.bodies.clear();
   frame_.faces.clear();
   frame_.voices.clear();
-  frame_.groups.clear();
   frame_.gazes.clear();
 
   std::set<world::ObjectId> present;
@@ -119,7 +116,6 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   link_to_persons(frame_.faces, persons_);
   link_to_persons(frame_.voices, persons_);
   frame_.gazes = gaze_relations(snapshot);
-  groups_.update(frame_.bodies, frame_.groups);
   return frame_;
 }
 

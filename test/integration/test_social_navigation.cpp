@@ -1,5 +1,5 @@
 // rostest (test/integration/social_navigation.test): social_mpc_node driving ARI in world_node,
-// seeing people only through hri_perception_node.
+// seeing people only through hri_perception_node and group_detection_node.
 
 #include <actionlib/client/simple_action_client.h>
 #include <gtest/gtest.h>
@@ -31,7 +31,7 @@ using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
 using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
 
 const std::set<std::string> kGroupOfThree = {"human10", "human11", "human12"};
-// hri_perception_node's GCFF parameters (config/perception.yaml, groups).
+// group_detection_node's GCFF parameters (config/perception.yaml, groups).
 constexpr double kGcffStride = 0.6;
 constexpr double kGcffMdl = 0.8;
 // ARI's body centre is 0.22 m behind base_footprint (world::AriFootprint).
@@ -250,7 +250,7 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   EXPECT_GT(plan_poses_, 10u);  // the plan was published while driving
   ros::Duration(1.0).sleep();   // perception catches up with the final poses
 
-  // GCFF, as hri_perception_node runs it, on the bodies perception reports plus ARI at its body
+  // GCFF, as group_detection_node runs it, on the bodies perception reports plus ARI at its body
   // centre, facing its heading: ARI shares the label of the three members. Standing in the gap,
   // ARI may see a member beside it only now and then, so the bodies are read until perception
   // reports all three at once (within 10 s).
@@ -293,7 +293,7 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
     }
   }
   EXPECT_EQ(with_ari, 3) << persons.size() - 1 << " bodies perceived";
-  // And the members are still reported as one group by perception.
+  // And the members are still reported as one group by group detection.
   EXPECT_EQ(group_of_three(5.0), group_id);
 }
 

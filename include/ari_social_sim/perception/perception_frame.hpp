@@ -113,13 +113,6 @@ struct PersonReport {
   double engagement_score{0.0};  ///< This frame's visual social engagement, [0, 1].
 };
 
-/// A conversational group detected by GCFF on the perceived bodies.
-struct PerceivedGroup {
-  std::string group_id;
-  std::vector<std::string> members;                 ///< Person ids.
-  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};  ///< O-space centre (map).
-};
-
 /// "sender gazes at receiver" between known persons; an empty receiver is ARI.
 struct GazeRelation {
   std::string sender;
@@ -135,7 +128,6 @@ struct PerceptionFrame {
   std::vector<PerceivedFace> faces;
   std::vector<PerceivedVoice> voices;
   std::vector<PersonReport> persons;  ///< Every known person.
-  std::vector<PerceivedGroup> groups;
   std::vector<GazeRelation> gazes;
 };
 

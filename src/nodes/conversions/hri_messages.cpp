@@ -237,9 +237,6 @@ HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
       }
     }
   }
-  for (const perception::PerceivedGroup& group : frame.groups) {
-    out.groups.push_back(group_msg(group, header));
-  }
   for (const perception::GazeRelation& gaze : frame.gazes) {
     out.gazes.push_back(gaze_msg(gaze, header));
   }

@@ -16,6 +16,7 @@
 #include "ari_social_sim/NormalizedRegionOfInterest2D.h"
 #include "ari_social_sim/SoftBiometrics.h"
 #include "ari_social_sim/perception/candidate_matches.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 
@@ -60,13 +61,12 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
 
 /// What hri_perception_node publishes once per frame besides the per-id subtopics, so that
 /// run_episodes records exactly what the node publishes: the tracked id lists (headers in
-/// `robot_frame`), `matches` as IdsMatch, one Group per group, one Gaze per relation, and the
-/// ROS4HRI frames (none without ARI). Without `with_persons` (detectors mode) the person lists
-/// and frames are left empty: a person manager publishes them.
+/// `robot_frame`), `matches` as IdsMatch, one Gaze per relation, and the ROS4HRI frames (none
+/// without ARI). Without `with_persons` (detectors mode) the person lists and frames are left
+/// empty: a person manager publishes them. Groups are group_detection_node's (group_msg).
 struct HriFrameMessages {
   IdsList faces_tracked, bodies_tracked, voices_tracked, persons_tracked, persons_known;
   std::vector<IdsMatch> matches;
-  std::vector<Group> groups;
   std::vector<Gaze> gazes;
   std::vector<geometry_msgs::TransformStamped> transforms;
 };
