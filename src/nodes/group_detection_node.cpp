@@ -33,6 +33,9 @@ namespace {
 // this much (s of the lists' time), so that a person missed for a moment keeps it (and their
 // latched body id) while the number of subscriptions stays bounded by the people seen recently.
 constexpr double kForgetPersonAfter_s = 5.0;
+// A body frame whose last transform is older than this (s) no longer places anyone: its
+// publisher has stopped (perception died) and the person would otherwise stand there for ever.
+constexpr double kStaleBodyFrame_s = 1.0;
 
 class GroupDetectionNode {
  public:
@@ -43,6 +46,7 @@ class GroupDetectionNode {
     markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     tracked_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &GroupDetectionNode::on_tracked,
                                  this, ros::TransportHints().tcpNoDelay());
+    timer_ = nh_.createTimer(ros::Duration(1.0 / run_.rate_hz), &GroupDetectionNode::detect, this);
   }
 
  private:
@@ -52,23 +56,28 @@ class GroupDetectionNode {
     double last_tracked_s{0.0};
   };
 
+  // The persons tracked now. A person manager may send the list only when it changes
+  // (hri_person_manager does), so detection runs on the timer with the latest list.
   void on_tracked(const IdsList::ConstPtr& msg) {
     // An unstamped list has no time of its own: its arrival time stands in for it.
-    const ros::Time stamp = msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp;
-    const double time_s = stamp.toSec();
-    if (last_time_s_ && time_s < *last_time_s_) {
+    const double time_s =
+        (msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp).toSec();
+    if (last_list_s_ && time_s < *last_list_s_) {
       // Time went backwards (a world reset, a bag looping): who stood with whom before is void.
       groups_.clear();
-      last_time_s_.reset();
     }
-    // A small tolerance, so that lists arriving at exactly max_rate are not thinned out.
-    if (last_time_s_ && time_s - *last_time_s_ < 0.999 / run_.max_rate_hz) {
-      return;
+    last_list_s_ = time_s;
+    tracked_ = msg->ids;
+    follow(tracked_, time_s);
+  }
+
+  void detect(const ros::TimerEvent&) {
+    if (!last_list_s_) {
+      return;  // nobody has said who is tracked yet
     }
-    last_time_s_ = time_s;
-    follow(msg->ids, time_s);
-    groups_.update(candidates(msg->ids), detected_);
-    publish(stamp);
+    const ros::Time now = ros::Time::now();
+    groups_.update(candidates(tracked_, now), detected_);
+    publish(now);
   }
 
   // Subscribes to the latched body id of each person that appears; drops those gone for
@@ -97,9 +106,11 @@ class GroupDetectionNode {
   // Each tracked person at their body frame in the reference frame, in the list's order: the
   // translation, and the yaw of the frame's x axis, which REP-155 points where the body faces.
   // Left out: a person without a body (only a face or a voice is tracked, or the body is not
-  // matched yet), since GCFF needs the body's facing and a face or voice frame gives none; and
-  // one whose body frame tf cannot place yet (its first transform still on the way).
-  std::vector<perception::GcffPerson> candidates(const std::vector<std::string>& tracked) const {
+  // matched yet), since GCFF needs the body's facing and a face or voice frame gives none; one
+  // whose body frame tf cannot place yet (its first transform still on the way); and one whose
+  // body frame has not moved on for kStaleBodyFrame_s (static frames, stamped 0, never go stale).
+  std::vector<perception::GcffPerson> candidates(const std::vector<std::string>& tracked,
+                                                 const ros::Time& now) const {
     std::vector<perception::GcffPerson> people;
     for (const std::string& id : tracked) {
       const auto person = persons_.find(id);
@@ -111,6 +122,9 @@ class GroupDetectionNode {
         t = tf_buffer_.lookupTransform(run_.reference_frame, body_frame(person->second.body_id),
                                        ros::Time(0));
       } catch (const tf2::TransformException&) {
+        continue;
+      }
+      if (!t.header.stamp.isZero() && (now - t.header.stamp).toSec() > kStaleBodyFrame_s) {
         continue;
       }
       people.push_back({id, t.transform.translation.x, t.transform.translation.y,
@@ -134,7 +148,8 @@ class GroupDetectionNode {
   perception::GroupDetectionRunConfig run_;
   perception::GroupPerception groups_;
   std::vector<perception::PerceivedGroup> detected_;
-  std::optional<double> last_time_s_;
+  std::vector<std::string> tracked_;
+  std::optional<double> last_list_s_;
   std::map<std::string, Person> persons_;
 
   ros::NodeHandle nh_;
@@ -143,6 +158,7 @@ class GroupDetectionNode {
   tf2_ros::TransformListener tf_listener_;
   ros::Publisher groups_pub_, markers_;
   ros::Subscriber tracked_sub_;
+  ros::Timer timer_;
 };
 
 }  // namespace
@@ -166,10 +182,9 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  ROS_INFO(
-      "group_detection_node: GCFF stride %.2f m, mdl %.2f m^2 (%s), people in %s, at most %.0f Hz",
-      config.gcff.stride, config.gcff.mdl, run.config.c_str(), run.reference_frame.c_str(),
-      run.max_rate_hz);
+  ROS_INFO("group_detection_node: GCFF stride %.2f m, mdl %.2f m^2 (%s), people in %s, at %.0f Hz",
+           config.gcff.stride, config.gcff.mdl, run.config.c_str(), run.reference_frame.c_str(),
+           run.rate_hz);
   nodes::GroupDetectionNode node(run, config);
   ros::spin();
   return 0;

@@ -13,7 +13,7 @@ GroupDetectionRunConfig GroupDetectionRunConfig::from_yaml(const core::YamlMap& 
     map.fail("reference_frame", "a tf frame name without a leading slash or spaces, e.g. map",
              "'" + config.reference_frame + "'");
   }
-  config.max_rate_hz = map.optional<double>("max_rate", config.max_rate_hz, {0.0, 1000.0, true});
+  config.rate_hz = map.optional<double>("rate", config.rate_hz, {0.0, 1000.0, true});
   map.finish();
   return config;
 }

@@ -4,19 +4,18 @@
 On hri_perception_node's stream (group_detection.test, error models off) while world_node plays
 test/integration/social_navigation_scene.yaml: the ground truth's group of three, all of whose
 bodies perception tracks, is reported on /humans/interactions/groups with exactly those persons
-within 15 s, in the map frame, under one id, its stamps those of /humans/persons/tracked and
-advancing, at the tracked lists' rate (one Group per list, within 10 %); Ana, alone, is in no
-group; ~markers draws it at its o-space centre.
+within 15 s, in the map frame, under one id, its stamps advancing at the node's 20 Hz of sim time
+(within 10 %); Ana, alone, is in no group; ~markers draws it at its o-space centre.
 
 With the argument `alone` (group_detection_alone.test), nothing else runs: the node stays up and
 publishes nothing.
 
-With the argument `synthetic` (group_detection_synthetic.test, ~max_rate 10), the test itself is
-the perception: tracked lists stamped every 0.05 s, latched body ids and static body frames. Two
-people face to face form a group (a person without a body, or whose body frame tf lacks, does not
-get in the way); lists closer than 0.1 s are skipped; the body_id subscriptions of persons gone
-for over 5 s of the lists' time are dropped; stamps going back start the group history afresh (a
-fresh id at once).
+With the argument `synthetic` (group_detection_synthetic.test, ~rate 10, wall time), the test
+itself is the perception: tracked lists stamped every 0.05 s, latched body ids and static body
+frames. Two people face to face form a group (a person without a body, or whose body frame tf
+lacks, does not get in the way), reported 10 times a second; the body_id subscriptions of persons
+gone for over 5 s of the lists' time are dropped; stamps going back start the group history
+afresh (a fresh id at once).
 """
 import math
 import sys
@@ -76,9 +75,7 @@ class GroupDetectionOnPerception(unittest.TestCase):
         # Three seconds of wall time (3 s of sim time at real_time_factor 1) of steady reports.
         time.sleep(3.0)
         reports = [m for m in self.groups.all() if m.header.stamp >= first.header.stamp]
-        tracked = [m for m in self.tracked.all()
-                   if first.header.stamp <= m.header.stamp <= reports[-1].header.stamp]
-        self.assertGreaterEqual(len(reports), 40)  # 20 Hz perception for ~3 s
+        self.assertGreaterEqual(len(reports), 40)  # 20 Hz for ~3 s
         for m in reports:
             self.assertEqual(m.group_id, first.group_id)
             self.assertEqual(set(m.members), members)
@@ -87,16 +84,11 @@ class GroupDetectionOnPerception(unittest.TestCase):
         stamps = [m.header.stamp.to_sec() for m in reports]
         self.assertTrue(all(b > a for a, b in zip(stamps, stamps[1:])),
                         "stamps do not advance: %s" % stamps)
-        # Each report carries the stamp of a tracked list.
-        tracked_stamps = {m.header.stamp.to_sec() for m in self.tracked.all()}
-        self.assertEqual(set(stamps) - tracked_stamps, set())
         span_s = stamps[-1] - stamps[0]
         groups_hz = (len(stamps) - 1) / span_s
-        tracked_hz = (len(tracked) - 1) / span_s
-        rospy.loginfo("groups %.2f Hz, tracked lists %.2f Hz over %.2f s of sim time",
-                      groups_hz, tracked_hz, span_s)
-        self.assertGreater(groups_hz, 0.9 * tracked_hz)
-        self.assertLess(groups_hz, 1.1 * tracked_hz)
+        rospy.loginfo("groups %.2f Hz over %.2f s of sim time", groups_hz, span_s)
+        self.assertGreater(groups_hz, 0.9 * 20.0)
+        self.assertLess(groups_hz, 1.1 * 20.0)
 
         # ~markers: the o-space circle and the group's id near the truth's centre.
         array = self.markers.wait(
@@ -189,27 +181,23 @@ class GroupDetectionOnSyntheticInput(unittest.TestCase):
             self.assertEqual(m.header.frame_id, "map")
         stamps = [m.header.stamp.to_sec() for m in first]
         gaps = [b - a for a, b in zip(stamps, stamps[1:])]
-        rospy.loginfo("%d groups for 40 lists, gaps %.3f-%.3f s", len(first), min(gaps),
-                      max(gaps))
-        for gap in gaps:  # one list in two: 10 Hz of the lists' 20 Hz
-            self.assertAlmostEqual(gap, 0.1, places=6)
+        rospy.loginfo("%d groups in 2.3 s, gaps %.3f-%.3f s", len(first), min(gaps), max(gaps))
+        self.assertAlmostEqual(sum(gaps) / len(gaps), 0.1, delta=0.01)  # ~rate 10
         self.assertEqual(self.body_id_listeners(), set(everyone))
 
         # Only Anna and Bert for 6 s more of the lists' time: the others' subscriptions go.
         self.send(["anna", "bert"], 108.0, 2)
         self.assertEqual(self.body_id_listeners(), {"anna", "bert"})
-        self.assertEqual(self.groups.last().header.stamp.to_sec(), 108.0)
         self.assertEqual(self.groups.last().group_id, "g1")
 
-        # Stamps going back: the first list is taken at once, the pair is a group again at once
-        # (a fresh membership history decides on its first frame), under a fresh id.
+        # Stamps going back: the pair is a group again at the next detection (a fresh membership
+        # history decides on its first frame), under a fresh id, and g1 is never seen again.
         sent = len(self.groups.all())
-        self.send(["anna", "bert"], 50.0, 20)  # stamps 50.00 .. 50.95
-        after = self.groups.all()[sent:]
-        self.assertEqual(len(after), 10)
-        self.assertEqual(after[0].header.stamp.to_sec(), 50.0)
-        self.assertEqual({m.group_id for m in after}, {"g2"})
-        self.assertEqual(after[-1].header.stamp.to_sec(), 50.9)
+        self.send(["anna", "bert"], 50.0, 20)  # stamps 50.00 .. 50.95, over 1.3 s
+        after = [m.group_id for m in self.groups.all()[sent:]]
+        self.assertGreaterEqual(after.count("g2"), 10)
+        self.assertEqual(after[-1], "g2")
+        self.assertNotIn("g1", after[after.index("g2"):])
 
 
 if __name__ == "__main__":

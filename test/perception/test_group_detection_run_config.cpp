@@ -15,28 +15,28 @@ TEST(GroupDetectionRunConfig, NoParametersGiveTheDefaults) {
   const GroupDetectionRunConfig config = parse("{}");
   EXPECT_EQ(config.config, "");
   EXPECT_EQ(config.reference_frame, "map");
-  EXPECT_DOUBLE_EQ(config.max_rate_hz, 30.0);
+  EXPECT_DOUBLE_EQ(config.rate_hz, 20.0);
 }
 
 TEST(GroupDetectionRunConfig, ReadsEveryParameter) {
   const GroupDetectionRunConfig config =
-      parse("{config: a.yaml, reference_frame: odom, max_rate: 15}");
+      parse("{config: a.yaml, reference_frame: odom, rate: 15}");
   EXPECT_EQ(config.config, "a.yaml");
   EXPECT_EQ(config.reference_frame, "odom");
-  EXPECT_DOUBLE_EQ(config.max_rate_hz, 15.0);
+  EXPECT_DOUBLE_EQ(config.rate_hz, 15.0);
 }
 
 TEST(GroupDetectionRunConfig, BadOrUnknownParametersAreNamed) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"{max_rate: 0}", "max_rate: expected a number (0, 1000], got 0"},
-      {"{max_rate: 1001}", "max_rate: expected a number (0, 1000], got 1001"},
-      {"{max_rate: fast}", "max_rate: expected a number"},
+      {"{rate: 0}", "rate: expected a number (0, 1000], got 0"},
+      {"{rate: 1001}", "rate: expected a number (0, 1000], got 1001"},
+      {"{rate: fast}", "rate: expected a number"},
       {"{reference_frame: ''}",
        "reference_frame: expected a tf frame name without a leading slash or spaces, e.g. map, "
        "got ''"},
       {"{reference_frame: /map}", "reference_frame: expected a tf frame name"},
       {"{reference_frame: 'my map'}", "got 'my map'"},
-      {"{rate: 30}", "unknown field(s) rate"}};
+      {"{max_rate: 30}", "unknown field(s) max_rate"}};
   for (const auto& [text, message] : cases) {
     try {
       parse(text);
