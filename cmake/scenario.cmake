@@ -11,6 +11,7 @@ add_library(ari_scenario
   src/scenario/episode_report.cpp
   src/scenario/progress_bar.cpp
   src/scenario/observations.cpp
+  src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
   src/scenario/scenario.cpp
   src/scenario/scenario_run_config.cpp
@@ -44,6 +45,7 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_conversation.cpp
       test/scenario/test_episode_csv.cpp
       test/scenario/test_episode_metrics.cpp
+      test/scenario/test_person_identities.cpp
       test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_scenario.cpp
