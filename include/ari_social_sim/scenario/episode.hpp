@@ -15,6 +15,7 @@
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/in_process_navigation.hpp"
+#include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "ari_social_sim/scenario/world_speech_stage.hpp"
@@ -51,9 +52,10 @@ dialogue::DialogueRunConfig dialogue_run_for(const Script& script, dialogue::Dia
 
 /// One run of a scenario with the suite's cores composed in one process, as fast as the machine
 /// allows (the batch tool's engine). Each step, in order: the world advances; perception
-/// perceives it (at most at its rate); the dialogue follows what the world played and voices
-/// what is due; the script runs on what the step produced, as scenario_node does on each
-/// /sim/world_state. Seeded: the same scenario, configuration and seed give the same run.
+/// perceives it (at most at its rate) and its persons are matched with the humans
+/// (PersonIdentities); the dialogue follows what the world played and voices what is due; the
+/// script runs on what the step produced, as scenario_node does on each /sim/world_state.
+/// Seeded: the same scenario, configuration and seed give the same run.
 class Episode {
  public:
   /// `seed` replaces the scene's seed, perception's and the dialogue's, and draws the script's
@@ -89,6 +91,7 @@ class Episode {
   class InProcessCommands;
 
   void perceive();
+  void identify();
   void navigate();
   void converse();
 
@@ -100,6 +103,7 @@ class Episode {
   perception::PerceptionPipeline perception_;
   std::optional<double> last_perceived_s_;
   const perception::PerceptionFrame* perceived_{nullptr};
+  PersonIdentities identities_;
   std::unique_ptr<InProcessNavigation> navigation_;
   std::vector<SentCommand> navigation_commands_;
   dialogue::DialogueRunConfig dialogue_run_;
