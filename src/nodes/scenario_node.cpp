@@ -340,6 +340,7 @@ class ScenarioNode {
     if (persons_) {
       identities_.update(observations.world, sightings());
       observations.person_ids = identities_.person_ids();
+      log_new_matches(observations.person_ids);
     }
     for (auto group = groups_.begin(); group != groups_.end();) {
       if (observations.world.time_s - group->second.stamp_s > config_.group_timeout_s) {
@@ -376,6 +377,17 @@ class ScenarioNode {
       sightings.push_back({person.person_id, person.X_map_frame.position, person.from_body});
     }
     return sightings;
+  }
+
+  // Who is who is the first thing to check when a script never sees its people.
+  void log_new_matches(const std::map<world::ObjectId, std::string>& person_ids) {
+    for (const auto& [human, person] : person_ids) {
+      const auto logged = logged_person_ids_.find(human);
+      if (logged == logged_person_ids_.end() || logged->second != person) {
+        ROS_INFO("scenario_node: human %u is perceived as person %s", human, person.c_str());
+      }
+    }
+    logged_person_ids_ = person_ids;
   }
 
   // A world started paused stands at sim time 0, which ROS takes for "no time yet"; one step
@@ -426,6 +438,7 @@ class ScenarioNode {
   scenario::MetricsRecorder metrics_;
   std::map<std::string, PerceivedGroupEntry> groups_;  // by group id
   scenario::PersonIdentities identities_;
+  std::map<world::ObjectId, std::string> logged_person_ids_;  // the matches last logged
   ros::NodeHandle nh_;
   tf2_ros::Buffer tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
