@@ -305,6 +305,12 @@ class ScenarioNode {
       groups_sub_ =
           nh_.subscribe("/humans/interactions/groups", 100, &ScenarioNode::on_group, this);
     }
+    if (uses.dialogue) {
+      // What ARI perceived of the humans' utterances, and how the dialogue ended (latched).
+      utterances_sub_ =
+          nh_.subscribe("/sim/dialogue/utterances", 100, &ScenarioNode::on_utterance, this);
+      outcome_sub_ = nh_.subscribe("/sim/dialogue/outcome", 10, &ScenarioNode::on_outcome, this);
+    }
     // Connected before the world runs, so that the script sees every step from the first.
     const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(config_.server_timeout_s);
     while (state_sub_.getNumPublishers() == 0 && ros::ok()) {

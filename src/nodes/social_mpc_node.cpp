@@ -42,6 +42,10 @@ constexpr char kMapFrame[] = "map";
 constexpr char kBaseFrame[] = "base_footprint";
 constexpr char kHeadPanJoint[] = "head_1_joint";
 constexpr char kHeadTiltJoint[] = "head_2_joint";
+// How long (s of sim time) an approach goal naming someone not perceived yet waits for them
+// before it is rejected: a client may have learnt the id a moment before this node receives the
+// person's body (its latched body_id and first frames).
+constexpr double kTargetWait_s = 2.0;
 
 using MoveBaseServer = actionlib::ActionServer<move_base_msgs::MoveBaseAction>;
 using ApproachServer = actionlib::ActionServer<ApproachAction>;
@@ -273,21 +277,46 @@ class SocialMpcNode {
     if (problem.empty() && goal->target_id.empty()) {
       problem = "target_id: expected a person or group id, got ''";
     }
-    if (problem.empty()) {
-      observe_people();
-      problem =
-          navigation::unknown_target_reason(*target, tracker_.scene(ros::Time::now().toSec()));
-    }
     if (!problem.empty()) {
-      ROS_WARN("approach goal rejected: %s", problem.c_str());
-      handle.setRejected(with_reason(ApproachResult(), problem), problem);
+      reject(handle, problem);
       return;
     }
-    accept_and_start(handle, *target, ApproachResult(),
-                     {std::nullopt, handle, handle.getGoalID().id});
+    if (waiting_) {
+      reject(waiting_->handle, "preempted by a new goal before its target was perceived");
+    }
+    waiting_ = WaitingApproach{handle, *target, ros::Time::now().toSec() + kTargetWait_s};
+    observe_people();
+    start_waiting_approach();
+  }
+
+  void reject(ApproachServer::GoalHandle handle, const std::string& problem) {
+    ROS_WARN("approach goal rejected: %s", problem.c_str());
+    handle.setRejected(with_reason(ApproachResult(), problem), problem);
+  }
+
+  // Starts the waiting approach once its target is perceived, or rejects it with the reason
+  // once it has waited kTargetWait_s; it stays pending meanwhile. People must be observed first.
+  void start_waiting_approach() {
+    const double now = ros::Time::now().toSec();
+    const std::string problem =
+        navigation::unknown_target_reason(waiting_->target, tracker_.scene(now));
+    if (problem.empty()) {
+      ApproachServer::GoalHandle handle = waiting_->handle;
+      const navigation::NavigationTarget target = waiting_->target;
+      waiting_.reset();
+      accept_and_start(handle, target, ApproachResult(),
+                       {std::nullopt, handle, handle.getGoalID().id});
+    } else if (now >= waiting_->until_s) {
+      reject(waiting_->handle, problem);
+      waiting_.reset();
+    }
   }
 
   void on_cancel(const actionlib_msgs::GoalID& id) {
+    if (waiting_ && waiting_->handle.getGoalID().id == id.id) {
+      waiting_->handle.setCanceled(with_reason(ApproachResult(), "canceled by the client"));
+      waiting_.reset();
+    }
     if (active_ && active_->id == id.id) {
       end_active(actionlib_msgs::GoalStatus::PREEMPTED, "canceled by the client");
       if (navigator_) {
@@ -355,6 +384,9 @@ class SocialMpcNode {
   void on_timer(const ros::TimerEvent&) {
     // People are followed all the time, so that a goal naming someone finds them known already.
     observe_people();
+    if (waiting_) {
+      start_waiting_approach();
+    }
     if (!navigator_ || navigator_->state() != navigation::NavigationState::kActive) {
       return;
     }
@@ -438,6 +470,13 @@ class SocialMpcNode {
   navigation::SceneTracker tracker_;
   std::unique_ptr<navigation::Navigator> navigator_;
   std::optional<ActiveGoal> active_;
+  // An approach goal whose target is not perceived yet (kTargetWait_s).
+  struct WaitingApproach {
+    ApproachServer::GoalHandle handle;
+    navigation::NavigationTarget target;
+    double until_s{0.0};
+  };
+  std::optional<WaitingApproach> waiting_;
   double linear_mps_{0.0}, angular_rps_{0.0}, pan_rad_{0.0}, pan_rps_{0.0};
   std::string last_status_;
 
