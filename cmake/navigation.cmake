@@ -64,7 +64,8 @@ if(CATKIN_ENABLE_TESTING)
     test/integration/test_social_navigation.cpp)
   target_include_directories(test_social_navigation PRIVATE ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
   target_link_libraries(test_social_navigation ari_perception ${catkin_LIBRARIES})
-  add_dependencies(test_social_navigation ${PROJECT_NAME}_generate_messages_cpp social_mpc_node world_node)
+  add_dependencies(test_social_navigation ${PROJECT_NAME}_generate_messages_cpp social_mpc_node world_node
+    hri_perception_node group_detection_node)
 endif()
 
 if(benchmark_FOUND)

@@ -1,10 +1,11 @@
 # perception/: what ARI perceives of the people around it (ROS4HRI bodies, faces, voices, persons,
-# groups, with error models), GCFF F-formation groups and their evaluation; the detect_groups tool
-# and hri_perception_node.
+# with error models), GCFF F-formation groups and their evaluation; the detect_groups tool,
+# hri_perception_node and group_detection_node.
 add_library(ari_perception
   src/perception/ari_sensors.cpp
   src/perception/asr_errors.cpp
   src/perception/body_tracker.cpp
+  src/perception/candidate_matches.cpp
   src/perception/detection_model.cpp
   src/perception/engagement.cpp
   src/perception/expression.cpp
@@ -13,6 +14,8 @@ add_library(ari_perception
   src/perception/field_of_view.cpp
   src/perception/gcff.cpp
   src/perception/grid_raycast.cpp
+  src/perception/group_candidates.cpp
+  src/perception/group_detection_run_config.cpp
   src/perception/group_evaluation.cpp
   src/perception/group_perception.cpp
   src/perception/group_tracker.cpp
@@ -37,8 +40,10 @@ add_executable(detect_groups src/tools/detect_groups.cpp)
 target_link_libraries(detect_groups ari_perception)
 install(TARGETS detect_groups RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
-# hri_perception_node: thin ROS adapter over the perception core (ROS4HRI topics, tf, markers).
+# hri_perception_node and group_detection_node: thin ROS adapters over the perception core
+# (ROS4HRI topics, tf, markers).
 add_library(ari_perception_conversions
+  src/nodes/conversions/group_markers.cpp
   src/nodes/conversions/hri_messages.cpp
   src/nodes/conversions/perception_markers.cpp)
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
@@ -46,6 +51,11 @@ target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world
 add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
 target_link_libraries(hri_perception_node ari_perception_conversions)
 install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# group_detection_node: GCFF on whichever persons /humans/persons/tracked lists, placed from tf.
+add_executable(group_detection_node src/nodes/group_detection_node.cpp)
+target_link_libraries(group_detection_node ari_perception_conversions)
+install(TARGETS group_detection_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
   # The development sets live in shared/ beside the repository (specs/algorithms.md 1.7).
@@ -55,6 +65,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_ari_sensors.cpp
       test/perception/test_asr_errors.cpp
       test/perception/test_body_tracker.cpp
+      test/perception/test_candidate_matches.cpp
       test/perception/test_detection_model.cpp
       test/perception/test_engagement.cpp
       test/perception/test_face_tracker.cpp
@@ -63,6 +74,8 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_gcff.cpp
       test/perception/test_gcff_reference.cpp
       test/perception/test_grid_raycast.cpp
+      test/perception/test_group_candidates.cpp
+      test/perception/test_group_detection_run_config.cpp
       test/perception/test_group_evaluation.cpp
       test/perception/test_group_perception.cpp
       test/perception/test_membership_filter.cpp
@@ -85,6 +98,10 @@ if(CATKIN_ENABLE_TESTING)
 
   add_rostest(test/integration/hri_wire.test DEPENDENCIES world_node hri_perception_node)
   add_rostest(test/integration/hri_perception.test DEPENDENCIES world_node hri_perception_node)
+  add_rostest(test/integration/group_detection.test
+    DEPENDENCIES world_node hri_perception_node group_detection_node)
+  add_rostest(test/integration/group_detection_alone.test DEPENDENCIES group_detection_node)
+  add_rostest(test/integration/group_detection_synthetic.test DEPENDENCIES group_detection_node)
   # Clients of the /humans/... topics as ROS4HRI's own behave: a pyhri 0.4.1-like listener on
   # the sim perception, and a stand-in for hri_person_manager on the detectors-only perception.
   add_rostest(test/integration/pyhri_client.test DEPENDENCIES world_node hri_perception_node)

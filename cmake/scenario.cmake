@@ -56,7 +56,15 @@ if(CATKIN_ENABLE_TESTING)
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
   add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
-    social_mpc_node dialogue_node scenario_node run_episodes)
+    group_detection_node social_mpc_node dialogue_node scenario_node run_episodes)
+  # The same scenario with each kind of perception (README, "Swapping in real perception").
+  foreach(perception_args "perception:=sim" "perception:=sim person_ids:=random"
+                          "perception:=detectors")
+    separate_arguments(perception_args)
+    add_rostest(test/integration/scenario_perception_modes.test ARGS ${perception_args}
+      DEPENDENCIES world_node hri_perception_node group_detection_node social_mpc_node
+        dialogue_node scenario_node)
+  endforeach()
 endif()
 
 if(CATKIN_ENABLE_TESTING)

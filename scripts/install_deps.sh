@@ -20,7 +20,7 @@ packages=(
   libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev libnlopt-dev
   liburdfdom-dev liburdfdom-tools
   # headless camera rendering: OpenGL through EGL, Mesa's llvmpipe when there is no GPU
-  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   # tests and benchmarks
   libgtest-dev googletest libbenchmark-dev
   # inspection

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, runs every test (gtest for the cores, rostest for the nodes)
-# and prints a summary. Exits non-zero if any test fails or none ran.
+# Installs what is missing, builds, checks that install_deps.sh installs every Debian package the
+# build and the tests use, runs every test (gtest for the cores, rostest for the nodes) and prints a
+# summary. Exits non-zero if the dependency check fails, any test fails or none ran.
 set -euo pipefail
 source "$(dirname "$0")/prepare.sh"
 rm -rf _build/test_results
 cmake --build _build --target tests -j"$(nproc)"
+# After the test binaries are built, so that their headers and libraries count too. A package this
+# machine happens to have but install_deps.sh does not install would break a fresh machine only;
+# the self-test shows the check catches a removed entry (libnlopt-dev, ...). Fails the run.
+/usr/bin/python3 scripts/check_deps.py --build _build --self-test
 # run_tests keeps going past failures; the summary below decides.
 cmake --build _build --target run_tests -j1 || true
 exec /usr/bin/python3 scripts/test_summary.py _build/test_results

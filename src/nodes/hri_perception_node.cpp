@@ -18,6 +18,7 @@
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
@@ -78,12 +79,27 @@ struct FaceTopics {
 struct VoiceTopics {
   ros::Publisher is_speaking, speech;
 };
-// Persons are permanent: their topics live as long as the node. Latched attributes are sent
-// only when they change.
+// Persons are permanent: their topics live as long as the node.
 struct PersonTopics {
-  ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence;
-  std::optional<std::string> sent_name, sent_face, sent_body, sent_voice;
+  ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence,
+      proxemic_space;
+  std::optional<std::string> sent_name, sent_space;
 };
+
+// hri_person_manager's names of the proxemic zones.
+const char* space_name(perception::ProxemicSpace space) {
+  switch (space) {
+    case perception::ProxemicSpace::kPersonal:
+      return "personal";
+    case perception::ProxemicSpace::kSocial:
+      return "social";
+    case perception::ProxemicSpace::kPublic:
+      return "public";
+    case perception::ProxemicSpace::kUnknown:
+      break;
+  }
+  return "unknown";
+}
 
 std_msgs::String string_msg(const std::string& text) {
   std_msgs::String msg;
@@ -100,6 +116,9 @@ void publish_on_change(ros::Publisher& publisher, std::optional<std::string>& se
   }
 }
 
+// The matchers' own random stream, apart from the pipeline's (PerceptionPipeline's streams 1-5).
+constexpr uint64_t kMatcherStream = 6;
+
 class HriPerceptionNode {
  public:
   HriPerceptionNode(const perception::PerceptionRunConfig& run,
@@ -107,6 +126,8 @@ class HriPerceptionNode {
                     std::optional<world::OccupancyGrid> sound_map)
       : run_(run),
         pipeline_(config),
+        matcher_(pipeline_.config().matchers,
+                 core::Rng::for_stream(pipeline_.config().seed, kMatcherStream)),
         bodies_([this](const std::string& id) { return advertise_body(id); }),
         faces_([this](const std::string& id) { return advertise_face(id); }),
         voices_([this](const std::string& id) { return advertise_voice(id); }) {
@@ -116,10 +137,17 @@ class HriPerceptionNode {
     faces_tracked_ = nh_.advertise<IdsList>("/humans/faces/tracked", 1);
     bodies_tracked_ = nh_.advertise<IdsList>("/humans/bodies/tracked", 1);
     voices_tracked_ = nh_.advertise<IdsList>("/humans/voices/tracked", 1);
-    persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
-    persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
+    if (with_persons()) {
+      persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
+      persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
+      for (const perception::ProxemicSpace space :
+           {perception::ProxemicSpace::kPersonal, perception::ProxemicSpace::kSocial,
+            perception::ProxemicSpace::kPublic}) {
+        in_space_[space] = nh_.advertise<IdsList>(
+            std::string("/humans/persons/in_") + space_name(space) + "_space", 1, true);
+      }
+    }
     matches_ = nh_.advertise<IdsMatch>("/humans/candidate_matches", 50);
-    groups_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
     gazing_ = nh_.advertise<Gaze>("/humans/interactions/gazing", 50);
     markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     map_sub_ = nh_.subscribe("/map", 1, &HriPerceptionNode::on_map, this);
@@ -129,6 +157,9 @@ class HriPerceptionNode {
   }
 
  private:
+  // In detectors mode a person manager (hri_person_manager) makes the persons.
+  bool with_persons() const { return run_.mode == perception::PerceptionRunConfig::Mode::kSim; }
+
   BodyTopics advertise_body(const std::string& id) {
     const std::string ns = "/humans/bodies/" + id + "/";
     return {nh_.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1)};
@@ -157,6 +188,7 @@ class HriPerceptionNode {
       topics.voice_id = nh_.advertise<std_msgs::String>(ns + "voice_id", 1, true);
       topics.engagement = nh_.advertise<EngagementLevel>(ns + "engagement_status", 1);
       topics.location_confidence = nh_.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
+      topics.proxemic_space = nh_.advertise<std_msgs::String>(ns + "proxemic_space", 1, true);
       // Everyone is recognised from ARI's database of known persons (person_id_of).
       std_msgs::Bool anonymous;
       anonymous.data = false;
@@ -216,25 +248,16 @@ class HriPerceptionNode {
         topics.speech.publish(speech_msg(result, language, header));
       }
     }
-    for (const perception::PersonReport& person : frame.persons) {
-      PersonTopics& topics = person_topics(person.person_id);
-      publish_on_change(topics.name, topics.sent_name, person.name);
-      publish_on_change(topics.face_id, topics.sent_face, person.face_id);
-      publish_on_change(topics.body_id, topics.sent_body, person.body_id);
-      publish_on_change(topics.voice_id, topics.sent_voice, person.voice_id);
-      topics.engagement.publish(engagement_msg(person.engagement, header));
-      std_msgs::Float32 confidence;
-      confidence.data = static_cast<float>(person.location_confidence);
-      topics.location_confidence.publish(confidence);
+    if (with_persons()) {
+      publish_persons(frame, header);
     }
 
+    const bool sim = with_persons();
     const HriFrameMessages messages =
-        hri_frame_messages(frame, pipeline_.config().human_model, stamp, kRobotFrame, kMapFrame);
+        hri_frame_messages(frame, sim ? perception::person_links(frame) : matcher_.update(frame),
+                           sim, pipeline_.config().human_model, stamp, kRobotFrame, kMapFrame);
     for (const IdsMatch& match : messages.matches) {
       matches_.publish(match);
-    }
-    for (const Group& group : messages.groups) {
-      groups_.publish(group);
     }
     for (const Gaze& gaze : messages.gazes) {
       gazing_.publish(gaze);
@@ -245,13 +268,45 @@ class HriPerceptionNode {
     faces_tracked_.publish(messages.faces_tracked);
     bodies_tracked_.publish(messages.bodies_tracked);
     voices_tracked_.publish(messages.voices_tracked);
-    persons_tracked_.publish(messages.persons_tracked);
-    persons_known_.publish(messages.persons_known);
+    if (sim) {
+      persons_tracked_.publish(messages.persons_tracked);
+      persons_known_.publish(messages.persons_known);
+    }
 
     bodies_.retire(now_s, run_.id_linger_s);
     faces_.retire(now_s, run_.id_linger_s);
     voices_.retire(now_s, run_.id_linger_s);
     publish_markers(frame);
+  }
+
+  // The person manager's per-person topics. The links are sent on every frame, as
+  // hri_person_manager does on every update: a client (pyhri) accepts a face or body link only if
+  // that face or body is already tracked when the link arrives, and a link sent once would be
+  // lost for good had it come first.
+  void publish_persons(const perception::PerceptionFrame& frame, const std_msgs::Header& header) {
+    std::map<perception::ProxemicSpace, std::vector<std::string>> in_space;
+    for (const perception::PersonReport& person : frame.persons) {
+      in_space[person.proxemic_space].push_back(person.person_id);
+      PersonTopics& topics = person_topics(person.person_id);
+      publish_on_change(topics.name, topics.sent_name, person.name);
+      topics.face_id.publish(string_msg(person.face_id));
+      topics.body_id.publish(string_msg(person.body_id));
+      topics.voice_id.publish(string_msg(person.voice_id));
+      topics.engagement.publish(engagement_msg(person.engagement, header));
+      std_msgs::Float32 confidence;
+      confidence.data = static_cast<float>(person.location_confidence);
+      topics.location_confidence.publish(confidence);
+      publish_on_change(topics.proxemic_space, topics.sent_space,
+                        space_name(person.proxemic_space));
+    }
+    // Latched, sent when they change, as hri_person_manager does.
+    for (auto& [space, publisher] : in_space_) {
+      const std::vector<std::string>& ids = in_space[space];
+      if (ids != sent_in_space_[space]) {
+        publisher.publish(ids_msg(ids, header));
+        sent_in_space_[space] = ids;
+      }
+    }
   }
 
   void publish_markers(const perception::PerceptionFrame& frame) {
@@ -266,6 +321,7 @@ class HriPerceptionNode {
 
   perception::PerceptionRunConfig run_;
   perception::PerceptionPipeline pipeline_;
+  perception::CandidateMatcher matcher_;  ///< Detectors mode only.
   bool has_map_{false};
   std::optional<double> last_time_s_;
   ros::WallTime last_markers_;
@@ -273,13 +329,15 @@ class HriPerceptionNode {
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_{"~"};
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
-      matches_, groups_, gazing_, markers_;
+      matches_, gazing_, markers_;
   ros::Subscriber map_sub_, state_sub_;
   tf2_ros::TransformBroadcaster tf_;
   PerIdTopics<BodyTopics> bodies_;
   PerIdTopics<FaceTopics> faces_;
   PerIdTopics<VoiceTopics> voices_;
   std::map<std::string, PersonTopics> persons_;
+  std::map<perception::ProxemicSpace, ros::Publisher> in_space_;
+  std::map<perception::ProxemicSpace, std::vector<std::string>> sent_in_space_;
 };
 
 }  // namespace
@@ -304,6 +362,9 @@ int main(int argc, char** argv) {
     if (run.errors_enabled) {
       config.errors_enabled = *run.errors_enabled;
     }
+    if (run.person_ids) {
+      config.persons.id_style = *run.person_ids;
+    }
     if (!run.world.empty()) {
       sound_map = perception::rasterize_walls(world::load_world_file(run.world),
                                               nodes::kSoundMapResolution_m);
@@ -312,8 +373,10 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  ROS_INFO("hri_perception_node: %s, seed %u, error models %s, sound blocked by %s",
-           run.config.c_str(), config.seed, config.errors_enabled ? "on" : "off",
+  const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
+  ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
+           detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
+           config.errors_enabled ? "on" : "off",
            run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
   nodes::HriPerceptionNode node(run, config, std::move(sound_map));
   ros::spin();

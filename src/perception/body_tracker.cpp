@@ -36,7 +36,6 @@ void BodyTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     PerceivedBody body;
     body.human = human.id;
     body.body_id = *body_id;
-    body.person_id = person_id_of(human.id);
     body.distance_m = camera.distance_to(human.pose.position);
     body.X_map_body = perturb_pose(config_.body_errors.pose, human.pose, body.distance_m, rng_);
     body.velocity_mps = human.velocity_mps;

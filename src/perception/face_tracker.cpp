@@ -100,7 +100,6 @@ void FaceTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     PerceivedFace face;
     face.human = human.id;
     face.face_id = *face_id;
-    face.person_id = person_id_of(human.id);
     face.distance_m = camera.distance_to(position);
     face.X_map_face =
         perturb_pose(config_.face_errors.pose, {position, head}, face.distance_m, rng_);

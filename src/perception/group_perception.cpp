@@ -2,16 +2,11 @@
 
 namespace ari_social_sim::perception {
 
-void GroupPerception::update(const std::vector<PerceivedBody>& bodies,
+void GroupPerception::update(const std::vector<GcffPerson>& people,
                              std::vector<PerceivedGroup>& groups) {
-  persons_.clear();
-  for (const PerceivedBody& body : bodies) {
-    persons_.push_back({body.person_id, body.X_map_body.position.x(), body.X_map_body.position.y(),
-                        body.X_map_body.theta});
-  }
-  detector_.detect(persons_, result_);
+  detector_.detect(people, result_);
   ids_.clear();
-  for (const GcffPerson& person : persons_) {
+  for (const GcffPerson& person : people) {
     ids_.push_back(person.id);
   }
   detected_.clear();
@@ -25,7 +20,7 @@ void GroupPerception::update(const std::vector<PerceivedBody>& bodies,
   std::vector<Eigen::Vector2d> centres(steady.size(), Eigen::Vector2d::Zero());
   for (size_t g = 0; g < steady.size(); ++g) {
     for (size_t member : steady[g]) {
-      const GcffPerson& person = persons_[member];
+      const GcffPerson& person = people[member];
       grouping_[g].push_back(person.id);
       centres[g] += gcff_candidate_centre(person, stride_);
     }

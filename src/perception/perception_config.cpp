@@ -172,6 +172,17 @@ void PerceptionConfig::validate() const {
   copy.visit(checker);
   check_confusion(face_errors.emotion_confusion);
   check_speech(speech_errors);
+  if (persons.id_style != "human" && persons.id_style != "random") {
+    fail("persons.id_style", "expected human or random, got '" + persons.id_style + "'");
+  }
+  if (!(persons.personal_distance_m < persons.social_distance_m &&
+        persons.social_distance_m < persons.public_distance_m)) {
+    fail("persons.social_distance",
+         "expected personal_distance < social_distance < public_distance, got " +
+             std::to_string(persons.personal_distance_m) + ", " +
+             std::to_string(persons.social_distance_m) + ", " +
+             std::to_string(persons.public_distance_m));
+  }
   if (human_model.eye_height_m <= human_model.hip_height_m) {
     fail("human_model.eye_height", "expected more than hip_height (" +
                                        std::to_string(human_model.hip_height_m) + "), got " +
@@ -194,6 +205,8 @@ PerceptionConfig PerceptionConfig::without_errors() const {
   config.face_errors.emotion_confusion = EmotionConfusion::identity();
   config.speech_errors.word_error_rate = 0.0;
   config.speech_errors.misattribution_rate = 0.0;
+  config.matchers.recognition_rate = 1.0;
+  config.matchers.confidence_noise = 0.0;
   return config;
 }
 

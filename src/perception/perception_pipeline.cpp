@@ -7,7 +7,21 @@ namespace {
 
 // Independent random streams, so that switching one error model on or off leaves the draws of
 // the others unchanged.
-enum Stream : uint64_t { kIdStream = 1, kBodyStream = 2, kFaceStream = 3, kSpeechStream = 4 };
+enum Stream : uint64_t {
+  kIdStream = 1,
+  kBodyStream = 2,
+  kFaceStream = 3,
+  kSpeechStream = 4,
+  kPersonIdStream = 5
+};
+
+// Names the person behind each observation of a frame (every observed human is a known person).
+template <class Observation>
+void link_to_persons(std::vector<Observation>& observations, const PersonRegistry& persons) {
+  for (Observation& observation : observations) {
+    observation.person_id = persons.person_id(observation.human);
+  }
+}
 
 const PerceptionConfig& validated(const PerceptionConfig& config) {
   config.validate();
@@ -22,8 +36,8 @@ PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
       bodies_(config_, ids_, core::Rng::for_stream(config.seed, kBodyStream)),
       faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),
       speech_(config_, ids_, core::Rng::for_stream(config.seed, kSpeechStream)),
-      persons_(config_.persons, config_.engagement),
-      groups_(config_.groups) {}
+      persons_(config_.persons, config_.engagement,
+               core::Rng::for_stream(config.seed, kPersonIdStream)) {}
 
 void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
   sight_map_ = std::move(grid);
@@ -38,7 +52,6 @@ void PerceptionPipeline::forget_everyone() {
   faces_.track_ids().retain({});
   speech_.clear();
   persons_.clear();
-  groups_.clear();
 }
 
 std::vector<GazeRelation> PerceptionPipeline::gaze_relations(
@@ -53,7 +66,7 @@ std::vector<GazeRelation> PerceptionPipeline::gaze_relations(
     if (face.gaze_target == ari) {
       gazes.push_back({face.person_id, ""});
     } else if (persons_.is_known(face.gaze_target)) {
-      gazes.push_back({face.person_id, person_id_of(face.gaze_target)});
+      gazes.push_back({face.person_id, persons_.person_id(face.gaze_target)});
     }
   }
   return gazes;
@@ -72,7 +85,6 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   frame_.bodies.clear();
   frame_.faces.clear();
   frame_.voices.clear();
-  frame_.groups.clear();
   frame_.gazes.clear();
 
   std::set<world::ObjectId> present;
@@ -99,8 +111,11 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   }
   persons_.update(snapshot, snapshot.ari ? &frame_.sensors : nullptr, frame_.bodies, frame_.faces,
                   frame_.voices, frame_.persons);
+  // The detectors know nothing of persons: the person manager links them.
+  link_to_persons(frame_.bodies, persons_);
+  link_to_persons(frame_.faces, persons_);
+  link_to_persons(frame_.voices, persons_);
   frame_.gazes = gaze_relations(snapshot);
-  groups_.update(frame_.bodies, frame_.groups);
   return frame_;
 }
 

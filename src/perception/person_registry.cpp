@@ -14,10 +14,30 @@ const Observation* find_of(const std::vector<Observation>& observations, world::
   return it != observations.end() && it->human == human ? &*it : nullptr;
 }
 
+ProxemicSpace zone_of(const PersonConfig& config, double distance_m) {
+  if (distance_m <= config.personal_distance_m) {
+    return ProxemicSpace::kPersonal;
+  }
+  if (distance_m <= config.social_distance_m) {
+    return ProxemicSpace::kSocial;
+  }
+  return distance_m <= config.public_distance_m ? ProxemicSpace::kPublic : ProxemicSpace::kUnknown;
+}
+
 }  // namespace
 
-PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConfig& engagement)
-    : config_(persons), engagement_config_(engagement) {}
+PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConfig& engagement,
+                               core::Rng id_rng)
+    : config_(persons), engagement_config_(engagement), random_ids_(id_rng) {}
+
+const std::string& PersonRegistry::id_of(world::ObjectId human) {
+  auto [it, is_new] = ids_.try_emplace(human);
+  if (is_new) {
+    it->second = config_.id_style == "random" ? "anonymous_person_" + random_ids_.next()
+                                              : person_id_of(human);
+  }
+  return it->second;
+}
 
 void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSensors* sensors,
                             const std::vector<PerceivedBody>& bodies,
@@ -40,7 +60,7 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
     if (it == persons_.end()) {
       it = persons_.emplace(human.id, Person{{}, now, EngagementTracker(engagement_config_)}).first;
       it->second.report.human = human.id;
-      it->second.report.person_id = person_id_of(human.id);
+      it->second.report.person_id = id_of(human.id);
     }
     Person& person = it->second;
     PersonReport& report = person.report;
@@ -59,6 +79,9 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
                                {face->X_map_face.position, face->gaze_rad})
             : 0.0;
     report.engagement = person.engagement.update(now, report.engagement_score);
+    report.proxemic_space =
+        snapshot.ari ? zone_of(config_, (report.location - snapshot.ari->pose.position).norm())
+                     : ProxemicSpace::kUnknown;
   }
 
   reports.clear();
@@ -71,6 +94,7 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
       report.engagement_score = 0.0;
       person.engagement.reset();
       report.engagement = EngagementLevel::kUnknown;
+      report.proxemic_space = ProxemicSpace::kUnknown;
     }
     report.location_confidence =
         std::max(0.0, 1.0 - (now - person.last_tracked_s) / config_.location_decay_s);

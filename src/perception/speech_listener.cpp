@@ -124,7 +124,6 @@ void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSenso
       PerceivedVoice perceived;
       perceived.human = it->first;
       perceived.voice_id = voice.id;
-      perceived.person_id = person_id_of(it->first);
       perceived.position = humans[found->second].pose.position;
       perceived.is_speaking = voice.active;
       perceived.speech = std::move(voice.results);

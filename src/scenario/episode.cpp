@@ -1,6 +1,7 @@
 #include "ari_social_sim/scenario/episode.hpp"
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/group_candidates.hpp"
 
 namespace ari_social_sim::scenario {
 
@@ -128,6 +129,7 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
       seed_(seed),
       config_(config),
       perception_(seeded(config.perception, seed)),
+      group_detection_(perception_.config().groups),
       dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
       runner_(scenario, seed, config.dialogue.get()) {
   if (!config.dialogue || !config.nlu) {
@@ -166,7 +168,9 @@ void Episode::step() {
   metrics_.observe(observations_);
 }
 
-// As hri_perception_node: every world state unless closer than its maximum rate to the last one.
+// As hri_perception_node: every world state unless closer than its maximum rate to the last one;
+// then as group_detection_node on the persons hri_perception_node tracked in that frame (the
+// live node runs on each /humans/persons/tracked, at most at the same rate).
 void Episode::perceive() {
   perceived_ = nullptr;
   const double time_s = observations_.world.time_s;
@@ -176,16 +180,17 @@ void Episode::perceive() {
   }
   last_perceived_s_ = time_s;
   perceived_ = &perception_.update(observations_.world);
+  group_detection_.update(perception::group_candidates_of(*perceived_), groups_);
   observations_.perceived_groups.clear();
-  for (const perception::PerceivedGroup& group : perceived_->groups) {
+  for (const perception::PerceivedGroup& group : groups_) {
     observations_.perceived_groups.push_back(perceived_group(group.group_id, group.members));
   }
 }
 
-// As social_mpc_node: what perception published, then its control timer.
+// As social_mpc_node: what perception and group detection published, then its control timer.
 void Episode::navigate() {
   if (perceived_ != nullptr) {
-    navigation_->observe(*perceived_);
+    navigation_->observe(*perceived_, groups_);
   }
   navigation_->control();
   navigation_commands_ = navigation_->take_commands();

@@ -11,7 +11,8 @@ InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& con
                                          world::Simulation& simulation)
     : config_(config), simulation_(simulation), tracker_(config.scene), navigator_(config, map) {}
 
-void InProcessNavigation::observe(const perception::PerceptionFrame& frame) {
+void InProcessNavigation::observe(const perception::PerceptionFrame& frame,
+                                  const std::vector<perception::PerceivedGroup>& groups) {
   // As social_mpc_node: a tracked person is placed at their body's frame; one without a body
   // (heard, or not yet matched) is left out, as the planner needs a facing direction.
   for (const perception::PersonReport& person : frame.persons) {
@@ -26,7 +27,7 @@ void InProcessNavigation::observe(const perception::PerceptionFrame& frame) {
                               body->X_map_body.theta);
     }
   }
-  for (const perception::PerceivedGroup& group : frame.groups) {
+  for (const perception::PerceivedGroup& group : groups) {
     tracker_.observe_group(group.group_id, frame.time_s, group.members);
   }
 }

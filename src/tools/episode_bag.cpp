@@ -47,6 +47,7 @@ void EpisodeBag::record_step(const scenario::Episode& episode) {
   record_world(episode);
   if (const perception::PerceptionFrame* frame = episode.perception_frame()) {
     record_perception(*frame, episode.perception_config());
+    record_groups(episode.perceived_groups(), frame->time_s);
   }
   record_navigation(episode);
   // What dialogue_node publishes.
@@ -108,12 +109,10 @@ void EpisodeBag::record_perception(const perception::PerceptionFrame& frame,
                                    const perception::PerceptionConfig& config) {
   const double now_s = frame.time_s;
   const nodes::HriFrameMessages messages = nodes::hri_frame_messages(
-      frame, config.human_model, ros::Time(now_s), nodes::kBaseFrame, nodes::kMapFrame);
+      frame, perception::person_links(frame), /*with_persons=*/true, config.human_model,
+      ros::Time(now_s), nodes::kBaseFrame, nodes::kMapFrame);
   for (const IdsMatch& match : messages.matches) {
     write("/humans/candidate_matches", now_s, match);
-  }
-  for (const Group& group : messages.groups) {
-    write("/humans/interactions/groups", now_s, group);
   }
   for (const Gaze& gaze : messages.gazes) {
     write("/humans/interactions/gazing", now_s, gaze);
@@ -128,6 +127,18 @@ void EpisodeBag::record_perception(const perception::PerceptionFrame& frame,
   write("/humans/voices/tracked", now_s, messages.voices_tracked);
   write("/humans/persons/tracked", now_s, messages.persons_tracked);
   write("/humans/persons/known", now_s, messages.persons_known);
+}
+
+// What group_detection_node publishes on each /humans/persons/tracked: one Group per group, in
+// its reference frame (the map), stamped with the tracked list's stamp.
+void EpisodeBag::record_groups(const std::vector<perception::PerceivedGroup>& groups,
+                               double now_s) {
+  std_msgs::Header header;
+  header.stamp = ros::Time(now_s);
+  header.frame_id = nodes::kMapFrame;
+  for (const perception::PerceivedGroup& group : groups) {
+    write("/humans/interactions/groups", now_s, nodes::group_msg(group, header));
+  }
 }
 
 }  // namespace ari_social_sim::tools

@@ -30,6 +30,7 @@ class EpisodeBag {
   void record_navigation(const scenario::Episode& episode);
   void record_perception(const perception::PerceptionFrame& frame,
                          const perception::PerceptionConfig& config);
+  void record_groups(const std::vector<perception::PerceivedGroup>& groups, double now_s);
 
   rosbag::Bag bag_;
   std::string scenario_name_;

@@ -1,5 +1,5 @@
 // rostest (test/integration/social_navigation.test): social_mpc_node driving ARI in world_node,
-// seeing people only through hri_perception_node.
+// seeing people only through hri_perception_node and group_detection_node.
 
 #include <actionlib/client/simple_action_client.h>
 #include <gtest/gtest.h>
@@ -30,8 +30,13 @@ namespace {
 using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
 using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction>;
 
-const std::set<std::string> kGroupOfThree = {"human10", "human11", "human12"};
-// hri_perception_node's GCFF parameters (config/perception.yaml, groups).
+// The simulated humans of test/integration/social_navigation_scene.yaml the tests address.
+constexpr uint32_t kAna = 20;
+const std::vector<uint32_t> kGroupOfThree = {10, 11, 12};
+// A perceived body this close to a human's true position is that human's (perception's position
+// noise is centimetres; the nearest two people of the scene stand over 1 m apart).
+constexpr double kSameBody_m = 0.5;
+// group_detection_node's GCFF parameters (config/perception.yaml, groups).
 constexpr double kGcffStride = 0.6;
 constexpr double kGcffMdl = 0.8;
 // ARI's body centre is 0.22 m behind base_footprint (world::AriFootprint).
@@ -87,16 +92,57 @@ class SocialNavigation : public ::testing::Test {
     tracked_ = msg->ids;
   }
 
-  // The id of the group perception reports right now (within the last 0.5 s) with exactly the
-  // three members, waiting for it: after another test ARI may face elsewhere, and a group seen
+  // The person id perception gives simulated human `human`, whatever its form (the launch asks
+  // for random ids): the tracked person whose body frame stands where the ground truth has that
+  // human. Empty if none within `timeout_s`.
+  static std::string person_of(uint32_t human, double timeout_s) {
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout_s);
+    while (ros::WallTime::now() < until) {
+      std::vector<std::string> tracked;
+      std::map<std::string, std::string> body_ids;
+      Eigen::Vector2d truth{Eigen::Vector2d::Constant(1e9)};
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        tracked = tracked_;
+        body_ids = body_ids_;
+        for (const HumanState& h : truth_.humans) {
+          if (h.id == human) {
+            truth = {h.pose.x, h.pose.y};
+          }
+        }
+      }
+      for (const std::string& id : tracked) {
+        Eigen::Vector2d position;
+        double yaw;
+        if (!body_ids[id].empty() && lookup("body_" + body_ids[id], position, yaw) &&
+            (position - truth).norm() < kSameBody_m) {
+          return id;
+        }
+      }
+      ros::WallDuration(0.1).sleep();
+    }
+    return "";
+  }
+
+  // The person ids of the group of three.
+  static std::set<std::string> persons_of_group_of_three() {
+    std::set<std::string> persons;
+    for (uint32_t human : kGroupOfThree) {
+      persons.insert(person_of(human, 30.0));
+    }
+    return persons;
+  }
+
+  // The id of the group perception reports right now (within the last 0.5 s) with exactly
+  // `members`, waiting for it: after another test ARI may face elsewhere, and a group seen
   // earlier but out of view now is rightly unknown to social_mpc_node.
-  static std::string group_of_three(double timeout_s) {
+  static std::string group_of(const std::set<std::string>& members, double timeout_s) {
     const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout_s);
     while (ros::WallTime::now() < until) {
       {
         std::lock_guard<std::mutex> lock(mutex_);
         for (const auto& [id, report] : groups_) {
-          if (report.members == kGroupOfThree &&
+          if (report.members == members &&
               ros::WallTime::now() - report.received < ros::WallDuration(0.5)) {
             return id;
           }
@@ -207,10 +253,13 @@ TEST_F(SocialNavigation, GoalInTheClosedStoreroomIsAbortedWithTheReason) {
 }
 
 TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
-  ASSERT_TRUE(wait_for_bodies({"human20"}, 30.0)) << "perception never matched Ana's body";
+  const std::string ana_id = person_of(kAna, 30.0);
+  ASSERT_FALSE(ana_id.empty()) << "perception never reported Ana's body";
+  EXPECT_EQ(ana_id.rfind("anonymous_person_", 0), 0u) << "the launch asks for random ids";
+  ASSERT_TRUE(wait_for_bodies({ana_id}, 30.0)) << "perception never matched Ana's body";
   ApproachGoal goal;
   goal.target_type = ApproachGoal::TARGET_PERSON;
-  goal.target_id = "human20";
+  goal.target_id = ana_id;
   ASSERT_EQ(run(*approach_, goal, 90.0), actionlib::SimpleClientGoalState::SUCCEEDED)
       << approach_->getState().getText();
   const ApproachResult& result = *approach_->getResult();
@@ -224,7 +273,7 @@ TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
     truth = truth_;
   }
   const auto ana = std::find_if(truth.humans.begin(), truth.humans.end(),
-                                [](const HumanState& h) { return h.id == 20; });
+                                [](const HumanState& h) { return h.id == kAna; });
   ASSERT_NE(ana, truth.humans.end());
   const double dx = truth.ari.pose.x - ana->pose.x, dy = truth.ari.pose.y - ana->pose.y;
   EXPECT_LT(std::abs(core::angle_difference(std::atan2(dy, dx), ana->pose.theta)),
@@ -233,8 +282,11 @@ TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
 }
 
 TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
-  ASSERT_TRUE(wait_for_bodies({"human10", "human11", "human12"}, 30.0));
-  const std::string group_id = group_of_three(30.0);
+  const std::set<std::string> members = persons_of_group_of_three();
+  ASSERT_EQ(members.size(), 3u);
+  ASSERT_EQ(members.count(""), 0u) << "perception never reported all three bodies";
+  ASSERT_TRUE(wait_for_bodies({members.begin(), members.end()}, 30.0));
+  const std::string group_id = group_of(members, 30.0);
   ASSERT_FALSE(group_id.empty()) << "perception never reported the group of three";
   ApproachGoal goal;
   goal.target_type = ApproachGoal::TARGET_GROUP;
@@ -250,14 +302,14 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   EXPECT_GT(plan_poses_, 10u);  // the plan was published while driving
   ros::Duration(1.0).sleep();   // perception catches up with the final poses
 
-  // GCFF, as hri_perception_node runs it, on the bodies perception reports plus ARI at its body
+  // GCFF, as group_detection_node runs it, on the bodies perception reports plus ARI at its body
   // centre, facing its heading: ARI shares the label of the three members. Standing in the gap,
   // ARI may see a member beside it only now and then, so the bodies are read until perception
   // reports all three at once (within 10 s).
   std::vector<perception::GcffPerson> persons;
   const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(10.0);
   size_t members_seen = 0;
-  while (members_seen < kGroupOfThree.size() && ros::WallTime::now() < until) {
+  while (members_seen < members.size() && ros::WallTime::now() < until) {
     std::vector<std::string> tracked;
     std::map<std::string, std::string> body_ids;
     {
@@ -272,12 +324,12 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
       double yaw;
       if (body_ids.count(id) && lookup("body_" + body_ids[id], position, yaw)) {
         persons.push_back({id, position.x(), position.y(), yaw});
-        members_seen += kGroupOfThree.count(id);
+        members_seen += members.count(id);
       }
     }
     ros::WallDuration(0.2).sleep();
   }
-  ASSERT_EQ(members_seen, kGroupOfThree.size()) << "perception never reported all three at once";
+  ASSERT_EQ(members_seen, members.size()) << "perception never reported all three at once";
   Eigen::Vector2d base;
   double heading = 0.0;
   ASSERT_TRUE(lookup("base_footprint", base, heading));
@@ -288,13 +340,13 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   const perception::GcffResult gcff = detector.detect(persons);
   int with_ari = 0;
   for (size_t i = 0; i + 1 < persons.size(); ++i) {
-    if (kGroupOfThree.count(persons[i].id) && gcff.labels[i] == gcff.labels.back()) {
+    if (members.count(persons[i].id) && gcff.labels[i] == gcff.labels.back()) {
       ++with_ari;
     }
   }
   EXPECT_EQ(with_ari, 3) << persons.size() - 1 << " bodies perceived";
-  // And the members are still reported as one group by perception.
-  EXPECT_EQ(group_of_three(5.0), group_id);
+  // And the members are still reported as one group by group detection.
+  EXPECT_EQ(group_of(members, 5.0), group_id);
 }
 
 }  // namespace

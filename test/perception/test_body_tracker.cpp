@@ -33,7 +33,7 @@ TEST_F(BodyTrackerTest, WithoutErrorsBodiesAreTheGroundTruth) {
   ASSERT_EQ(bodies.size(), 2u);
   for (size_t i = 0; i < 2; ++i) {
     EXPECT_EQ(bodies[i].human, snapshot.humans[i].id);
-    EXPECT_EQ(bodies[i].person_id, "human" + std::to_string(snapshot.humans[i].id));
+    EXPECT_EQ(bodies[i].person_id, "");  // the person manager links bodies to persons
     EXPECT_EQ(bodies[i].X_map_body.position, snapshot.humans[i].pose.position);
     EXPECT_EQ(bodies[i].X_map_body.theta, snapshot.humans[i].pose.theta);
     EXPECT_EQ(bodies[i].velocity_mps, snapshot.humans[i].velocity_mps);

@@ -41,7 +41,8 @@ TEST_F(FaceTrackerTest, AFaceTurnedToARIReportsTheTruth) {
   const std::vector<PerceivedFace> faces = perceive(snapshot);
   ASSERT_EQ(faces.size(), 1u);
   const PerceivedFace& face = faces[0];
-  EXPECT_EQ(face.person_id, "human10");
+  EXPECT_EQ(face.human, 10u);
+  EXPECT_EQ(face.person_id, "");  // the person manager links faces to persons
   EXPECT_EQ(face.face_id.size(), 5u);
   EXPECT_DOUBLE_EQ(face.age_years, 78.0);
   EXPECT_EQ(face.gender, world::Gender::kMale);

@@ -95,6 +95,15 @@ TEST(PerceptionConfig, SpeechSharesSumToOneAndVocabularyHasTwoWords) {
   EXPECT_NO_THROW(parse("speech_errors: {word_error_rate: 0, vocabulary: []}"));
 }
 
+TEST(PerceptionConfig, PersonIdStyleIsHumanOrRandom) {
+  EXPECT_EQ(parse("persons: {id_style: random}").persons.id_style, "random");
+  expect_config_error([] { parse("persons: {id_style: anonymous}"); },
+                      {"p.yaml: persons.id_style", "expected human or random", "anonymous"});
+  PerceptionConfig built;
+  built.persons.id_style = "";
+  EXPECT_THROW(built.validate(), core::ConfigError);
+}
+
 TEST(PerceptionConfig, EyesAboveHips) {
   expect_config_error([] { parse("human_model: {hip_height: 1.0, eye_height: 0.9}"); },
                       {"human_model.eye_height", "more than hip_height"});
@@ -119,6 +128,8 @@ TEST(PerceptionConfig, WithoutErrorsZeroesEveryErrorModelOnly) {
   EXPECT_EQ(off.face_errors.emotion_confusion.neutral, identity.neutral);
   EXPECT_EQ(off.face_errors.emotion_confusion.disturbed, identity.disturbed);
   EXPECT_EQ(off.speech_errors.word_error_rate + off.speech_errors.misattribution_rate, 0.0);
+  EXPECT_EQ(off.matchers.recognition_rate, 1.0);
+  EXPECT_EQ(off.matchers.confidence_noise, 0.0);
   // Sensors stay.
   EXPECT_DOUBLE_EQ(off.face_camera.range_m, PerceptionConfig().face_camera.range_m);
   EXPECT_EQ(PerceptionConfig().effective().to_yaml(), PerceptionConfig().to_yaml());

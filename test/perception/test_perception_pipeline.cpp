@@ -5,6 +5,8 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/group_candidates.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/world/scene.hpp"
 #include "perception_scenes.hpp"
@@ -16,8 +18,8 @@ using test::human_at;
 using test::human_facing;
 using test::snapshot_with_ari;
 
-// Everything a frame says, as text, for comparisons and hashes.
-std::string describe(const PerceptionFrame& frame) {
+// Everything a frame and the groups found in it say, as text, for comparisons and hashes.
+std::string describe(const PerceptionFrame& frame, const std::vector<PerceivedGroup>& groups) {
   std::ostringstream out;
   out.precision(17);
   for (const PerceivedBody& b : frame.bodies) {
@@ -40,7 +42,7 @@ std::string describe(const PerceptionFrame& frame) {
     out << "P " << p.person_id << p.tracked << p.face_id << p.body_id << p.voice_id
         << p.location_confidence << static_cast<int>(p.engagement) << "\n";
   }
-  for (const PerceivedGroup& g : frame.groups) {
+  for (const PerceivedGroup& g : groups) {
     out << "G " << g.group_id;
     for (const std::string& m : g.members) {
       out << " " << m;
@@ -53,7 +55,8 @@ std::string describe(const PerceptionFrame& frame) {
   return out.str();
 }
 
-// The default waiting room scene stepped for `seconds`, perceived every step.
+// The default waiting room scene stepped for `seconds`, perceived every step, with group detection
+// on the perceived bodies as the in-process engines compose it.
 std::vector<std::string> run_waiting_room(const PerceptionConfig& config, double seconds) {
   const world::Scene scene =
       world::load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/waiting_room.yaml");
@@ -61,10 +64,14 @@ std::vector<std::string> run_waiting_room(const PerceptionConfig& config, double
       world::build_simulation(scene, world::SimulationConfig{});
   PerceptionPipeline pipeline(config);
   pipeline.set_sight_map(world::rasterize_static_map(scene.world, 0.05));
+  GroupPerception group_detection(pipeline.config().groups);
+  std::vector<PerceivedGroup> groups;
   std::vector<std::string> frames;
   while (simulation->time_s() < seconds) {
     simulation->step();
-    frames.push_back(describe(pipeline.update(world::WorldSnapshot::of(*simulation))));
+    const PerceptionFrame& frame = pipeline.update(world::WorldSnapshot::of(*simulation));
+    group_detection.update(group_candidates_of(frame), groups);
+    frames.push_back(describe(frame, groups));
   }
   return frames;
 }
@@ -104,8 +111,12 @@ TEST(PerceptionPipeline, WithoutErrorsTheFrameIsTheGroundTruth) {
   EXPECT_EQ(frame.persons[0].face_id, frame.faces[0].face_id);
   EXPECT_EQ(frame.persons[0].body_id, frame.bodies[0].body_id);
   EXPECT_EQ(frame.persons[0].voice_id, frame.voices[0].voice_id);
-  ASSERT_EQ(frame.groups.size(), 1u);
-  EXPECT_EQ(frame.groups[0].members, (std::vector<std::string>{"human11", "human13"}));
+  // Group detection on the perceived bodies finds the pair.
+  GroupPerception group_detection(pipeline.config().groups);
+  std::vector<PerceivedGroup> groups;
+  group_detection.update(group_candidates_of(frame), groups);
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups[0].members, (std::vector<std::string>{"human11", "human13"}));
   // Only faces give gaze: the talker looks at ARI (empty receiver).
   ASSERT_EQ(frame.gazes.size(), 1u);
   EXPECT_EQ(frame.gazes[0].sender, "human10");

@@ -19,6 +19,14 @@ TEST(PerceptionRunConfig, NoParametersGiveTheDefaults) {
   EXPECT_DOUBLE_EQ(config.max_rate_hz, 30.0);
   EXPECT_DOUBLE_EQ(config.id_linger_s, 1.0);
   EXPECT_DOUBLE_EQ(config.marker_rate_hz, 10.0);
+  EXPECT_EQ(config.mode, PerceptionRunConfig::Mode::kSim);
+  EXPECT_FALSE(config.person_ids.has_value());
+}
+
+TEST(PerceptionRunConfig, ModeAndPersonIds) {
+  const PerceptionRunConfig config = parse("{mode: detectors, person_ids: random}");
+  EXPECT_EQ(config.mode, PerceptionRunConfig::Mode::kDetectors);
+  EXPECT_EQ(config.person_ids, std::optional<std::string>("random"));
 }
 
 TEST(PerceptionRunConfig, ReadsEveryParameter) {
@@ -41,6 +49,8 @@ TEST(PerceptionRunConfig, BadOrUnknownParametersAreNamed) {
       {"{id_linger: 61}", "id_linger: expected a number [0, 60], got 61"},
       {"{marker_rate: 31}", "marker_rate: expected a number (0, 30], got 31"},
       {"{errors_enabled: 2}", "errors_enabled: expected true or false, got 2"},
+      {"{mode: none}", "mode: expected sim or detectors, got 'none'"},
+      {"{person_ids: numbered}", "person_ids: expected human or random, got 'numbered'"},
       {"{rate: 30}", "unknown field(s) rate"}};
   for (const auto& [text, message] : cases) {
     try {

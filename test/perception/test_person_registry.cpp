@@ -18,7 +18,7 @@ PerceivedBody body_of(world::ObjectId human, const std::string& id, double x, do
 }
 
 TEST(PersonRegistry, PermanentIdsLinkedToTheirFeatures) {
-  PersonRegistry registry({}, {});
+  PersonRegistry registry({}, {}, core::Rng(1));
   world::WorldSnapshot snapshot = test::snapshot_with_ari(1.0);
   snapshot.humans = {human_at(10, 2.0, 0.0, 0.0), human_at(11, 3.0, 1.0, 0.0),
                      human_at(12, 4.0, 1.0, 0.0)};
@@ -49,7 +49,7 @@ TEST(PersonRegistry, PermanentIdsLinkedToTheirFeatures) {
 }
 
 TEST(PersonRegistry, LocationConfidenceFallsToZeroOverTenSeconds) {
-  PersonRegistry registry({}, {});
+  PersonRegistry registry({}, {}, core::Rng(1));
   world::WorldSnapshot snapshot = test::snapshot_with_ari(5.0);
   snapshot.humans = {human_at(10, 2.0, 0.0, 0.0)};
   std::vector<PersonReport> reports;
@@ -76,7 +76,7 @@ TEST(PersonRegistry, LocationConfidenceFallsToZeroOverTenSeconds) {
 TEST(PersonRegistry, EngagementComesFromThePerceivedFace) {
   EngagementConfig engagement;
   engagement.window_s = 1.0;
-  PersonRegistry registry({}, engagement);
+  PersonRegistry registry({}, engagement, core::Rng(1));
   world::WorldSnapshot snapshot = test::snapshot_with_ari();
   snapshot.humans = {human_at(10, 1.0, 0.0, core::kPi)};
   const AriSensors sensors = AriSensors::of(*snapshot.ari, PerceptionConfig());
@@ -93,6 +93,37 @@ TEST(PersonRegistry, EngagementComesFromThePerceivedFace) {
   // 1.12 m from the head camera: log(3.88) / log(5) = 0.84 > 0.5.
   EXPECT_NEAR(reports.at(0).engagement_score, std::log(4.0 + 1.0 - 1.12) / std::log(5.0), 1e-9);
   EXPECT_EQ(reports[0].engagement, EngagementLevel::kEngaged);
+}
+
+TEST(PersonRegistry, RandomIdStyleGivesSeededPermanentIdsOfNoHumanForm) {
+  PersonConfig config;
+  config.id_style = "random";
+  auto ids_after_reset = [&](uint64_t seed) {
+    PersonRegistry registry(config, {}, core::Rng(seed));
+    world::WorldSnapshot snapshot = test::snapshot_with_ari(1.0);
+    snapshot.humans = {human_at(10, 2.0, 0.0, 0.0), human_at(11, 3.0, 1.0, 0.0)};
+    std::vector<PersonReport> reports;
+    const std::vector<PerceivedBody> bodies = {body_of(10, "bodya", 2.0, 0.0),
+                                               body_of(11, "bodyb", 3.0, 1.0)};
+    registry.update(snapshot, nullptr, bodies, {}, {}, reports);
+    std::vector<std::string> first = {reports[0].person_id, reports[1].person_id};
+    registry.clear();  // a world reset: the same humans keep their ids
+    snapshot.time_s = 0.5;
+    registry.update(snapshot, nullptr, bodies, {}, {}, reports);
+    EXPECT_EQ(first, (std::vector<std::string>{reports[0].person_id, reports[1].person_id}));
+    EXPECT_EQ(registry.person_id(11), reports[1].person_id);
+    return first;
+  };
+  const std::vector<std::string> ids = ids_after_reset(4);
+  for (const std::string& id : ids) {
+    // "anonymous_person_" and five lowercase letters, nothing of the human's number.
+    ASSERT_EQ(id.size(), 22u) << id;
+    EXPECT_EQ(id.rfind("anonymous_person_", 0), 0u) << id;
+    EXPECT_EQ(id.find_first_of("0123456789"), std::string::npos) << id;
+  }
+  EXPECT_NE(ids[0], ids[1]);
+  EXPECT_EQ(ids_after_reset(4), ids);
+  EXPECT_NE(ids_after_reset(5), ids);
 }
 
 }  // namespace

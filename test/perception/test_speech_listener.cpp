@@ -46,7 +46,7 @@ TEST_F(SpeechListenerTest, AnUtteranceInRangeArrivesWordByWordThenFinal) {
     const std::vector<PerceivedVoice> voices = hear(snapshot);
     ASSERT_EQ(voices.size(), 1u);
     EXPECT_TRUE(voices[0].is_speaking);
-    EXPECT_EQ(voices[0].person_id, "human10");
+    EXPECT_EQ(voices[0].human, 10u);
     voice_id = voices[0].voice_id;
     for (const SpeechResult& result : voices[0].speech) {
       EXPECT_TRUE(result.final_text.empty());

@@ -1,20 +1,29 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/perception/group_tracker.hpp"
 #include "ari_social_sim/perception/membership_filter.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
-#include "ari_social_sim/perception/perception_frame.hpp"
 
 namespace ari_social_sim::perception {
 
-/// Seed 3.5.2 GroupDetectionSensor: GCFF on the perceived bodies (noisy positions and
-/// orientations, metres), membership steadied over GroupConfig::membership_window_frames frames
-/// (MembershipFilter), members named by person id, group ids kept by GroupTracker while
-/// membership persists (and for GroupConfig::id_memory_frames after). ARI is not a body, so it
-/// is never a member.
+/// A conversational group GCFF found among the people given to GroupPerception.
+struct PerceivedGroup {
+  std::string group_id;
+  std::vector<std::string> members;                 ///< Person ids.
+  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};  ///< O-space centre (the people's frame).
+};
+
+/// Seed 3.5.2 GroupDetectionSensor, as ROS4HRI's separate group detection: GCFF on whichever
+/// people are given each frame (ROS4HRI person ids, positions and body facings in one fixed
+/// frame, metres and rad), membership steadied over GroupConfig::membership_window_frames frames
+/// (MembershipFilter), group ids kept by GroupTracker while membership persists (and for
+/// GroupConfig::id_memory_frames after). The in-process engines give it the perceived bodies
+/// (group_candidates_of), group_detection_node the tracked persons' body frames from tf.
 class GroupPerception {
  public:
   /// Throws core::ConfigError for invalid GCFF parameters.
@@ -24,8 +33,11 @@ class GroupPerception {
         membership_(config.membership_window_frames),
         tracker_(config.id_memory_frames) {}
 
-  /// Replaces `groups` with this frame's groups (two or more members each).
-  void update(const std::vector<PerceivedBody>& bodies, std::vector<PerceivedGroup>& groups);
+  /// Replaces `groups` with this frame's groups (two or more members each, named by the people's
+  /// ids; centres in the people's frame). `people` may be empty; coordinates must be finite and
+  /// ids unique.
+  void update(const std::vector<GcffPerson>& people, std::vector<PerceivedGroup>& groups);
+  /// Forgets membership history and group tracks (a reset of time); new ids stay unique.
   void clear() {
     membership_.clear();
     tracker_.clear();
@@ -37,7 +49,6 @@ class GroupPerception {
   double stride_;
   MembershipFilter membership_;
   GroupTracker tracker_;
-  std::vector<GcffPerson> persons_;
   std::vector<std::string> ids_;
   std::vector<std::vector<size_t>> detected_;
   Grouping grouping_;

@@ -244,10 +244,47 @@ struct SpeechErrors {
 /// Person bookkeeping as hri_person_manager does it.
 struct PersonConfig {
   double location_decay_s{10.0};  ///< location_confidence falls from 1 to 0 over this once unseen.
+  /// How person ids look: "human" gives simulated human N the id `human<N>`, as if ARI recognised
+  /// everyone from a database; "random" gives each a seeded random id (`anonymous_person_` and
+  /// five letters), as a person manager names the persons it makes up, so that consumers can be
+  /// tested for relying on no naming at all.
+  std::string id_style{"human"};
+  /// Outer edges of the proxemic zones, measured from ARI's base to the person (hri_person_manager
+  /// 1.1.0's defaults, after Hall's zones).
+  double personal_distance_m{1.2};
+  double social_distance_m{3.6};
+  double public_distance_m{20.0};
 
   template <class V>
   void visit(V& v) {
     v.field("location_decay", location_decay_s, core::positive());
+    v.field("id_style", id_style);
+    v.field("personal_distance", personal_distance_m, core::positive());
+    v.field("social_distance", social_distance_m, core::positive());
+    v.field("public_distance", public_distance_m, core::positive());
+  }
+};
+
+/// What ROS4HRI's matchers send on /humans/candidate_matches in detectors mode
+/// (CandidateMatcher): confidences of true matches, before noise.
+struct MatcherConfig {
+  double face_body_confidence{0.9};    ///< hri_face_body_matcher, body -> face.
+  double recognition_rate{0.95};       ///< Share of face tracks the face identifier recognises.
+  double recognition_confidence{0.9};  ///< Face identifier, person -> face.
+  double voice_body_confidence{0.8};   ///< Speaker localiser, body -> voice.
+  double confidence_noise{0.05};       ///< Standard deviation added to each match, per frame.
+  /// Matches at or below are not sent (hri_face_body_matcher's confidence_threshold).
+  double threshold{0.5};
+
+  template <class V>
+  void visit(V& v) {
+    const core::Bounds probability = core::between(0.0, 1.0);
+    v.field("face_body_confidence", face_body_confidence, probability);
+    v.field("recognition_rate", recognition_rate, probability);
+    v.field("recognition_confidence", recognition_confidence, probability);
+    v.field("voice_body_confidence", voice_body_confidence, probability);
+    v.field("confidence_noise", confidence_noise, core::between(0.0, 1.0));
+    v.field("threshold", threshold, core::between(0.0, 1.0));
   }
 };
 
@@ -300,6 +337,7 @@ struct PerceptionConfig {
   FaceErrors face_errors;
   SpeechErrors speech_errors;
   PersonConfig persons;
+  MatcherConfig matchers;
   EngagementConfig engagement;
   GroupConfig groups;
 
@@ -316,6 +354,7 @@ struct PerceptionConfig {
     v.section("face_errors", face_errors);
     v.section("speech_errors", speech_errors);
     v.section("persons", persons);
+    v.section("matchers", matchers);
     v.section("engagement", engagement);
     v.section("groups", groups);
   }

@@ -16,8 +16,9 @@
 
 namespace ari_social_sim::perception {
 
-/// The permanent ROS4HRI person id of simulated human N: "human<N>" (e.g. "human10"), as if ARI
-/// recognised everyone from a database of known persons. ARI itself is never a person.
+/// The permanent ROS4HRI person id of simulated human N in the "human" id style: "human<N>" (e.g.
+/// "human10"), as if ARI recognised everyone from a database of known persons. ARI itself is
+/// never a person.
 inline std::string person_id_of(world::ObjectId human) {
   return "human" + std::to_string(human);
 }
@@ -43,7 +44,7 @@ enum class EngagementLevel : uint8_t {
 struct PerceivedBody {
   world::ObjectId human{world::kNoObject};
   std::string body_id;
-  std::string person_id;
+  std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_body;  ///< Mid-hips; theta = body orientation. Noisy.
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};
   double distance_m{0.0};  ///< From the fisheye.
@@ -55,7 +56,7 @@ struct PerceivedBody {
 struct PerceivedFace {
   world::ObjectId human{world::kNoObject};
   std::string face_id;
-  std::string person_id;
+  std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_face;  ///< Sellion; theta = where the face points. Noisy.
   double gaze_rad{0.0};    ///< Gaze direction in the map frame.
   world::ObjectId gaze_target{world::kNoObject};  ///< Whom or what the person looks at.
@@ -83,13 +84,17 @@ struct SpeechResult {
 struct PerceivedVoice {
   world::ObjectId human{world::kNoObject};  ///< Whose voice it is taken to be.
   std::string voice_id;
-  std::string person_id;
+  std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};  ///< Sound source.
   bool is_speaking{false};
   std::vector<SpeechResult> speech;  ///< This frame's results, in order; often empty.
   /// The transcript of the utterance going on, or of the last one after it ended.
   std::string transcript;
 };
+
+/// Hall's proxemic zone of a tracked person around ARI, as hri_person_manager reports it
+/// (`/humans/persons/<id>/proxemic_space`); kUnknown when not tracked or beyond the public zone.
+enum class ProxemicSpace : uint8_t { kUnknown, kPersonal, kSocial, kPublic };
 
 /// A permanent person as the person manager reports it: tracked while a face, body or voice of
 /// theirs is, known once ever tracked.
@@ -104,14 +109,8 @@ struct PersonReport {
   std::string body_id;
   std::string voice_id;
   EngagementLevel engagement{EngagementLevel::kUnknown};
+  ProxemicSpace proxemic_space{ProxemicSpace::kUnknown};
   double engagement_score{0.0};  ///< This frame's visual social engagement, [0, 1].
-};
-
-/// A conversational group detected by GCFF on the perceived bodies.
-struct PerceivedGroup {
-  std::string group_id;
-  std::vector<std::string> members;                 ///< Person ids.
-  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};  ///< O-space centre (map).
 };
 
 /// "sender gazes at receiver" between known persons; an empty receiver is ARI.
@@ -129,7 +128,6 @@ struct PerceptionFrame {
   std::vector<PerceivedFace> faces;
   std::vector<PerceivedVoice> voices;
   std::vector<PersonReport> persons;  ///< Every known person.
-  std::vector<PerceivedGroup> groups;
   std::vector<GazeRelation> gazes;
 };
 

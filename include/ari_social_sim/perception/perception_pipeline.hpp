@@ -6,7 +6,6 @@
 
 #include "ari_social_sim/perception/body_tracker.hpp"
 #include "ari_social_sim/perception/face_tracker.hpp"
-#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/perception/person_registry.hpp"
@@ -19,8 +18,10 @@ namespace ari_social_sim::perception {
 
 /// ARI's perception of the people around it (seed 3.5.2-3.5.4), one frame per world snapshot:
 /// bodies (torso fisheye), faces (head camera), voices and speech (microphones), persons with
-/// engagement, gaze relations and GCFF groups, with the configured error models. Seeded: the same
-/// configuration and snapshots give the same frames.
+/// engagement and gaze relations, with the configured error models. Seeded: the same
+/// configuration and snapshots give the same frames. Groups are not part of it: as in ROS4HRI,
+/// group detection is a separate stage on whatever persons exist (GroupPerception, fed with
+/// group_candidates_of(frame) in process).
 ///
 /// Frames may come at any rate; each advances the trackers by the sim time since the previous
 /// one. Sim time going backwards (a world reset) forgets every track and person; ids already
@@ -53,7 +54,6 @@ class PerceptionPipeline {
   FaceTracker faces_;
   SpeechListener speech_;
   PersonRegistry persons_;
-  GroupPerception groups_;
   std::optional<world::OccupancyGrid> sight_map_;
   std::optional<world::OccupancyGrid> sound_map_;
   std::vector<Eigen::Vector2d> people_;

@@ -11,6 +11,7 @@
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
@@ -28,7 +29,8 @@ namespace ari_social_sim::scenario {
 /// once.
 struct EpisodeConfig {
   world::SimulationConfig simulation;  // step and map resolution (world_node's ~step, ...)
-  /// hri_perception_node's config/perception.yaml; its seed is replaced by the episode's.
+  /// hri_perception_node's config/perception.yaml (group_detection_node reads its `groups:`);
+  /// its seed is replaced by the episode's.
   perception::PerceptionConfig perception;
   double perception_max_rate_hz{30.0};  // hri_perception_node's ~max_rate
   /// social_mpc_node's parameters (config/social_mpc.yaml).
@@ -51,9 +53,10 @@ dialogue::DialogueRunConfig dialogue_run_for(const Script& script, dialogue::Dia
 
 /// One run of a scenario with the suite's cores composed in one process, as fast as the machine
 /// allows (the batch tool's engine). Each step, in order: the world advances; perception
-/// perceives it (at most at its rate); the dialogue follows what the world played and voices
-/// what is due; the script runs on what the step produced, as scenario_node does on each
-/// /sim/world_state. Seeded: the same scenario, configuration and seed give the same run.
+/// perceives it (at most at its rate) and group detection runs on the perceived bodies; the
+/// dialogue follows what the world played and voices what is due; the script runs on what the
+/// step produced, as scenario_node does on each /sim/world_state. Seeded: the same scenario,
+/// configuration and seed give the same run.
 class Episode {
  public:
   /// `seed` replaces the scene's seed, perception's and the dialogue's, and draws the script's
@@ -77,6 +80,9 @@ class Episode {
   uint64_t seed() const { return seed_; }
   /// What perception reported in the last step; null when it skipped the step (its ~max_rate).
   const perception::PerceptionFrame* perception_frame() const { return perceived_; }
+  /// What group_detection_node reported on that frame (map frame); meaningful only when
+  /// perception_frame() is not null.
+  const std::vector<perception::PerceivedGroup>& perceived_groups() const { return groups_; }
   const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
   /// What social_mpc_node commanded in the last step.
   const std::vector<SentCommand>& navigation_commands() const { return navigation_commands_; }
@@ -98,8 +104,10 @@ class Episode {
   std::unique_ptr<world::Simulation> simulation_;
   world::OccupancyGrid map_;
   perception::PerceptionPipeline perception_;
+  perception::GroupPerception group_detection_;
   std::optional<double> last_perceived_s_;
   const perception::PerceptionFrame* perceived_{nullptr};
+  std::vector<perception::PerceivedGroup> groups_;
   std::unique_ptr<InProcessNavigation> navigation_;
   std::vector<SentCommand> navigation_commands_;
   dialogue::DialogueRunConfig dialogue_run_;

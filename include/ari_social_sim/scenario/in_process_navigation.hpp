@@ -7,6 +7,7 @@
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/scenario/observations.hpp"
 #include "ari_social_sim/world/occupancy_grid.hpp"
@@ -23,19 +24,20 @@ struct SentCommand {
 };
 
 /// social_mpc_node in-process (the batch tool's navigation): the same Navigator on the static
-/// map, fed by a SceneTracker with what perception reports (tracked persons at their bodies'
-/// poses, groups), run at the navigator's rate on sim time, its commands applied to ARI in the
-/// simulation. Goals follow the node's action semantics: a goal that cannot be started fails with
-/// the reason, a new goal replaces the current one, a goal's end or a cancel stops the base.
-/// Holds a reference to the simulation, which must outlive it.
+/// map, fed by a SceneTracker with what perception and group detection report (tracked persons at
+/// their bodies' poses, groups), run at the navigator's rate on sim time, its commands applied to
+/// ARI in the simulation. Goals follow the node's action semantics: a goal that cannot be started
+/// fails with the reason, a new goal replaces the current one, a goal's end or a cancel stops the
+/// base. Holds a reference to the simulation, which must outlive it.
 class InProcessNavigation {
  public:
   InProcessNavigation(const navigation::NavigationConfig& config, const world::OccupancyGrid& map,
                       world::Simulation& simulation);
 
   /// What hri_perception_node published in a frame (/humans/persons/tracked, the bodies' tf
-  /// frames, /humans/interactions/groups).
-  void observe(const perception::PerceptionFrame& frame);
+  /// frames) and the groups group_detection_node found in it (/humans/interactions/groups).
+  void observe(const perception::PerceptionFrame& frame,
+               const std::vector<perception::PerceivedGroup>& groups);
   /// A move_base goal, or an approach goal (join_group: TARGET_GROUP_OF_PERSON).
   void start(const navigation::NavigationTarget& target);
   void cancel();

@@ -139,19 +139,21 @@ Gaze gaze_msg(const perception::GazeRelation& gaze, const std_msgs::Header& head
   return msg;
 }
 
-IdsMatch match_msg(const std::string& id1, int8_t type1, const std::string& id2, int8_t type2,
-                   double confidence) {
+IdsMatch match_msg(const perception::CandidateMatch& match) {
   IdsMatch msg;
-  msg.id1 = id1;
-  msg.id1_type = type1;
-  msg.id2 = id2;
-  msg.id2_type = type2;
-  msg.confidence = static_cast<float>(confidence);
+  msg.id1 = match.id1;
+  msg.id1_type = static_cast<int8_t>(match.kind1);
+  msg.id2 = match.id2;
+  msg.id2_type = static_cast<int8_t>(match.kind2);
+  msg.confidence = static_cast<float>(match.confidence);
   return msg;
 }
 
 std::string body_frame(const std::string& body_id) {
   return "body_" + body_id;
+}
+std::string head_frame(const std::string& body_id) {
+  return "head_" + body_id;
 }
 std::string face_frame(const std::string& face_id) {
   return "face_" + face_id;
@@ -168,13 +170,15 @@ std::string person_frame(const std::string& person_id) {
 
 std::vector<geometry_msgs::TransformStamped> hri_transforms(
     const perception::PerceptionFrame& frame, const perception::HumanModelConfig& human_model,
-    const std_msgs::Header& header, const std::string& robot_frame) {
+    const std_msgs::Header& header, const std::string& robot_frame, bool with_persons) {
   std::vector<geometry_msgs::TransformStamped> transforms;
   for (const perception::PerceivedBody& body : frame.bodies) {
     const core::Pose2 X_base_body = body.X_map_body.relative_to(frame.X_map_base);
     transforms.push_back(transform(header, robot_frame, body_frame(body.body_id),
                                    X_base_body.position.x(), X_base_body.position.y(),
                                    human_model.hip_height_m, X_base_body.theta));
+    transforms.push_back(transform(header, body_frame(body.body_id), head_frame(body.body_id), 0, 0,
+                                   human_model.eye_height_m - human_model.hip_height_m, 0));
   }
   for (const perception::PerceivedFace& face : frame.faces) {
     const core::Pose2 X_base_face = face.X_map_face.relative_to(frame.X_map_base);
@@ -193,7 +197,7 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
                                    human_model.eye_height_m, 0.0));
   }
   for (const perception::PersonReport& person : frame.persons) {
-    if (person.location_confidence > 0.0) {
+    if (with_persons && person.location_confidence > 0.0) {
       transforms.push_back(transform(header, header.frame_id, person_frame(person.person_id),
                                      person.location.x(), person.location.y(),
                                      human_model.eye_height_m, 0.0));
@@ -203,6 +207,8 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
 }
 
 HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
+                                    const std::vector<perception::CandidateMatch>& matches,
+                                    bool with_persons,
                                     const perception::HumanModelConfig& human_model,
                                     const ros::Time& stamp, const std::string& robot_frame,
                                     const std::string& map_frame) {
@@ -211,29 +217,25 @@ HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
   header.frame_id = robot_frame;
   HriFrameMessages out;
   std::vector<std::string> body_ids, face_ids, voice_ids, tracked, known;
+  for (const perception::CandidateMatch& match : matches) {
+    out.matches.push_back(match_msg(match));
+  }
   for (const perception::PerceivedBody& body : frame.bodies) {
-    out.matches.push_back(
-        match_msg(body.body_id, IdsMatch::BODY, body.person_id, IdsMatch::PERSON, 1.0));
     body_ids.push_back(body.body_id);
   }
   for (const perception::PerceivedFace& face : frame.faces) {
-    out.matches.push_back(
-        match_msg(face.face_id, IdsMatch::FACE, face.person_id, IdsMatch::PERSON, 1.0));
     face_ids.push_back(face.face_id);
   }
   for (const perception::PerceivedVoice& voice : frame.voices) {
-    out.matches.push_back(
-        match_msg(voice.voice_id, IdsMatch::VOICE, voice.person_id, IdsMatch::PERSON, 1.0));
     voice_ids.push_back(voice.voice_id);
   }
-  for (const perception::PersonReport& person : frame.persons) {
-    known.push_back(person.person_id);
-    if (person.tracked) {
-      tracked.push_back(person.person_id);
+  if (with_persons) {
+    for (const perception::PersonReport& person : frame.persons) {
+      known.push_back(person.person_id);
+      if (person.tracked) {
+        tracked.push_back(person.person_id);
+      }
     }
-  }
-  for (const perception::PerceivedGroup& group : frame.groups) {
-    out.groups.push_back(group_msg(group, header));
   }
   for (const perception::GazeRelation& gaze : frame.gazes) {
     out.gazes.push_back(gaze_msg(gaze, header));
@@ -241,7 +243,7 @@ HriFrameMessages hri_frame_messages(const perception::PerceptionFrame& frame,
   if (frame.has_ari) {
     std_msgs::Header map_header = header;
     map_header.frame_id = map_frame;
-    out.transforms = hri_transforms(frame, human_model, map_header, robot_frame);
+    out.transforms = hri_transforms(frame, human_model, map_header, robot_frame, with_persons);
   }
   out.faces_tracked = ids_msg(face_ids, header);
   out.bodies_tracked = ids_msg(body_ids, header);

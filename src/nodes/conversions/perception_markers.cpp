@@ -108,14 +108,6 @@ visualization_msgs::MarkerArray perception_markers(const perception::PerceptionF
            0.13, rgba(0.8f, 0.8f, 0.8f, fade));
     ++id;
   }
-  id = 0;
-  for (const perception::PerceivedGroup& group : frame.groups) {
-    b.circle("perception/groups", id, group.centre.x(), group.centre.y(), 0.05, 0.35, 0.05,
-             rgba(0.3f, 1.0f, 1.0f));
-    b.text("perception/groups/label", id, group.centre.x(), group.centre.y(), 0.4,
-           "group " + group.group_id, 0.22, rgba(0.0f, 0.4f, 0.45f));
-    ++id;
-  }
   return array;
 }
 
