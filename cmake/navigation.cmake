@@ -57,7 +57,7 @@ install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATI
 add_executable(social_mpc_node
   src/nodes/social_mpc_node.cpp
   src/nodes/conversions/navigation_msgs.cpp)
-target_link_libraries(social_mpc_node ari_navigation ari_world_conversions)
+target_link_libraries(social_mpc_node ari_navigation ari_perceived_persons)
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest_gtest(test_social_navigation test/integration/social_navigation.test

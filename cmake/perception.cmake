@@ -48,6 +48,10 @@ add_library(ari_perception_conversions
   src/nodes/conversions/perception_markers.cpp)
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
 
+# What the nodes that act on perceived people (social_mpc_node, scenario_node) read of ROS4HRI.
+add_library(ari_perceived_persons src/nodes/perceived_persons.cpp)
+target_link_libraries(ari_perceived_persons PUBLIC ari_perception_conversions)
+
 add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
 target_link_libraries(hri_perception_node ari_perception_conversions)
 install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

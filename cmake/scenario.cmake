@@ -11,6 +11,7 @@ add_library(ari_scenario
   src/scenario/episode_report.cpp
   src/scenario/progress_bar.cpp
   src/scenario/observations.cpp
+  src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
   src/scenario/scenario.cpp
   src/scenario/scenario_run_config.cpp
@@ -24,7 +25,8 @@ add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
 target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)
 target_include_directories(ari_scenario_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include)
 add_executable(scenario_node src/nodes/scenario_node.cpp)
-target_link_libraries(scenario_node ari_scenario_conversions ari_dialogue_conversions)
+target_link_libraries(scenario_node ari_scenario_conversions ari_dialogue_conversions
+  ari_perceived_persons)
 
 # run_episodes: the batch tool (cores in one process, rosbags written without a master).
 add_library(ari_episode_bag src/tools/episode_bag.cpp)
@@ -44,6 +46,8 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_conversation.cpp
       test/scenario/test_episode_csv.cpp
       test/scenario/test_episode_metrics.cpp
+      test/scenario/test_observations.cpp
+      test/scenario/test_person_identities.cpp
       test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_scenario.cpp

@@ -1,13 +1,17 @@
 // scenario_node: plays a scenario's script (seed 3.7) against a running suite through its public
 // interfaces only: /sim/world_state and the /sim/... services of world_node, /tts (dialogue_node),
-// move_base and /social_mpc/approach (social_mpc_node), /humans/interactions/groups (perception).
-// Prints the transcript and the outcome at the end and exits 0 on success, 1 on failure.
+// move_base and /social_mpc/approach (social_mpc_node), /humans/persons/..., tf and
+// /humans/interactions/groups (perception, whose persons are matched with the script's humans by
+// where their bodies stand). Prints the transcript and the outcome at the end and exits 0 on
+// success, 1 on failure.
 
 #include <actionlib/client/simple_action_client.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <functional>
 #include <iostream>
@@ -32,15 +36,16 @@
 #include "ari_social_sim/StepSimulation.h"
 #include "ari_social_sim/TtsAction.h"
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/episode_report.hpp"
+#include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/scenario/scenario_run_config.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "conversions/dialogue.hpp"
 #include "conversions/scenario_status.hpp"
 #include "conversions/world_state.hpp"
 #include "frames.hpp"
+#include "perceived_persons.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -125,6 +130,9 @@ class RosCommands : public scenario::Commands {
   }
 
   scenario::NavigationStatus navigation() const {
+    if (active_ == Navigation::kFailedUnsent) {
+      return {scenario::NavigationState::kFailed, unsent_reason_};
+    }
     if (active_ == Navigation::kMoveBase) {
       return status_of(move_base_->getState(), "");
     }
@@ -171,14 +179,21 @@ class RosCommands : public scenario::Commands {
     active_ = Navigation::kMoveBase;
   }
 
-  void approach(world::ObjectId person, bool join_group) override {
+  void approach(const std::string& person_id, bool join_group) override {
     cancel_navigation();
     ApproachGoal goal;
     goal.target_type =
         join_group ? ApproachGoal::TARGET_GROUP_OF_PERSON : ApproachGoal::TARGET_PERSON;
-    goal.target_id = perception::person_id_of(person);
+    goal.target_id = person_id;
     approach_->sendGoal(goal);
     active_ = Navigation::kApproach;
+  }
+
+  void fail_navigation(const std::string& reason) override {
+    cancel_navigation();
+    ROS_WARN("scenario_node: navigation goal not sent: %s", reason.c_str());
+    unsent_reason_ = reason;
+    active_ = Navigation::kFailedUnsent;
   }
 
   void cancel_navigation() override {
@@ -249,12 +264,14 @@ class RosCommands : public scenario::Commands {
   }
 
  private:
-  enum class Navigation { kNone, kMoveBase, kApproach };  // the client of ARI's current goal
+  // The client of ARI's current goal; kFailedUnsent: a goal that could not be named.
+  enum class Navigation { kNone, kMoveBase, kApproach, kFailedUnsent };
 
   std::unique_ptr<TtsClient> tts_;
   std::unique_ptr<MoveBaseClient> move_base_;
   std::unique_ptr<ApproachClient> approach_;
   Navigation active_{Navigation::kNone};
+  std::string unsent_reason_;
 };
 
 class ScenarioNode {
@@ -279,7 +296,12 @@ class ScenarioNode {
     commands_.connect(scenario_.script.interfaces(), config_.server_timeout_s,
                       [this] { step_paused_world(); });
     state_sub_ = nh_.subscribe("/sim/world_state", 100, &ScenarioNode::on_world_state, this);
-    if (scenario_.script.interfaces().perceived_groups) {
+    const scenario::ScriptInterfaces uses = scenario_.script.interfaces();
+    if (uses.approach || uses.perceived_groups) {
+      tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+      persons_ = std::make_unique<PerceivedPersons>(nh_);
+    }
+    if (uses.perceived_groups) {
       groups_sub_ =
           nh_.subscribe("/humans/interactions/groups", 100, &ScenarioNode::on_group, this);
     }
@@ -315,11 +337,17 @@ class ScenarioNode {
     scenario::Observations observations;
     observations.world = from_msg(msg);
     observations.navigation = commands_.navigation();
+    if (persons_) {
+      identities_.update(observations.world, sightings());
+      observations.person_ids = identities_.person_ids();
+      log_new_matches(observations.person_ids);
+    }
     for (auto group = groups_.begin(); group != groups_.end();) {
       if (observations.world.time_s - group->second.stamp_s > config_.group_timeout_s) {
         group = groups_.erase(group);
       } else {
-        observations.perceived_groups.push_back(group->second.group);
+        observations.perceived_groups.push_back(
+            scenario::perceived_group(group->first, group->second.members, identities_));
         ++group;
       }
     }
@@ -338,9 +366,28 @@ class ScenarioNode {
   }
 
   void on_group(const Group& msg) {
-    PerceivedGroupEntry& entry = groups_[msg.group_id];
-    entry.stamp_s = msg.header.stamp.toSec();
-    entry.group = scenario::perceived_group(msg.group_id, msg.members);
+    groups_[msg.group_id] = {msg.header.stamp.toSec(), msg.members};
+  }
+
+  // Where perception's tracked persons are now: at their body, else at their person frame.
+  std::vector<scenario::PersonSighting> sightings() const {
+    std::vector<scenario::PersonSighting> sightings;
+    for (const PerceivedPersons::Placed& person :
+         persons_->place(tf_buffer_, /*or_person_frame=*/true)) {
+      sightings.push_back({person.person_id, person.X_map_frame.position, person.from_body});
+    }
+    return sightings;
+  }
+
+  // Who is who is the first thing to check when a script never sees its people.
+  void log_new_matches(const std::map<world::ObjectId, std::string>& person_ids) {
+    for (const auto& [human, person] : person_ids) {
+      const auto logged = logged_person_ids_.find(human);
+      if (logged == logged_person_ids_.end() || logged->second != person) {
+        ROS_INFO("scenario_node: human %u is perceived as person %s", human, person.c_str());
+      }
+    }
+    logged_person_ids_ = person_ids;
   }
 
   // A world started paused stands at sim time 0, which ROS takes for "no time yet"; one step
@@ -379,7 +426,7 @@ class ScenarioNode {
 
   struct PerceivedGroupEntry {
     double stamp_s{0.0};
-    scenario::PerceivedGroup group;
+    std::vector<std::string> members;  // person ids
   };
 
   scenario::ScenarioRunConfig config_;
@@ -389,8 +436,13 @@ class ScenarioNode {
   std::vector<dialogue::Perception> heard_;  // since the last world state
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::MetricsRecorder metrics_;
-  std::map<std::string, PerceivedGroupEntry> groups_;
+  std::map<std::string, PerceivedGroupEntry> groups_;  // by group id
+  scenario::PersonIdentities identities_;
+  std::map<world::ObjectId, std::string> logged_person_ids_;  // the matches last logged
   ros::NodeHandle nh_;
+  tf2_ros::Buffer tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::unique_ptr<PerceivedPersons> persons_;  // when the script approaches or sees groups
   RosCommands commands_;
   ros::Publisher status_pub_;
   ros::Subscriber state_sub_, groups_sub_, utterances_sub_, outcome_sub_;

@@ -19,13 +19,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <memory>
 #include <optional>
 
 #include "ari_social_sim/ApproachAction.h"
 #include "ari_social_sim/Group.h"
-#include "ari_social_sim/IdsList.h"
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
@@ -34,6 +32,7 @@
 #include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "conversions/navigation_msgs.hpp"
 #include "conversions/world_state.hpp"
+#include "perceived_persons.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -52,6 +51,7 @@ class SocialMpcNode {
   explicit SocialMpcNode(const navigation::NavigationConfig& config)
       : config_(config),
         tracker_(config.scene),
+        persons_(nh_),
         tf_listener_(tf_buffer_),
         move_base_(nh_, "move_base", false),
         approach_(nh_, "/social_mpc/approach", false) {
@@ -63,7 +63,6 @@ class SocialMpcNode {
     map_sub_ = nh_.subscribe("/map", 1, &SocialMpcNode::on_map, this);
     odom_sub_ = nh_.subscribe("/mobile_base_controller/odom", 1, &SocialMpcNode::on_odom, this);
     joints_sub_ = nh_.subscribe("/joint_states", 1, &SocialMpcNode::on_joints, this);
-    persons_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &SocialMpcNode::on_persons, this);
     groups_sub_ = nh_.subscribe("/humans/interactions/groups", 20, &SocialMpcNode::on_group, this);
     simple_goal_sub_ =
         nh_.subscribe("/move_base_simple/goal", 1, &SocialMpcNode::on_simple_goal, this);
@@ -117,18 +116,6 @@ class SocialMpcNode {
     }
   }
 
-  void on_persons(const IdsList& msg) {
-    tracked_persons_ = msg.ids;
-    for (const std::string& id : msg.ids) {
-      if (body_id_subs_.count(id) == 0) {
-        // Latched: the person's body id, whose frame carries the body's facing direction.
-        body_id_subs_[id] = nh_.subscribe<std_msgs::String>(
-            "/humans/persons/" + id + "/body_id", 1,
-            [this, id](const std_msgs::String::ConstPtr& body) { body_ids_[id] = body->data; });
-      }
-    }
-  }
-
   void on_group(const Group& msg) {
     tracker_.observe_group(msg.group_id, msg.header.stamp.toSec(), msg.members);
   }
@@ -137,20 +124,10 @@ class SocialMpcNode {
   // without a body (heard, or not yet matched) is left out: the person frame has a position but
   // no meaningful orientation (REP-155), and the planner needs both.
   void observe_people() {
-    for (const std::string& id : tracked_persons_) {
-      const auto body = body_ids_.find(id);
-      if (body == body_ids_.end() || body->second.empty()) {
-        continue;
-      }
-      geometry_msgs::TransformStamped t;
-      try {
-        t = tf_buffer_.lookupTransform(kMapFrame, "body_" + body->second, ros::Time(0));
-      } catch (const tf2::TransformException&) {
-        continue;
-      }
-      tracker_.observe_person(id, t.header.stamp.toSec(),
-                              {t.transform.translation.x, t.transform.translation.y},
-                              tf2::getYaw(t.transform.rotation));
+    for (const PerceivedPersons::Placed& person :
+         persons_.place(tf_buffer_, /*or_person_frame=*/false)) {
+      tracker_.observe_person(person.person_id, person.stamp_s, person.X_map_frame.position,
+                              person.X_map_frame.theta);
     }
   }
 
@@ -461,19 +438,17 @@ class SocialMpcNode {
   navigation::SceneTracker tracker_;
   std::unique_ptr<navigation::Navigator> navigator_;
   std::optional<ActiveGoal> active_;
-  std::vector<std::string> tracked_persons_;
-  std::map<std::string, std::string> body_ids_;
   double linear_mps_{0.0}, angular_rps_{0.0}, pan_rad_{0.0}, pan_rps_{0.0};
   std::string last_status_;
 
   ros::NodeHandle nh_;
+  PerceivedPersons persons_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   MoveBaseServer move_base_;
   ApproachServer approach_;
   ros::Publisher cmd_vel_pub_, head_pub_, plan_pub_, markers_pub_, status_pub_;
-  ros::Subscriber map_sub_, odom_sub_, joints_sub_, persons_sub_, groups_sub_, simple_goal_sub_;
-  std::map<std::string, ros::Subscriber> body_id_subs_;
+  ros::Subscriber map_sub_, odom_sub_, joints_sub_, groups_sub_, simple_goal_sub_;
   ros::Timer timer_;
 };
 

@@ -6,8 +6,6 @@
 namespace ari_social_sim::scenario {
 namespace {
 
-constexpr char kPersonPrefix[] = "human";
-
 // A decimal id > 0 that fits an ObjectId, or kNoObject.
 world::ObjectId parse_id(const std::string& text) {
   if (text.empty() || text.size() > 10 || text[0] == '0') {
@@ -48,14 +46,6 @@ AgentRef read_agent_ref(const core::YamlMap& map, const std::string& key) {
     map.fail(key, "ari or a human id (a positive integer)", "'" + text + "'");
   }
   return *ref;
-}
-
-world::ObjectId human_of_person_id(const std::string& person_id) {
-  const std::string prefix = kPersonPrefix;
-  if (person_id.compare(0, prefix.size(), prefix) != 0) {
-    return world::kNoObject;
-  }
-  return parse_id(person_id.substr(prefix.size()));
 }
 
 }  // namespace ari_social_sim::scenario

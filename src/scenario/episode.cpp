@@ -34,15 +34,16 @@ class Episode::InProcessCommands : public Commands {
     navigation_.start(navigation::PoseTarget{goal});
   }
 
-  void approach(world::ObjectId person, bool join_group) override {
+  void approach(const std::string& person_id, bool join_group) override {
     navigation_.cancel();
-    const std::string id = perception::person_id_of(person);
     if (join_group) {
-      navigation_.start(navigation::GroupOfPersonTarget{id});
+      navigation_.start(navigation::GroupOfPersonTarget{person_id});
     } else {
-      navigation_.start(navigation::PersonTarget{id});
+      navigation_.start(navigation::PersonTarget{person_id});
     }
   }
+
+  void fail_navigation(const std::string& reason) override { navigation_.fail(reason); }
 
   void cancel_navigation() override { navigation_.cancel(); }
 
@@ -181,10 +182,18 @@ void Episode::perceive() {
   last_perceived_s_ = time_s;
   perceived_ = &perception_.update(observations_.world);
   group_detection_.update(perception::group_candidates_of(*perceived_), groups_);
+  identify();
   observations_.perceived_groups.clear();
   for (const perception::PerceivedGroup& group : groups_) {
-    observations_.perceived_groups.push_back(perceived_group(group.group_id, group.members));
+    observations_.perceived_groups.push_back(
+        perceived_group(group.group_id, group.members, identities_));
   }
+}
+
+// As scenario_node: who each person perception tracks is, from where their body stands.
+void Episode::identify() {
+  identities_.update(observations_.world, sightings_of(*perceived_));
+  observations_.person_ids = identities_.person_ids();
 }
 
 // As social_mpc_node: what perception and group detection published, then its control timer.

@@ -56,6 +56,11 @@ void InProcessNavigation::cancel() {
   status_ = {};
 }
 
+void InProcessNavigation::fail(const std::string& reason) {
+  cancel();
+  status_ = {NavigationState::kFailed, reason};
+}
+
 void InProcessNavigation::control() {
   const double now = simulation_.time_s();
   if (now < next_control_s_ - 1e-9) {

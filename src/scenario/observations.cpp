@@ -3,11 +3,12 @@
 namespace ari_social_sim::scenario {
 
 PerceivedGroup perceived_group(const std::string& group_id,
-                               const std::vector<std::string>& person_ids) {
+                               const std::vector<std::string>& person_ids,
+                               const PersonIdentities& identities) {
   PerceivedGroup group{group_id, {}};
   for (const std::string& person : person_ids) {
-    if (const world::ObjectId human = human_of_person_id(person)) {
-      group.members.push_back(AgentRef::human(human));
+    if (const std::optional<world::ObjectId> human = identities.human_of(person)) {
+      group.members.push_back(AgentRef::human(*human));
     }
   }
   return group;

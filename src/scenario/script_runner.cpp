@@ -124,7 +124,7 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
   }
   if (conversation_ && conversation_->active()) {
     if (const std::optional<SayAction> turn = conversation_->update(observations)) {
-      if (!run({*turn}, commands)) {
+      if (!run({*turn}, observations, commands)) {
         return;
       }
     }
@@ -141,8 +141,8 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
     if (!fires) {
       continue;
     }
-    if (run(transition.actions, commands)) {
-      enter(scenario_.script.state_index(transition.next), commands);
+    if (run(transition.actions, observations, commands)) {
+      enter(scenario_.script.state_index(transition.next), observations, commands);
     }
     return;
   }
@@ -176,14 +176,14 @@ void ScriptRunner::begin(const Observations& observations, Commands& commands) {
       setup.push_back(AddHumanAction{human});
     }
     setup.push_back(CreateGroupAction{generated.group});
-    if (!run(setup, commands)) {
+    if (!run(setup, observations, commands)) {
       return;
     }
   }
-  enter(scenario_.script.state_index(scenario_.script.start), commands);
+  enter(scenario_.script.state_index(scenario_.script.start), observations, commands);
 }
 
-void ScriptRunner::enter(size_t state, Commands& commands) {
+void ScriptRunner::enter(size_t state, const Observations& observations, Commands& commands) {
   if (conversation_) {
     conversation_->stop();  // a conversation lasts as long as the state that started it
   }
@@ -191,7 +191,7 @@ void ScriptRunner::enter(size_t state, Commands& commands) {
   state_enter_s_ = now_s_;
   finished_in_state_.clear();
   visits_.push_back({scenario_.script.states[state].name, now_s_});
-  run(scenario_.script.states[state].on_enter, commands);
+  run(scenario_.script.states[state].on_enter, observations, commands);
 }
 
 bool ScriptRunner::holds(const Condition& condition, const Observations& observations) const {
@@ -241,7 +241,8 @@ bool ScriptRunner::holds(const Condition& condition, const Observations& observa
       condition);
 }
 
-bool ScriptRunner::run(const std::vector<Action>& actions, Commands& commands) {
+bool ScriptRunner::run(const std::vector<Action>& actions, const Observations& observations,
+                       Commands& commands) {
   for (const Action& action : actions) {
     try {
       std::visit(
@@ -259,8 +260,8 @@ bool ScriptRunner::run(const std::vector<Action>& actions, Commands& commands) {
                   commands.set_human_goal(a.who.human_id, a.goal);
                 }
               },
-              [&](const ApproachAction& a) { commands.approach(a.person, false); },
-              [&](const JoinGroupAction& a) { commands.approach(a.person, true); },
+              [&](const ApproachAction& a) { approach(a.person, false, observations, commands); },
+              [&](const JoinGroupAction& a) { approach(a.person, true, observations, commands); },
               [&](const CancelNavigationAction&) { commands.cancel_navigation(); },
               [&](const AddHumanAction& a) { commands.add_human(a.human); },
               [&](const RemoveHumanAction& a) { commands.remove_human(a.human); },
@@ -282,6 +283,21 @@ bool ScriptRunner::run(const std::vector<Action>& actions, Commands& commands) {
     }
   }
   return true;
+}
+
+void ScriptRunner::approach(world::ObjectId human, bool join_group,
+                            const Observations& observations, Commands& commands) {
+  const auto person = observations.person_ids.find(human);
+  if (person != observations.person_ids.end()) {
+    commands.approach(person->second, join_group);
+    return;
+  }
+  // Navigation has no name for the human yet: the same failure as a goal it rejects, so that
+  // the script's navigation_failed transitions apply.
+  const world::HumanSnapshot* found = find_human(human, observations.world);
+  const std::string name = found != nullptr && !found->name.empty() ? " (" + found->name + ")" : "";
+  commands.fail_navigation("human " + std::to_string(human) + name +
+                           " is not perceived as any person yet");
 }
 
 void ScriptRunner::end(bool success, const std::string& reason) {

@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "expect_config_error.hpp"
 
@@ -22,14 +21,6 @@ TEST(AgentRef, RejectsAnythingElseNamingTheField) {
     world::test::expect_config_error([&] { read_agent_ref(map, "who"); }, "f.yaml: who",
                                      {"ari or a human id", bad});
   }
-}
-
-TEST(AgentRef, PersonIdsFollowTheSuiteConvention) {
-  EXPECT_EQ(human_of_person_id(perception::person_id_of(11)), 11u);
-  EXPECT_EQ(human_of_person_id("human11"), 11u);
-  EXPECT_EQ(human_of_person_id("human0"), world::kNoObject);
-  EXPECT_EQ(human_of_person_id("abcde"), world::kNoObject);  // an anonymous transient id
-  EXPECT_EQ(human_of_person_id("human11x"), world::kNoObject);
 }
 
 }  // namespace

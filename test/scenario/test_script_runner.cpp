@@ -23,9 +23,10 @@ class RecordingCommands : public Commands {
   void navigate(const core::Pose2& goal) override {
     record("navigate " + std::to_string(goal.position.x()));
   }
-  void approach(world::ObjectId person, bool join_group) override {
-    record((join_group ? "join " : "approach ") + std::to_string(person));
+  void approach(const std::string& person_id, bool join_group) override {
+    record((join_group ? "join " : "approach ") + person_id);
   }
+  void fail_navigation(const std::string& reason) override { record("fail: " + reason); }
   void cancel_navigation() override { record("cancel"); }
   void add_human(const world::HumanSpec& spec) override {
     record("add " + std::to_string(spec.id));
@@ -50,8 +51,12 @@ class RecordingCommands : public Commands {
   }
 };
 
+// Perception's ids of Paul (10) and Irene (11), of the form a person manager gives.
+const std::string kPaulPerson = "anonymous_person_pauls";
+const std::string kIrenePerson = "anonymous_person_irene";
+
 // A hand-made world: ARI and Paul (10) and Irene (11) where the test puts them; perception
-// reports them as a group.
+// reports them under anonymous ids, as a group.
 struct Stage {
   Observations obs;
 
@@ -64,7 +69,8 @@ struct Stage {
       human.pose.position = id == 10 ? Eigen::Vector2d(3.0, 2.0) : Eigen::Vector2d(4.0, 2.0);
       obs.world.humans.push_back(human);
     }
-    obs.perceived_groups.push_back(perceived_group("group1", {"human10", "human11"}));
+    obs.person_ids = {{10, kPaulPerson}, {11, kIrenePerson}};
+    obs.perceived_groups.push_back({"group1", {AgentRef::human(10), AgentRef::human(11)}});
   }
   world::SpeechSnapshot& speech(const AgentRef& who) {
     return who.is_ari() ? obs.world.ari->speech : obs.world.humans[who.human_id - 10].speech;
@@ -96,7 +102,7 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   const AgentRef ari = AgentRef::ari(), irene = AgentRef::human(11);
   stage.tick(runner, commands);
   EXPECT_EQ(runner.state(), "grouping");
-  EXPECT_EQ(commands.log, std::vector<std::string>{"join 11"});
+  EXPECT_EQ(commands.log, std::vector<std::string>{"join " + kIrenePerson});
 
   // 1.6 m from Irene: still grouping; 1.4 m: ARI asks (seed: closer than 1.5 m).
   stage.obs.world.ari->pose.position = {4.0, 3.6};
@@ -226,6 +232,19 @@ TEST_F(GroupDiscussionRunner, ARefusedCommandEndsTheRunNamingStateAndAction) {
             "state grouping: join_group (of human 11) refused: no human with id 99");
 }
 
+TEST_F(GroupDiscussionRunner, JoiningAHumanNotPerceivedAsAnyPersonFailsTheNavigation) {
+  // Perception has matched Paul only: navigation cannot be told whom to join and is made to fail,
+  // as for a goal it rejects, so that the script's navigation_failed transition applies; the run
+  // goes on.
+  stage.obs.world.humans[1].name = "Irene";
+  stage.obs.person_ids.erase(11);
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "grouping");
+  EXPECT_EQ(commands.log,
+            std::vector<std::string>{"fail: human 11 (Irene) is not perceived as any person yet"});
+  EXPECT_FALSE(runner.finished());
+}
+
 // A scenario from inline text, for the conditions the seed's script does not use.
 Scenario inline_scenario(const std::string& script) {
   const std::string text = "world: " + kSource + "/worlds/room_6x6.yaml\nseed: 2\n" +
@@ -305,9 +324,10 @@ TEST(ScriptRunner, RandomGroupsAreAddedBeforeTheStartState) {
   ScriptRunner runner(s, 7);
   RecordingCommands commands;
   Stage stage;
+  stage.obs.person_ids[30] = "human30";
   stage.tick(runner, commands);
-  EXPECT_EQ(commands.log,
-            (std::vector<std::string>{"add 30", "add 31", "add 32", "group 4 of 3", "join 30"}));
+  EXPECT_EQ(commands.log, (std::vector<std::string>{"add 30", "add 31", "add 32", "group 4 of 3",
+                                                    "join human30"}));
 }
 
 TEST(ScriptRunner, ActPatterns) {

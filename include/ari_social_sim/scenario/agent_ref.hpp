@@ -29,8 +29,4 @@ std::optional<AgentRef> parse_agent_ref(const std::string& text);
 /// Reads `key` as `ari` or a positive human id. Throws core::ConfigError naming the field.
 AgentRef read_agent_ref(const core::YamlMap& map, const std::string& key);
 
-/// The simulated human a ROS4HRI person id stands for (the suite's convention, see
-/// perception::person_id_of: human N is person `humanN`); kNoObject for any other id.
-world::ObjectId human_of_person_id(const std::string& person_id);
-
 }  // namespace ari_social_sim::scenario

@@ -25,8 +25,13 @@ class Commands {
   virtual void set_human_goal(world::ObjectId human, const core::Pose2& goal) = 0;
   /// ARI navigates to a pose (move_base). Replaces any navigation goal in progress.
   virtual void navigate(const core::Pose2& goal) = 0;
-  /// ARI approaches a person, or joins the group the person belongs to (/social_mpc/approach).
-  virtual void approach(world::ObjectId person, bool join_group) = 0;
+  /// ARI approaches a person, or joins the group the person belongs to (/social_mpc/approach),
+  /// named by the id perception reports it under. Replaces any navigation goal in progress.
+  virtual void approach(const std::string& person_id, bool join_group) = 0;
+  /// ARI's navigation fails at once with `reason`, as for a goal navigation rejects, for a goal
+  /// that cannot even be named (a human perception has not matched with any person). Cancels any
+  /// goal in progress; the failure lasts until the next goal or cancel.
+  virtual void fail_navigation(const std::string& reason) = 0;
   /// ARI cancels its navigation goal.
   virtual void cancel_navigation() = 0;
   /// Spawns a human (profile and pose), then sets its goal and gaze targets if the spec has them.

@@ -16,6 +16,7 @@
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/in_process_navigation.hpp"
+#include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "ari_social_sim/scenario/world_speech_stage.hpp"
@@ -53,7 +54,8 @@ dialogue::DialogueRunConfig dialogue_run_for(const Script& script, dialogue::Dia
 
 /// One run of a scenario with the suite's cores composed in one process, as fast as the machine
 /// allows (the batch tool's engine). Each step, in order: the world advances; perception
-/// perceives it (at most at its rate) and group detection runs on the perceived bodies; the
+/// perceives it (at most at its rate), group detection runs on the perceived bodies and the
+/// perceived persons are matched with the humans (PersonIdentities); the
 /// dialogue follows what the world played and voices what is due; the script runs on what the
 /// step produced, as scenario_node does on each /sim/world_state. Seeded: the same scenario,
 /// configuration and seed give the same run.
@@ -95,6 +97,7 @@ class Episode {
   class InProcessCommands;
 
   void perceive();
+  void identify();
   void navigate();
   void converse();
 
@@ -108,6 +111,7 @@ class Episode {
   std::optional<double> last_perceived_s_;
   const perception::PerceptionFrame* perceived_{nullptr};
   std::vector<perception::PerceivedGroup> groups_;
+  PersonIdentities identities_;
   std::unique_ptr<InProcessNavigation> navigation_;
   std::vector<SentCommand> navigation_commands_;
   dialogue::DialogueRunConfig dialogue_run_;

@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ari_social_sim/navigation/navigation_config.hpp"
@@ -41,6 +42,9 @@ class InProcessNavigation {
   /// A move_base goal, or an approach goal (join_group: TARGET_GROUP_OF_PERSON).
   void start(const navigation::NavigationTarget& target);
   void cancel();
+  /// Cancels any goal and reports failure with `reason`, as for a rejected goal: the script's
+  /// goal could not be named (Commands::fail_navigation).
+  void fail(const std::string& reason);
   /// The control timer: one cycle when one is due at the simulation's time.
   void control();
 

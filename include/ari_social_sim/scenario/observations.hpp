@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -7,6 +8,7 @@
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
 #include "ari_social_sim/dialogue/utterance.hpp"
 #include "ari_social_sim/scenario/agent_ref.hpp"
+#include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::scenario {
@@ -20,27 +22,32 @@ struct NavigationStatus {
   std::string reason;  // why it failed; empty otherwise
 };
 
-/// One group as perception reports it, its members mapped to agents (ids that are not `humanN`
-/// person ids are left out).
+/// One group as perception reports it, its members mapped to the simulated humans they were
+/// found to be (persons matched with no human are left out).
 struct PerceivedGroup {
   std::string group_id;
   std::vector<AgentRef> members;
 };
 
-/// A perceived group from its ROS4HRI person ids (`humanN`; other ids are left out).
+/// A perceived group from its ROS4HRI person ids, each mapped through `identities`.
 PerceivedGroup perceived_group(const std::string& group_id,
-                               const std::vector<std::string>& person_ids);
+                               const std::vector<std::string>& person_ids,
+                               const PersonIdentities& identities);
 
 /// How the dialogue with the simulated humans ended (dialogue_node: /sim/dialogue/outcome).
 using DialogueEnd = dialogue::OutcomeEvent;
 
 /// What a script sees at one tick: ground truth of the world (scenario_node: /sim/world_state),
-/// ARI's navigation (the move_base and /social_mpc/approach clients) and the perceived groups
+/// ARI's navigation (the move_base and /social_mpc/approach clients), who perception's persons
+/// are (PersonIdentities on /humans/persons/... and tf) and the groups they form
 /// (/humans/interactions/groups) and the dialogue (/sim/dialogue/utterances and /outcome). The
 /// batch tool fills the same from the cores in-process.
 struct Observations {
   world::WorldSnapshot world;
   NavigationStatus navigation;
+  /// The person id perception reports each simulated human as, for the humans matched so far
+  /// (PersonIdentities::person_ids): how approach and join_group name them to navigation.
+  std::map<world::ObjectId, std::string> person_ids;
   std::vector<PerceivedGroup> perceived_groups;
   /// Human utterances of the dialogue that started since the previous observation, as ARI
   /// perceived them (the dialogue's error layer applied).

@@ -32,7 +32,10 @@ struct StateVisit {
 /// Each tick it records what was said, ends the run at the time limit, and fires at most one
 /// transition of the current state (the first whose conditions all hold): its actions, then the
 /// next state's entry actions. A refused command ends the run as a failure naming the state and
-/// the action. Holds a reference to the scenario, which must outlive it.
+/// the action. approach and join_group name the human by the person id perception reports it
+/// under (Observations::person_ids); for a human not matched with any person yet, ARI's navigation
+/// fails with the reason, which the script can react to (navigation_failed). Holds a reference to
+/// the scenario, which must outlive it.
 class ScriptRunner {
  public:
   /// `seed` draws the random groups and ARI's words when it converses (the scene's seed, or the
@@ -63,10 +66,14 @@ class ScriptRunner {
   };
 
   void begin(const Observations& observations, Commands& commands);
-  void enter(size_t state, Commands& commands);
+  void enter(size_t state, const Observations& observations, Commands& commands);
   bool holds(const Condition& condition, const Observations& observations) const;
   /// Runs actions in order; false once the run has ended (stop or a refused command).
-  bool run(const std::vector<Action>& actions, Commands& commands);
+  bool run(const std::vector<Action>& actions, const Observations& observations,
+           Commands& commands);
+  /// ARI approaches a human, or joins its group, through the person perception reports it as.
+  void approach(world::ObjectId human, bool join_group, const Observations& observations,
+                Commands& commands);
   void end(bool success, const std::string& reason);
   /// Labels ARI's new transcript lines with the acts the script gave their texts.
   void label_ari_lines();
