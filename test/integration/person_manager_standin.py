@@ -28,11 +28,11 @@ What it does, and where it is simpler than the real node:
   published every cycle: 1.0 while tracked, still 1.0 for 10 s after the person's last feature
   went (what the real node's integer arithmetic gives), then 0.0.
 - tf person_<id> in /humans/reference_frame (default map), copied from face_<face_id>, else
-  body_<body_id>, else voice_<voice_id>, looked up at Time(0) and re-stamped now; the last one is
-  re-broadcast while location_confidence > 0. DEVIATIONS: the real node uses head_<body_id>,
-  which our perception does not publish, so body_<body_id> stands in; and the real node names an
-  anonymous person's frame by its bare id while pyhri/libhri look up person_<id>, so every
-  person's frame here is person_<id>.
+  head_<body_id>, else voice_<voice_id>, looked up at Time(0) and re-stamped now; the last one is
+  re-broadcast while location_confidence > 0. DEVIATIONS: when a frame is missing the next best
+  is used (and body_<body_id> after head_<body_id>, for a perception without head frames), where
+  the real node publishes nothing new; and the real node names an anonymous person's frame by its
+  bare id while pyhri/libhri look up person_<id>, so every person's frame here is person_<id>.
 - /humans/persons/tracked and /known: latched, stamped now, sent when they change (and once at
   start, so a latched subscriber always finds a list).
 Not done: aliases (PERSON-PERSON matches), proxemics, /humans/graph, the reset service.
@@ -48,7 +48,9 @@ from ari_social_sim.msg import IdsList, IdsMatch
 
 PERSON, FACE, BODY, VOICE = IdsMatch.PERSON, IdsMatch.FACE, IdsMatch.BODY, IdsMatch.VOICE
 FEATURE_KINDS = {FACE: "faces", BODY: "bodies", VOICE: "voices"}
-FRAME_PREFIX = {FACE: "face_", BODY: "body_", VOICE: "voice_"}
+# Where a person is, best first: its face, its body's head (as the real node; body_ when a
+# perception publishes no head_ frames), its voice.
+SOURCE_FRAMES = ((FACE, "face_"), (BODY, "head_"), (BODY, "body_"), (VOICE, "voice_"))
 LINK_TOPIC = {FACE: "face_id", BODY: "body_id", VOICE: "voice_id"}
 LIFETIME_UNTRACKED_S = 10.0
 ANONYMOUS_PREFIX = "anonymous_person_"
@@ -251,14 +253,16 @@ class ManagedPerson:
             self.unseen_s = 0.0
             self.confidence = 1.0
             # The best located feature: a face, else a body, else a voice.
-            kind_type = next(t for t in (FACE, BODY, VOICE) if t in features)
-            source = FRAME_PREFIX[kind_type] + features[kind_type]
-            try:
-                self.last_transform = manager.tf_buffer.lookup_transform(
-                    manager.reference_frame, source, rospy.Time(0))
-            except (tf2_ros.LookupException, tf2_ros.ConnectivityException,
-                    tf2_ros.ExtrapolationException):
-                pass  # not there yet: keep the last one, if any
+            for kind_type, prefix in SOURCE_FRAMES:
+                if kind_type not in features:
+                    continue
+                try:
+                    self.last_transform = manager.tf_buffer.lookup_transform(
+                        manager.reference_frame, prefix + features[kind_type], rospy.Time(0))
+                    break
+                except (tf2_ros.LookupException, tf2_ros.ConnectivityException,
+                        tf2_ros.ExtrapolationException):
+                    pass  # not there (yet): the next best, else keep the last one, if any
         else:
             self.unseen_s += dt
             self.confidence = 1.0 if self.unseen_s < LIFETIME_UNTRACKED_S else 0.0
