@@ -219,26 +219,27 @@ class PersonManagerStandin(unittest.TestCase):
     def test_links_are_resent_at_10_hz_and_person_frames_follow(self):
         persons = [p for p in self.samples[-1]["persons"] if p["face"] or p["body"]]
         self.assertTrue(persons)
-        # The rate over the sampling window, for the persons tracked at every sample (a person
-        # whose only body flickers is dropped and re-made, with gaps in between).
+        # Over the sampling window: the typical gap between two body_id messages (a person whose
+        # only body flickers is dropped and re-made, so the mean rate counts those gaps too),
+        # for the persons that existed long enough to tell (20+ messages).
         begin, end = self.samples[0]["time"], self.samples[-1]["time"]
-        steady = set.intersection(*({p["id"] for p in s["persons"]} for s in self.samples))
         rates = []
-        for person_id in sorted(steady):
-            topics = self.person(person_id)
+        with self.topics_lock:
+            everyone = dict(self.topics)
+        for person_id, topics in sorted(everyone.items()):
             with topics.lock:
                 times = [t for t, _ in topics.times["body_id"] if begin <= t <= end]
             gaps = sorted(b - a for a, b in zip(times, times[1:]))
-            median = gaps[len(gaps) // 2] if gaps else float("inf")
-            rates.append((person_id, (len(times) - 1) / (end - begin), median, len(times)))
-        print("[ measured ] body_id re-sent over %.1f s of sim time: %s; %d other persons "
-              "not tracked at every sample" % (end - begin, ", ".join(
+            if len(times) >= 20:
+                rates.append((person_id, (len(times) - 1) / (end - begin), gaps[len(gaps) // 2],
+                              len(times)))
+        print("[ measured ] body_id re-sent over %.1f s of sim time: %s; %d persons with fewer "
+              "messages" % (end - begin, ", ".join(
                   "%s %.1f Hz, median gap %.3f s (%d messages)" % r for r in rates),
-                  len({p["id"] for s in self.samples for p in s["persons"]} - steady)))
-        self.assertTrue(rates, "nobody tracked at every sample")
-        for person_id, rate, median, _ in rates:
-            # Every cycle (100 ms of sim time) while it exists; the mean rate also counts the
-            # cycles in which a flickering feature had taken it away.
+                  len(everyone) - len(rates)))
+        self.assertTrue(rates, "no person with 20 body_id messages")
+        for person_id, _, median, _ in rates:
+            # Every cycle (100 ms of sim time) while the person exists.
             self.assertAlmostEqual(median, 0.1, delta=0.01, msg=person_id)
         # person_<id> at the human whose features it has (map frame, /humans/reference_frame).
         humans = {h.id: h for h in self.state.last().humans}
