@@ -106,6 +106,11 @@ if(CATKIN_ENABLE_TESTING)
     DEPENDENCIES world_node hri_perception_node group_detection_node)
   add_rostest(test/integration/group_detection_alone.test DEPENDENCIES group_detection_node)
   add_rostest(test/integration/group_detection_synthetic.test DEPENDENCIES group_detection_node)
+  # Clients of the /humans/... topics as ROS4HRI's own behave: a pyhri 0.4.1-like listener on
+  # the sim perception, and a stand-in for hri_person_manager on the detectors-only perception.
+  add_rostest(test/integration/pyhri_client.test DEPENDENCIES world_node hri_perception_node)
+  add_rostest(test/integration/person_manager_standin.test
+    DEPENDENCIES world_node hri_perception_node)
 
   ari_add_gtest(test_detect_groups SOURCES test/tools/test_detect_groups.cpp)
   target_compile_definitions(test_detect_groups PRIVATE

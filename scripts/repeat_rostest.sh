@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Runs one rostest N times and counts the passes, printing each run's "[ measured ]" lines (a
+# rostest keeps its test's stdout in the result XML only). For tests whose outcome depends on
+# timing, e.g. test/integration/pyhri_client.test:
+#   bash scripts/repeat_rostest.sh 10 pyhri_client.test
+# Exits non-zero unless every run passed. Needs a build (scripts/build.sh).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+runs=${1:?usage: repeat_rostest.sh RUNS TEST_FILE [rostest args...]}
+test_file=${2:?usage: repeat_rostest.sh RUNS TEST_FILE [rostest args...]}
+shift 2
+export PATH=/usr/bin:$PATH
+set +u; source _build/devel/setup.bash; set -u
+results=$(mktemp -d /tmp/repeat_rostest.XXXXXX)
+passed=0
+for i in $(seq "$runs"); do
+  export ROS_TEST_RESULTS_DIR=$results/run$i
+  if rostest ari_social_sim "$test_file" "$@" > "$results/run$i.log" 2>&1; then
+    passed=$((passed + 1)); verdict=PASS
+  else
+    verdict=FAIL
+  fi
+  echo "run $i: $verdict (log $results/run$i.log)"
+  /usr/bin/python3 - "$ROS_TEST_RESULTS_DIR" <<'PY'
+import pathlib, sys, xml.etree.ElementTree as ET
+for xml in sorted(pathlib.Path(sys.argv[1]).rglob("rosunit-*.xml")):
+    root = ET.parse(xml).getroot()
+    for out in root.iter("system-out"):
+        for line in (out.text or "").splitlines():
+            if "[ measured ]" in line:
+                print("  " + line.strip())
+    for failure in root.iter("failure"):
+        text = (failure.text or failure.get("message") or "").split("\n")[0]
+        print("  FAILED: " + text[:400] + (" ..." if len(text) > 400 else ""))
+PY
+done
+echo "$test_file: $passed of $runs runs passed"
+[ "$passed" -eq "$runs" ]
