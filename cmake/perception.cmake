@@ -87,6 +87,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_image_regions.cpp
       test/perception/test_perception_config.cpp
       test/perception/test_perception_pipeline.cpp
+      test/perception/test_per_id_store.cpp
       test/perception/test_perception_run_config.cpp
       test/perception/test_person_registry.cpp
       test/perception/test_pose_noise.cpp

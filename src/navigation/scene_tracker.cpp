@@ -100,6 +100,21 @@ PerceivedScene SceneTracker::scene(double time_s) const {
   return scene;
 }
 
+void SceneTracker::forget(double time_s) {
+  for (auto it = people_.begin(); it != people_.end();) {
+    it = time_s - it->second.time_s > config_.person_timeout_s ? people_.erase(it) : std::next(it);
+  }
+  for (auto group = groups_.begin(); group != groups_.end();) {
+    std::map<std::string, double>& members = group->second.members;
+    for (auto member = members.begin(); member != members.end();) {
+      member = time_s - member->second > config_.group_timeout_s ? members.erase(member)
+                                                                 : std::next(member);
+    }
+    const bool gone = time_s - group->second.time_s > config_.group_timeout_s;
+    group = gone ? groups_.erase(group) : std::next(group);
+  }
+}
+
 void SceneTracker::clear() {
   people_.clear();
   groups_.clear();

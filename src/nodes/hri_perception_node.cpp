@@ -11,7 +11,6 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -19,6 +18,7 @@
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/candidate_matches.hpp"
+#include "ari_social_sim/perception/per_id_store.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
@@ -36,40 +36,6 @@ constexpr char kMapFrame[] = "map";
 constexpr char kRobotFrame[] = "base_footprint";
 constexpr double kSoundMapResolution_m = 0.05;
 
-// The subtopics of one face, body or voice id: advertised when the id first appears, shut down
-// (by dropping the publishers) once it has been absent for the linger time, so that an id
-// missing for a frame or two does not make subscribers reconnect.
-template <class Topics>
-class PerIdTopics {
- public:
-  using Advertise = std::function<Topics(const std::string& id)>;
-
-  explicit PerIdTopics(Advertise advertise) : advertise_(std::move(advertise)) {}
-
-  Topics& of(const std::string& id, double now_s) {
-    Entry& entry = entries_[id];
-    if (!entry.topics) {
-      entry.topics = advertise_(id);
-    }
-    entry.last_seen_s = now_s;
-    return *entry.topics;
-  }
-  void retire(double now_s, double linger_s) {
-    for (auto it = entries_.begin(); it != entries_.end();) {
-      const bool gone = now_s - it->second.last_seen_s > linger_s || now_s < it->second.last_seen_s;
-      it = gone ? entries_.erase(it) : std::next(it);
-    }
-  }
-
- private:
-  struct Entry {
-    std::optional<Topics> topics;
-    double last_seen_s{0.0};
-  };
-  Advertise advertise_;
-  std::map<std::string, Entry> entries_;
-};
-
 struct BodyTopics {
   ros::Publisher roi;
 };
@@ -79,7 +45,7 @@ struct FaceTopics {
 struct VoiceTopics {
   ros::Publisher is_speaking, speech;
 };
-// Persons are permanent: their topics live as long as the node.
+// A person's topics live while the person is known (PersonConfig::forget_after).
 struct PersonTopics {
   ros::Publisher anonymous, name, face_id, body_id, voice_id, engagement, location_confidence,
       proxemic_space;
@@ -130,7 +96,8 @@ class HriPerceptionNode {
                  core::Rng::for_stream(pipeline_.config().seed, kMatcherStream)),
         bodies_([this](const std::string& id) { return advertise_body(id); }),
         faces_([this](const std::string& id) { return advertise_face(id); }),
-        voices_([this](const std::string& id) { return advertise_voice(id); }) {
+        voices_([this](const std::string& id) { return advertise_voice(id); }),
+        persons_([this](const std::string& id) { return advertise_person(id); }) {
     if (sound_map) {
       pipeline_.set_sound_map(std::move(*sound_map));
     }
@@ -176,25 +143,22 @@ class HriPerceptionNode {
     return {nh_.advertise<std_msgs::Bool>(ns + "is_speaking", 1),
             nh_.advertise<LiveSpeech>(ns + "speech", 10)};
   }
-  PersonTopics& person_topics(const std::string& id) {
-    auto [it, is_new] = persons_.try_emplace(id);
-    if (is_new) {
-      const std::string ns = "/humans/persons/" + id + "/";
-      PersonTopics& topics = it->second;
-      topics.anonymous = nh_.advertise<std_msgs::Bool>(ns + "anonymous", 1, true);
-      topics.name = nh_.advertise<std_msgs::String>(ns + "name", 1, true);
-      topics.face_id = nh_.advertise<std_msgs::String>(ns + "face_id", 1, true);
-      topics.body_id = nh_.advertise<std_msgs::String>(ns + "body_id", 1, true);
-      topics.voice_id = nh_.advertise<std_msgs::String>(ns + "voice_id", 1, true);
-      topics.engagement = nh_.advertise<EngagementLevel>(ns + "engagement_status", 1);
-      topics.location_confidence = nh_.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
-      topics.proxemic_space = nh_.advertise<std_msgs::String>(ns + "proxemic_space", 1, true);
-      // Everyone is recognised from ARI's database of known persons (person_id_of).
-      std_msgs::Bool anonymous;
-      anonymous.data = false;
-      topics.anonymous.publish(anonymous);
-    }
-    return it->second;
+  PersonTopics advertise_person(const std::string& id) {
+    const std::string ns = "/humans/persons/" + id + "/";
+    PersonTopics topics;
+    topics.anonymous = nh_.advertise<std_msgs::Bool>(ns + "anonymous", 1, true);
+    topics.name = nh_.advertise<std_msgs::String>(ns + "name", 1, true);
+    topics.face_id = nh_.advertise<std_msgs::String>(ns + "face_id", 1, true);
+    topics.body_id = nh_.advertise<std_msgs::String>(ns + "body_id", 1, true);
+    topics.voice_id = nh_.advertise<std_msgs::String>(ns + "voice_id", 1, true);
+    topics.engagement = nh_.advertise<EngagementLevel>(ns + "engagement_status", 1);
+    topics.location_confidence = nh_.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
+    topics.proxemic_space = nh_.advertise<std_msgs::String>(ns + "proxemic_space", 1, true);
+    // Everyone is recognised from ARI's database of known persons (person_id_of).
+    std_msgs::Bool anonymous;
+    anonymous.data = false;
+    topics.anonymous.publish(anonymous);
+    return topics;
   }
 
   void on_map(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
@@ -287,7 +251,7 @@ class HriPerceptionNode {
     std::map<perception::ProxemicSpace, std::vector<std::string>> in_space;
     for (const perception::PersonReport& person : frame.persons) {
       in_space[person.proxemic_space].push_back(person.person_id);
-      PersonTopics& topics = person_topics(person.person_id);
+      PersonTopics& topics = persons_.of(person.person_id, frame.time_s);
       publish_on_change(topics.name, topics.sent_name, person.name);
       topics.face_id.publish(string_msg(person.face_id));
       topics.body_id.publish(string_msg(person.body_id));
@@ -299,6 +263,8 @@ class HriPerceptionNode {
       publish_on_change(topics.proxemic_space, topics.sent_space,
                         space_name(person.proxemic_space));
     }
+    // A forgotten person is no longer in the frame: its topics are shut down.
+    persons_.retire(frame.time_s, 0.0);
     // Latched, sent when they change, as hri_person_manager does.
     for (auto& [space, publisher] : in_space_) {
       const std::vector<std::string>& ids = in_space[space];
@@ -332,10 +298,12 @@ class HriPerceptionNode {
       matches_, gazing_, markers_;
   ros::Subscriber map_sub_, state_sub_;
   tf2_ros::TransformBroadcaster tf_;
-  PerIdTopics<BodyTopics> bodies_;
-  PerIdTopics<FaceTopics> faces_;
-  PerIdTopics<VoiceTopics> voices_;
-  std::map<std::string, PersonTopics> persons_;
+  // Per-id topics, advertised when an id appears and shut down (by dropping the publishers)
+  // once it has been absent for ~id_linger; persons' once forgotten.
+  perception::PerIdStore<BodyTopics> bodies_;
+  perception::PerIdStore<FaceTopics> faces_;
+  perception::PerIdStore<VoiceTopics> voices_;
+  perception::PerIdStore<PersonTopics> persons_;
   std::map<perception::ProxemicSpace, ros::Publisher> in_space_;
   std::map<perception::ProxemicSpace, std::vector<std::string>> sent_in_space_;
 };

@@ -382,8 +382,10 @@ class SocialMpcNode {
 
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
-    // People are followed all the time, so that a goal naming someone finds them known already.
+    // People are followed all the time, so that a goal naming someone finds them known already;
+    // those perception stopped reporting are let go.
     observe_people();
+    tracker_.forget(ros::Time::now().toSec());
     if (waiting_) {
       start_waiting_approach();
     }

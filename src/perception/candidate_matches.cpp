@@ -45,14 +45,19 @@ void CandidateMatcher::send(std::vector<CandidateMatch>& matches, CandidateMatch
 }
 
 std::vector<CandidateMatch> CandidateMatcher::update(const PerceptionFrame& frame) {
+  const double now = frame.time_s;
+  for (auto it = recognised_.begin(); it != recognised_.end();) {
+    const double age_s = now - it->second.last_seen_s;
+    it = age_s > kVerdictMemory_s || age_s < 0.0 ? recognised_.erase(it) : std::next(it);
+  }
   std::vector<CandidateMatch> matches;
-  std::unordered_map<std::string, bool> recognised;
   for (const PerceivedFace& face : frame.faces) {
-    const auto known = recognised_.find(face.face_id);
-    const bool is_recognised =
-        known != recognised_.end() ? known->second : rng_.uniform() < config_.recognition_rate;
-    recognised.emplace(face.face_id, is_recognised);
-    if (is_recognised) {
+    auto [verdict, is_new] = recognised_.try_emplace(face.face_id);
+    if (is_new) {
+      verdict->second.recognised = rng_.uniform() < config_.recognition_rate;
+    }
+    verdict->second.last_seen_s = now;
+    if (verdict->second.recognised) {
       send(matches, {face.person_id, IdKind::kPerson, face.face_id, IdKind::kFace,
                      noisy(config_.recognition_confidence)});
     }
@@ -61,7 +66,6 @@ std::vector<CandidateMatch> CandidateMatcher::update(const PerceptionFrame& fram
                      noisy(config_.face_body_confidence)});
     }
   }
-  recognised_ = std::move(recognised);
   for (const PerceivedVoice& voice : frame.voices) {
     if (const PerceivedBody* body = observation_of(frame.bodies, voice.human)) {
       send(matches, {body->body_id, IdKind::kBody, voice.voice_id, IdKind::kVoice,

@@ -175,6 +175,11 @@ void PerceptionConfig::validate() const {
   if (persons.id_style != "human" && persons.id_style != "random") {
     fail("persons.id_style", "expected human or random, got '" + persons.id_style + "'");
   }
+  if (persons.forget_after_s < persons.location_decay_s) {
+    fail("persons.forget_after", "expected at least location_decay (" +
+                                     std::to_string(persons.location_decay_s) + "), got " +
+                                     std::to_string(persons.forget_after_s));
+  }
   if (!(persons.personal_distance_m < persons.social_distance_m &&
         persons.social_distance_m < persons.public_distance_m)) {
     fail("persons.social_distance",

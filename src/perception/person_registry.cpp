@@ -30,13 +30,38 @@ PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConf
                                core::Rng id_rng)
     : config_(persons), engagement_config_(engagement), random_ids_(id_rng) {}
 
-const std::string& PersonRegistry::id_of(world::ObjectId human) {
-  auto [it, is_new] = ids_.try_emplace(human);
+std::string PersonRegistry::id_of(world::ObjectId human) {
+  if (config_.id_style != "random") {
+    return person_id_of(human);
+  }
+  auto [it, is_new] = random_ids_by_human_.try_emplace(human);
   if (is_new) {
-    it->second = config_.id_style == "random" ? "anonymous_person_" + random_ids_.next()
-                                              : person_id_of(human);
+    it->second = "anonymous_person_" + random_ids_.next();
   }
   return it->second;
+}
+
+void PersonRegistry::forget(const world::WorldSnapshot& snapshot) {
+  const double now = snapshot.time_s;
+  for (auto it = persons_.begin(); it != persons_.end();) {
+    const bool forgotten =
+        !it->second.report.tracked && now - it->second.last_tracked_s > config_.forget_after_s;
+    it = forgotten ? persons_.erase(it) : std::next(it);
+  }
+  if (random_ids_by_human_.empty()) {
+    return;
+  }
+  std::vector<world::ObjectId> in_world;
+  in_world.reserve(snapshot.humans.size());
+  for (const world::HumanSnapshot& human : snapshot.humans) {
+    in_world.push_back(human.id);
+  }
+  std::sort(in_world.begin(), in_world.end());
+  for (auto it = random_ids_by_human_.begin(); it != random_ids_by_human_.end();) {
+    const bool released = persons_.count(it->first) == 0 &&
+                          !std::binary_search(in_world.begin(), in_world.end(), it->first);
+    it = released ? random_ids_by_human_.erase(it) : std::next(it);
+  }
 }
 
 void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSensors* sensors,
@@ -84,6 +109,7 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
                      : ProxemicSpace::kUnknown;
   }
 
+  forget(snapshot);
   reports.clear();
   for (auto& [human, person] : persons_) {
     PersonReport& report = person.report;

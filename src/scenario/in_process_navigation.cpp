@@ -30,6 +30,7 @@ void InProcessNavigation::observe(const perception::PerceptionFrame& frame,
   for (const perception::PerceivedGroup& group : groups) {
     tracker_.observe_group(group.group_id, frame.time_s, group.members);
   }
+  tracker_.forget(frame.time_s);
 }
 
 void InProcessNavigation::start(const navigation::NavigationTarget& target) {

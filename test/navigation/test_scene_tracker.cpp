@@ -95,5 +95,35 @@ TEST(SceneTracker, AMemberMissedForAFrameStaysInTheGroup) {
   EXPECT_EQ(tracker.scene(2.2).groups[0].members.size(), 2u);
 }
 
+TEST(SceneTracker, ForgetsWhatTheSceneLeavesOutSoMemoryFollowsWhoIsAround) {
+  // 500 people and 250 groups come and go, one person every 0.5 s, each reported once with the
+  // group of them and the one before: with 2 s timeouts and forget() each cycle, at most the
+  // people of the last 2 s stay held (2 / 0.5 + 1 = 5), and as many groups.
+  SceneTracker tracker{SceneTrackerConfig{}};
+  size_t most_people = 0, most_groups = 0;
+  for (int i = 0; i < 500; ++i) {
+    const double t = 0.5 * i;
+    const std::string id = "p" + std::to_string(i);
+    tracker.observe_person(id, t, {0.1 * i, 0.0}, 0.0);
+    tracker.observe_group("g" + std::to_string(i), t, {id, "p" + std::to_string(i - 1)});
+    tracker.forget(t);
+    most_people = std::max(most_people, tracker.person_count());
+    most_groups = std::max(most_groups, tracker.group_count());
+  }
+  EXPECT_EQ(most_people, 5u);
+  EXPECT_EQ(most_groups, 5u);
+  // What forget() drops is what scene() already left out: the same scene before and after.
+  const PerceivedScene before = tracker.scene(250.0);
+  tracker.forget(250.0);
+  const PerceivedScene after = tracker.scene(250.0);
+  EXPECT_EQ(before.people.size(), 4u);  // reported at 248, 248.5, 249 and 249.5 s
+  EXPECT_EQ(before.groups.size(), 3u);  // g497-g499; g496's p495 is out
+  EXPECT_EQ(after.people.size(), before.people.size());
+  EXPECT_EQ(after.groups.size(), before.groups.size());
+  EXPECT_EQ(tracker.person_count(), 4u);
+  tracker.forget(300.0);
+  EXPECT_EQ(tracker.person_count() + tracker.group_count(), 0u);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::navigation

@@ -99,6 +99,43 @@ TEST(CandidateMatcher, RecognitionIsDecidedOncePerFaceTrackAtItsRate) {
   EXPECT_NEAR(recognised / 4000.0, 0.95, 4 * 0.0034);
 }
 
+TEST(CandidateMatcher, VerdictKeptThroughGapsAndDroppedAMinuteAfterTheFaceLeft) {
+  // Recognition rate 0.5: over 200 tracks, each seen at t = 0, missed for 59 s, seen at 59 s, a
+  // verdict that was drawn again would differ about 100 times; kept, it never does.
+  MatcherConfig config;
+  config.recognition_rate = 0.5;
+  CandidateMatcher matcher(config, core::Rng(9));
+  PerceptionFrame frame;
+  for (int track = 0; track < 200; ++track) {
+    PerceivedFace face;
+    face.human = static_cast<world::ObjectId>(track);
+    face.face_id = "f" + std::to_string(track);
+    face.person_id = "p" + std::to_string(track);
+    frame.faces.push_back(face);
+  }
+  auto recognised_ids = [&](double time_s) {
+    frame.time_s = time_s;
+    std::vector<std::string> ids;
+    for (const CandidateMatch& m : matcher.update(frame)) {
+      ids.push_back(m.id2);
+    }
+    return ids;
+  };
+  const std::vector<std::string> first = recognised_ids(0.0);
+  EXPECT_NEAR(first.size(), 100.0, 4 * 7.1);  // binomial sd sqrt(200 / 4)
+  PerceptionFrame empty;
+  empty.time_s = 30.0;
+  matcher.update(empty);
+  EXPECT_EQ(matcher.remembered_count(), 200u);
+  EXPECT_EQ(recognised_ids(59.0), first);
+  // Gone from 59 s on: remembered up to 119 s, dropped after.
+  for (double t : {119.0, 119.5}) {
+    empty.time_s = t;
+    matcher.update(empty);
+    EXPECT_EQ(matcher.remembered_count(), t <= 119.0 ? 200u : 0u) << t;
+  }
+}
+
 TEST(CandidateMatcher, NoisyConfidencesStayInRangeAndLowOnesAreNotSent) {
   // Mean 0.55, noise 0.1, threshold 0.5: P(c > 0.5) = P(z > -0.5) = 0.691 of the matches sent.
   MatcherConfig config;

@@ -24,6 +24,7 @@ TEST(PerceptionConfig, DefaultsAreAriAndValidate) {
   EXPECT_DOUBLE_EQ(config.body_camera.field_of_view_deg, 180.0);  // seed 3.5.2
   EXPECT_DOUBLE_EQ(config.face_camera.field_of_view_deg, 62.0);   // seed 3.5.3
   EXPECT_DOUBLE_EQ(config.persons.location_decay_s, 10.0);        // hri_person_manager
+  EXPECT_DOUBLE_EQ(config.persons.forget_after_s, 60.0);
   EXPECT_TRUE(config.errors_enabled);
 }
 
@@ -102,6 +103,14 @@ TEST(PerceptionConfig, PersonIdStyleIsHumanOrRandom) {
   PerceptionConfig built;
   built.persons.id_style = "";
   EXPECT_THROW(built.validate(), core::ConfigError);
+}
+
+TEST(PerceptionConfig, PersonsForgottenNoSoonerThanTheirConfidenceFades) {
+  EXPECT_DOUBLE_EQ(parse("persons: {forget_after: 10}").persons.forget_after_s, 10.0);
+  expect_config_error([] { parse("persons: {location_decay: 10, forget_after: 9.5}"); },
+                      {"persons.forget_after", "at least location_decay (10.0", "got 9.5"});
+  expect_config_error([] { parse("persons: {forget_after: 0}"); },
+                      {"p.yaml: persons.forget_after", "> 0", "0"});
 }
 
 TEST(PerceptionConfig, EyesAboveHips) {

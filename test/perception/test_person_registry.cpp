@@ -126,5 +126,82 @@ TEST(PersonRegistry, RandomIdStyleGivesSeededPermanentIdsOfNoHumanForm) {
   EXPECT_NE(ids_after_reset(5), ids);
 }
 
+TEST(PersonRegistry, ForgottenAfterSixtySecondsUnseenAndBackUnderTheSameId) {
+  PersonRegistry registry({}, {}, core::Rng(1));  // forget_after 60 s
+  world::WorldSnapshot snapshot = test::snapshot_with_ari(5.0);
+  snapshot.humans = {human_at(10, 2.0, 0.0, 0.0)};
+  std::vector<PersonReport> reports;
+  registry.update(snapshot, nullptr, {body_of(10, "bodya", 2.0, 0.0)}, {}, {}, reports);
+  // Last seen at 5 s: known (confidence 0) up to 65 s, forgotten after.
+  snapshot.time_s = 65.0;
+  registry.update(snapshot, nullptr, {}, {}, {}, reports);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].location_confidence, 0.0);
+  snapshot.time_s = 65.05;
+  registry.update(snapshot, nullptr, {}, {}, {}, reports);
+  EXPECT_TRUE(reports.empty());
+  EXPECT_FALSE(registry.is_known(10));
+  EXPECT_EQ(registry.known_count(), 0u);
+  // Seen again: a person again, "human10" as before, tracked from now.
+  snapshot.time_s = 70.0;
+  registry.update(snapshot, nullptr, {body_of(10, "bodyc", 2.0, 0.0)}, {}, {}, reports);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].person_id, "human10");
+  EXPECT_EQ(reports[0].body_id, "bodyc");
+  EXPECT_DOUBLE_EQ(reports[0].location_confidence, 1.0);
+}
+
+TEST(PersonRegistry, KnownPersonsBoundedByWhoWasSeenInTheLastMinute) {
+  // 1 000 humans pass one after the other, each seen for one frame, one every 2 s, and leave the
+  // world: at most 60 s / 2 s + 1 = 31 are known at any time, not the 1 000 seen over the run.
+  PersonConfig config;
+  config.id_style = "random";
+  PersonRegistry registry(config, {}, core::Rng(2));
+  std::vector<PersonReport> reports;
+  size_t most_known = 0;
+  for (world::ObjectId human = 10; human < 1010; ++human) {
+    world::WorldSnapshot snapshot = test::snapshot_with_ari(2.0 * (human - 10));
+    snapshot.humans = {human_at(human, 2.0, 0.0, 0.0)};
+    registry.update(snapshot, nullptr, {body_of(human, "bodya", 2.0, 0.0)}, {}, {}, reports);
+    most_known = std::max(most_known, registry.known_count());
+    EXPECT_LE(registry.remembered_id_count(), registry.known_count());
+  }
+  EXPECT_EQ(most_known, 31u);
+  EXPECT_EQ(reports.size(), 31u);
+}
+
+TEST(PersonRegistry, RandomIdKeptWhileInTheWorldReleasedOnceGoneAndForgotten) {
+  PersonConfig config;
+  config.id_style = "random";
+  config.forget_after_s = 20.0;
+  PersonRegistry registry(config, {}, core::Rng(3));
+  world::WorldSnapshot snapshot = test::snapshot_with_ari(0.0);
+  snapshot.humans = {human_at(10, 2.0, 0.0, 0.0), human_at(11, 3.0, 1.0, 0.0)};
+  std::vector<PersonReport> reports;
+  registry.update(snapshot, nullptr,
+                  {body_of(10, "bodya", 2.0, 0.0), body_of(11, "bodyb", 3.0, 1.0)}, {}, {},
+                  reports);
+  const std::string id10 = registry.person_id(10);
+  const std::string id11 = registry.person_id(11);
+  // Both unseen; human 11 leaves the world at 5 s. At 25.05 s both are forgotten: human 10's id
+  // is kept (still in the world), human 11's released.
+  snapshot.humans = {human_at(10, 2.0, 0.0, 0.0)};
+  for (double t : {5.0, 25.05}) {
+    snapshot.time_s = t;
+    registry.update(snapshot, nullptr, {}, {}, {}, reports);
+  }
+  EXPECT_EQ(registry.known_count(), 0u);
+  EXPECT_EQ(registry.remembered_id_count(), 1u);
+  // Human 10 is seen again under its id; a new human 11 gets a new one.
+  snapshot.time_s = 30.0;
+  snapshot.humans = {human_at(10, 2.0, 0.0, 0.0), human_at(11, 3.0, 1.0, 0.0)};
+  registry.update(snapshot, nullptr,
+                  {body_of(10, "bodyc", 2.0, 0.0), body_of(11, "bodyd", 3.0, 1.0)}, {}, {},
+                  reports);
+  EXPECT_EQ(registry.person_id(10), id10);
+  EXPECT_NE(registry.person_id(11), id11);
+  EXPECT_EQ(registry.remembered_id_count(), 2u);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::perception

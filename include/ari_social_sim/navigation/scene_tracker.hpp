@@ -42,7 +42,17 @@ class SceneTracker {
   /// within the group timeout that have at least two known members, each with its o-space from
   /// the members' poses.
   PerceivedScene scene(double time_s) const;
+  /// Drops what scene(`time_s`) would leave out: people not reported within the person timeout,
+  /// groups and group members not within the group timeout. Call it once per control cycle, so
+  /// that memory holds who is around, not everyone ever reported (ROS4HRI person and group ids
+  /// come and go all run long). A person reported again after being dropped starts afresh
+  /// (standing still, as a new person), rather than from a velocity estimate that old.
+  void forget(double time_s);
   void clear();
+
+  /// People and groups held (for the soak benchmark).
+  size_t person_count() const { return people_.size(); }
+  size_t group_count() const { return groups_.size(); }
 
  private:
   struct Track {

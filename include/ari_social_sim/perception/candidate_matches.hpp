@@ -38,18 +38,33 @@ std::vector<CandidateMatch> person_links(const PerceptionFrame& frame);
 /// Confidences at or below MatcherConfig::threshold are not sent, as the matchers do. Seeded.
 class CandidateMatcher {
  public:
+  /// s of sim time a face id's recognition verdict is kept after the face was last in a frame:
+  /// a face missed for a few frames keeps its id (TrackIds) and so its verdict; after this the
+  /// verdict is dropped, so memory follows the faces around, not the run's length. Face ids are
+  /// not reused within TransientIds::kRepeatWindow ids, so a dropped verdict is never wanted again
+  /// in practice.
+  static constexpr double kVerdictMemory_s = 60.0;
+
   CandidateMatcher(const MatcherConfig& config, core::Rng rng) : config_(config), rng_(rng) {}
 
-  /// This frame's matches; faces that left the frame are forgotten.
+  /// This frame's matches. Sim time going backwards (a world reset) forgets every verdict.
   std::vector<CandidateMatch> update(const PerceptionFrame& frame);
 
+  /// Face ids whose verdict is remembered.
+  size_t remembered_count() const { return recognised_.size(); }
+
  private:
+  struct Verdict {
+    bool recognised{false};
+    double last_seen_s{0.0};
+  };
+
   void send(std::vector<CandidateMatch>& matches, CandidateMatch match) const;
   double noisy(double confidence);
 
   MatcherConfig config_;
   core::Rng rng_;
-  std::unordered_map<std::string, bool> recognised_;  ///< Per face id in the frame.
+  std::unordered_map<std::string, Verdict> recognised_;  ///< By face id.
 };
 
 }  // namespace ari_social_sim::perception

@@ -244,6 +244,11 @@ struct SpeechErrors {
 /// Person bookkeeping as hri_person_manager does it.
 struct PersonConfig {
   double location_decay_s{10.0};  ///< location_confidence falls from 1 to 0 over this once unseen.
+  /// s of sim time after which a person unseen (no face, body or voice) is forgotten: no longer
+  /// known, its per-person state released. Much longer than location_decay, so that a person
+  /// reported at confidence 0 stays known for a while, as hri_person_manager keeps them; a
+  /// forgotten human seen again is a person again, under the same id in the "human" style.
+  double forget_after_s{60.0};
   /// How person ids look: "human" gives simulated human N the id `human<N>`, as if ARI recognised
   /// everyone from a database; "random" gives each a seeded random id (`anonymous_person_` and
   /// five letters), as a person manager names the persons it makes up, so that consumers can be
@@ -258,6 +263,7 @@ struct PersonConfig {
   template <class V>
   void visit(V& v) {
     v.field("location_decay", location_decay_s, core::positive());
+    v.field("forget_after", forget_after_s, core::positive());
     v.field("id_style", id_style);
     v.field("personal_distance", personal_distance_m, core::positive());
     v.field("social_distance", social_distance_m, core::positive());

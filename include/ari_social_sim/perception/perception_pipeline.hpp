@@ -24,8 +24,10 @@ namespace ari_social_sim::perception {
 /// group_candidates_of(frame) in process).
 ///
 /// Frames may come at any rate; each advances the trackers by the sim time since the previous
-/// one. Sim time going backwards (a world reset) forgets every track and person; ids already
-/// handed out are never reused.
+/// one. Sim time going backwards (a world reset) forgets every track and person; a new face, body
+/// or voice id repeats none of the last TransientIds::kRepeatWindow handed out. Memory follows
+/// the people around, not the run's length: tracks and voices of humans gone from the world are
+/// dropped, persons unseen for PersonConfig::forget_after are forgotten (docs/perception.md).
 class PerceptionPipeline {
  public:
   /// Throws core::ConfigError if the configuration is invalid.

@@ -13,13 +13,22 @@
 
 namespace ari_social_sim::perception {
 
-/// The person manager (hri_person_manager's role): one permanent person per simulated human,
-/// named by PersonConfig::id_style, linked to that human's face, body and voice of the frame. A
-/// person is tracked while any of the three is, and known from the first time it is. Its location
-/// is the face if seen, else the body, else the voice; once untracked it stays at the last place
-/// while location_confidence falls linearly from 1 to 0 over location_decay. Engagement is scored
-/// from the perceived face and ARI's head (no face: score 0) and reset to UNKNOWN when untracked;
-/// so is the proxemic zone, from the distance between ARI's base and the person's location.
+/// The person manager (hri_person_manager's role): one person per simulated human, named by
+/// PersonConfig::id_style, linked to that human's face, body and voice of the frame. A person is
+/// tracked while any of the three is, and known from the first time it is until it has gone
+/// unseen for forget_after (then it is forgotten and its state released; a human seen again is a
+/// person again). Its location is the face if seen, else the body, else the voice; once untracked
+/// it stays at the last place while location_confidence falls linearly from 1 to 0 over
+/// location_decay. Engagement is scored from the perceived face and ARI's head (no face: score 0)
+/// and reset to UNKNOWN when untracked; so is the proxemic zone, from the distance between ARI's
+/// base and the person's location.
+///
+/// Ids: in the "human" style a person id is a function of the human (`human<N>`), so a forgotten
+/// human comes back under the same id. In the "random" style the registry remembers the id drawn
+/// for each human while the human is in the world or known, so a forgotten human still in the
+/// world comes back under the same id too; the id of a human gone from the world and forgotten is
+/// released (a later human reusing the world id gets a new person id). Memory thus grows with the
+/// humans in the world plus those unseen for less than forget_after, not with the run's length.
 class PersonRegistry {
  public:
   /// `id_rng` draws the ids of the "random" id style.
@@ -40,6 +49,11 @@ class PersonRegistry {
   /// recognised as the same person.
   void clear() { persons_.clear(); }
 
+  /// Persons known now.
+  size_t known_count() const { return persons_.size(); }
+  /// "random" style: person ids remembered (humans in the world or known); 0 in the "human" style.
+  size_t remembered_id_count() const { return random_ids_by_human_.size(); }
+
  private:
   struct Person {
     PersonReport report;
@@ -47,13 +61,16 @@ class PersonRegistry {
     EngagementTracker engagement;
   };
 
-  const std::string& id_of(world::ObjectId human);
+  std::string id_of(world::ObjectId human);
+  /// Forgets persons unseen for more than forget_after, then the random ids of humans that are
+  /// neither in `snapshot` nor known.
+  void forget(const world::WorldSnapshot& snapshot);
 
   PersonConfig config_;
   EngagementConfig engagement_config_;
   std::map<world::ObjectId, Person> persons_;
   TransientIds random_ids_;
-  std::map<world::ObjectId, std::string> ids_;  ///< Every person id handed out in this run.
+  std::map<world::ObjectId, std::string> random_ids_by_human_;  ///< "random" style only.
 };
 
 }  // namespace ari_social_sim::perception
