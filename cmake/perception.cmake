@@ -126,4 +126,13 @@ if(benchmark_FOUND)
     LIBRARIES ari_perception)
   # The scenes are the perception tests' own (test/perception/perception_scenes.hpp).
   target_include_directories(bench_perception PRIVATE ${PROJECT_SOURCE_DIR}/test/perception)
+
+  # perception_soak: hours of sim time of the perception stack on a crowd, printing the size of
+  # every per-id container (docs/PERFORMANCE.md, "Soak"). A plain program (it prints a table over
+  # time rather than timing a case), built with the benchmarks.
+  add_executable(perception_soak EXCLUDE_FROM_ALL bench/perception_soak.cpp)
+  target_link_libraries(perception_soak ari_perception ari_navigation ari_scenario ari_world)
+  target_include_directories(perception_soak PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+  set_target_properties(perception_soak PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
+  add_dependencies(benchmarks perception_soak)
 endif()

@@ -39,6 +39,19 @@ PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
       persons_(config_.persons, config_.engagement,
                core::Rng::for_stream(config.seed, kPersonIdStream)) {}
 
+PipelineMemory PerceptionPipeline::memory() const {
+  PipelineMemory memory;
+  memory.body_tracks = bodies_.track_ids().size();
+  memory.face_tracks = faces_.track_ids().size();
+  memory.voices = speech_.voice_count();
+  memory.utterances = speech_.utterance_count();
+  memory.persons = persons_.known_count();
+  memory.person_ids = persons_.remembered_id_count();
+  memory.engagement_samples = persons_.engagement_samples();
+  memory.ids_issued = ids_.issued();
+  return memory;
+}
+
 void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
   sight_map_ = std::move(grid);
 }

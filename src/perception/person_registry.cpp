@@ -41,6 +41,14 @@ std::string PersonRegistry::id_of(world::ObjectId human) {
   return it->second;
 }
 
+size_t PersonRegistry::engagement_samples() const {
+  size_t samples = 0;
+  for (const auto& [human, person] : persons_) {
+    samples += person.engagement.history_size();
+  }
+  return samples;
+}
+
 void PersonRegistry::forget(const world::WorldSnapshot& snapshot) {
   const double now = snapshot.time_s;
   for (auto it = persons_.begin(); it != persons_.end();) {

@@ -165,6 +165,37 @@ TEST(PerceptionPipeline, WithoutARINothingIsPerceivedAndPersonsFade) {
   EXPECT_NEAR(frame.persons[0].location_confidence, 0.6, 1e-12);
 }
 
+TEST(PerceptionPipeline, MemoryFollowsThePeopleNotTheRun) {
+  // 300 people pass in front of ARI one after the other, person k seen at 2k and 2k + 1 s saying
+  // a word, and leave the world: 300 bodies, faces and voices, 900 ids in all. At 599 s only the
+  // persons last seen within 60 s are known (2k + 1 >= 539: k = 269..299, 31 of them) and no
+  // track or voice of anyone who left is held.
+  PerceptionPipeline pipeline(test::config_without_errors());
+  for (int k = 0; k < 300; ++k) {
+    for (int frame = 0; frame < 2; ++frame) {
+      world::WorldSnapshot snapshot = snapshot_with_ari(2.0 * k + frame);
+      world::HumanSnapshot human =
+          human_facing(static_cast<world::ObjectId>(10 + k), 1.2, 0.0, 0.0, 0.0);
+      test::speaking(human, "hello there", 2.0 * k, 0);
+      snapshot.humans = {human};
+      pipeline.update(snapshot);
+    }
+  }
+  PipelineMemory memory = pipeline.memory();
+  EXPECT_EQ(memory.ids_issued, 900u);
+  EXPECT_EQ(memory.body_tracks, 1u);
+  EXPECT_EQ(memory.face_tracks, 1u);
+  EXPECT_EQ(memory.voices, 1u);
+  EXPECT_EQ(memory.persons, 31u);
+  EXPECT_EQ(memory.person_ids, 0u);  // "human" ids are not remembered: human<N>
+  // Everyone gone: 61 s later nobody is held.
+  pipeline.update(snapshot_with_ari(660.0));
+  memory = pipeline.memory();
+  EXPECT_EQ(memory.body_tracks + memory.face_tracks + memory.voices + memory.utterances +
+                memory.persons + memory.engagement_samples,
+            0u);
+}
+
 TEST(PerceptionPipeline, InvalidConfigurationIsRefused) {
   PerceptionConfig config;
   config.body_errors.detection.miss_rate = 2.0;

@@ -26,6 +26,7 @@ class BodyTracker {
   void update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
               const SightObstacles& obstacles, double dt_s, std::vector<PerceivedBody>& bodies);
   TrackIds& track_ids() { return track_ids_; }
+  const TrackIds& track_ids() const { return track_ids_; }
 
  private:
   const PerceptionConfig& config_;

@@ -35,6 +35,8 @@ class EngagementTracker {
   /// Back to UNKNOWN with no history (the person is no longer tracked).
   void reset();
   EngagementLevel level() const { return level_; }
+  /// Frames in the history (at most the window's worth).
+  size_t history_size() const { return history_.size(); }
 
  private:
   EngagementConfig config_;

@@ -31,6 +31,7 @@ class FaceTracker {
   void update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
               const SightObstacles& obstacles, double dt_s, std::vector<PerceivedFace>& faces);
   TrackIds& track_ids() { return track_ids_; }
+  const TrackIds& track_ids() const { return track_ids_; }
 
  private:
   /// Fills the soft biometrics, mask and emotion of `face` from the truth.

@@ -42,6 +42,9 @@ class GroupPerception {
     membership_.clear();
     tracker_.clear();
   }
+  /// Person pairs with a membership history (MembershipFilter), and group tracks (GroupTracker).
+  size_t pair_count() const { return membership_.pair_count(); }
+  size_t group_track_count() const { return tracker_.track_count(); }
 
  private:
   GcffDetector detector_;

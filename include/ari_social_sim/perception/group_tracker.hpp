@@ -29,6 +29,8 @@ class GroupTracker {
 
   /// Forgets the previous frame; the counter goes on, so ids stay unique.
   void clear() { tracks_.clear(); }
+  /// Groups held: the last update's and those remembered for memory_updates.
+  size_t track_count() const { return tracks_.size(); }
 
  private:
   struct Track {

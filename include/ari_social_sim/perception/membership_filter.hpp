@@ -26,6 +26,8 @@ class MembershipFilter {
                                           const std::vector<std::vector<size_t>>& detected);
   /// Forgets every pair.
   void clear() { pairs_.clear(); }
+  /// Pairs with a history: those both perceived within the last window_frames frames.
+  size_t pair_count() const { return pairs_.size(); }
 
  private:
   struct PairHistory {

@@ -16,6 +16,19 @@
 
 namespace ari_social_sim::perception {
 
+/// How much per-id state a PerceptionPipeline holds (the soak benchmark prints it): every count
+/// follows the people in the world and around ARI, none the run's length.
+struct PipelineMemory {
+  size_t body_tracks{0};  ///< TrackIds of the fisheye: one per human in the world.
+  size_t face_tracks{0};  ///< TrackIds of the head camera: likewise.
+  size_t voices{0};       ///< SpeechListener voice tracks: humans in the world ever heard.
+  size_t utterances{0};   ///< Utterances being heard.
+  size_t persons{0};      ///< Known persons: seen within persons.forget_after.
+  size_t person_ids{0};   ///< "random" id style: ids remembered for humans in the world or known.
+  size_t engagement_samples{0};  ///< Frames in the persons' engagement windows.
+  uint64_t ids_issued{0};        ///< Face, body and voice ids issued so far (a count, not memory).
+};
+
 /// ARI's perception of the people around it (seed 3.5.2-3.5.4), one frame per world snapshot:
 /// bodies (torso fisheye), faces (head camera), voices and speech (microphones), persons with
 /// engagement and gaze relations, with the configured error models. Seeded: the same
@@ -45,6 +58,9 @@ class PerceptionPipeline {
 
   /// The configuration in effect (error models zeroed when errors_enabled is false).
   const PerceptionConfig& config() const { return config_; }
+
+  /// The sizes of its per-id state.
+  PipelineMemory memory() const;
 
  private:
   void forget_everyone();

@@ -53,6 +53,8 @@ class PersonRegistry {
   size_t known_count() const { return persons_.size(); }
   /// "random" style: person ids remembered (humans in the world or known); 0 in the "human" style.
   size_t remembered_id_count() const { return random_ids_by_human_.size(); }
+  /// Frames in the engagement histories of all known persons.
+  size_t engagement_samples() const;
 
  private:
   struct Person {

@@ -39,6 +39,10 @@ class SpeechListener {
   /// Forgets every utterance and voice track (ids already handed out stay used).
   void clear();
 
+  /// Voice tracks (one per human in the world who was heard) and utterances going on.
+  size_t voice_count() const { return voices_.size(); }
+  size_t utterance_count() const { return utterances_.size(); }
+
  private:
   struct Utterance {
     world::ObjectId voice_owner{world::kNoObject};  ///< Whose voice it is attributed to.

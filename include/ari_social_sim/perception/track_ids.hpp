@@ -33,6 +33,8 @@ class TrackIds {
 
   /// Ids handed out after a human's first one, over the run.
   uint64_t switches() const { return switches_; }
+  /// Humans with a track (those in the world at the last retain()).
+  size_t size() const { return tracks_.size(); }
 
  private:
   struct Track {
