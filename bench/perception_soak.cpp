@@ -1,13 +1,16 @@
 // perception_soak: runs ARI's perception in-process on a crowd for hours of sim time, as fast as
 // possible, and prints the size of every per-id container every 10 simulated minutes, with the
-// process's resident memory. The sizes must stay flat once the crowd has been around for a
-// minute or two: memory follows the people, not the run's length (docs/PERFORMANCE.md, "Soak").
+// process's heap and resident memory. The sizes must stay flat once the crowd has been around
+// for a minute or two: memory follows the people, not the run's length (docs/PERFORMANCE.md,
+// "Soak"). The world core keeps every finished utterance (SpeechGenerator::history), which grows
+// with the run; the table gives its size and the heap without it.
 //
 // What runs each 1/30 s step, as the live suite does:
 //  - world: N people in a square hall (4 m^2 each), half standing and talking in groups of 2-5,
 //    half walking between random goals while talking; ARI in the middle turning on the spot at
-//    0.2 rad/s, so people keep entering and leaving its views; every `--churn` s a walker leaves
-//    the world and a new person (a new world id) walks in, as a busy hall would have;
+//    0.2 rad/s (put back in the middle when walkers have pushed it away), so people keep entering
+//    and leaving its views; every `--churn` s a walker leaves the world and a new person (a new
+//    world id) walks in, as a busy hall would have;
 //  - hri_perception_node: PerceptionPipeline, the detectors-mode CandidateMatcher, and the
 //    node's per-id topic bookkeeping (PerIdStore: faces, bodies, voices with id_linger 1 s,
 //    persons while known);
@@ -17,6 +20,8 @@
 //
 // Usage: perception_soak [--hours H] [--humans N] [--seed S] [--errors on|off]
 //                        [--person-ids human|random] [--churn SECONDS]
+
+#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
@@ -53,7 +58,9 @@ constexpr double kAreaPerHuman_m2 = 4.0;
 constexpr double kSpawnMargin_m = 0.5;
 constexpr double kAriClearance_m = 1.5;   // nobody spawns closer to ARI's base
 constexpr double kAriTurnRate_rps = 0.2;  // a full turn every 31 s
-constexpr double kIdLinger_s = 1.0;       // hri_perception_node's ~id_linger default
+constexpr double kAriDrift_m = 0.5;       // ARI pushed farther from the middle is put back
+constexpr double kRecentrePeriod_s = 5.0;
+constexpr double kIdLinger_s = 1.0;  // hri_perception_node's ~id_linger default
 constexpr ObjectId kAriId = 1;
 constexpr ObjectId kFirstHumanId = 10;
 
@@ -121,19 +128,46 @@ Options parse(int argc, char** argv) {
   return options;
 }
 
-// kB of resident memory now (VmRSS) and at most so far (VmHWM), from /proc/self/status.
-std::pair<long, long> resident_kb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  long rss = -1, peak = -1;
-  while (std::getline(status, line)) {
-    if (line.rfind("VmRSS:", 0) == 0) {
-      rss = std::strtol(line.c_str() + 6, nullptr, 10);
-    } else if (line.rfind("VmHWM:", 0) == 0) {
-      peak = std::strtol(line.c_str() + 6, nullptr, 10);
+// kB the world's speech histories hold (SpeechGenerator keeps every finished act; see
+// docs/PERFORMANCE.md, "Soak"), and their number: each record's slot and any string too long for
+// the small-string buffer, with malloc's 16-byte header per block.
+long world_speech_kb(const world::Simulation& simulation, size_t& records) {
+  constexpr size_t kSmallString = 15;
+  constexpr size_t kMallocHeader = 16;
+  size_t bytes = 0;
+  records = 0;
+  for (const auto& human : simulation.humans()) {
+    const std::vector<world::SpeechRecord>& history = human->speech().history();
+    records += history.size();
+    bytes += history.capacity() * sizeof(world::SpeechRecord) + kMallocHeader;
+    for (const world::SpeechRecord& record : history) {
+      for (const std::string* text : {&record.act, &record.content}) {
+        bytes += text->capacity() > kSmallString ? text->capacity() + 1 + kMallocHeader : 0;
+      }
     }
   }
-  return {rss, peak};
+  return static_cast<long>(bytes / 1024);
+}
+
+// kB of resident memory (VmRSS, /proc/self/status), and kB the allocator has handed out and not
+// had back (mallinfo2): the heap says what is kept, RSS adds what the allocator keeps mapped.
+struct MemoryUse {
+  long rss_kb{-1};
+  long heap_kb{-1};
+};
+
+MemoryUse memory_use() {
+  MemoryUse use;
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) {
+      use.rss_kb = std::strtol(line.c_str() + 6, nullptr, 10);
+    }
+  }
+  const struct mallinfo2 info = mallinfo2();
+  use.heap_kb = static_cast<long>((info.uordblks + info.hblkhd) / 1024);
+  return use;
 }
 
 // The hall and its people; the churn between steps.
@@ -214,6 +248,10 @@ class Crowd {
       next_churn_s_ = now_s + churn_s;
       replace_a_walker();
     }
+    if (now_s >= next_recentre_s_) {
+      next_recentre_s_ = now_s + kRecentrePeriod_s;
+      recentre_ari();
+    }
     simulation_->command_ari_twist(0.0, kAriTurnRate_rps);
     simulation_->step();
   }
@@ -266,6 +304,22 @@ class Crowd {
     human.set_gaze_model(gaze);
   }
 
+  // Walkers push ARI about (it is a body among theirs); left alone it ends in a corner facing the
+  // walls within the hour, seeing nobody. Put back in the middle (when the spot is free), it
+  // keeps watching the crowd.
+  void recentre_ari() {
+    const core::Pose2& pose = simulation_->ari()->pose();
+    const Eigen::Vector2d centre(0.5 * side_m_, 0.5 * side_m_);
+    if ((pose.position - centre).norm() < kAriDrift_m) {
+      return;
+    }
+    try {
+      simulation_->set_pose(kAriId, {centre, pose.theta});
+    } catch (const core::RequestError&) {
+      // Someone stands there now: try again next time.
+    }
+  }
+
   void replace_a_walker() {
     std::vector<ObjectId> walkers;
     for (const auto& human : simulation_->humans()) {
@@ -286,16 +340,17 @@ class Crowd {
   std::unique_ptr<world::Simulation> simulation_;
   ObjectId next_id_{kFirstHumanId};
   double next_churn_s_{0.0};
+  double next_recentre_s_{0.0};
   uint64_t replaced_{0};
 };
 
 void print_header() {
   std::printf(
       "%7s %6s %5s %6s %7s | %5s %5s %5s %4s %5s %5s %6s | %6s | %6s %5s | %4s %4s %4s %4s | "
-      "%5s %5s | %5s | %7s %7s\n",
+      "%5s %5s | %5s | %6s %7s %7s %7s %7s\n",
       "sim_min", "wall_s", "world", "left", "ids", "btrk", "ftrk", "voice", "utt", "pers", "pids",
-      "engage", "verdct", "pairs", "grps", "tb", "tf", "tv", "tp", "mppl", "mgrp", "ident",
-      "rss_kB", "peak_kB");
+      "engage", "verdct", "pairs", "grps", "tb", "tf", "tv", "tp", "mppl", "mgrp", "ident", "said",
+      "said_kB", "heap_kB", "rest_kB", "rss_kB");
 }
 
 }  // namespace
@@ -372,12 +427,14 @@ int main(int argc, char** argv) {
         continue;
       }
       const perception::PipelineMemory memory = pipeline.memory();
-      const auto [rss_kb, peak_kb] = resident_kb();
+      const MemoryUse use = memory_use();
+      size_t said = 0;
+      const long said_kb = world_speech_kb(simulation, said);
       const double wall_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       std::printf(
           "%7.0f %6.0f %5zu %6llu %7llu | %5zu %5zu %5zu %4zu %5zu %5zu %6zu | %6zu | %6zu %5zu | "
-          "%4zu %4zu %4zu %4zu | %5zu %5zu | %5zu | %7ld %7ld\n",
+          "%4zu %4zu %4zu %4zu | %5zu %5zu | %5zu | %6zu %7ld %7ld %7ld %7ld\n",
           now_s / 60.0, wall_s, simulation.humans().size(),
           static_cast<unsigned long long>(crowd.replaced()),
           static_cast<unsigned long long>(memory.ids_issued), memory.body_tracks,
@@ -385,7 +442,8 @@ int main(int argc, char** argv) {
           memory.engagement_samples, matcher.remembered_count(), group_detection.pair_count(),
           group_detection.group_track_count(), body_topics.size(), face_topics.size(),
           voice_topics.size(), person_topics.size(), scene_tracker.person_count(),
-          scene_tracker.group_count(), identities.person_ids().size(), rss_kb, peak_kb);
+          scene_tracker.group_count(), identities.person_ids().size(), said, said_kb, use.heap_kb,
+          use.heap_kb - said_kb, use.rss_kb);
       std::fflush(stdout);
     }
   } catch (const core::Error& e) {
