@@ -8,6 +8,7 @@ add_library(ari_navigation
   src/navigation/geodesic_field.cpp
   src/navigation/goal_cost.cpp
   src/navigation/goal_finder.cpp
+  src/navigation/goal_request.cpp
   src/navigation/grid_field.cpp
   src/navigation/group_space_cost.cpp
   src/navigation/heading_cost.cpp
@@ -36,6 +37,7 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES
       test/navigation/test_cost_terms.cpp
       test/navigation/test_goal_finder.cpp
+      test/navigation/test_goal_request.cpp
       test/navigation/test_navigation_config.cpp
       test/navigation/test_navigator.cpp
       test/navigation/test_scene_tracker.cpp

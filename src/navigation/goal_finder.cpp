@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/social_spaces.hpp"
 
@@ -162,7 +163,8 @@ core::Pose2 GoalFinder::base_for_body_centre(const Eigen::Vector2d& body_centre,
 Goal GoalFinder::find_pose(const PoseTarget& target, const GridField& sdf) const {
   int x, y;
   if (!sdf.cell_of(target.pose.position, x, y)) {
-    throw GoalUnreachable("goal " + format_point(target.pose.position) + " is outside the map");
+    throw GoalUnreachable("goal " + format_point(target.pose.position) +
+                          " is outside the map, which spans " + MapBounds::of(sdf).describe());
   }
   const PerceivedScene nobody;
   if (!is_free(target.pose, nobody, sdf, 0.0)) {

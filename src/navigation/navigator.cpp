@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
 #include "ari_social_sim/navigation/social_spaces.hpp"
@@ -46,6 +47,7 @@ Navigator::Navigator(const NavigationConfig& config, const world::OccupancyGrid&
 
 void Navigator::start(const NavigationTarget& target, const PerceivedScene& scene,
                       const RobotObservation& robot, double time_s) {
+  check_target(target);
   Goal goal = goal_finder_.find(target, scene, sdf_, robot.pose);
   std::vector<CostDisc> discs = cost_discs(scene, goal);
   std::unique_ptr<GeodesicField> field = field_to(goal, robot.pose, discs);

@@ -26,6 +26,7 @@
 #include "ari_social_sim/Group.h"
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
@@ -176,28 +177,33 @@ class SocialMpcNode {
     active_ = std::move(next);
   }
 
-  std::optional<core::Pose2> goal_in_map(const geometry_msgs::PoseStamped& goal) {
-    std::optional<core::Pose2> pose = planar_pose(goal.pose);
-    if (!pose) {
-      throw core::RequestError("target_pose.pose.orientation: expected a non-zero quaternion");
+  // The goal pose in the map frame, checked field by field (navigation::planar_goal), turned
+  // into map through tf if it is in another frame, and inside the map once there is one; throws
+  // core::RequestError naming the field. `field` prefixes field names: "target_pose." for
+  // move_base, "" for /move_base_simple/goal.
+  core::Pose2 goal_in_map(const geometry_msgs::PoseStamped& goal, const std::string& field) {
+    const core::Pose2 pose = navigation::planar_goal(goal_request_of(goal), field);
+    core::Pose2 in_map = pose;
+    const std::string& frame = goal.header.frame_id;
+    if (!navigation::names_map_frame(frame)) {
+      geometry_msgs::TransformStamped t;
+      try {
+        t = tf_buffer_.lookupTransform(kMapFrame, frame, ros::Time(0));
+      } catch (const tf2::TransformException& e) {
+        throw core::RequestError(field + "header.frame_id: no transform from '" + frame +
+                                 "' to map (" + e.what() + ")");
+      }
+      core::Pose2 frame_in_map;
+      frame_in_map.position = {t.transform.translation.x, t.transform.translation.y};
+      frame_in_map.theta = tf2::getYaw(t.transform.rotation);
+      in_map.position = frame_in_map.transform(pose.position);
+      in_map.theta = core::wrap_angle(frame_in_map.theta + pose.theta);
     }
-    const std::string frame = goal.header.frame_id.empty() ? kMapFrame : goal.header.frame_id;
-    if (frame == kMapFrame || frame == std::string("/") + kMapFrame) {
-      return pose;
+    // Without a map yet the goal is accepted and then aborted with that reason (start()).
+    if (navigator_) {
+      navigation::check_inside_map(in_map, navigation::MapBounds::of(navigator_->sdf()),
+                                   field + "pose.position");
     }
-    geometry_msgs::TransformStamped t;
-    try {
-      t = tf_buffer_.lookupTransform(kMapFrame, frame, ros::Time(0));
-    } catch (const tf2::TransformException& e) {
-      throw core::RequestError("target_pose.header.frame_id: no transform from '" + frame +
-                               "' to map (" + e.what() + ")");
-    }
-    core::Pose2 frame_in_map;
-    frame_in_map.position = {t.transform.translation.x, t.transform.translation.y};
-    frame_in_map.theta = tf2::getYaw(t.transform.rotation);
-    core::Pose2 in_map;
-    in_map.position = frame_in_map.transform(pose->position);
-    in_map.theta = core::wrap_angle(frame_in_map.theta + pose->theta);
     return in_map;
   }
 
@@ -229,21 +235,22 @@ class SocialMpcNode {
   }
 
   void on_move_base(MoveBaseServer::GoalHandle handle) {
-    std::optional<core::Pose2> pose;
+    core::Pose2 pose;
     try {
-      pose = goal_in_map(handle.getGoal()->target_pose);
+      pose = goal_in_map(handle.getGoal()->target_pose, "target_pose.");
     } catch (const core::Error& e) {
       ROS_WARN("move_base goal rejected: %s", e.what());
       handle.setRejected(move_base_msgs::MoveBaseResult(), e.what());
       return;
     }
-    accept_and_start(handle, navigation::PoseTarget{*pose}, move_base_msgs::MoveBaseResult(),
+    accept_and_start(handle, navigation::PoseTarget{pose}, move_base_msgs::MoveBaseResult(),
                      {handle, std::nullopt, handle.getGoalID().id});
   }
 
+  // The same checks as move_base; with no result channel, a refusal is a warning and the status.
   void on_simple_goal(const geometry_msgs::PoseStamped& goal) {
     try {
-      start(navigation::PoseTarget{*goal_in_map(goal)});
+      start(navigation::PoseTarget{goal_in_map(goal, "")});
     } catch (const core::Error& e) {
       ROS_WARN("/move_base_simple/goal ignored: %s", e.what());
       publish_status(std::string("goal ignored: ") + e.what());
@@ -274,8 +281,12 @@ class SocialMpcNode {
             "TARGET_GROUP_OF_PERSON (2), got " +
             std::to_string(goal->target_type);
     }
-    if (problem.empty() && goal->target_id.empty()) {
-      problem = "target_id: expected a person or group id, got ''";
+    if (problem.empty()) {
+      try {
+        navigation::check_target_id(goal->target_id, "target_id");
+      } catch (const core::RequestError& e) {
+        problem = e.what();
+      }
     }
     if (!problem.empty()) {
       reject(handle, problem);

@@ -240,6 +240,36 @@ TEST_F(SocialNavigation, UnknownIdIsRejectedWithTheReason) {
   EXPECT_NE(approach_->getResult()->reason.find("target_type"), std::string::npos);
 }
 
+TEST_F(SocialNavigation, MalformedGoalsAreRejectedNamingTheField) {
+  move_base_msgs::MoveBaseGoal goal;
+  goal.target_pose.header.frame_id = "map";
+  goal.target_pose.pose.position.x = std::nan("");
+  goal.target_pose.pose.position.y = 2.0;
+  goal.target_pose.pose.orientation.w = 1.0;
+  EXPECT_EQ(run(*move_base_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_EQ(move_base_->getState().getText(),
+            "target_pose.pose.position.x: expected a finite number, got nan");
+  goal.target_pose.pose.position.x = 2.0;
+  goal.target_pose.header.frame_id = "";
+  EXPECT_EQ(run(*move_base_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_EQ(move_base_->getState().getText(),
+            "target_pose.header.frame_id: expected a tf frame such as map, got ''");
+  goal.target_pose.header.frame_id = "map";
+  goal.target_pose.pose.position.x = 50.0;
+  EXPECT_EQ(run(*move_base_, goal, 10.0), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_NE(
+      move_base_->getState().getText().find(
+          "target_pose.pose.position: (50.00, 2.00) in map is outside the map, which spans x ["),
+      std::string::npos)
+      << move_base_->getState().getText();
+  ApproachGoal approach;
+  approach.target_type = ApproachGoal::TARGET_PERSON;
+  approach.target_id = "human 3";
+  EXPECT_EQ(run(*approach_, approach, 10.0), actionlib::SimpleClientGoalState::REJECTED);
+  EXPECT_EQ(approach_->getResult()->reason,
+            "target_id: expected a person or group id (not empty, no whitespace), got 'human 3'");
+}
+
 TEST_F(SocialNavigation, GoalInTheClosedStoreroomIsAbortedWithTheReason) {
   move_base_msgs::MoveBaseGoal goal;
   goal.target_pose.header.frame_id = "map";

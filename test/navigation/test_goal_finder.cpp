@@ -65,7 +65,11 @@ TEST_F(GoalFinderTest, PoseGoalIsThePoseUnlessTheFootprintHitsSomething) {
     find(PoseTarget{test::pose(20.0, 4.0, 0.0)});
     FAIL() << "accepted a goal off the map";
   } catch (const GoalUnreachable& e) {
-    EXPECT_NE(std::string(e.what()).find("(20.00, 4.00) is outside the map"), std::string::npos);
+    // room_map(8.0): the 8 m room's walls and margin, from -0.2 to 8.2 m.
+    EXPECT_NE(std::string(e.what()).find("(20.00, 4.00) is outside the map, which spans x [-0.20, "
+                                         "8.20] and y [-0.20, 8.20]"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -152,6 +152,20 @@ TEST(Navigator, UnreachableGoalIsRefusedWithTheReason) {
   EXPECT_EQ(navigator.state(), NavigationState::kIdle);
 }
 
+TEST(Navigator, MalformedTargetsAreRefusedBeforeAnythingElse) {
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const RobotObservation robot{test::pose(1.0, 4.0, 0.0)};
+  try {
+    navigator.start(PoseTarget{test::pose(4.0, 4.0, std::nan(""))}, {}, robot, 0.0);
+    FAIL() << "accepted a NaN heading";
+  } catch (const core::RequestError& e) {
+    // Not "overlaps a wall": the heading is named as what is wrong.
+    EXPECT_STREQ(e.what(), "pose target: expected finite x, y and theta, got (4.00, 4.00, nan)");
+  }
+  EXPECT_THROW(navigator.start(PersonTarget{"human 3"}, {}, robot, 0.0), core::RequestError);
+  EXPECT_EQ(navigator.state(), NavigationState::kIdle);
+}
+
 TEST(Navigator, AbortsWhenTheTargetIsLostBeyondTheTimeout) {
   Navigator navigator(NavigationConfig{}, test::room_map(8.0));
   PerceivedScene scene;

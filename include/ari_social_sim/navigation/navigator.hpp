@@ -56,7 +56,8 @@ class Navigator {
   Navigator(const Navigator&) = delete;
   Navigator& operator=(const Navigator&) = delete;
 
-  /// Starts a new goal, replacing any other. Throws UnknownTarget when the target's id is not in
+  /// Starts a new goal, replacing any other. Throws core::RequestError for a malformed target
+  /// (check_target: a non-finite pose, an empty id), UnknownTarget when the target's id is not in
   /// `scene`, GoalUnreachable when the goal pose cannot be placed or reached from `robot`.
   void start(const NavigationTarget& target, const PerceivedScene& scene,
              const RobotObservation& robot, double time_s);

@@ -24,17 +24,17 @@ std_msgs::ColorRGBA heat(double value) {
 
 }  // namespace
 
-std::optional<core::Pose2> planar_pose(const geometry_msgs::Pose& pose) {
-  const geometry_msgs::Quaternion& q = pose.orientation;
-  const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-  if (!std::isfinite(norm) || norm < 1e-6 || !std::isfinite(pose.position.x) ||
-      !std::isfinite(pose.position.y)) {
-    return std::nullopt;
-  }
-  core::Pose2 planar;
-  planar.position = {pose.position.x, pose.position.y};
-  planar.theta = std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-  return planar;
+navigation::PoseGoalRequest goal_request_of(const geometry_msgs::PoseStamped& goal) {
+  navigation::PoseGoalRequest request;
+  request.frame_id = goal.header.frame_id;
+  request.x = goal.pose.position.x;
+  request.y = goal.pose.position.y;
+  request.z = goal.pose.position.z;
+  request.qx = goal.pose.orientation.x;
+  request.qy = goal.pose.orientation.y;
+  request.qz = goal.pose.orientation.z;
+  request.qw = goal.pose.orientation.w;
+  return request;
 }
 
 nav_msgs::Path plan_msg(const navigation::MpcSolution& plan, const std::string& frame_id,

@@ -1,20 +1,19 @@
 #pragma once
 
-#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Path.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <optional>
 #include <string>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 
 namespace ari_social_sim::nodes {
 
-/// A planar pose from a 3D one: position x, y and the yaw of the quaternion. Empty when the
-/// quaternion is not finite or has no length.
-std::optional<core::Pose2> planar_pose(const geometry_msgs::Pose& pose);
+/// A goal pose as the navigation core checks it (navigation::planar_goal).
+navigation::PoseGoalRequest goal_request_of(const geometry_msgs::PoseStamped& goal);
 /// The MPC's predicted base_footprint poses as a path in `frame_id`.
 nav_msgs::Path plan_msg(const navigation::MpcSolution& plan, const std::string& frame_id,
                         const ros::Time& stamp);
