@@ -14,6 +14,7 @@ add_library(ari_scenario
   src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
   src/scenario/scenario.cpp
+  src/scenario/run_watchdog.cpp
   src/scenario/scenario_run_config.cpp
   src/scenario/script.cpp
   src/scenario/script_runner.cpp
@@ -46,11 +47,13 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_conversation.cpp
       test/scenario/test_episode_csv.cpp
       test/scenario/test_episode_metrics.cpp
+      test/scenario/test_episode_report.cpp
       test/scenario/test_observations.cpp
       test/scenario/test_person_identities.cpp
       test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_scenario.cpp
+      test/scenario/test_run_watchdog.cpp
       test/scenario/test_scenario_run_config.cpp
       test/scenario/test_script_runner.cpp
       test/scenario/test_transcript.cpp
@@ -59,6 +62,9 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(test_scenario PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
+  # scenario_node never hangs and always reports: world_node killed mid-run, and SIGINT.
+  add_rostest(test/integration/scenario_node_robustness.test
+    DEPENDENCIES world_node scenario_node)
   add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
     group_detection_node social_mpc_node dialogue_node scenario_node run_episodes)
   # The same scenario with each kind of perception (README, "Swapping in real perception").

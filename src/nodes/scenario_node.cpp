@@ -3,16 +3,20 @@
 // move_base and /social_mpc/approach (social_mpc_node), /humans/persons/..., tf and
 // /humans/interactions/groups (perception, whose persons are matched with the script's humans by
 // where their bodies stand). Prints the transcript and the outcome at the end and exits 0 on
-// success, 1 on failure.
+// success, 1 on failure, 130 when interrupted (SIGINT, SIGTERM, a ROS shutdown), after printing
+// the report so far. Never waits for ever: a wall-time limit covers the whole run, and a world
+// that stops sending states (world_node gone, or the world left paused) ends the run.
 
 #include <actionlib/client/simple_action_client.h>
 #include <move_base_msgs/MoveBaseAction.h>
 #include <ros/package.h>
 #include <ros/ros.h>
+#include <signal.h>
 #include <std_srvs/SetBool.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <csignal>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -39,6 +43,7 @@
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/episode_report.hpp"
 #include "ari_social_sim/scenario/person_identities.hpp"
+#include "ari_social_sim/scenario/run_watchdog.hpp"
 #include "ari_social_sim/scenario/scenario_run_config.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "conversions/dialogue.hpp"
@@ -56,6 +61,25 @@ using MoveBaseClient = actionlib::SimpleActionClient<move_base_msgs::MoveBaseAct
 using ApproachClient = actionlib::SimpleActionClient<ApproachAction>;
 
 constexpr char kLanguage[] = "en_GB";
+
+// Exit code of an interrupted run: 128 + SIGINT, as a shell reports a process it interrupted.
+constexpr int kInterruptedExit = 130;
+
+// The signal that asked the node to stop (0: none). Set by the handler, read by every wait.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void on_stop_signal(int signal) {
+  g_stop_signal = signal;
+}
+
+// Why a run ends before its script does: the watchdog's reason, or an interruption.
+struct RunStopped {
+  std::string reason;
+  bool interrupted{false};
+};
+
+// Called in every wait with what the node is doing; throws RunStopped when the run must end.
+using StopCheck = std::function<void(const std::string& activity)>;
 
 // Calls a /sim/... service; a refusal or an unreachable server becomes a core::RequestError.
 template <class Service>
@@ -92,9 +116,10 @@ class RosCommands : public scenario::Commands {
  public:
   // Creates the action clients the script uses and waits (wall time, as sim time may stand
   // still) for them and the world's services. Sim time must be valid (> 0): actionlib waits for it.
-  // `while_waiting` runs about once a wall second while a server is missing.
+  // `while_waiting` runs about once a wall second while a server is missing; `check` on every
+  // look.
   void connect(const scenario::ScriptInterfaces& uses, double timeout_s,
-               const std::function<void()>& while_waiting) {
+               const std::function<void()>& while_waiting, const StopCheck& check) {
     std::vector<std::pair<std::string, std::function<bool()>>> needed = {
         {"/sim/say", [] { return ros::service::exists("/sim/say", false); }}};
     if (uses.text_to_speech) {
@@ -115,7 +140,8 @@ class RosCommands : public scenario::Commands {
     ros::WallTime last_waited = ros::WallTime::now();
     for (const auto& [name, ready] : needed) {
       while (!ready()) {
-        if (ros::WallTime::now() > limit || !ros::ok()) {
+        check("waiting for the " + name);
+        if (ros::WallTime::now() > limit) {
           throw core::RequestError(name + " did not appear within " + std::to_string(timeout_s) +
                                    " s (server_timeout)");
         }
@@ -284,17 +310,49 @@ class ScenarioNode {
         dialogue_(std::move(dialogue)),
         runner_(scenario_,
                 config.seed >= 0 ? static_cast<uint64_t>(config.seed) : scenario_.scene.seed,
-                dialogue_.get()) {
+                dialogue_.get()),
+        watchdog_(config.wall_time_limit_for(scenario_.script.time_limit_s), config.world_timeout_s,
+                  ros::WallTime::now().toSec()) {
     status_pub_ = nh_.advertise<ScenarioStatus>("/scenario/status", 1, /*latch=*/true);
   }
 
-  /// Waits for the suite, starts the world and plays the script; returns the exit code.
+  /// Waits for the suite, starts the world and plays the script, then prints the report;
+  /// returns the exit code. Throws core::Error when a server the script needs does not appear
+  /// within server_timeout.
   int run() {
+    try {
+      play();
+    } catch (const RunStopped& stop) {
+      if (stop.interrupted) {
+        runner_.interrupt(stop.reason);
+      } else {
+        runner_.abort(stop.reason);
+        ROS_ERROR("scenario_node: %s", stop.reason.c_str());
+      }
+      // The script's own end was published with its last world state; this one was not.
+      status_pub_.publish(to_msg(scenario_.name, runner_, ros::Time::now().toSec()));
+    }
+    const scenario::Outcome& outcome = *runner_.outcome();
+    // The recording ends with the script; a world gone or interrupted is left alone.
+    if (!outcome.interrupted && world_reachable()) {
+      set_paused(true);
+    }
+    std::cout << scenario::format_report(scenario_.name, runner_, metrics_.metrics()) << std::flush;
+    if (outcome.interrupted) {
+      return kInterruptedExit;
+    }
+    return outcome.success ? 0 : 1;
+  }
+
+ private:
+  // Plays until the script ends; throws RunStopped when the run must end before it.
+  void play() {
     step_paused_world();
     // A node that waits for a first world state before it serves (dialogue_node's /tts) may have
     // missed the one step: the paused world steps once a second until everything is up.
-    commands_.connect(scenario_.script.interfaces(), config_.server_timeout_s,
-                      [this] { step_paused_world(); });
+    commands_.connect(
+        scenario_.script.interfaces(), config_.server_timeout_s, [this] { step_paused_world(); },
+        [this](const std::string& activity) { check(activity); });
     state_sub_ = nh_.subscribe("/sim/world_state", 100, &ScenarioNode::on_world_state, this);
     const scenario::ScriptInterfaces uses = scenario_.script.interfaces();
     if (uses.approach || uses.perceived_groups) {
@@ -313,7 +371,8 @@ class ScenarioNode {
     }
     // Connected before the world runs, so that the script sees every step from the first.
     const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(config_.server_timeout_s);
-    while (state_sub_.getNumPublishers() == 0 && ros::ok()) {
+    while (state_sub_.getNumPublishers() == 0) {
+      check("waiting for a publisher of /sim/world_state");
       if (ros::WallTime::now() > limit) {
         throw core::RequestError("/sim/world_state has no publisher after " +
                                  std::to_string(config_.server_timeout_s) + " s (server_timeout)");
@@ -322,21 +381,37 @@ class ScenarioNode {
     }
     if (config_.start_world) {
       set_paused(false);  // world_node may wait paused for the suite to come up
+      watchdog_.expect_world(ros::WallTime::now().toSec());
     }
-    while (ros::ok() && !runner_.finished()) {
+    while (!runner_.finished()) {
       ros::spinOnce();
+      check(runner_.state().empty() ? "waiting for the first /sim/world_state"
+                                    : "in state " + runner_.state());
       ros::WallDuration(0.001).sleep();
     }
-    if (!runner_.finished()) {
-      return 1;
-    }
-    set_paused(true);  // the recording ends with the script
-    std::cout << scenario::format_report(scenario_.name, runner_, metrics_.metrics()) << std::flush;
-    return runner_.outcome()->success ? 0 : 1;
   }
+
+  // Ends the run (throws RunStopped) on a stop signal, a ROS shutdown, or the watchdog's limits.
+  void check(const std::string& activity) {
+    if (g_stop_signal != 0) {
+      throw RunStopped{g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM", true};
+    }
+    if (!ros::ok()) {
+      throw RunStopped{"ROS shut down (rosnode kill or the master)", true};
+    }
+    if (const std::optional<std::string> reason = watchdog_.expired(
+            ros::WallTime::now().toSec(), activity, [this] { return world_reachable(); })) {
+      throw RunStopped{*reason, false};
+    }
+  }
+
+  // Whether world_node answers: its /sim/pause service is registered and takes a connection (a
+  // killed node stays registered with the master, but nothing listens on its port).
+  bool world_reachable() const { return ros::service::exists("/sim/pause", false); }
 
  private:
   void on_world_state(const WorldState& msg) {
+    watchdog_.world_state(ros::WallTime::now().toSec());
     if (runner_.finished()) {
       return;
     }
@@ -399,12 +474,17 @@ class ScenarioNode {
   // A world started paused stands at sim time 0, which ROS takes for "no time yet"; one step
   // makes it valid for the action clients. A running world refuses the step, which is fine.
   void step_paused_world() {
+    const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(config_.server_timeout_s);
+    while (!ros::service::exists("/sim/step", false)) {
+      check("waiting for world_node's /sim/step");
+      if (ros::WallTime::now() > limit) {
+        throw core::RequestError("world_node's /sim/step did not appear within " +
+                                 std::to_string(config_.server_timeout_s) + " s (server_timeout)");
+      }
+      ros::WallDuration(0.05).sleep();
+    }
     StepSimulation step;
     step.request.steps = 1;
-    if (!ros::service::waitForService("/sim/step", ros::Duration(config_.server_timeout_s))) {
-      throw core::RequestError("world_node's /sim/step did not appear within " +
-                               std::to_string(config_.server_timeout_s) + " s (server_timeout)");
-    }
     ros::service::call("/sim/step", step);
   }
 
@@ -439,6 +519,7 @@ class ScenarioNode {
   scenario::Scenario scenario_;
   std::unique_ptr<dialogue::DialogueSetup> dialogue_;
   scenario::ScriptRunner runner_;
+  scenario::RunWatchdog watchdog_;
   std::vector<dialogue::Perception> heard_;  // since the last world state
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::MetricsRecorder metrics_;
@@ -459,7 +540,15 @@ class ScenarioNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "scenario_node");
+  // Our own SIGINT handling, so that an interrupted run prints its report before ROS shuts
+  // down; SA_RESETHAND: a second Ctrl-C kills at once.
+  ros::init(argc, argv, "scenario_node", ros::init_options::NoSigintHandler);
+  struct sigaction action {};
+  action.sa_handler = nodes::on_stop_signal;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
   ros::NodeHandle private_handle("~");
   scenario::ScenarioRunConfig config;
   scenario::Scenario scenario;
@@ -479,11 +568,15 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  nodes::ScenarioNode node(config, std::move(scenario), std::move(dialogue));
-  try {
-    return node.run();
-  } catch (const core::Error& e) {
-    ROS_FATAL("scenario_node: %s", e.what());
-    return 2;
+  int code = 2;
+  {
+    nodes::ScenarioNode node(config, std::move(scenario), std::move(dialogue));
+    try {
+      code = node.run();
+    } catch (const core::Error& e) {
+      ROS_FATAL("scenario_node: %s", e.what());
+    }
   }
+  ros::shutdown();
+  return code;
 }

@@ -31,9 +31,20 @@ std::string format_report(const std::string& scenario_name, const ScriptRunner& 
   }
   report += "\n";
   if (const auto& outcome = runner.outcome()) {
-    report += std::string("outcome: ") + (outcome->success ? "success" : "failure") +
-              format(" after %.2f s", outcome->end_time_s) + " in state " + outcome->final_state +
-              (outcome->reason.empty() ? "" : ": " + outcome->reason) + "\n";
+    const std::string where =
+        outcome->final_state.empty()
+            ? "before the script started"
+            : format("after %.2f s", outcome->end_time_s) + " in state " + outcome->final_state;
+    if (outcome->interrupted) {
+      report +=
+          (outcome->final_state.empty() ? "outcome: interrupted before the script started"
+                                        : "outcome: interrupted in state " + outcome->final_state +
+                                              format(" after %.2f s", outcome->end_time_s)) +
+          " (" + outcome->reason + ")\n";
+    } else {
+      report += std::string("outcome: ") + (outcome->success ? "success " : "failure ") + where +
+                (outcome->reason.empty() ? "" : ": " + outcome->reason) + "\n";
+    }
   } else {
     report += "outcome: not finished\n";
   }

@@ -304,4 +304,17 @@ void ScriptRunner::end(bool success, const std::string& reason) {
   outcome_ = Outcome{success, reason, state(), now_s_};
 }
 
+void ScriptRunner::abort(const std::string& reason) {
+  if (!finished()) {
+    end(false, reason);
+  }
+}
+
+void ScriptRunner::interrupt(const std::string& cause) {
+  if (!finished()) {
+    end(false, cause);
+    outcome_->interrupted = true;
+  }
+}
+
 }  // namespace ari_social_sim::scenario

@@ -23,6 +23,17 @@ TEST(ScenarioRunConfig, DefaultsAndOverrides) {
   EXPECT_DOUBLE_EQ(set.group_timeout_s, 0.5);
 }
 
+TEST(ScenarioRunConfig, WallTimeLimitDefaultsToThreeScriptLimitsPlusTheServerWait) {
+  const ScenarioRunConfig defaults = read("{scenario: a.yaml}");
+  EXPECT_FALSE(defaults.wall_time_limit_s);
+  EXPECT_DOUBLE_EQ(defaults.world_timeout_s, 10.0);
+  // A 60 s script: 3 x 60 + 60 s of server_timeout.
+  EXPECT_DOUBLE_EQ(defaults.wall_time_limit_for(60.0), 240.0);
+  EXPECT_DOUBLE_EQ(read("{scenario: a, wall_time_limit: 30}").wall_time_limit_for(60.0), 30.0);
+  EXPECT_DOUBLE_EQ(read("{scenario: a, wall_time_limit: 0}").wall_time_limit_for(60.0), 0.0);
+  EXPECT_DOUBLE_EQ(read("{scenario: a, world_timeout: 2.5}").world_timeout_s, 2.5);
+}
+
 TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
   const std::string source = "/scenario_node parameter";
   world::test::expect_config_error([] { read("{seed: 1}"); }, source, {"scenario", "required"});
@@ -30,6 +41,10 @@ TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
                                    {"seed", "[-1, 2.14748e+09]", "-2"});
   world::test::expect_config_error([] { read("{scenario: a, server_timeout: 0}"); }, source,
                                    {"server_timeout", "> 0", "0"});
+  world::test::expect_config_error([] { read("{scenario: a, wall_time_limit: -1}"); }, source,
+                                   {"wall_time_limit", ">= 0", "-1"});
+  world::test::expect_config_error([] { read("{scenario: a, world_timeout: 0}"); }, source,
+                                   {"world_timeout", "> 0", "0"});
   world::test::expect_config_error([] { read("{scenario: a, group_timout: 1}"); }, source,
                                    {"unknown field(s) group_timout"});
 }

@@ -223,6 +223,26 @@ TEST_F(GroupDiscussionRunner, TheTimeLimitEndsTheRunNamingTheState) {
   EXPECT_NEAR(runner.outcome()->end_time_s, 120.0, 1e-9);
 }
 
+TEST_F(GroupDiscussionRunner, AbortAndInterruptEndTheRunFromOutsideAtTheLastTick) {
+  stage.tick(runner, commands);
+  stage.tick(runner, commands, 12.0);  // 12.05 s after the first tick, still grouping
+  ScriptRunner interrupted{scenario, 1};
+  interrupted.interrupt("SIGINT");  // before its first tick
+  runner.abort("no /sim/world_state for 10 s (world_node gone?) while in state grouping");
+  runner.interrupt("SIGINT");  // too late: the run has ended
+  ASSERT_TRUE(runner.finished());
+  EXPECT_FALSE(runner.outcome()->success);
+  EXPECT_FALSE(runner.outcome()->interrupted);
+  EXPECT_EQ(runner.outcome()->final_state, "grouping");
+  EXPECT_NEAR(runner.outcome()->end_time_s, 12.0, 1e-9);
+  EXPECT_EQ(runner.outcome()->reason,
+            "no /sim/world_state for 10 s (world_node gone?) while in state grouping");
+  ASSERT_TRUE(interrupted.finished());
+  EXPECT_TRUE(interrupted.outcome()->interrupted);
+  EXPECT_EQ(interrupted.outcome()->final_state, "");
+  EXPECT_EQ(interrupted.outcome()->reason, "SIGINT");
+}
+
 TEST_F(GroupDiscussionRunner, ARefusedCommandEndsTheRunNamingStateAndAction) {
   commands.refuse = "join";
   stage.tick(runner, commands);

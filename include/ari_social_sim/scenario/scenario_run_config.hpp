@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "ari_social_sim/core/yaml_map.hpp"
@@ -22,6 +23,19 @@ struct ScenarioRunConfig {
   /// Unpause the world once the suite is up; false leaves that to another node (a test that
   /// must see every state from the first, a user's rqt).
   bool start_world{true};
+  /// Wall seconds after which the run ends as a failure whatever it is doing, waiting for servers
+  /// and the world included: the script's time_limit counts sim time, which stands still when
+  /// the world is paused or gone. Unset: wall_time_limit_for's default; 0: no limit.
+  std::optional<double> wall_time_limit_s;
+  /// Wall seconds without a /sim/world_state, while the world should be running (after the node
+  /// unpaused it, or from the first state when another node starts it), after which the run ends
+  /// as a failure naming the wait: world_node died, or the world stays paused.
+  double world_timeout_s{10.0};
+
+  /// The wall-time limit for a script with this sim-time limit: the parameter if set (0 = none),
+  /// else 3 x the script's limit (the script at a third of real time) + server_timeout (the
+  /// wait for the suite).
+  double wall_time_limit_for(double script_time_limit_s) const;
 
   /// Reads every field; unknown keys and out-of-range values throw core::ConfigError naming the
   /// parameter.

@@ -17,8 +17,9 @@ namespace ari_social_sim::scenario {
 struct Outcome {
   bool success{false};
   std::string reason;       // the stop action's reason, or why the run failed
-  std::string final_state;  // the state the run ended in
+  std::string final_state;  // the state the run ended in; empty if the script had not started
   double end_time_s{0.0};   // sim time since the script started
+  bool interrupted{false};  // stopped from outside (SIGINT, shutdown): neither success nor failure
 };
 
 /// One entry into a state.
@@ -47,6 +48,12 @@ class ScriptRunner {
   /// One tick, with observations at least once per world step. The first call adds the random
   /// groups and enters the start state. Does nothing once the run has ended.
   void update(const Observations& observations, Commands& commands);
+
+  /// Ends the run as a failure from outside the script (scenario_node's wall-time limit, a world
+  /// that stopped sending states), at the last tick's time and state. Does nothing once ended.
+  void abort(const std::string& reason);
+  /// Ends the run as interrupted (`cause`: "SIGINT", ...), likewise.
+  void interrupt(const std::string& cause);
 
   bool finished() const { return outcome_.has_value(); }
   const std::optional<Outcome>& outcome() const { return outcome_; }
