@@ -16,7 +16,7 @@ namespace ari_social_sim::perception {
 /// applied to n mod 26^5 (a Feistel network on 24 bits, cycle-walked into [0, 26^5)), so the
 /// generator keeps no set of issued ids: its state is a counter and four round keys, whatever the
 /// number of ids issued. An id in use repeats only if its track outlives 11.9 million newer ids
-/// (at the 200-person soak's ~3 000 ids per sim-hour, 450 sim-years; docs/perception.md).
+/// (at the 200-person soak's ~29 000 ids per sim-hour, 410 sim-hours; docs/perception.md).
 class TransientIds {
  public:
   static constexpr int kLength = 5;
