@@ -67,6 +67,8 @@ endif()
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/world_node.test DEPENDENCIES world_node)
+  add_rostest(test/integration/world_node_sigint.test DEPENDENCIES world_node)
+  add_rostest(test/integration/world_node_3d_inputs.test DEPENDENCIES world_node)
   ari_add_gtest(test_world_state_determinism
     SOURCES test/nodes/test_world_state_determinism.cpp
     LIBRARIES ari_world_conversions)
