@@ -296,6 +296,12 @@ void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId
   if (group == nullptr) {
     throw core::RequestError("no group with id " + std::to_string(group_id));
   }
+  const RequestCheck check("add_group_members");
+  // A longer list cannot fit, and is refused before the quadratic search for repeats below.
+  if (members.size() > kMaxGroupMembers) {
+    check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans",
+               std::to_string(members.size()));
+  }
   size_t joining = 0;
   for (size_t i = 0; i < members.size(); ++i) {
     const Human* human = find_human(members[i]);
@@ -308,10 +314,9 @@ void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId
     joining += human->group_id() != group_id && !repeated ? 1 : 0;
   }
   if (group->members().size() + joining > kMaxGroupMembers) {
-    RequestCheck("add_group_members")
-        .fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans in a group",
-              std::to_string(group->members().size()) + " members and " + std::to_string(joining) +
-                  " joining");
+    check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans in a group",
+               std::to_string(group->members().size()) + " members and " + std::to_string(joining) +
+                   " joining");
   }
   for (ObjectId member : members) {
     Human& human = *find_human(member);

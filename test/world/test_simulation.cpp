@@ -471,6 +471,18 @@ TEST(Simulation, SetPoseTakesAHumanOutOfItsGroupOnlyWhenAccepted) {
   EXPECT_EQ(simulation->find_group(1)->members(), std::vector<ObjectId>{11});
 }
 
+TEST(Simulation, DebugBuildsCatchANanWhereItIsMade) {
+#ifdef NDEBUG
+  GTEST_SKIP() << "ARI_DCHECK is compiled out of release builds";
+#else
+  // Past the checked entry points (Simulation's requests), the core's own setters assert.
+  auto simulation = request_world();
+  EXPECT_DEATH(simulation->find_human(10)->set_velocity({kNan, 0.0}, 0.0), "ARI_CHECK");
+  EXPECT_DEATH(simulation->find_human(12)->plan_motion({0.0, kInf}, 0.0), "ARI_CHECK");
+  EXPECT_DEATH(simulation->find_group(1)->set_centre({kNan, 1.0}), "ARI_CHECK");
+#endif
+}
+
 TEST(Simulation, GroupsAndWorldsHaveDocumentedMaxima) {
   // 51 humans in a 12 m room; a group of 50 takes no 51st member.
   Simulation simulation(test::square_room(12.0), SimulationConfig{});
@@ -489,6 +501,9 @@ TEST(Simulation, GroupsAndWorldsHaveDocumentedMaxima) {
               "add_group_members: members: expected at most 50 humans in a group, got 50 members "
               "and 1 joining");
   }
+  // A list longer than any group is refused before it is searched (a client may send 1e6 ids).
+  EXPECT_THROW(simulation.add_group_members(1, std::vector<ObjectId>(100000, ids[0])),
+               core::RequestError);
   group.id = 2;
   group.members = ids;
   EXPECT_THROW(simulation.add_group(group), core::RequestError);
