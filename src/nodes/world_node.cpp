@@ -20,7 +20,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <sstream>
+#include <optional>
 #include <string>
 
 #include "ari_social_sim/AddGroupMembers.h"
@@ -44,6 +44,7 @@
 #include "conversions/world_markers.hpp"
 #include "conversions/world_state.hpp"
 #include "frames.hpp"
+#include "input_counters.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -56,10 +57,6 @@ constexpr double kPacingSliceS = 0.05;
 // Most steps one /sim/step request may take (at the default 0.05 s, 5000 s of sim time, about
 // 10 s of wall time): the node serves nothing else meanwhile.
 constexpr uint32_t kMaxStepsPerRequest = 100000;
-// Wall seconds between /diagnostics messages (the diagnostics convention: 1 Hz) and between two
-// warnings about the same dropped field.
-constexpr double kDiagnosticsPeriodS = 1.0;
-constexpr double kDropWarningPeriodS = 5.0;
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
   return {{pose.x, pose.y}, pose.theta};
@@ -79,77 +76,6 @@ bool answer(Response& response, Body body) {
   }
   return true;
 }
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-// What world_node did with the numbers of its input topics: messages dropped because a field it
-// uses is not finite, and finite commands clamped to ARI's limits, counted per topic and field
-// and published on /diagnostics.
-class InputCounters {
- public:
-  /// Lists a counter (at 0) so that /diagnostics shows it before anything happens.
-  void declare_drop(const std::string& topic, const std::string& field) {
-    drops_.emplace(topic + " " + field, Count{});
-  }
-  void declare_clamp(const std::string& topic) { clamps_.emplace(topic, 0); }
-
-  /// True if `value` is finite. Otherwise counts a drop of `topic`'s message for `field` and warns
-  /// (at most every kDropWarningPeriodS per field).
-  bool finite(const std::string& topic, const std::string& field, double value) {
-    if (std::isfinite(value)) {
-      return true;
-    }
-    Count& count = drops_[topic + " " + field];
-    ++count.dropped;
-    const ros::WallTime now = ros::WallTime::now();
-    if (count.dropped == 1 || (now - count.last_warning).toSec() >= kDropWarningPeriodS) {
-      count.last_warning = now;
-      ROS_WARN("%s: dropped a message whose %s is %s, not a finite number (%lu dropped for it)",
-               topic.c_str(), field.c_str(), number_text(value).c_str(),
-               static_cast<unsigned long>(count.dropped));
-    }
-    return false;
-  }
-  void add_clamps(const std::string& topic, uint64_t clamped) { clamps_[topic] += clamped; }
-
-  diagnostic_msgs::DiagnosticStatus status() const {
-    diagnostic_msgs::DiagnosticStatus status;
-    status.name = "world_node: inputs";
-    status.hardware_id = "ari_social_sim";
-    uint64_t dropped = 0;
-    for (const auto& [key, count] : drops_) {
-      dropped += count.dropped;
-      status.values.push_back(key_value("dropped " + key, count.dropped));
-    }
-    for (const auto& [topic, clamped] : clamps_) {
-      status.values.push_back(key_value("clamped " + topic, clamped));
-    }
-    status.level = dropped > 0 ? diagnostic_msgs::DiagnosticStatus::WARN
-                               : diagnostic_msgs::DiagnosticStatus::OK;
-    status.message = dropped > 0 ? std::to_string(dropped) + " non-finite input fields dropped"
-                                 : "no input dropped";
-    return status;
-  }
-
- private:
-  struct Count {
-    uint64_t dropped{0};
-    ros::WallTime last_warning;
-  };
-  static diagnostic_msgs::KeyValue key_value(const std::string& key, uint64_t value) {
-    diagnostic_msgs::KeyValue pair;
-    pair.key = key;
-    pair.value = std::to_string(value);
-    return pair;
-  }
-
-  std::map<std::string, Count> drops_;
-  std::map<std::string, uint64_t> clamps_;
-};
 
 constexpr char kCmdVelTopic[] = "/mobile_base_controller/cmd_vel";
 constexpr char kHeadCommandTopic[] = "/head_controller/command";
@@ -271,14 +197,13 @@ class WorldNode {
   }
 
   void publish_diagnostics_when_due() {
-    const ros::WallTime now = ros::WallTime::now();
-    if ((now - last_diagnostics_).toSec() < kDiagnosticsPeriodS) {
+    std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due();
+    if (!status) {
       return;
     }
-    last_diagnostics_ = now;
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time(simulation_->time_s());
-    array.status.push_back(inputs_.status());
+    array.status.push_back(*status);
     diagnostics_pub_.publish(array);
   }
 
@@ -580,8 +505,7 @@ class WorldNode {
   ros::WallTime last_markers_;
   double pacing_start_wall_s_{0.0};
   double pacing_start_sim_s_{0.0};
-  InputCounters inputs_;
-  ros::WallTime last_diagnostics_;
+  InputCounters inputs_{"world_node"};
 
   ros::NodeHandle nh_;
   ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_, joint_states_pub_,
