@@ -59,6 +59,9 @@ if(CATKIN_ENABLE_TESTING)
   target_include_directories(test_scenario PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 
   add_rostest(test/integration/scenario_node.test DEPENDENCIES world_node scenario_node)
+  # Hostile input to every node of the suite (issue 13).
+  add_rostest(test/integration/fuzz.test DEPENDENCIES world_node hri_perception_node
+    group_detection_node social_mpc_node dialogue_node)
   add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
     group_detection_node social_mpc_node dialogue_node scenario_node run_episodes)
   # The same scenario with each kind of perception (README, "Swapping in real perception").

@@ -104,6 +104,22 @@ Simulation::Simulation(WorldDescription world, SimulationConfig config)
     register_object(*object);
     statics_.push_back(std::move(object));
   }
+  add_floor_fence();
+}
+
+void Simulation::add_floor_fence() {
+  // The floor's edge as a fence, so that nothing leaves the world through a door (a human set
+  // walking, ARI driven on) and every pose stays inside the map. It is no object: no user data.
+  const Eigen::Vector2d low = world_.origin;
+  const Eigen::Vector2d high = world_.origin + world_.size;
+  // Clockwise: Box2D's chain edges collide on their right side only, here the floor's.
+  const b2Vec2 corners[4] = {to_b2(low), to_b2({low.x(), high.y()}), to_b2(high),
+                             to_b2({high.x(), low.y()})};
+  b2ChainShape fence;
+  fence.CreateLoop(corners, 4);
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  physics_->CreateBody(&def)->CreateFixture(&fence, 0.0f);
 }
 
 Simulation::~Simulation() = default;
@@ -153,8 +169,8 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
     const Object* hit{nullptr};
     bool ReportFixture(b2Fixture* fixture) override {
       const Object* other = object_of(fixture->GetBody());
-      if (other == ignore) {
-        return true;
+      if (other == nullptr || other == ignore) {
+        return true;  // the floor fence is checked as the floor's bounds above
       }
       if (b2TestOverlap(shape, 0, fixture->GetShape(), 0, transform,
                         fixture->GetBody()->GetTransform())) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -85,6 +86,24 @@ TEST(Simulation, WallsStopHumansWalkingIntoThem) {
   }
   // East wall inner face at x = 5.95; the body's radius 0.2 keeps the centre at <= 5.75 (+ slop).
   EXPECT_NEAR(human.pose().position.x(), 5.75, 0.02);
+}
+
+TEST(Simulation, NobodyLeavesTheFloorThroughAnOpening) {
+  // A room without its east wall: the floor ends 0.2 m past where the wall would stand (x 6.2).
+  WorldDescription open_room = test::square_room(6.0);
+  open_room.objects.erase(
+      std::remove_if(open_room.objects.begin(), open_room.objects.end(),
+                     [](const StaticObject& wall) { return wall.pose.position.x() > 5.9; }),
+      open_room.objects.end());
+  ASSERT_EQ(open_room.objects.size(), 3u);
+  Simulation simulation(open_room, SimulationConfig{});
+  simulation.add_human(person(10, 3.0, 3.0));
+  simulation.set_human_velocity(10, {1.3, 0.0}, 0.0);
+  for (int i = 0; i < 200; ++i) {  // 10 s at 1.3 m/s: 13 m, far past the floor without a fence
+    simulation.step();
+  }
+  // The floor's edge at x = 6.2 stops the body's radius of 0.2 short of it (+ Box2D's slop).
+  EXPECT_NEAR(simulation.find_human(10)->pose().position.x(), 6.0, 0.02);
 }
 
 TEST(Simulation, HumanNavigationReachesItsGoalPose) {

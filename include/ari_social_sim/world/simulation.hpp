@@ -134,6 +134,7 @@ class Simulation {
  private:
   void check_placement(const b2Shape& shape, const core::Pose2& pose, const Object* ignore,
                        const std::string& what) const;
+  void add_floor_fence();
   void register_object(Object& object);
   /// The human with this id; throws core::RequestError if there is none.
   Human& existing_human(ObjectId human_id) const;
