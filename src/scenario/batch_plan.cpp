@@ -28,6 +28,11 @@ bool parse_positive(const std::string& text, unsigned& out) {
   return value > 0;
 }
 
+// `field: `, or nothing for an empty field (a program that names itself).
+std::string prefix(const std::string& field) {
+  return field.empty() ? "" : field + ": ";
+}
+
 // A YAML single-quoted scalar: any text, a quote written twice.
 std::string yaml_quoted(const std::string& text) {
   std::string out = "'";
@@ -49,14 +54,14 @@ std::vector<uint64_t> BatchPlan::episode_indices() const {
 
 void BatchPlan::validate(const std::string& field) const {
   if (episodes == 0) {
-    throw core::ConfigError(field + ": --episodes: expected at least 1, got 0");
+    throw core::ConfigError(prefix(field) + "--episodes: expected at least 1, got 0");
   }
   if (shard_index == 0 || shard_index > shard_count) {
-    throw core::ConfigError(field + ": --shard: expected K/N with 1 <= K <= N, got " +
+    throw core::ConfigError(prefix(field) + "--shard: expected K/N with 1 <= K <= N, got " +
                             std::to_string(shard_index) + "/" + std::to_string(shard_count));
   }
   if (first_seed + episodes > kSeedLimit) {
-    throw core::ConfigError(field + ": --seed: expected seeds " + std::to_string(first_seed) +
+    throw core::ConfigError(prefix(field) + "--seed: expected seeds " + std::to_string(first_seed) +
                             ".." + std::to_string(first_seed + episodes - 1) +
                             " below 2^31 (scene seeds), got a last seed beyond it");
   }
@@ -67,7 +72,8 @@ void parse_shard(const std::string& text, const std::string& field, BatchPlan& p
   unsigned k = 0, n = 0;
   if (slash == std::string::npos || !parse_positive(text.substr(0, slash), k) ||
       !parse_positive(text.substr(slash + 1), n) || k > n) {
-    throw core::ConfigError(field + ": --shard: expected K/N with 1 <= K <= N, got '" + text + "'");
+    throw core::ConfigError(prefix(field) + "--shard: expected K/N with 1 <= K <= N, got '" + text +
+                            "'");
   }
   plan.shard_index = k;
   plan.shard_count = n;

@@ -36,7 +36,7 @@ EpisodeBag::EpisodeBag(const std::string& path, const std::string& scenario_name
   try {
     bag_.open(active_path(path_), rosbag::bagmode::Write);
   } catch (const rosbag::BagException& e) {
-    throw core::RequestError(active_path(path_) + ": cannot write the bag: " + e.what());
+    throw core::Error(active_path(path_) + ": cannot write the bag: " + e.what());
   }
 }
 

@@ -18,8 +18,8 @@ namespace ari_social_sim::tools {
 /// under a bag's name.
 class EpisodeBag {
  public:
-  /// Opens `<path>.active` for writing (replacing any stale one). Throws core::RequestError when
-  /// it cannot be written.
+  /// Opens `<path>.active` for writing (replacing any stale one). Throws core::Error when it
+  /// cannot be written.
   EpisodeBag(const std::string& path, const std::string& scenario_name);
   /// Deletes the .active file unless finish() was called.
   ~EpisodeBag();

@@ -18,12 +18,13 @@ struct BatchPlan {
   /// The episode indices of this shard, in increasing order.
   std::vector<uint64_t> episode_indices() const;
   uint64_t seed_of(uint64_t episode) const { return first_seed + episode; }
-  /// Throws core::ConfigError naming `field` unless 1 <= K <= N, the count is at least 1, and
-  /// every seed fits the scene format (< 2^31).
+  /// Throws core::ConfigError naming `field` (when not empty) and the option unless
+  /// 1 <= K <= N, the count is at least 1, and every seed fits the scene format (< 2^31).
   void validate(const std::string& field) const;
 };
 
-/// Reads `K/N`, e.g. `3/8`. Throws core::ConfigError naming `field` with the expectation.
+/// Reads `K/N`, e.g. `3/8`. Throws core::ConfigError naming `field` (when not empty) and --shard
+/// with the expectation.
 void parse_shard(const std::string& text, const std::string& field, BatchPlan& plan);
 
 /// What a batch's rows were made with, kept beside its CSV (`NAME.settings.yaml`), so that a
