@@ -1,27 +1,15 @@
 // Runs the detect_groups program as a user would, through the shell.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "program_run.hpp"
 
 namespace {
 
-struct ProgramRun {
-  int status{-1};
-  std::string out;
-  std::string err;
-};
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using ari_social_sim::tools::test::ProgramRun;
 
 std::string temp_path(const std::string& name) {
   return ::testing::TempDir() + "detect_groups_" + name;
@@ -29,16 +17,7 @@ std::string temp_path(const std::string& name) {
 
 // Runs detect_groups with `arguments` (shell syntax), capturing its output and exit status.
 ProgramRun run(const std::string& arguments) {
-  const std::string out = temp_path("stdout.txt");
-  const std::string err = temp_path("stderr.txt");
-  const std::string command =
-      std::string(ARI_DETECT_GROUPS_BIN) + " " + arguments + " >" + out + " 2>" + err;
-  const int raw = std::system(command.c_str());
-  ProgramRun result;
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  result.out = read_all(out);
-  result.err = read_all(err);
-  return result;
+  return ari_social_sim::tools::test::run_program(ARI_DETECT_GROUPS_BIN, arguments);
 }
 
 std::string data_file(const std::string& name) {
