@@ -67,8 +67,12 @@ double NumberOption::parse(const std::string& text) const {
     return value;
   }
   const std::string range = bounds.describe();
-  fail(name,
-       "expected a finite number" + (range.empty() ? "" : " " + range) + ", got '" + text + "'");
+  const bool interval = !range.empty() && (range[0] == '[' || range[0] == '(');
+  fail(name, "expected a finite number" +
+                 std::string(interval        ? " in "
+                             : range.empty() ? ""
+                                             : " ") +
+                 range + ", got '" + text + "'");
 }
 
 void check_input_file(const char* option, const std::string& path) {
