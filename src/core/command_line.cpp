@@ -66,13 +66,12 @@ double NumberOption::parse(const std::string& text) const {
   if (std::isfinite(value) && *end == '\0' && bounds.contains(value)) {
     return value;
   }
-  const std::string range = bounds.describe();
-  const bool interval = !range.empty() && (range[0] == '[' || range[0] == '(');
-  fail(name, "expected a finite number" +
-                 std::string(interval        ? " in "
-                             : range.empty() ? ""
-                                             : " ") +
-                 range + ", got '" + text + "'");
+  std::string expectation = "expected a finite number";
+  const std::string range = bounds.describe();  // `[0, 1]` or `> 0`
+  if (!range.empty()) {
+    expectation += (range[0] == '[' || range[0] == '(' ? " in " : " ") + range;
+  }
+  fail(name, expectation + ", got '" + text + "'");
 }
 
 void check_input_file(const char* option, const std::string& path) {
