@@ -26,15 +26,18 @@ inline std::string read_all(const std::string& path) {
 }
 
 /// Runs `program` with `arguments` (shell syntax), capturing its output and exit status; the
-/// captures go to files named after `program` in the test's temporary folder.
-inline ProgramRun run_program(const std::string& program, const std::string& arguments) {
+/// captures go to files named after `program` in the test's temporary folder, standard output to
+/// `stdout_path` instead when given (then `out` is empty).
+inline ProgramRun run_program(const std::string& program, const std::string& arguments,
+                              const std::string& stdout_path = "") {
   const std::string stem = ::testing::TempDir() + program.substr(program.rfind('/') + 1);
-  const std::string command =
-      program + " " + arguments + " >" + stem + "_stdout.txt 2>" + stem + "_stderr.txt";
+  const std::string command = program + " " + arguments + " >" +
+                              (stdout_path.empty() ? stem + "_stdout.txt" : stdout_path) + " 2>" +
+                              stem + "_stderr.txt";
   const int raw = std::system(command.c_str());
   ProgramRun result;
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  result.out = read_all(stem + "_stdout.txt");
+  result.out = stdout_path.empty() ? read_all(stem + "_stdout.txt") : "";
   result.err = read_all(stem + "_stderr.txt");
   return result;
 }

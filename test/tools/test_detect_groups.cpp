@@ -74,9 +74,29 @@ TEST(DetectGroups, BadArgumentsExitWithTwo) {
                      "--frames");
   expect_usage_error(run("--features /nonexistent.csv --stride 30 --mdl 1"),
                      "/nonexistent.csv: cannot open");
+  expect_usage_error(run("--features " + features + " --stride nan --mdl 1"),
+                     "--stride: expected a finite number > 0, got 'nan'");
+  expect_usage_error(run("--features " + features + " --stride 1e400 --mdl 1"), "got '1e400'");
+  expect_usage_error(run("--features " + ::testing::TempDir() + " --stride 30 --mdl 1"),
+                     "--features: " + ::testing::TempDir() +
+                         ": expected a readable file, got a "
+                         "directory");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl 1 --evaluate " + features +
+                         " --frames /nonexistent_frames.csv"),
+                     "--frames: /nonexistent_frames.csv: cannot open");
   // Ground truth given as features: the header is wrong, named with file, line and column.
   expect_usage_error(run("--features " + data_file("Synth_groups.csv") + " --stride 30 --mdl 1"),
                      "Synth_groups.csv:1:1:");
+}
+
+TEST(DetectGroups, AFailedWriteExitsWithOne) {
+  // /dev/full takes the open and refuses the bytes, as a full disk does.
+  const ProgramRun full = ari_social_sim::tools::test::run_program(
+      ARI_DETECT_GROUPS_BIN,
+      "--features " + data_file("Synth_features.csv") + " --stride 30 --mdl 6000", "/dev/full");
+  EXPECT_EQ(full.status, 1);
+  EXPECT_NE(full.err.find("standard output: writing the groups failed"), std::string::npos)
+      << full.err;
 }
 
 }  // namespace
