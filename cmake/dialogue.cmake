@@ -94,6 +94,7 @@ add_executable(dialogue_node
   src/nodes/dialogue_node.cpp
   src/nodes/dialogue/asr_stage.cpp
   src/nodes/dialogue/live_dialogue_node.cpp
+  src/nodes/dialogue/request_checks.cpp
   src/nodes/dialogue/rl_env_services.cpp
   src/nodes/dialogue/world_stage.cpp
   src/nodes/ros_params.cpp)
