@@ -219,21 +219,19 @@ void remove_earlier_run(const OutputPaths& paths, const std::vector<uint64_t>& s
             << "its settings and " << bags << " bags of the earlier run\n";
 }
 
-// --resume: checks the earlier run against this one's settings and returns the rows to keep;
-// cuts a row left half-written off the CSV and deletes the .active files of episodes to redo.
-// Throws core::ConfigError naming every difference.
-std::vector<scenario::EpisodeCsvRow> resume_earlier_run(const OutputPaths& paths,
-                                                        const scenario::BatchSettings& now,
-                                                        bool& csv_has_header) {
-  if (!fs::exists(paths.settings())) {
+// --resume: checks the earlier run (its settings `there`, if any) against this one's and returns
+// the rows to keep; cuts a row left half-written off the CSV and deletes the .active files of
+// episodes to redo. Throws core::ConfigError naming every difference.
+std::vector<scenario::EpisodeCsvRow> resume_earlier_run(
+    const OutputPaths& paths, const std::optional<scenario::BatchSettings>& there,
+    const scenario::BatchSettings& now, bool& csv_has_header) {
+  if (!there) {
     throw core::ConfigError("--resume: " + paths.csv() + " has no settings file " +
                             paths.settings() +
                             " to check it was made with these settings; pass --overwrite to "
                             "start again");
   }
-  const scenario::BatchSettings there =
-      scenario::BatchSettings::parse(read_file(paths.settings()), paths.settings());
-  const std::vector<std::string> differences = there.differences(now);
+  const std::vector<std::string> differences = there->differences(now);
   if (!differences.empty()) {
     std::string text;
     for (const std::string& line : differences) {
@@ -279,97 +277,116 @@ std::vector<scenario::EpisodeCsvRow> resume_earlier_run(const OutputPaths& paths
   return contents.rows;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// A checked run, ready to go.
+struct Batch {
   Options options;
-  scenario::Scenario loaded;
+  scenario::Scenario scenario;
   scenario::EpisodeConfig config;
   OutputPaths paths;
-  scenario::BatchSettings settings;
-  std::vector<scenario::EpisodeCsvRow> kept;
-  std::ofstream csv;
-  // Everything the user gave is checked, and the earlier output dealt with, before the first
-  // episode: a bad option or path costs no run.
-  try {
-    options = parse_options(argc, argv);
-    const std::string scenario_file = scenario_path(options.scenario);
-    core::check_input_file("--scenario", scenario_file);
-    loaded = scenario::load_scenario_file(scenario_file);
-    config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
-    if (fs::exists(options.out) && !fs::is_directory(options.out)) {
-      throw core::ConfigError("--out: " + options.out + ": expected a directory, got a file");
-    }
-    const bool sharded = options.plan.shard_count > 1;
-    paths.dir = options.out;
-    paths.name = loaded.name;
-    paths.stem = loaded.name + (sharded ? "_shard" + std::to_string(options.plan.shard_index) +
-                                              "-of-" + std::to_string(options.plan.shard_count)
-                                        : "");
-    std::optional<scenario::BatchSettings> earlier;
-    if (options.resume && fs::exists(paths.settings())) {
-      earlier = scenario::BatchSettings::parse(read_file(paths.settings()), paths.settings());
-    }
-    // --resume goes on with the earlier run's count and seeds unless told otherwise.
-    if (!options.episodes_given) {
-      options.plan.episodes = earlier ? earlier->plan.episodes : 0;
-    }
-    if (!options.seed_given) {
-      options.plan.first_seed = earlier ? earlier->plan.first_seed : loaded.scene.seed;
-    }
-    if (!options.episodes_given && !earlier) {
-      throw core::ConfigError("--resume: " + paths.settings() +
-                              " not found: nothing to resume, give --episodes");
-    }
-    options.plan.validate("");
-    settings.scenario = loaded.name;
-    settings.scenario_file = scenario_file;
-    settings.scenario_digest = scenario::digest_files({scenario_file, loaded.scene.world_path});
-    settings.config_digest = scenario::digest_files(config_files());
-    settings.plan = options.plan;
-    settings.bags = options.bags;
+  std::vector<scenario::EpisodeCsvRow> kept;  // rows of an earlier run that --resume keeps
+  std::ofstream csv;                          // open for appending, the header written
+};
 
-    std::vector<uint64_t> seeds;
-    for (uint64_t index : options.plan.episode_indices()) {
-      seeds.push_back(options.plan.seed_of(index));
-    }
-    bool csv_has_header = false;
-    const std::string found = existing_outputs(paths, seeds);
-    if (options.resume && fs::exists(paths.csv())) {
-      kept = resume_earlier_run(paths, settings, csv_has_header);
-    } else if (options.resume) {
-      std::cerr << "--resume: " << paths.csv() << " not found: starting the run\n";
-      remove_earlier_run(paths, seeds, /*say=*/false);
-    } else if (options.overwrite && !found.empty()) {
-      remove_earlier_run(paths, seeds, /*say=*/true);
-    } else if (!options.overwrite && !found.empty()) {
-      throw core::ConfigError("--out: " + options.out + " holds this run's output already (" +
-                              found + "): pass --resume to finish it or --overwrite to replace it");
-    }
-    core::prepare_output_directory("--out", options.out);
-    // Settings first, then the CSV: a CSV is never without the settings that made it.
-    core::OutputFile settings_file("--out", paths.settings());
-    settings_file.stream() << settings.to_yaml();
-    settings_file.commit();
-    csv.open(paths.csv(), std::ios::app);
-    if (!csv) {
-      throw core::ConfigError("--out: cannot write " + paths.csv());
-    }
-    if (!csv_has_header) {
-      csv << scenario::csv_header() << "\n" << std::flush;
-    }
-  } catch (const core::Error& e) {
-    std::cerr << "run_episodes: " << e.what() << "\n";
-    print_usage();
-    return 2;
-  } catch (const fs::filesystem_error& e) {
-    std::cerr << "run_episodes: --out: " << e.what() << "\n";
-    return 2;
+// Checks everything the user gave and deals with the earlier output before the first episode, so
+// that a bad option or path costs no run. Throws core::Error (or std::filesystem_error).
+Batch prepare(int argc, char** argv) {
+  Batch batch;
+  Options& options = batch.options;
+  options = parse_options(argc, argv);
+  const std::string scenario_file = scenario_path(options.scenario);
+  core::check_input_file("--scenario", scenario_file);
+  batch.scenario = scenario::load_scenario_file(scenario_file);
+  batch.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
+  if (fs::exists(options.out) && !fs::is_directory(options.out)) {
+    throw core::ConfigError("--out: " + options.out + ": expected a directory, got a file");
+  }
+  OutputPaths& paths = batch.paths;
+  paths.dir = options.out;
+  paths.name = batch.scenario.name;
+  paths.stem = paths.name + (options.plan.shard_count > 1
+                                 ? "_shard" + std::to_string(options.plan.shard_index) + "-of-" +
+                                       std::to_string(options.plan.shard_count)
+                                 : "");
+
+  // The plan: --resume goes on with the earlier run's count and seeds unless told otherwise.
+  std::optional<scenario::BatchSettings> earlier;
+  if (options.resume && fs::exists(paths.settings())) {
+    earlier = scenario::BatchSettings::parse(read_file(paths.settings()), paths.settings());
+  }
+  if (!options.episodes_given && !earlier) {
+    throw core::ConfigError("--resume: " + paths.settings() +
+                            " not found: nothing to resume, give --episodes");
+  }
+  if (!options.episodes_given) {
+    options.plan.episodes = earlier->plan.episodes;
+  }
+  if (!options.seed_given) {
+    options.plan.first_seed = earlier ? earlier->plan.first_seed : batch.scenario.scene.seed;
+  }
+  options.plan.validate("");
+  scenario::BatchSettings settings;
+  settings.scenario = batch.scenario.name;
+  settings.scenario_file = scenario_file;
+  settings.scenario_digest =
+      scenario::digest_files({scenario_file, batch.scenario.scene.world_path});
+  settings.config_digest = scenario::digest_files(config_files());
+  settings.plan = options.plan;
+  settings.bags = options.bags;
+
+  // The earlier output: resumed, replaced, or a reason to stop.
+  std::vector<uint64_t> seeds;
+  for (uint64_t index : options.plan.episode_indices()) {
+    seeds.push_back(options.plan.seed_of(index));
+  }
+  bool csv_has_header = false;
+  const std::string found = existing_outputs(paths, seeds);
+  if (options.resume && fs::exists(paths.csv())) {
+    batch.kept = resume_earlier_run(paths, earlier, settings, csv_has_header);
+  } else if (options.resume) {
+    std::cerr << "--resume: " << paths.csv() << " not found: starting the run\n";
+    remove_earlier_run(paths, seeds, /*say=*/false);
+  } else if (options.overwrite && !found.empty()) {
+    remove_earlier_run(paths, seeds, /*say=*/true);
+  } else if (!options.overwrite && !found.empty()) {
+    throw core::ConfigError("--out: " + options.out + " holds this run's output already (" + found +
+                            "): pass --resume to finish it or --overwrite to replace it");
   }
 
+  // Settings first, then the CSV: a CSV is never without the settings that made it.
+  core::prepare_output_directory("--out", options.out);
+  core::OutputFile settings_file("--out", paths.settings());
+  settings_file.stream() << settings.to_yaml();
+  settings_file.commit();
+  batch.csv.open(paths.csv(), std::ios::app);
+  if (!batch.csv) {
+    throw core::ConfigError("--out: cannot write " + paths.csv());
+  }
+  if (!csv_has_header) {
+    batch.csv << scenario::csv_header() << "\n" << std::flush;
+  }
+  return batch;
+}
+
+void install_stop_handler() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  // A second Ctrl-C kills at once (the default action is back), leaving at most one .active file.
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// Runs the planned episodes that have no row yet, each to its bag and then its row, until done or
+// stopped by a signal; returns the exit code.
+int run(Batch& batch) {
+  const Options& options = batch.options;
+  const OutputPaths& paths = batch.paths;
+  std::vector<uint64_t> row_seeds;  // every row in the CSV, kept or new
   std::set<uint64_t> done;
-  for (const scenario::EpisodeCsvRow& row : kept) {
+  for (const scenario::EpisodeCsvRow& row : batch.kept) {
     done.insert(row.episode);
+    row_seeds.push_back(row.seed);
   }
   std::vector<uint64_t> episodes;
   for (uint64_t index : options.plan.episode_indices()) {
@@ -378,23 +395,15 @@ int main(int argc, char** argv) {
     }
   }
   const size_t planned = done.size() + episodes.size();
-  if (!kept.empty()) {
-    std::cerr << "--resume: " << kept.size() << " of " << planned << " episodes are in "
+  if (!batch.kept.empty()) {
+    std::cerr << "--resume: " << batch.kept.size() << " of " << planned << " episodes are in "
               << paths.csv() << "; running the other " << episodes.size() << "\n";
   }
   if (episodes.empty()) {
-    std::printf("%s: nothing to do, all %zu episodes are in %s\n", loaded.name.c_str(), planned,
+    std::printf("%s: nothing to do, all %zu episodes are in %s\n", paths.name.c_str(), planned,
                 paths.csv().c_str());
     return 0;
   }
-
-  struct sigaction action {};
-  action.sa_handler = on_stop_signal;
-  // A second Ctrl-C kills at once (default action), leaving at most one .active file.
-  action.sa_flags = SA_RESETHAND;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
@@ -403,21 +412,16 @@ int main(int argc, char** argv) {
   };
   int successes = 0;
   double sim_time_s = 0.0;
-  size_t ran = 0;
-  std::vector<uint64_t> row_seeds;
-  for (const scenario::EpisodeCsvRow& row : kept) {
-    row_seeds.push_back(row.seed);
-  }
   std::optional<uint64_t> dropped_seed;
-  for (; ran < episodes.size() && g_stop_signal == 0; ++ran) {
+  for (size_t ran = 0; ran < episodes.size() && g_stop_signal == 0; ++ran) {
     const uint64_t index = episodes[ran];
     const uint64_t seed = options.plan.seed_of(index);
     const auto episode_start = std::chrono::steady_clock::now();
     try {
-      scenario::Episode episode(loaded, seed, config);
+      scenario::Episode episode(batch.scenario, seed, batch.config);
       std::unique_ptr<tools::EpisodeBag> bag;
       if (options.bags) {
-        bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), loaded.name);
+        bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), paths.name);
       }
       while (!episode.finished() && g_stop_signal == 0) {
         episode.step();
@@ -434,10 +438,10 @@ int main(int argc, char** argv) {
         bag->finish();
       }
       const auto summary =
-          scenario::EpisodeSummary::of(loaded.name, index, seed, episode.runner(),
-                                       episode.metrics(), seconds_since(episode_start));
-      csv << scenario::csv_row(summary) << "\n" << std::flush;
-      if (!csv) {
+          scenario::EpisodeSummary::of(paths.name, index, seed, episode.runner(), episode.metrics(),
+                                       seconds_since(episode_start));
+      batch.csv << scenario::csv_row(summary) << "\n" << std::flush;
+      if (!batch.csv) {
         throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
                           " failed");
       }
@@ -458,6 +462,8 @@ int main(int argc, char** argv) {
   }
   const double wall_s = seconds_since(start);
   std::cerr << (terminal ? "\n" : "");
+
+  // Stopped: what is kept, and how to go on.
   if (g_stop_signal != 0) {
     size_t bags = 0;
     for (uint64_t seed : row_seeds) {
@@ -465,19 +471,41 @@ int main(int argc, char** argv) {
     }
     std::cerr << "run_episodes: interrupted by " << (g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
               << " after " << row_seeds.size() << " of " << planned
-              << " episodes: " << row_seeds.size() << " rows in " << paths.csv() << ", " << bags
-              << " bags"
-              << (dropped_seed ? "; the episode under way (seed " + std::to_string(*dropped_seed) +
-                                     ") was dropped, its bag deleted"
-                               : std::string())
-              << "; rerun with --resume to finish\n";
+              << " episodes: " << row_seeds.size() << " rows in " << paths.csv();
+    if (options.bags) {
+      std::cerr << ", " << bags << " bags";
+    }
+    if (dropped_seed) {
+      std::cerr << "; the episode under way (seed " << *dropped_seed << ") was dropped"
+                << (options.bags ? ", its bag deleted" : "");
+    }
+    std::cerr << "; rerun with --resume to finish\n";
     return 128 + g_stop_signal;
   }
+  const size_t ran = episodes.size();
   std::printf(
       "%s: %zu episodes, %d succeeded; %.1f s of sim time in %.2f s of wall time (%.0fx "
       "real time, %.1f episodes per minute)\nmetrics: %s\n",
-      loaded.name.c_str(), episodes.size(), successes, sim_time_s, wall_s,
-      wall_s > 0 ? sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * episodes.size() / wall_s : 0.0,
+      paths.name.c_str(), ran, successes, sim_time_s, wall_s,
+      wall_s > 0 ? sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * ran / wall_s : 0.0,
       paths.csv().c_str());
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Batch batch;
+  try {
+    batch = prepare(argc, argv);
+  } catch (const core::Error& e) {
+    std::cerr << "run_episodes: " << e.what() << "\n";
+    print_usage();
+    return 2;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "run_episodes: --out: " << e.what() << "\n";
+    return 2;
+  }
+  install_stop_handler();
+  return run(batch);
 }
