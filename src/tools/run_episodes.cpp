@@ -42,8 +42,8 @@ namespace {
 using namespace ari_social_sim;
 namespace fs = std::filesystem;
 
-// The documented ranges (README, docs/scenario.md): a million episodes is ten days at the fastest
-// scenario's 70 per minute; seeds are scene seeds, below 2^31.
+// The documented ranges (README, docs/scenario.md): a million episodes take a day or more at the
+// fastest scenario's 600 per minute, and a terabyte of bags; seeds are scene seeds, below 2^31.
 constexpr core::IntegerOption kEpisodes{"--episodes", 1, 1000000};
 constexpr core::IntegerOption kSeed{"--seed", 0, 2147483647};
 

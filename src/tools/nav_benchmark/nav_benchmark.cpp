@@ -33,8 +33,9 @@ using tools::EpisodeType;
 
 constexpr int kUsageError = 2;
 
-// The documented ranges (README, docs/navigation.md): 10 000 episodes of all 8 types with both
-// controllers take about two days; any seed that fits a signed 64-bit integer.
+// The documented ranges (README): 10 000 episodes of all 8 types with both controllers are
+// 160 000 runs, some four hours at the 0.08 s each of docs/PERFORMANCE.md, with every record held
+// until the CSV is written; any seed that fits a signed 64-bit integer.
 constexpr core::IntegerOption kEpisodes{"--episodes", 1, 10000};
 constexpr core::IntegerOption kSeed{"--seed", 0, INT64_MAX};
 
