@@ -74,6 +74,18 @@ double NumberOption::parse(const std::string& text) const {
   fail(name, expectation + ", got '" + text + "'");
 }
 
+std::string option_value(int argc, char** argv, int& i) {
+  const std::string option = argv[i];
+  if (i + 1 >= argc) {
+    fail(option.c_str(), "expected a value after it");
+  }
+  const std::string value = argv[++i];
+  if (value.empty()) {
+    fail(option.c_str(), "expected a value, got ''");
+  }
+  return value;
+}
+
 void check_input_file(const char* option, const std::string& path) {
   std::error_code error;
   if (fs::is_directory(path, error)) {

@@ -84,10 +84,7 @@ std::optional<Options> parse_options(int argc, char** argv) {
     if (!known) {
       throw core::ConfigError("unknown option \"" + option + "\"");
     }
-    if (a + 1 >= argc) {
-      throw core::ConfigError(option + ": expected a value");
-    }
-    const std::string value = argv[++a];
+    const std::string value = core::option_value(argc, argv, a);
     if (option == "--features") {
       options.features = value;
     } else if (option == "--stride") {

@@ -69,10 +69,7 @@ Options parse_options(int argc, char** argv) {
       options.overwrite = true;
       continue;
     }
-    if (i + 1 >= argc) {
-      throw core::ConfigError(arg + ": expected a value after it");
-    }
-    const std::string value = argv[++i];
+    const std::string value = core::option_value(argc, argv, i);
     if (arg == "--dialogues") {
       options.dialogues = kDialogues.parse(value);
       have_dialogues = true;

@@ -53,10 +53,7 @@ int main(int argc, char** argv) {
         overwrite = true;
         continue;
       }
-      if (i + 1 >= argc) {
-        throw core::ConfigError(arg + ": expected a value after it");
-      }
-      const std::string value = argv[++i];
+      const std::string value = core::option_value(argc, argv, i);
       if (arg == "--corpus") {
         corpus_dir = value;
       } else if (arg == "--out") {

@@ -134,30 +134,27 @@ int run(const std::string& world_path, const std::string& out_dir, bool overwrit
 int main(int argc, char** argv) {
   std::string world_path, out_dir;
   bool overwrite = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    if (arg == "--overwrite") {
-      overwrite = true;
-    } else if ((arg == "--world" || arg == "--out") && i + 1 < argc) {
-      (arg == "--world" ? world_path : out_dir) = argv[++i];
-    } else {
-      std::fprintf(stderr, "render_cameras: unknown or incomplete argument '%s'\n%s", arg.c_str(),
-                   kUsage);
-      return kUsageError;
-    }
-  }
-  if (world_path.empty() || out_dir.empty()) {
-    std::fprintf(stderr, "render_cameras: --world and --out are required\n%s", kUsage);
-    return kUsageError;
-  }
   try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--help") {
+        std::fputs(kUsage, stdout);
+        return 0;
+      }
+      if (arg == "--overwrite") {
+        overwrite = true;
+      } else if (arg == "--world" || arg == "--out") {
+        (arg == "--world" ? world_path : out_dir) = core::option_value(argc, argv, i);
+      } else {
+        throw core::ConfigError("unknown argument '" + arg + "'");
+      }
+    }
+    if (world_path.empty() || out_dir.empty()) {
+      throw core::ConfigError("--world and --out are required");
+    }
     return run(world_path, out_dir, overwrite);
   } catch (const core::ConfigError& error) {
-    std::fprintf(stderr, "render_cameras: %s\n", error.what());
+    std::fprintf(stderr, "render_cameras: %s\n(see render_cameras --help)\n", error.what());
     return kUsageError;
   } catch (const core::Error& error) {
     std::fprintf(stderr, "render_cameras: %s\n", error.what());

@@ -92,10 +92,7 @@ Options parse_options(int argc, char** argv) {
       options.resume = true;
       continue;
     }
-    if (i + 1 >= argc) {
-      throw core::ConfigError(arg + ": expected a value after it");
-    }
-    const std::string value = argv[++i];
+    const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
     } else if (arg == "--episodes") {

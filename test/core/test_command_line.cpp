@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <vector>
 
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
@@ -75,6 +76,24 @@ TEST(NumberOption, ReadsFiniteNumbersWithinTheBounds) {
   const NumberOption weight{"--prior-weight", between(0.0, 1e6)};
   EXPECT_DOUBLE_EQ(weight.parse("0"), 0.0);
   EXPECT_NE(config_error([&] { weight.parse("2e6"); }).find("[0, 1e+06]"), std::string::npos);
+}
+
+TEST(OptionValue, TakesTheNextArgumentUnlessMissingOrEmpty) {
+  std::vector<std::string> words = {"tool", "--out", "x.csv", "--seed", "", "--report"};
+  std::vector<char*> argv;
+  for (std::string& word : words) {
+    argv.push_back(word.data());
+  }
+  const int argc = static_cast<int>(argv.size());
+  int i = 1;
+  EXPECT_EQ(option_value(argc, argv.data(), i), "x.csv");
+  EXPECT_EQ(i, 2);  // on the value: the caller's loop steps past it
+  i = 3;
+  EXPECT_EQ(config_error([&] { option_value(argc, argv.data(), i); }),
+            "--seed: expected a value, got ''");
+  i = 5;
+  EXPECT_EQ(config_error([&] { option_value(argc, argv.data(), i); }),
+            "--report: expected a value after it");
 }
 
 TEST(CheckInputFile, RefusesDirectoriesAndMissingFiles) {

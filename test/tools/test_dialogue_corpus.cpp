@@ -57,6 +57,8 @@ TEST(DialogueCorpus, BadOptionsExitWithTwoBeforeWritingAnything) {
   expect_refused(run("--dialogues 2 --seed 1 --nlg fancy" + out), "--nlg");
   expect_refused(run("--dialogues 2 --seed 1 --frobnicate" + out), "--frobnicate");
   expect_refused(run("--dialogues 2" + out), "are required");
+  expect_refused(run("--dialogues 2 --seed 1 --compare --out ''"),
+                 "--out: expected a value, got ''");
   EXPECT_EQ(fs::directory_iterator(dir), fs::directory_iterator());  // nothing written
 }
 

@@ -36,6 +36,7 @@ TEST(FitDialogueModel, BadOptionsExitWithTwo) {
   expect_refused(run("--out /proc/m.yaml"), "--out: /proc/m.yaml: cannot write in /proc");
   expect_refused(run("--overwrite"), "--overwrite: expected --out too");
   expect_refused(run("--prior-weight"), "--prior-weight: expected a value after it");
+  expect_refused(run("--out ''"), "--out: expected a value, got ''");  // not standard output
   EXPECT_EQ(fs::directory_iterator(dir), fs::directory_iterator());
 }
 

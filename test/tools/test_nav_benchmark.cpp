@@ -29,7 +29,7 @@ TEST(NavBenchmark, BadOptionsExitWithTwoBeforeAnyEpisode) {
            {"--seed 18446744073709551617", "--seed: expected an integer in [0, "},
            {"--seed -1", "got '-1'"},
            {"--types pose,pose", "--types: expected each name once, got 'pose' twice"},
-           {"--types ''", "--types: expected at least one name, got none"},
+           {"--types ''", "--types: expected a value, got ''"},
            {"--types walk", "--types: expected pose, doorway"},
            {"--controllers social,social", "'social' twice"},
            {"--solver newton", "--solver"},

@@ -30,6 +30,7 @@ TEST(RenderCameras, BadOptionsExitWithTwoBeforeRendering) {
             "--out: /etc/hostname: expected a directory, got a file"},
            {"--world " + kWorld + " --out /proc/pictures", "cannot create the directory"},
            {"--world " + kWorld, "--world and --out are required"},
+           {"--world " + kWorld + " --out ''", "--out: expected a value, got ''"},
            {"--world " + kWorld + " --out " + dir + " --zoom 2", "'--zoom'"}}) {
     const ProgramRun result = run(arguments);
     expect_refused(result, fragment);

@@ -92,6 +92,9 @@ TEST(RunEpisodes, BadOptionsExitWithTwoBeforeWritingAnything) {
   expect_refused(run(args + " --episodes 1 --shard 3/2"), "--shard");
   expect_refused(run(args + " --episodes"), "--episodes: expected a value");
   expect_refused(run(args + " --episodes 1 --frobnicate 2"), "--frobnicate");
+  // An empty value is no default: '' as --out would have been the root folder.
+  expect_refused(run("--scenario join_group --episodes 1 --resume --out ''"),
+                 "--out: expected a value, got ''");
   expect_refused(run(args + " --episodes 1 --overwrite --resume"), "got both");
   expect_refused(run(args + " --resume"), "nothing to resume, give --episodes");
   expect_refused(run("--scenario " + ::testing::TempDir() + " --episodes 1 --out " + out),

@@ -34,6 +34,11 @@ struct NumberOption {
   double parse(const std::string& text) const;
 };
 
+/// The value that follows the option `argv[i]`, stepping `i` over it. Throws ConfigError naming the
+/// option when there is none (`--out: expected a value after it`) or it is empty (`--out: expected
+/// a value, got ''`): an empty path or number never quietly stands for the default.
+std::string option_value(int argc, char** argv, int& i);
+
 /// Throws ConfigError (`--config: /tmp: expected a readable file, got a directory`) unless `path`
 /// can be opened for reading and is not a directory.
 void check_input_file(const char* option, const std::string& path);

@@ -96,12 +96,9 @@ std::vector<std::string> split(const std::string& text) {
   return items;
 }
 
-// Throws core::ConfigError naming `option` for an empty list or a name given twice: either would
-// leave a table empty or count its episodes twice.
+// Throws core::ConfigError naming `option` for a name given twice: its table would count its
+// episodes twice.
 void check_list(const std::string& option, const std::vector<std::string>& names) {
-  if (names.empty()) {
-    throw core::ConfigError(option + ": expected at least one name, got none");
-  }
   for (size_t i = 0; i < names.size(); ++i) {
     if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i) {
       throw core::ConfigError(option + ": expected each name once, got '" + names[i] + "' twice");
@@ -125,10 +122,7 @@ Options parse(int argc, char** argv) {
       options.overwrite = true;
       continue;
     }
-    if (i + 1 >= argc) {
-      throw core::ConfigError(arg + ": unknown option or missing value (see --help)");
-    }
-    const std::string value = argv[++i];
+    const std::string value = core::option_value(argc, argv, i);
     if (arg == "--episodes") {
       options.episodes = static_cast<int>(kEpisodes.parse(value));
     } else if (arg == "--seed") {
