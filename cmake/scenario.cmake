@@ -79,6 +79,15 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES test/tools/test_episode_bag.cpp
     LIBRARIES ari_episode_bag)
   target_compile_definitions(test_episode_bag PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+  # The program itself, run as a user would (test/tools/program_run.hpp).
+  ari_add_gtest(test_run_episodes
+    SOURCES test/tools/test_run_episodes.cpp
+    LIBRARIES ${catkin_LIBRARIES})
+  target_include_directories(test_run_episodes PRIVATE ${catkin_INCLUDE_DIRS})
+  target_compile_definitions(test_run_episodes PRIVATE
+    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>")
+  add_dependencies(test_run_episodes run_episodes)
 endif()
 
 if(benchmark_FOUND)
