@@ -34,6 +34,9 @@ void run_scenario(benchmark::State& state, const std::string& name, bool with_ba
         bag->record_step(episode);
       }
     }
+    if (bag) {
+      bag->finish();  // as run_episodes does: close and rename
+    }
     sim_s += episode.runner().outcome()->end_time_s;
     successes += episode.runner().outcome()->success ? 1 : 0;
   }

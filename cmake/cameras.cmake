@@ -42,6 +42,13 @@ endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)
 target_link_libraries(render_cameras ari_rendering)
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_render_cameras SOURCES test/tools/test_render_cameras.cpp)
+  target_compile_definitions(test_render_cameras PRIVATE
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    ARI_RENDER_CAMERAS_BIN="$<TARGET_FILE:render_cameras>")
+  add_dependencies(test_render_cameras render_cameras)
+endif()
 
 if(benchmark_FOUND)
   ari_add_benchmark(bench_cameras

@@ -1,5 +1,8 @@
-# core/: shared small things (seeded RNG, strict YAML reading, angles, errors).
+# core/: shared small things (seeded RNG, strict YAML reading, command-line values and output
+# files, angles, errors).
 add_library(ari_core
+  src/core/command_line.cpp
+  src/core/output_file.cpp
   src/core/rng.cpp
   src/core/yaml_map.cpp)
 target_include_directories(ari_core PUBLIC include)
@@ -7,6 +10,7 @@ target_link_libraries(ari_core PUBLIC Eigen3::Eigen yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_core
-    SOURCES test/core/test_pose2.cpp test/core/test_rng.cpp test/core/test_yaml_map.cpp
+    SOURCES test/core/test_command_line.cpp test/core/test_output_file.cpp test/core/test_pose2.cpp
+      test/core/test_rng.cpp test/core/test_yaml_map.cpp
     LIBRARIES ari_core)
 endif()

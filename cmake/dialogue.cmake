@@ -40,6 +40,19 @@ add_executable(dialogue_corpus src/tools/dialogue_corpus.cpp)
 target_link_libraries(dialogue_corpus ari_dialogue)
 
 if(CATKIN_ENABLE_TESTING)
+  # The programs themselves, run as a user would (test/tools/program_run.hpp).
+  ari_add_gtest(test_dialogue_corpus SOURCES test/tools/test_dialogue_corpus.cpp)
+  target_compile_definitions(test_dialogue_corpus PRIVATE
+    ARI_DIALOGUE_CORPUS_BIN="$<TARGET_FILE:dialogue_corpus>")
+  add_dependencies(test_dialogue_corpus dialogue_corpus)
+  ari_add_gtest(test_fit_dialogue_model SOURCES test/tools/test_fit_dialogue_model.cpp)
+  target_compile_definitions(test_fit_dialogue_model PRIVATE
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    ARI_FIT_DIALOGUE_MODEL_BIN="$<TARGET_FILE:fit_dialogue_model>")
+  add_dependencies(test_fit_dialogue_model fit_dialogue_model)
+endif()
+
+if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_dialogue
     SOURCES
       test/dialogue/test_dialogue_act.cpp
@@ -81,6 +94,7 @@ add_executable(dialogue_node
   src/nodes/dialogue_node.cpp
   src/nodes/dialogue/asr_stage.cpp
   src/nodes/dialogue/live_dialogue_node.cpp
+  src/nodes/dialogue/request_checks.cpp
   src/nodes/dialogue/rl_env_services.cpp
   src/nodes/dialogue/world_stage.cpp
   src/nodes/ros_params.cpp)

@@ -54,6 +54,12 @@ add_executable(nav_benchmark
 target_link_libraries(nav_benchmark ari_navigation ari_perception)
 target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_nav_benchmark SOURCES test/tools/test_nav_benchmark.cpp)
+  target_compile_definitions(test_nav_benchmark PRIVATE
+    ARI_NAV_BENCHMARK_BIN="$<TARGET_FILE:nav_benchmark>")
+  add_dependencies(test_nav_benchmark nav_benchmark)
+endif()
 
 # social_mpc_node: thin ROS adapter over the navigation core.
 add_executable(social_mpc_node

@@ -65,6 +65,9 @@ if(CATKIN_ENABLE_TESTING)
   # scenario_node never hangs and always reports: world_node killed mid-run, and SIGINT.
   add_rostest(test/integration/scenario_node_robustness.test
     DEPENDENCIES world_node scenario_node)
+  # Hostile input to every node of the suite (issue 13).
+  add_rostest(test/integration/fuzz.test DEPENDENCIES world_node hri_perception_node
+    group_detection_node social_mpc_node dialogue_node)
   add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
     group_detection_node social_mpc_node dialogue_node scenario_node run_episodes)
   # The same scenario with each kind of perception (README, "Swapping in real perception").
@@ -82,6 +85,15 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES test/tools/test_episode_bag.cpp
     LIBRARIES ari_episode_bag)
   target_compile_definitions(test_episode_bag PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+  # The program itself, run as a user would (test/tools/program_run.hpp).
+  ari_add_gtest(test_run_episodes
+    SOURCES test/tools/test_run_episodes.cpp
+    LIBRARIES ${catkin_LIBRARIES})
+  target_include_directories(test_run_episodes PRIVATE ${catkin_INCLUDE_DIRS})
+  target_compile_definitions(test_run_episodes PRIVATE
+    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>")
+  add_dependencies(test_run_episodes run_episodes)
 endif()
 
 if(benchmark_FOUND)

@@ -13,6 +13,7 @@ add_library(ari_world
   src/world/map_sensor.cpp
   src/world/object.cpp
   src/world/occupancy_grid.cpp
+  src/world/request_check.cpp
   src/world/scene.cpp
   src/world/simulation.cpp
   src/world/social_forces.cpp
@@ -31,6 +32,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_gaze_generator.cpp
       test/world/test_group_navigation.cpp
       test/world/test_map_sensor.cpp
+      test/world/test_request_check.cpp
       test/world/test_scene.cpp
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp
@@ -47,6 +49,7 @@ add_library(ari_world_conversions
   src/nodes/conversions/marker_builder.cpp
   src/nodes/conversions/world_markers.cpp
   src/nodes/conversions/world_state.cpp
+  src/nodes/input_counters.cpp
   src/nodes/ros_params.cpp)
 target_include_directories(ari_world_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
 target_link_libraries(ari_world_conversions PUBLIC ari_world ${catkin_LIBRARIES})
@@ -65,6 +68,8 @@ endif()
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/world_node.test DEPENDENCIES world_node)
+  add_rostest(test/integration/world_node_sigint.test DEPENDENCIES world_node)
+  add_rostest(test/integration/world_node_3d_inputs.test DEPENDENCIES world_node)
   ari_add_gtest(test_world_state_determinism
     SOURCES test/nodes/test_world_state_determinism.cpp
     LIBRARIES ari_world_conversions)

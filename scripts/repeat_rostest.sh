@@ -6,8 +6,12 @@
 # Exits non-zero unless every run passed. Needs a build (scripts/build.sh).
 set -uo pipefail
 cd "$(dirname "$0")/.."
-runs=${1:?usage: repeat_rostest.sh RUNS TEST_FILE [rostest args...]}
-test_file=${2:?usage: repeat_rostest.sh RUNS TEST_FILE [rostest args...]}
+if (($# < 2)); then
+  echo "usage: bash scripts/repeat_rostest.sh RUNS TEST_FILE [rostest args...]" >&2
+  exit 2
+fi
+runs=$1
+test_file=$2
 shift 2
 export PATH=/usr/bin:$PATH
 set +u; source _build/devel/setup.bash; set -u

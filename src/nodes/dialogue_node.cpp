@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "ari_social_sim/WorldState.h"
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
@@ -76,6 +77,8 @@ int main(int argc, char** argv) {
     if (run.config.empty()) {
       run.config = ros::package::getPath("ari_social_sim") + "/config/dialogue/simulation.yaml";
     }
+    // Read as YAML, a directory raises std::ios_failure, which no handler catches: refuse it here.
+    core::check_input_file((source + ": config").c_str(), run.config);
     setup = dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(run.config));
     run.check_human_ids(setup->config.users.roles, source);
   } catch (const core::Error& e) {

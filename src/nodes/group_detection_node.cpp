@@ -24,6 +24,7 @@
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "conversions/group_markers.hpp"
 #include "conversions/hri_messages.hpp"
+#include "hri_ids.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -67,7 +68,15 @@ class GroupDetectionNode {
       groups_.clear();
     }
     last_list_s_ = time_s;
-    tracked_ = msg->ids;
+    tracked_.clear();
+    for (const std::string& id : msg->ids) {
+      if (is_valid_hri_id(id)) {
+        tracked_.push_back(id);
+      } else {
+        ROS_WARN_THROTTLE(5.0, "/humans/persons/tracked: left out the id '%s', no ROS name",
+                          id.c_str());
+      }
+    }
     follow(tracked_, time_s);
   }
 

@@ -2,6 +2,7 @@
 // it, computed from the world's ground truth (/sim/world_state, /map) by the perception core.
 // Reads parameters, builds the core, wires topics and tf, converts at the edges.
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/package.h>
 #include <ros/ros.h>
@@ -26,6 +27,7 @@
 #include "conversions/hri_messages.hpp"
 #include "conversions/perception_markers.hpp"
 #include "conversions/world_state.hpp"
+#include "input_counters.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -35,6 +37,8 @@ constexpr char kMapFrame[] = "map";
 // In 2D mode no camera frames exist: ROS4HRI frames hang from ARI's base instead of the sensor.
 constexpr char kRobotFrame[] = "base_footprint";
 constexpr double kSoundMapResolution_m = 0.05;
+constexpr char kMapTopic[] = "/map";
+constexpr char kWorldStateTopic[] = "/sim/world_state";
 
 struct BodyTopics {
   ros::Publisher roi;
@@ -117,9 +121,10 @@ class HriPerceptionNode {
     matches_ = nh_.advertise<IdsMatch>("/humans/candidate_matches", 50);
     gazing_ = nh_.advertise<Gaze>("/humans/interactions/gazing", 50);
     markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
-    map_sub_ = nh_.subscribe("/map", 1, &HriPerceptionNode::on_map, this);
+    diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+    map_sub_ = nh_.subscribe(kMapTopic, 1, &HriPerceptionNode::on_map, this);
     // No Nagle delay: each world state should be perceived as soon as it is published.
-    state_sub_ = nh_.subscribe("/sim/world_state", 1, &HriPerceptionNode::on_world_state, this,
+    state_sub_ = nh_.subscribe(kWorldStateTopic, 1, &HriPerceptionNode::on_world_state, this,
                                ros::TransportHints().tcpNoDelay());
   }
 
@@ -161,12 +166,34 @@ class HriPerceptionNode {
     return topics;
   }
 
+  // Drops a message the perception could not use (counted on /diagnostics); true if it is fine.
+  template <class Message>
+  bool usable(const char* topic, const Message& msg) {
+    const std::optional<InputProblem> problem = input_problem(msg);
+    if (problem) {
+      inputs_.drop(topic, problem->field, problem->what);
+    }
+    if (std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due()) {
+      diagnostic_msgs::DiagnosticArray array;
+      array.header.stamp = ros::Time::now();
+      array.status.push_back(*status);
+      diagnostics_pub_.publish(array);
+    }
+    return !problem;
+  }
+
   void on_map(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
+    if (!usable(kMapTopic, *msg)) {
+      return;
+    }
     pipeline_.set_sight_map(from_msg(*msg));
     has_map_ = true;
   }
 
   void on_world_state(const WorldState::ConstPtr& msg) {
+    if (!usable(kWorldStateTopic, *msg)) {
+      return;
+    }
     if (!has_map_) {
       ROS_WARN_THROTTLE(5.0, "hri_perception_node: waiting for /map before perceiving");
       return;
@@ -294,6 +321,8 @@ class HriPerceptionNode {
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_{"~"};
+  InputCounters inputs_{"hri_perception_node"};
+  ros::Publisher diagnostics_pub_;
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
       matches_, gazing_, markers_;
   ros::Subscriber map_sub_, state_sub_;

@@ -7,6 +7,7 @@
 
 #include "conversions/hri_messages.hpp"
 #include "frames.hpp"
+#include "hri_ids.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -57,8 +58,16 @@ std::vector<PerceivedPersons::Placed> PerceivedPersons::place(const tf2_ros::Buf
 
 void PerceivedPersons::on_tracked(const IdsList& msg) {
   const ros::Time now = ros::Time::now();
-  tracked_ = msg.ids;
+  tracked_.clear();
   for (const std::string& id : msg.ids) {
+    if (is_valid_hri_id(id)) {
+      tracked_.push_back(id);
+    } else {
+      ROS_WARN_THROTTLE(5.0, "/humans/persons/tracked: left out the id '%s', which is no ROS name",
+                        id.c_str());
+    }
+  }
+  for (const std::string& id : tracked_) {
     Followed& followed = followed_[id];
     followed.last_tracked = now;
     if (!followed.body_id_sub) {

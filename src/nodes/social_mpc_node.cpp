@@ -4,6 +4,7 @@
 // /social_mpc/approach, and publishes ARI's commands, the plan and markers. No ground truth.
 
 #include <actionlib/server/action_server.h>
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <move_base_msgs/MoveBaseAction.h>
@@ -33,6 +34,7 @@
 #include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "conversions/navigation_msgs.hpp"
 #include "conversions/world_state.hpp"
+#include "input_counters.hpp"
 #include "perceived_persons.hpp"
 #include "ros_params.hpp"
 
@@ -43,6 +45,7 @@ constexpr char kMapFrame[] = "map";
 constexpr char kBaseFrame[] = "base_footprint";
 constexpr char kHeadPanJoint[] = "head_1_joint";
 constexpr char kHeadTiltJoint[] = "head_2_joint";
+constexpr char kOdomTopic[] = "/mobile_base_controller/odom";
 // How long (s of sim time) an approach goal naming someone not perceived yet waits for them
 // before it is rejected: a client may have learnt the id a moment before this node receives the
 // person's body (its latched body_id and first frames).
@@ -65,8 +68,9 @@ class SocialMpcNode {
     plan_pub_ = nh_.advertise<nav_msgs::Path>("/social_mpc/plan", 1);
     markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/social_mpc/markers", 1);
     status_pub_ = nh_.advertise<std_msgs::String>("/social_mpc/status", 1, /*latch=*/true);
+    diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     map_sub_ = nh_.subscribe("/map", 1, &SocialMpcNode::on_map, this);
-    odom_sub_ = nh_.subscribe("/mobile_base_controller/odom", 1, &SocialMpcNode::on_odom, this);
+    odom_sub_ = nh_.subscribe(kOdomTopic, 1, &SocialMpcNode::on_odom, this);
     joints_sub_ = nh_.subscribe("/joint_states", 1, &SocialMpcNode::on_joints, this);
     groups_sub_ = nh_.subscribe("/humans/interactions/groups", 20, &SocialMpcNode::on_group, this);
     simple_goal_sub_ =
@@ -94,6 +98,10 @@ class SocialMpcNode {
 
   // ---- inputs ----------------------------------------------------------------------------
   void on_map(const nav_msgs::OccupancyGrid& msg) {
+    if (const std::optional<InputProblem> problem = input_problem(msg)) {
+      inputs_.drop("/map", problem->field, problem->what);
+      return;
+    }
     if (active_) {
       finish(navigation::NavigationState::kAborted, "the map changed while navigating");
     }
@@ -103,8 +111,14 @@ class SocialMpcNode {
   }
 
   void on_odom(const nav_msgs::Odometry& msg) {
-    linear_mps_ = msg.twist.twist.linear.x;
-    angular_rps_ = msg.twist.twist.angular.z;
+    const bool linear_ok =
+        inputs_.finite(kOdomTopic, "twist.twist.linear.x", msg.twist.twist.linear.x);
+    const bool angular_ok =
+        inputs_.finite(kOdomTopic, "twist.twist.angular.z", msg.twist.twist.angular.z);
+    if (linear_ok && angular_ok) {
+      linear_mps_ = msg.twist.twist.linear.x;
+      angular_rps_ = msg.twist.twist.angular.z;
+    }
   }
 
   void on_joints(const sensor_msgs::JointState& msg) {
@@ -113,10 +127,12 @@ class SocialMpcNode {
       return;
     }
     const size_t i = static_cast<size_t>(it - msg.name.begin());
-    if (i < msg.position.size()) {
+    if (i < msg.position.size() &&
+        inputs_.finite("/joint_states", "position[head_1_joint]", msg.position[i])) {
       pan_rad_ = msg.position[i];
     }
-    if (i < msg.velocity.size()) {
+    if (i < msg.velocity.size() &&
+        inputs_.finite("/joint_states", "velocity[head_1_joint]", msg.velocity[i])) {
       pan_rps_ = msg.velocity[i];
     }
   }
@@ -393,6 +409,12 @@ class SocialMpcNode {
 
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
+    if (std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due()) {
+      diagnostic_msgs::DiagnosticArray array;
+      array.header.stamp = ros::Time::now();
+      array.status.push_back(*status);
+      diagnostics_pub_.publish(array);
+    }
     // People are followed all the time, so that a goal naming someone finds them known already;
     // those perception stopped reporting are let go.
     observe_people();
@@ -483,6 +505,7 @@ class SocialMpcNode {
   navigation::SceneTracker tracker_;
   std::unique_ptr<navigation::Navigator> navigator_;
   std::optional<ActiveGoal> active_;
+  InputCounters inputs_{"social_mpc_node"};
   // An approach goal whose target is not perceived yet (kTargetWait_s).
   struct WaitingApproach {
     ApproachServer::GoalHandle handle;
@@ -499,7 +522,7 @@ class SocialMpcNode {
   tf2_ros::TransformListener tf_listener_;
   MoveBaseServer move_base_;
   ApproachServer approach_;
-  ros::Publisher cmd_vel_pub_, head_pub_, plan_pub_, markers_pub_, status_pub_;
+  ros::Publisher cmd_vel_pub_, head_pub_, plan_pub_, markers_pub_, status_pub_, diagnostics_pub_;
   ros::Subscriber map_sub_, odom_sub_, joints_sub_, groups_sub_, simple_goal_sub_;
   ros::Timer timer_;
 };

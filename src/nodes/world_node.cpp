@@ -1,6 +1,7 @@
 // world_node: the 2D multi-party world as a ROS node that owns simulated time.
 // Reads parameters, builds the world core, wires topics and services, converts at the edges.
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
@@ -17,7 +18,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "ari_social_sim/AddGroupMembers.h"
 #include "ari_social_sim/CreateGroup.h"
@@ -40,12 +44,19 @@
 #include "conversions/world_markers.hpp"
 #include "conversions/world_state.hpp"
 #include "frames.hpp"
+#include "input_counters.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
 
 constexpr double kPausedClockPeriodS = 0.1;  // wall seconds between /clock messages while paused
+// Longest wall-clock sleep (s) between looks at callbacks and ros::ok(): waiting for the next step
+// at a slow real-time factor (1e-3: 50 s per step) still serves services and stops on SIGINT.
+constexpr double kPacingSliceS = 0.05;
+// Most steps one /sim/step request may take (at the default 0.05 s, 5000 s of sim time, about
+// 10 s of wall time): the node serves nothing else meanwhile.
+constexpr uint32_t kMaxStepsPerRequest = 100000;
 
 core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
   return {{pose.x, pose.y}, pose.theta};
@@ -66,6 +77,13 @@ bool answer(Response& response, Body body) {
   return true;
 }
 
+constexpr char kCmdVelTopic[] = "/mobile_base_controller/cmd_vel";
+constexpr char kHeadCommandTopic[] = "/head_controller/command";
+constexpr char kGroundTruthTopic[] = "/ground_truth_odom";
+constexpr char kJointStatesTopic[] = "/joint_states";
+const std::string kHeadPosition = std::string("points[last].positions[") + kHeadPanJoint + "]";
+const std::string kJointPosition = std::string("position[") + kHeadPanJoint + "]";
+
 class WorldNode {
  public:
   WorldNode(const world::WorldRunConfig& config, world::Scene scene)
@@ -78,19 +96,33 @@ class WorldNode {
     state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10);
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
+    diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+    if (config_.ari_source == world::AriSource::kInternal) {
+      inputs_.declare_drop(kCmdVelTopic, "linear.x");
+      inputs_.declare_drop(kCmdVelTopic, "angular.z");
+      inputs_.declare_clamp(kCmdVelTopic);
+      inputs_.declare_drop(kHeadCommandTopic, kHeadPosition);
+      inputs_.declare_clamp(kHeadCommandTopic);
+    } else {
+      for (const char* field : {"pose.position.x", "pose.position.y", "pose.orientation",
+                                "twist.linear.x", "twist.angular.z"}) {
+        inputs_.declare_drop(kGroundTruthTopic, field);
+      }
+      inputs_.declare_drop(kJointStatesTopic, kJointPosition);
+      inputs_.declare_clamp(kJointStatesTopic);
+    }
     if (config_.ari_source == world::AriSource::kInternal) {
       odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
       // The head's joint states come from here only in 2D mode; in 3D mode ari_physics_node
       // publishes /joint_states and this node reads them.
       joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("/joint_states", 10);
-      cmd_vel_sub_ =
-          nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &WorldNode::on_cmd_vel, this);
-      head_sub_ = nh_.subscribe("/head_controller/command", 1, &WorldNode::on_head_command, this);
+      cmd_vel_sub_ = nh_.subscribe(kCmdVelTopic, 1, &WorldNode::on_cmd_vel, this);
+      head_sub_ = nh_.subscribe(kHeadCommandTopic, 1, &WorldNode::on_head_command, this);
     } else {
       // 3D mode: ari_physics_node drives ARI and publishes its odometry and tf; the 2D body
       // follows its ground truth and head pan.
-      ground_truth_sub_ = nh_.subscribe("/ground_truth_odom", 1, &WorldNode::on_ground_truth, this);
-      joint_state_sub_ = nh_.subscribe("/joint_states", 1, &WorldNode::on_joint_states, this);
+      ground_truth_sub_ = nh_.subscribe(kGroundTruthTopic, 1, &WorldNode::on_ground_truth, this);
+      joint_state_sub_ = nh_.subscribe(kJointStatesTopic, 1, &WorldNode::on_joint_states, this);
     }
 
     services_.push_back(nh_.advertiseService("/sim/spawn_human", &WorldNode::spawn_human, this));
@@ -121,10 +153,10 @@ class WorldNode {
 
   /// Steps until shutdown or the configured duration, pacing sim time at the real-time factor.
   void run() {
-    ros::WallTime start = ros::WallTime::now();
-    double start_sim_s = simulation_->time_s();
+    restart_pacing();
     while (ros::ok()) {
       ros::spinOnce();
+      publish_diagnostics_when_due();
       if (paused_) {
         ros::WallDuration(0.01).sleep();
         // A paused world keeps publishing its clock (as Gazebo does), so that a node that comes
@@ -132,27 +164,57 @@ class WorldNode {
         if (ros::WallTime::now() - last_clock_wall_ > ros::WallDuration(kPausedClockPeriodS)) {
           publish_clock(ros::Time(simulation_->time_s()));
         }
-        start = ros::WallTime::now();
-        start_sim_s = simulation_->time_s();
+        restart_pacing();
         continue;
+      }
+      // The next step is due once the wall clock has caught up with the sim time reached so far.
+      // Seconds as doubles: at a tiny real-time factor the wait overflows a ros::WallDuration.
+      // The wait goes in short slices so that callbacks are served and SIGINT is seen meanwhile.
+      if (config_.real_time_factor > 0.0) {
+        const double due_s = pacing_start_wall_s_ + (simulation_->time_s() - pacing_start_sim_s_) /
+                                                        config_.real_time_factor;
+        const double wait_s = due_s - ros::WallTime::now().toSec();
+        if (wait_s > 0.0) {
+          ros::WallDuration(std::min(wait_s, kPacingSliceS)).sleep();
+          continue;
+        }
       }
       step_once();
       if (config_.duration_s > 0.0 && simulation_->time_s() >= config_.duration_s - 1e-9) {
         report();
         return;
       }
-      if (config_.real_time_factor > 0.0) {
-        const double wall_due = (simulation_->time_s() - start_sim_s) / config_.real_time_factor;
-        const ros::WallTime due = start + ros::WallDuration(wall_due);
-        const ros::WallTime now = ros::WallTime::now();
-        if (due > now) {
-          (due - now).sleep();
-        }
-      }
     }
   }
 
  private:
+  /// Sim time from now on is paced from the current sim time and wall time: after a pause, and
+  /// after a reset took sim time back to 0 (pacing from the old start would then run as fast as
+  /// possible until sim time caught up with it).
+  void restart_pacing() {
+    pacing_start_wall_s_ = ros::WallTime::now().toSec();
+    pacing_start_sim_s_ = simulation_->time_s();
+  }
+
+  void publish_diagnostics_when_due() {
+    std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due();
+    if (!status) {
+      return;
+    }
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = ros::Time(simulation_->time_s());
+    array.status.push_back(*status);
+    diagnostics_pub_.publish(array);
+  }
+
+  // The clamps StepDiagnostics counted during `command`, credited to `topic`.
+  template <class Command>
+  void count_clamps(const std::string& topic, Command command) {
+    const uint64_t before = simulation_->diagnostics().clamped_commands;
+    command();
+    inputs_.add_clamps(topic, simulation_->diagnostics().clamped_commands - before);
+  }
+
   void rebuild() {
     world::SimulationConfig sim_config;
     sim_config.step_s = config_.step_s;
@@ -230,12 +292,19 @@ class WorldNode {
     std::cout << std::flush;
   }
 
+  // Topic callbacks drop a message with any non-finite field they use (counted, warned, on
+  // /diagnostics): the core would refuse it anyway, and a callback must not throw.
   void on_cmd_vel(const geometry_msgs::Twist& twist) {
     if (simulation_->ari() == nullptr) {
       ROS_WARN_THROTTLE(5.0, "cmd_vel received but the scene has no ARI");
       return;
     }
-    simulation_->command_ari_twist(twist.linear.x, twist.angular.z);
+    const bool linear_ok = inputs_.finite(kCmdVelTopic, "linear.x", twist.linear.x);
+    const bool angular_ok = inputs_.finite(kCmdVelTopic, "angular.z", twist.angular.z);
+    if (linear_ok && angular_ok) {
+      count_clamps(kCmdVelTopic,
+                   [&] { simulation_->command_ari_twist(twist.linear.x, twist.angular.z); });
+    }
   }
 
   void on_head_command(const trajectory_msgs::JointTrajectory& trajectory) {
@@ -252,35 +321,42 @@ class WorldNode {
       ROS_WARN_THROTTLE(5.0, "head command ignored: no position for %s", kHeadPanJoint);
       return;
     }
-    simulation_->command_ari_head_pan(last.positions[index]);
+    if (inputs_.finite(kHeadCommandTopic, kHeadPosition, last.positions[index])) {
+      count_clamps(kHeadCommandTopic,
+                   [&] { simulation_->command_ari_head_pan(last.positions[index]); });
+    }
   }
 
   void on_ground_truth(const nav_msgs::Odometry& truth) {
     if (simulation_->ari() == nullptr) {
       return;
     }
+    const geometry_msgs::Point& p = truth.pose.pose.position;
     const geometry_msgs::Quaternion& q = truth.pose.pose.orientation;
+    // Checked after the conversion: finite but huge components can still make a NaN yaw.
     const double yaw =
         std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-    simulation_->follow_ari({{truth.pose.pose.position.x, truth.pose.pose.position.y}, yaw},
-                            truth.twist.twist.linear.x, truth.twist.twist.angular.z);
+    const double linear = truth.twist.twist.linear.x;
+    const double angular = truth.twist.twist.angular.z;
+    bool ok = inputs_.finite(kGroundTruthTopic, "pose.position.x", p.x);
+    ok = inputs_.finite(kGroundTruthTopic, "pose.position.y", p.y) && ok;
+    ok = inputs_.finite(kGroundTruthTopic, "pose.orientation", yaw) && ok;
+    ok = inputs_.finite(kGroundTruthTopic, "twist.linear.x", linear) && ok;
+    ok = inputs_.finite(kGroundTruthTopic, "twist.angular.z", angular) && ok;
+    if (ok) {
+      simulation_->follow_ari({{p.x, p.y}, yaw}, linear, angular);
+    }
   }
 
   void on_joint_states(const sensor_msgs::JointState& state) {
     const auto joint = std::find(state.name.begin(), state.name.end(), kHeadPanJoint);
     const size_t index = static_cast<size_t>(joint - state.name.begin());
     if (simulation_->ari() != nullptr && joint != state.name.end() &&
-        index < state.position.size()) {
-      simulation_->command_ari_head_pan(state.position[index]);
+        index < state.position.size() &&
+        inputs_.finite(kJointStatesTopic, kJointPosition, state.position[index])) {
+      count_clamps(kJointStatesTopic,
+                   [&] { simulation_->command_ari_head_pan(state.position[index]); });
     }
-  }
-
-  world::Human& human(uint32_t id) {
-    world::Human* found = simulation_->find_human(id);
-    if (found == nullptr) {
-      throw core::RequestError("no human with id " + std::to_string(id));
-    }
-    return *found;
   }
 
   bool spawn_human(SpawnHuman::Request& req, SpawnHuman::Response& res) {
@@ -296,8 +372,9 @@ class WorldNode {
       if (!req.gender.empty()) {
         const auto gender = world::parse_gender(req.gender);
         if (!gender) {
-          throw core::RequestError("gender: expected female, male or non-identified, got '" +
-                                   req.gender + "'");
+          throw core::RequestError(
+              "spawn_human: gender: expected female, male or non-identified, got '" + req.gender +
+              "'");
         }
         spec.gender = *gender;
       }
@@ -305,8 +382,9 @@ class WorldNode {
       if (!req.emotion.empty()) {
         const auto emotion = world::parse_emotion(req.emotion);
         if (!emotion) {
-          throw core::RequestError("emotion: expected neutral, happy, angry or disturbed, got '" +
-                                   req.emotion + "'");
+          throw core::RequestError(
+              "spawn_human: emotion: expected neutral, happy, angry or disturbed, got '" +
+              req.emotion + "'");
         }
         spec.emotion = *emotion;
       }
@@ -324,20 +402,12 @@ class WorldNode {
 
   bool set_velocity(SetVelocity::Request& req, SetVelocity::Response& res) {
     return answer(res, [&] {
-      world::Human& h = human(req.id);
-      if (!std::isfinite(req.vx) || !std::isfinite(req.vy) || !std::isfinite(req.omega)) {
-        throw core::RequestError("velocity must be finite");
-      }
-      simulation_->release_from_group(req.id);
-      h.set_velocity({req.vx, req.vy}, req.omega);
+      simulation_->set_human_velocity(req.id, {req.vx, req.vy}, req.omega);
     });
   }
 
   bool set_pose(SetPose::Request& req, SetPose::Response& res) {
     return answer(res, [&] {
-      if (simulation_->find_human(req.id) != nullptr) {
-        simulation_->release_from_group(req.id);
-      }
       simulation_->set_pose(req.id, from_msg(req.pose));
       publish_state();
     });
@@ -363,11 +433,7 @@ class WorldNode {
 
   bool set_group_centre(SetGroupCentre::Request& req, SetGroupCentre::Response& res) {
     return answer(res, [&] {
-      world::GroupNavigation* group = simulation_->find_group(req.group_id);
-      if (group == nullptr) {
-        throw core::RequestError("no group with id " + std::to_string(req.group_id));
-      }
-      group->set_centre({req.centre.x, req.centre.y});
+      simulation_->set_group_centre(req.group_id, {req.centre.x, req.centre.y});
     });
   }
 
@@ -381,27 +447,24 @@ class WorldNode {
 
   bool set_gaze_targets(SetGazeTargets::Request& req, SetGazeTargets::Response& res) {
     return answer(res, [&] {
-      world::Human& h = human(req.id);
       if (req.targets.size() != req.probabilities.size()) {
-        throw core::RequestError("targets and probabilities must have the same length");
+        throw core::RequestError("set_gaze_targets: probabilities: expected one per target (" +
+                                 std::to_string(req.targets.size()) + "), got " +
+                                 std::to_string(req.probabilities.size()));
       }
       world::GazeModel model;
       for (size_t i = 0; i < req.targets.size(); ++i) {
-        if (simulation_->find_object(req.targets[i]) == nullptr || req.targets[i] == req.id) {
-          throw core::RequestError("gaze target " + std::to_string(req.targets[i]) +
-                                   " is not another object of the world");
-        }
         model.targets.push_back({req.targets[i], req.probabilities[i]});
       }
       model.mean_duration_s = req.mean_duration;
-      model.validate();
-      h.set_gaze_model(model);
+      simulation_->set_human_gaze(req.id, model);
     });
   }
 
   bool reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
     return answer(res, [&] {
       rebuild();
+      restart_pacing();
       publish_state();
       res.message = "reset to " + scene_.path;
     });
@@ -419,10 +482,13 @@ class WorldNode {
       if (!paused_) {
         throw core::RequestError("step needs a paused simulation (call /sim/pause true first)");
       }
-      if (req.steps == 0) {
-        throw core::RequestError("steps must be >= 1");
+      if (req.steps == 0 || req.steps > kMaxStepsPerRequest) {
+        throw core::RequestError(
+            "step: steps: expected an integer in [1, " + std::to_string(kMaxStepsPerRequest) +
+            "] per request (call again for more), got " + std::to_string(req.steps));
       }
-      for (uint32_t i = 0; i < req.steps; ++i) {
+      // Nothing else is served while this runs; SIGINT still ends it between two steps.
+      for (uint32_t i = 0; i < req.steps && ros::ok(); ++i) {
         step_once();
       }
       res.sim_time = simulation_->time_s();
@@ -437,9 +503,13 @@ class WorldNode {
   ros::WallTime last_clock_wall_;
   uint64_t reported_clamps_{0};
   ros::WallTime last_markers_;
+  double pacing_start_wall_s_{0.0};
+  double pacing_start_sim_s_{0.0};
+  InputCounters inputs_{"world_node"};
 
   ros::NodeHandle nh_;
-  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_, joint_states_pub_;
+  ros::Publisher clock_pub_, state_pub_, map_pub_, marker_pub_, odom_pub_, joint_states_pub_,
+      diagnostics_pub_;
   ros::Subscriber cmd_vel_sub_, head_sub_, ground_truth_sub_, joint_state_sub_;
   std::vector<ros::ServiceServer> services_;
   tf2_ros::TransformBroadcaster tf_;

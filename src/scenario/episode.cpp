@@ -68,11 +68,7 @@ class Episode::InProcessCommands : public Commands {
     world_.add_group_members(group, members);
   }
   void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) override {
-    world::GroupNavigation* found = world_.find_group(group);
-    if (found == nullptr) {
-      throw core::RequestError("no group with id " + std::to_string(group));
-    }
-    found->set_centre(centre);
+    world_.set_group_centre(group, centre);
   }
 
  private:

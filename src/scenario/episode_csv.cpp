@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
+
+#include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -24,6 +27,57 @@ std::string quoted(const std::string& text) {
     out += c == '"' ? std::string("\"\"") : std::string(1, c);
   }
   return out + "\"";
+}
+
+// One CSV record: its fields unquoted, and where it ends (after its newline). A quoted field may
+// hold commas, doubled quotes and newlines, as quoted() writes them.
+struct CsvRecord {
+  std::vector<std::string> fields;
+  size_t end{0};
+  bool complete{false};  // ended by a newline outside quotes
+};
+
+CsvRecord read_record(const std::string& text, size_t from) {
+  CsvRecord record;
+  std::string field;
+  bool in_quotes = false;
+  size_t i = from;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_quotes) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      in_quotes = true;
+    } else if (c == ',') {
+      record.fields.push_back(field);
+      field.clear();
+    } else if (c == '\n') {
+      record.complete = true;
+      ++i;
+      break;
+    } else {
+      field += c;
+    }
+  }
+  record.fields.push_back(field);
+  record.end = i;
+  return record;
+}
+
+bool read_unsigned(const std::string& text, uint64_t& value) {
+  if (text.empty() || text.size() > 19 ||
+      text.find_first_not_of("0123456789") != std::string::npos) {
+    return false;
+  }
+  value = std::stoull(text);
+  return true;
 }
 
 }  // namespace
@@ -71,6 +125,54 @@ std::string csv_row(const EpisodeSummary& s) {
          number(m.navigation_time_s) + "," + std::to_string(m.navigation_goals) + "," +
          std::to_string(m.navigation_failures) + "," + std::to_string(s.utterances) + "," +
          std::to_string(s.ari_utterances) + "," + number(s.wall_time_s, 4);
+}
+
+EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& source) {
+  EpisodeCsvContents contents;
+  const std::string header = csv_header() + "\n";
+  if (text.size() < header.size() && header.compare(0, text.size(), text) == 0) {
+    contents.partial_row = !text.empty();
+    return contents;  // nothing, or the header cut short
+  }
+  if (text.compare(0, header.size(), header) != 0) {
+    throw core::ConfigError(source + ":1: expected the header " + csv_header() +
+                            " (the columns of this version), got another");
+  }
+  const size_t columns = read_record(header, 0).fields.size();
+  contents.complete_bytes = header.size();
+  std::set<uint64_t> episodes;
+  size_t line = 2;
+  for (size_t at = header.size(); at < text.size(); ++line) {
+    const CsvRecord record = read_record(text, at);
+    if (!record.complete) {
+      contents.partial_row = true;
+      break;
+    }
+    const std::string where = source + ":" + std::to_string(line) + ": ";
+    EpisodeCsvRow row;
+    if (record.fields.size() != columns) {
+      throw core::ConfigError(where + "expected " + std::to_string(columns) + " columns, got " +
+                              std::to_string(record.fields.size()));
+    }
+    row.scenario = record.fields[0];
+    if (!read_unsigned(record.fields[1], row.episode) ||
+        !read_unsigned(record.fields[2], row.seed)) {
+      throw core::ConfigError(where + "expected an episode and a seed as integers, got '" +
+                              record.fields[1] + "' and '" + record.fields[2] + "'");
+    }
+    if (!episodes.insert(row.episode).second) {
+      throw core::ConfigError(where + "episode " + std::to_string(row.episode) +
+                              " has a row already");
+    }
+    // A quoted field may span lines: count them all.
+    for (size_t i = at; i + 1 < record.end; ++i) {
+      line += text[i] == '\n' ? 1 : 0;
+    }
+    contents.rows.push_back(row);
+    contents.complete_bytes = record.end;
+    at = record.end;
+  }
+  return contents;
 }
 
 }  // namespace ari_social_sim::scenario

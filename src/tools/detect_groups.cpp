@@ -1,14 +1,13 @@
 // detect_groups: runs the GCFF F-formation detector over a recorded data set (CSV), and optionally
 // scores it against ground truth with the protocol of specs/algorithms.md 1.4.
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/fformation_dataset.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
@@ -44,8 +43,13 @@ groups are numbered 0, 1, ... within each frame.
                     members: 2/3 (default) or 1.
   --help            print this text.
 
-Exit status: 0 on success, 2 on bad arguments or unreadable or malformed files.
+Exit status: 0 on success, 2 on bad arguments or unreadable or malformed files, 1 when the
+output cannot be written.
 )";
+
+// Any finite positive number: the unit is the data set's.
+const core::NumberOption kStride{"--stride", core::positive()};
+const core::NumberOption kMdl{"--mdl", core::positive()};
 
 struct Options {
   std::string features;
@@ -55,15 +59,6 @@ struct Options {
   std::string frames;
   double threshold{perception::kMatchTwoThirds};
 };
-
-double parse_number(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(value)) {
-    throw core::ConfigError(option + ": expected a number, got \"" + text + "\"");
-  }
-  return value;
-}
 
 double parse_threshold(const std::string& text) {
   if (text == "2/3") {
@@ -89,16 +84,13 @@ std::optional<Options> parse_options(int argc, char** argv) {
     if (!known) {
       throw core::ConfigError("unknown option \"" + option + "\"");
     }
-    if (a + 1 >= argc) {
-      throw core::ConfigError(option + ": expected a value");
-    }
-    const std::string value = argv[++a];
+    const std::string value = core::option_value(argc, argv, a);
     if (option == "--features") {
       options.features = value;
     } else if (option == "--stride") {
-      options.stride = parse_number(option, value);
+      options.stride = kStride.parse(value);
     } else if (option == "--mdl") {
-      options.mdl = parse_number(option, value);
+      options.mdl = kMdl.parse(value);
     } else if (option == "--evaluate") {
       options.ground_truth = value;
     } else if (option == "--frames") {
@@ -117,9 +109,15 @@ std::optional<Options> parse_options(int argc, char** argv) {
   if (threshold_given && options.ground_truth.empty()) {
     throw core::ConfigError("--threshold needs --evaluate");
   }
+  core::check_input_file("--features", options.features);
+  if (!options.ground_truth.empty()) {
+    core::check_input_file("--evaluate", options.ground_truth);
+    core::check_input_file("--frames", options.frames);
+  }
   return options;
 }
 
+// Throws core::Error when standard output takes less than everything (a full disk, a closed pipe).
 void write_groups(const perception::GroupTable& detected) {
   std::string out = "frame,group,person_id\n";
   for (const auto& [frame, groups] : detected) {
@@ -129,7 +127,9 @@ void write_groups(const perception::GroupTable& detected) {
       }
     }
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
+  if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
+    throw core::Error("standard output: writing the groups failed");
+  }
 }
 
 int run(const Options& options) {
@@ -153,7 +153,11 @@ int run(const Options& options) {
   }
   const perception::EvaluationScore score =
       perception::evaluate_groups(detected, truth, frames, options.threshold);
-  std::printf("precision %.3f recall %.3f f1 %.3f\n", score.precision, score.recall, score.f1);
+  if (std::printf("precision %.3f recall %.3f f1 %.3f\n", score.precision, score.recall, score.f1) <
+          0 ||
+      std::fflush(stdout) != 0) {
+    throw core::Error("standard output: writing the score failed");
+  }
   return 0;
 }
 
@@ -167,8 +171,11 @@ int main(int argc, char** argv) {
       return 0;
     }
     return run(*options);
-  } catch (const core::Error& e) {
+  } catch (const core::ConfigError& e) {
     std::cerr << "detect_groups: " << e.what() << "\n(see detect_groups --help)\n";
     return kUsageError;
+  } catch (const core::Error& e) {
+    std::cerr << "detect_groups: " << e.what() << "\n";
+    return 1;
   }
 }

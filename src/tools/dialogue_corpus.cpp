@@ -2,19 +2,23 @@
 // patient and companion and writes one JSON object per utterance (JSON lines).
 //
 //   dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE] [--corpus DIR]
-//                   [--nlg template|retrieval] [--compare] [--report FILE.md]
+//                   [--nlg template|retrieval] [--compare] [--report FILE.md] [--overwrite]
 //
 // --config defaults to <source>/config/dialogue/simulation.yaml; --corpus (the MPGT corpus used by
 // retrieval NLG and --compare) to <source>/../shared/dialogue/mpgt. --compare prints the
 // comparison with MPGT (intent JS divergence, human-to-human share, lengths, complete and success
-// rates) as Markdown, also to --report when given. Exit code 2 on bad input.
+// rates) as Markdown, also to --report when given. Outputs are checked before the first dialogue
+// (an existing one needs --overwrite) and appear under their names only when complete. Exit code
+// 2 on bad input, 1 when writing fails.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/dialogue/dialogue_runner.hpp"
 #include "ari_social_sim/dialogue/dialogue_stats.hpp"
 #include "ari_social_sim/dialogue/json_lines.hpp"
@@ -24,21 +28,29 @@ namespace {
 using namespace ari_social_sim;
 using namespace ari_social_sim::dialogue;
 
+// The documented ranges (README, docs/dialogue.md): 100 000 dialogues are about 3 million JSON
+// lines, 1 GB; any seed that fits a signed 64-bit integer.
+constexpr core::IntegerOption kDialogues{"--dialogues", 1, 100000};
+constexpr core::IntegerOption kSeed{"--seed", 0, INT64_MAX};
+
 struct Options {
-  unsigned long dialogues{0};
-  unsigned long long seed{0};
+  int64_t dialogues{0};
+  int64_t seed{0};
   std::string out;
   std::string config = default_dialogue_config_dir() + "/simulation.yaml";
   std::string corpus;
   std::string nlg;
   std::string report;
   bool compare{false};
+  bool overwrite{false};
 };
 
 void print_usage() {
   std::cerr << "usage: dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE]\n"
                "                       [--corpus DIR] [--nlg template|retrieval] [--compare]\n"
-               "                       [--report FILE.md]\n"
+               "                       [--report FILE.md] [--overwrite]\n"
+            << "  N in " << kDialogues.range() << ", S in " << kSeed.range() << "\n"
+            << "  --out and --report must not exist yet unless --overwrite\n"
             << "  --config defaults to " << default_dialogue_config_dir() << "/simulation.yaml\n"
             << "  --corpus defaults to " << default_mpgt_dir() << "\n";
 }
@@ -53,38 +65,51 @@ Options parse_options(int argc, char** argv) {
       options.compare = true;
       continue;
     }
-    if (i + 1 >= argc) {
-      throw core::ConfigError("command line: " + arg + ": expected a value after it");
+    if (arg == "--overwrite") {
+      options.overwrite = true;
+      continue;
     }
-    const std::string value = argv[++i];
-    try {
-      if (arg == "--dialogues") {
-        options.dialogues = std::stoul(value);
-        have_dialogues = true;
-      } else if (arg == "--seed") {
-        options.seed = std::stoull(value);
-        have_seed = true;
-      } else if (arg == "--out") {
-        options.out = value;
-      } else if (arg == "--config") {
-        options.config = value;
-      } else if (arg == "--corpus") {
-        options.corpus = value;
-      } else if (arg == "--nlg") {
-        options.nlg = value;
-      } else if (arg == "--report") {
-        options.report = value;
-      } else {
-        throw core::ConfigError("command line: unknown option " + arg);
-      }
-    } catch (const std::logic_error&) {
-      throw core::ConfigError("command line: " + arg + ": expected a non-negative integer, got '" +
-                              value + "'");
+    const std::string value = core::option_value(argc, argv, i);
+    if (arg == "--dialogues") {
+      options.dialogues = kDialogues.parse(value);
+      have_dialogues = true;
+    } else if (arg == "--seed") {
+      options.seed = kSeed.parse(value);
+      have_seed = true;
+    } else if (arg == "--out") {
+      options.out = value;
+    } else if (arg == "--config") {
+      options.config = value;
+    } else if (arg == "--corpus") {
+      options.corpus = value;
+    } else if (arg == "--nlg") {
+      options.nlg = value;
+    } else if (arg == "--report") {
+      options.report = value;
+    } else {
+      throw core::ConfigError("unknown option " + arg);
     }
   }
   if (!have_dialogues || !have_seed || (options.out.empty() && !options.compare)) {
-    throw core::ConfigError(
-        "command line: --dialogues, --seed and --out (or --compare) are required");
+    throw core::ConfigError("--dialogues, --seed and --out (or --compare) are required");
+  }
+  if (!options.report.empty() && !options.compare) {
+    throw core::ConfigError("--report: the report is the comparison's: expected --compare too");
+  }
+  // Paths before any work: a typo must not cost the run.
+  core::check_input_file("--config", options.config);
+  if (!options.corpus.empty()) {
+    core::check_input_directory("--corpus", options.corpus);
+  }
+  if (!options.out.empty()) {
+    core::check_output_file("--out", options.out, options.overwrite);
+  }
+  if (!options.report.empty()) {
+    core::check_output_file("--report", options.report, options.overwrite);
+  }
+  if (!options.out.empty() && options.out == options.report) {
+    throw core::ConfigError("--out and --report: expected two files, got " + options.out +
+                            " twice");
   }
   return options;
 }
@@ -174,48 +199,58 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
+  Options options;
+  std::unique_ptr<const DialogueSetup> setup;
+  std::unique_ptr<core::OutputFile> out;
   try {
-    const Options options = parse_options(argc, argv);
+    options = parse_options(argc, argv);
     DialogueConfig config = DialogueConfig::load(options.config);
     if (!options.corpus.empty()) {
       config.corpus_dir = options.corpus;
     }
     if (!options.nlg.empty()) {
-      config.nlg = parse_nlg_mode(options.nlg, "command line: --nlg");
+      config.nlg = parse_nlg_mode(options.nlg, "--nlg");
     }
-    const auto setup = DialogueSetup::create(config);
+    setup = DialogueSetup::create(config);
+    if (!options.out.empty()) {
+      out = std::make_unique<core::OutputFile>("--out", options.out);
+    }
+  } catch (const core::Error& e) {
+    std::cerr << "dialogue_corpus: " << e.what() << "\n";
+    print_usage();
+    return 2;
+  }
+  try {
     DialogueEnv env(*setup);
     RulePolicy policy(setup->domain);
-    std::ofstream out;
-    if (!options.out.empty()) {
-      out.open(options.out);
-      if (!out) {
-        throw core::ConfigError(options.out + ": cannot write the file");
-      }
-    }
     std::vector<EpisodeRecord> episodes;
-    for (unsigned long d = 0; d < options.dialogues; ++d) {
-      EpisodeRecord episode = run_episode(env, policy, episode_seed(options.seed, d));
-      if (out.is_open()) {
+    for (int64_t d = 0; d < options.dialogues; ++d) {
+      EpisodeRecord episode =
+          run_episode(env, policy, episode_seed(static_cast<uint64_t>(options.seed), d));
+      if (out) {
         for (const Utterance& u : episode.utterances) {
-          out << utterance_json(static_cast<int>(d), u) << '\n';
+          out->stream() << utterance_json(static_cast<int>(d), u) << '\n';
         }
       }
       if (options.compare) {
         episodes.push_back(std::move(episode));
       }
     }
+    if (out) {
+      out->commit();
+    }
     if (options.compare) {
       const std::string text = comparison(options, episodes, setup->corpus);
-      std::cout << text;
+      std::cout << text << std::flush;
       if (!options.report.empty()) {
-        std::ofstream report(options.report);
-        report << text;
+        core::OutputFile report("--report", options.report);
+        report.stream() << text;
+        report.commit();
       }
     }
   } catch (const core::Error& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
+    std::cerr << "dialogue_corpus: " << e.what() << "\n";
+    return 1;
   }
   return 0;
 }

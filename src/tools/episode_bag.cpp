@@ -5,6 +5,9 @@
 #include <tf2_msgs/TFMessage.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
+#include <cstdio>
+#include <filesystem>
+
 #include "../nodes/conversions/ari_base.hpp"
 #include "../nodes/conversions/dialogue.hpp"
 #include "../nodes/conversions/hri_messages.hpp"
@@ -17,20 +20,51 @@ namespace ari_social_sim::tools {
 
 template <class Message>
 void EpisodeBag::write(const std::string& topic, double stamp_s, const Message& message) {
-  bag_.write(topic, ros::Time(stamp_s), message);
+  try {
+    bag_.write(topic, ros::Time(stamp_s), message);
+  } catch (const rosbag::BagException& e) {
+    throw core::Error(active_path(path_) + ": cannot write the bag: " + e.what());
+  }
+}
+
+std::string EpisodeBag::active_path(const std::string& path) {
+  return path + ".active";
 }
 
 EpisodeBag::EpisodeBag(const std::string& path, const std::string& scenario_name)
-    : scenario_name_(scenario_name) {
+    : path_(path), scenario_name_(scenario_name) {
   try {
-    bag_.open(path, rosbag::bagmode::Write);
+    bag_.open(active_path(path_), rosbag::bagmode::Write);
   } catch (const rosbag::BagException& e) {
-    throw core::RequestError(path + ": cannot write the bag: " + e.what());
+    throw core::Error(active_path(path_) + ": cannot write the bag: " + e.what());
   }
 }
 
 EpisodeBag::~EpisodeBag() {
-  bag_.close();
+  if (finished_) {
+    return;
+  }
+  try {
+    bag_.close();
+  } catch (const rosbag::BagException&) {
+    // Deleted below either way.
+  }
+  std::remove(active_path(path_).c_str());
+}
+
+void EpisodeBag::finish() {
+  try {
+    bag_.close();
+  } catch (const rosbag::BagException& e) {
+    throw core::Error(active_path(path_) + ": cannot close the bag: " + e.what());
+  }
+  std::error_code error;
+  std::filesystem::rename(active_path(path_), path_, error);
+  if (error) {
+    throw core::Error(path_ + ": cannot rename " + active_path(path_) + " to it (" +
+                      error.message() + ")");
+  }
+  finished_ = true;
 }
 
 void EpisodeBag::record_step(const scenario::Episode& episode) {

@@ -1,24 +1,36 @@
 // fit_dialogue_model: fits P(user act | context) per role to the MPGT corpus and writes the
 // user model YAML the dialogue simulation loads (config/dialogue/mpgt_user_model.yaml).
 //
-//   fit_dialogue_model [--corpus DIR] [--out FILE] [--min-row-count N] [--prior-weight W]
+//   fit_dialogue_model [--corpus DIR] [--out FILE [--overwrite]] [--min-row-count N]
+//                      [--prior-weight W]
 //
 // --corpus defaults to the build-time ARI_MPGT_DIR, <source>/../shared/dialogue/mpgt.
-// Without --out the model goes to stdout. Exit code 2 on bad input, with the reason on stderr.
-#include <fstream>
+// Without --out the model goes to stdout; an existing --out is replaced only with --overwrite,
+// and only once the model is complete. Exit code 2 on bad input, with the reason on stderr; 1
+// when writing fails.
 #include <iostream>
 #include <string>
 
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/dialogue/model_fitting.hpp"
 
 namespace {
 
 using namespace ari_social_sim;
 
+// The documented ranges (README, docs/dialogue.md). MPGT has under 800 utterances, so a row
+// count above 100 000 would send every context to the marginal row; a prior above 10^6
+// pseudo-counts drowns any corpus.
+constexpr core::IntegerOption kMinRowCount{"--min-row-count", 1, 100000};
+const core::NumberOption kPriorWeight{"--prior-weight", core::between(0.0, 1e6)};
+
 void print_usage() {
-  std::cerr << "usage: fit_dialogue_model [--corpus DIR] [--out FILE] [--min-row-count N] "
-               "[--prior-weight W]\n"
+  std::cerr << "usage: fit_dialogue_model [--corpus DIR] [--out FILE [--overwrite]] "
+               "[--min-row-count N] [--prior-weight W]\n"
+            << "  N in " << kMinRowCount.range() << " (default 10), W in "
+            << kPriorWeight.bounds.describe() << " (default 5)\n"
             << "  --corpus defaults to " << dialogue::default_mpgt_dir() << "\n";
 }
 
@@ -27,7 +39,9 @@ void print_usage() {
 int main(int argc, char** argv) {
   std::string corpus_dir = dialogue::default_mpgt_dir();
   std::string out_path;
+  bool overwrite = false;
   dialogue::FitOptions options;
+  dialogue::MpgtCorpus corpus;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -35,44 +49,56 @@ int main(int argc, char** argv) {
         print_usage();
         return 0;
       }
-      if (i + 1 >= argc) {
-        throw core::ConfigError("command line: " + arg + ": expected a value after it");
+      if (arg == "--overwrite") {
+        overwrite = true;
+        continue;
       }
-      const std::string value = argv[++i];
+      const std::string value = core::option_value(argc, argv, i);
       if (arg == "--corpus") {
         corpus_dir = value;
       } else if (arg == "--out") {
         out_path = value;
       } else if (arg == "--min-row-count") {
-        options.min_row_count = static_cast<unsigned>(std::stoul(value));
+        options.min_row_count = static_cast<unsigned>(kMinRowCount.parse(value));
       } else if (arg == "--prior-weight") {
-        options.prior_weight = std::stod(value);
+        options.prior_weight = kPriorWeight.parse(value);
       } else {
-        throw core::ConfigError("command line: unknown option " + arg);
+        throw core::ConfigError("unknown option " + arg);
       }
     }
-    const dialogue::MpgtCorpus corpus = dialogue::load_mpgt_corpus(corpus_dir);
+    if (overwrite && out_path.empty()) {
+      throw core::ConfigError("--overwrite: expected --out too (standard output is not replaced)");
+    }
+    core::check_input_directory("--corpus", corpus_dir);
+    if (!out_path.empty()) {
+      core::check_output_file("--out", out_path, overwrite);
+    }
+    corpus = dialogue::load_mpgt_corpus(corpus_dir);
+  } catch (const core::Error& e) {
+    std::cerr << "fit_dialogue_model: " << e.what() << "\n";
+    print_usage();
+    return 2;
+  }
+  try {
     const dialogue::UserModel model = dialogue::fit_user_model(corpus, options);
     if (out_path.empty()) {
       model.write(std::cout);
-    } else {
-      std::ofstream out(out_path);
-      if (!out) {
-        throw core::ConfigError(out_path + ": cannot write the file");
+      std::cout.flush();
+      if (!std::cout) {
+        throw core::Error("standard output: writing the model failed");
       }
-      model.write(out);
+    } else {
+      core::OutputFile out("--out", out_path);
+      model.write(out.stream());
+      out.commit();
     }
     std::cerr << "fitted " << model.roles.size() << " roles on " << corpus.dialogues.size()
               << " conversations (" << corpus.utterance_count() << " utterances, "
               << corpus.act_repairs << " acts with repaired brackets, "
               << corpus.skipped_goal_labels << " unreadable goal labels)\n";
   } catch (const core::Error& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const std::logic_error& e) {
-    std::cerr << "command line: expected a number: " << e.what() << "\n";
-    print_usage();
-    return 2;
+    std::cerr << "fit_dialogue_model: " << e.what() << "\n";
+    return 1;
   }
   return 0;
 }

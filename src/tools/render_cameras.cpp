@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/world/world_file.hpp"
@@ -19,15 +20,17 @@ using namespace ari_social_sim;
 constexpr int kUsageError = 2;
 
 constexpr const char* kUsage = R"(Usage:
-  render_cameras --world WORLD_YAML --out DIR
+  render_cameras --world WORLD_YAML --out DIR [--overwrite]
 
 Renders ARI's head camera, torso RGB-D camera (colour and depth), front and rear fisheyes and the
 T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world and four people
 around it, and writes DIR/camera_head.png, camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m
 false-coloured, black where invalid), camera_fisheye_front.png, camera_fisheye_rear.png,
-camera_t265_fisheye1.png and camera_t265_fisheye2.png.
+camera_t265_fisheye1.png and camera_t265_fisheye2.png. DIR is created when missing; pictures
+already there are replaced only with --overwrite (checked before rendering).
 
-Exit status: 0 on success, 2 on bad arguments or an unreadable world, 1 when rendering fails.
+Exit status: 0 on success, 2 on bad arguments, an unreadable world or an output folder that
+cannot be written, 1 when rendering or writing a picture fails.
 )";
 
 // File name of each camera's picture.
@@ -64,17 +67,33 @@ cv::Mat false_colour(const cv::Mat& depth_m) {
 }
 
 void write_png(const std::string& path, const cv::Mat& bgr) {
-  if (!cv::imwrite(path, bgr)) {
-    throw core::Error("cannot write " + path);
+  bool written = false;
+  try {
+    written = cv::imwrite(path, bgr);
+  } catch (const cv::Exception& e) {
+    throw core::Error(path + ": cannot write the picture: " + e.what());
+  }
+  if (!written) {
+    throw core::Error(path + ": cannot write the picture");
   }
   std::printf("wrote %s (%dx%d)\n", path.c_str(), bgr.cols, bgr.rows);
 }
 
-int run(const std::string& world_path, const std::string& out_dir) {
+int run(const std::string& world_path, const std::string& out_dir, bool overwrite) {
+  core::check_input_file("--world", world_path);
   const world::WorldDescription world = world::load_world_file(world_path);
   physics::CameraRigConfig config;
   for (physics::CameraSpec& spec : config.cameras) {
     spec.enabled = true;
+  }
+  // Every picture's place is checked before the renderer starts.
+  core::prepare_output_directory("--out", out_dir);
+  std::vector<std::string> pictures{out_dir + "/camera_torso_depth.png"};
+  for (const physics::CameraSpec& spec : config.cameras) {
+    pictures.push_back(out_dir + "/" + picture_name(spec.name) + ".png");
+  }
+  for (const std::string& picture : pictures) {
+    core::check_output_file("--out", picture, overwrite);
   }
   physics::CameraRig rig(config);
   std::printf("renderer: %s\n", rig.renderer().device_name().c_str());
@@ -114,28 +133,28 @@ int run(const std::string& world_path, const std::string& out_dir) {
 
 int main(int argc, char** argv) {
   std::string world_path, out_dir;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    if ((arg == "--world" || arg == "--out") && i + 1 < argc) {
-      (arg == "--world" ? world_path : out_dir) = argv[++i];
-    } else {
-      std::fprintf(stderr, "render_cameras: unknown or incomplete argument '%s'\n%s", arg.c_str(),
-                   kUsage);
-      return kUsageError;
-    }
-  }
-  if (world_path.empty() || out_dir.empty()) {
-    std::fprintf(stderr, "render_cameras: --world and --out are required\n%s", kUsage);
-    return kUsageError;
-  }
+  bool overwrite = false;
   try {
-    return run(world_path, out_dir);
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--help") {
+        std::fputs(kUsage, stdout);
+        return 0;
+      }
+      if (arg == "--overwrite") {
+        overwrite = true;
+      } else if (arg == "--world" || arg == "--out") {
+        (arg == "--world" ? world_path : out_dir) = core::option_value(argc, argv, i);
+      } else {
+        throw core::ConfigError("unknown argument '" + arg + "'");
+      }
+    }
+    if (world_path.empty() || out_dir.empty()) {
+      throw core::ConfigError("--world and --out are required");
+    }
+    return run(world_path, out_dir, overwrite);
   } catch (const core::ConfigError& error) {
-    std::fprintf(stderr, "render_cameras: %s\n", error.what());
+    std::fprintf(stderr, "render_cameras: %s\n(see render_cameras --help)\n", error.what());
     return kUsageError;
   } catch (const core::Error& error) {
     std::fprintf(stderr, "render_cameras: %s\n", error.what());

@@ -3,22 +3,34 @@
 // of metrics per episode, with a progress line on standard error.
 //
 //   run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] [--out DIR]
-//                [--no-bags]
+//                [--no-bags] [--overwrite | --resume]
 //
 // Episode i runs with seed S + i (S defaults to the scenario file's seed), so that it can be
 // replayed live with `roslaunch ari_social_sim NAME.launch seed:=S+i`. --shard K/N runs the
-// episodes with i % N == K - 1 (K from 1), for job arrays. Files: DIR/NAME_SEED.bag and
-// DIR/NAME.csv (DIR/NAME_shardK-of-N.csv with --shard). Exit code 2 on bad input.
+// episodes with i % N == K - 1 (K from 1), for job arrays. Files: DIR/NAME_SEED.bag,
+// DIR/NAME.csv and the settings they were made with, DIR/NAME.settings.yaml (DIR/NAME_shardK-of-N.*
+// with --shard). An existing output is refused unless --overwrite (replaces it) or --resume
+// (checks the settings, keeps the rows there and runs the missing episodes). Each bag is written
+// as NAME_SEED.bag.active and renamed when complete; SIGINT or SIGTERM stops between two steps,
+// drops the episode under way (its .active file deleted, no row) and exits with 128 + the
+// signal's number. Exit code 2 on bad input, 1 when writing fails (docs/scenario.md, section 6).
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/scenario/batch_plan.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
 #include "ari_social_sim/scenario/episode_csv.hpp"
@@ -28,68 +40,84 @@
 namespace {
 
 using namespace ari_social_sim;
-constexpr char kSource[] = "command line";
+namespace fs = std::filesystem;
+
+// The documented ranges (README, docs/scenario.md): a million episodes take a day or more at the
+// fastest scenario's 600 per minute, and a terabyte of bags; seeds are scene seeds, below 2^31.
+constexpr core::IntegerOption kEpisodes{"--episodes", 1, 1000000};
+constexpr core::IntegerOption kSeed{"--seed", 0, 2147483647};
+
+// Set by the SIGINT/SIGTERM handler, read between steps: a signal handler may do nothing but set
+// a flag of this type, hence the one global of the program.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void on_stop_signal(int signal) {
+  g_stop_signal = signal;
+}
 
 struct Options {
   std::string scenario;
   scenario::BatchPlan plan;
+  bool episodes_given{false};
   bool seed_given{false};
   std::string out{"episodes"};
   bool bags{true};
+  bool overwrite{false};
+  bool resume{false};
 };
 
 void print_usage() {
   std::cerr << "usage: run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
-               "                    [--out DIR] [--no-bags]\n"
-            << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n";
-}
-
-uint64_t parse_count(const std::string& flag, const std::string& text) {
-  try {
-    size_t used = 0;
-    const unsigned long long value = std::stoull(text, &used);
-    if (used == text.size() && text[0] != '-') {
-      return value;
-    }
-  } catch (const std::exception&) {
-  }
-  throw core::ConfigError(std::string(kSource) + ": " + flag +
-                          ": expected a non-negative integer, got '" + text + "'");
+               "                    [--out DIR] [--no-bags] [--overwrite | --resume]\n"
+            << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n"
+            << "  N in " << kEpisodes.range() << ", S in " << kSeed.range()
+            << " (the last seed, S + N - 1, too)\n"
+               "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
+               "  --resume (finish it: same settings, --episodes and --seed default to its own)\n";
 }
 
 Options parse_options(int argc, char** argv) {
   Options options;
-  bool have_episodes = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--no-bags") {
       options.bags = false;
       continue;
     }
-    if (i + 1 >= argc) {
-      throw core::ConfigError(std::string(kSource) + ": " + arg + ": expected a value after it");
+    if (arg == "--overwrite") {
+      options.overwrite = true;
+      continue;
     }
-    const std::string value = argv[++i];
+    if (arg == "--resume") {
+      options.resume = true;
+      continue;
+    }
+    const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
     } else if (arg == "--episodes") {
-      options.plan.episodes = parse_count(arg, value);
-      have_episodes = true;
+      options.plan.episodes = static_cast<uint64_t>(kEpisodes.parse(value));
+      options.episodes_given = true;
     } else if (arg == "--seed") {
-      options.plan.first_seed = parse_count(arg, value);
+      options.plan.first_seed = static_cast<uint64_t>(kSeed.parse(value));
       options.seed_given = true;
     } else if (arg == "--shard") {
-      scenario::parse_shard(value, kSource, options.plan);
+      scenario::parse_shard(value, "", options.plan);
     } else if (arg == "--out") {
       options.out = value;
     } else {
-      throw core::ConfigError(std::string(kSource) + ": " + arg +
+      throw core::ConfigError(arg +
                               ": expected one of --scenario, --episodes, --seed, --shard, --out, "
-                              "--no-bags");
+                              "--no-bags, --overwrite, --resume");
     }
   }
-  if (options.scenario.empty() || !have_episodes) {
-    throw core::ConfigError(std::string(kSource) + ": expected --scenario and --episodes");
+  if (options.scenario.empty() || (!options.episodes_given && !options.resume)) {
+    throw core::ConfigError(
+        "expected --scenario and --episodes (--episodes may be left out with "
+        "--resume)");
+  }
+  if (options.overwrite && options.resume) {
+    throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
   }
   return options;
 }
@@ -102,44 +130,278 @@ std::string scenario_path(const std::string& scenario) {
   return scenario;
 }
 
-}  // namespace
+// Every YAML file under the configuration folder, sorted: what the episodes may read.
+std::vector<std::string> config_files() {
+  std::vector<std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(ARI_CONFIG_DIR)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml") {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
-int main(int argc, char** argv) {
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The files of one run (one shard) in DIR.
+struct OutputPaths {
+  std::string dir;
+  std::string stem;  // NAME or NAME_shardK-of-N
+  std::string name;  // NAME: bags are NAME_SEED.bag whatever the shard
+
+  std::string csv() const { return dir + "/" + stem + ".csv"; }
+  std::string settings() const { return dir + "/" + stem + ".settings.yaml"; }
+  std::string bag(uint64_t seed) const {
+    return dir + "/" + name + "_" + std::to_string(seed) + ".bag";
+  }
+};
+
+// What the run would write that is there already, in words: the CSV, its settings, bags of its
+// seeds (finished or .active); empty when nothing is.
+std::string existing_outputs(const OutputPaths& paths, const std::vector<uint64_t>& seeds) {
+  std::string found;
+  for (const std::string& path : {paths.csv(), paths.settings()}) {
+    if (fs::exists(path)) {
+      found += (found.empty() ? "" : ", ") + path;
+    }
+  }
+  size_t bags = 0;
+  for (uint64_t seed : seeds) {
+    bags +=
+        fs::exists(paths.bag(seed)) || fs::exists(tools::EpisodeBag::active_path(paths.bag(seed)))
+            ? 1
+            : 0;
+  }
+  if (bags > 0) {
+    found += (found.empty() ? "" : ", ") + std::to_string(bags) + " bags of its seeds";
+  }
+  return found;
+}
+
+// --overwrite: removes the earlier run's CSV, settings and bags (those its rows name, and any of
+// this run's seeds, finished or .active) and, when `say`, what went.
+void remove_earlier_run(const OutputPaths& paths, const std::vector<uint64_t>& seeds, bool say) {
+  std::set<uint64_t> bag_seeds(seeds.begin(), seeds.end());
+  size_t rows = 0;
+  if (fs::exists(paths.csv())) {
+    try {
+      const scenario::EpisodeCsvContents earlier =
+          scenario::read_episode_csv(read_file(paths.csv()), paths.csv());
+      rows = earlier.rows.size();
+      for (const scenario::EpisodeCsvRow& row : earlier.rows) {
+        bag_seeds.insert(row.seed);
+      }
+    } catch (const core::ConfigError&) {
+      // Not a CSV of ours: only the bags of this run's seeds are known to be its.
+    }
+  }
+  size_t bags = 0;
+  for (uint64_t seed : bag_seeds) {
+    bags += fs::remove(paths.bag(seed)) ? 1 : 0;
+    fs::remove(tools::EpisodeBag::active_path(paths.bag(seed)));
+  }
+  const bool had_csv = fs::remove(paths.csv());
+  fs::remove(paths.settings());
+  if (!say) {
+    return;
+  }
+  std::cerr << "--overwrite: removed "
+            << (had_csv ? paths.csv() + " (" + std::to_string(rows) + " rows), " : std::string())
+            << "its settings and " << bags << " bags of the earlier run\n";
+}
+
+// --resume: checks the earlier run (its settings `there`, if any) against this one's and returns
+// the rows to keep; cuts a row left half-written off the CSV and deletes the .active files of
+// episodes to redo. Throws core::ConfigError naming every difference.
+std::vector<scenario::EpisodeCsvRow> resume_earlier_run(
+    const OutputPaths& paths, const std::optional<scenario::BatchSettings>& there,
+    const scenario::BatchSettings& now, bool& csv_has_header) {
+  if (!there) {
+    throw core::ConfigError("--resume: " + paths.csv() + " has no settings file " +
+                            paths.settings() +
+                            " to check it was made with these settings; pass --overwrite to "
+                            "start again");
+  }
+  const std::vector<std::string> differences = there->differences(now);
+  if (!differences.empty()) {
+    std::string text;
+    for (const std::string& line : differences) {
+      text += "\n  " + line;
+    }
+    throw core::ConfigError(
+        "--resume: " + paths.csv() + " was made with other settings (" + paths.settings() +
+        "):" + text + "\npass the same options, --overwrite to start again, or another --out");
+  }
+  const scenario::EpisodeCsvContents contents =
+      scenario::read_episode_csv(read_file(paths.csv()), paths.csv());
+  const std::vector<uint64_t> planned = now.plan.episode_indices();
+  const std::set<uint64_t> plan(planned.begin(), planned.end());
+  for (const scenario::EpisodeCsvRow& row : contents.rows) {
+    if (row.scenario != now.scenario || plan.count(row.episode) == 0 ||
+        row.seed != now.plan.seed_of(row.episode)) {
+      throw core::ConfigError("--resume: " + paths.csv() + ": the row of episode " +
+                              std::to_string(row.episode) + " (scenario " + row.scenario +
+                              ", seed " + std::to_string(row.seed) + ") is not one of this run's " +
+                              std::to_string(now.plan.episodes) +
+                              " episodes; pass --episodes with at least as many as there");
+    }
+  }
+  if (contents.partial_row) {
+    fs::resize_file(paths.csv(), contents.complete_bytes);
+    std::cerr << "--resume: " << paths.csv()
+              << " ended in a row cut short (a run killed while writing it): removed it\n";
+  }
+  csv_has_header = contents.complete_bytes > 0;
+  std::set<uint64_t> done;
+  for (const scenario::EpisodeCsvRow& row : contents.rows) {
+    done.insert(row.episode);
+    if (now.bags && !fs::exists(paths.bag(row.seed))) {
+      std::cerr << "--resume: warning: " << paths.bag(row.seed)
+                << " is missing (its row is kept; delete the row to run it again)\n";
+    }
+  }
+  for (uint64_t episode : planned) {
+    if (done.count(episode) == 0) {
+      fs::remove(tools::EpisodeBag::active_path(paths.bag(now.plan.seed_of(episode))));
+    }
+  }
+  return contents.rows;
+}
+
+// A checked run, ready to go.
+struct Batch {
   Options options;
-  scenario::Scenario loaded;
+  scenario::Scenario scenario;
   scenario::EpisodeConfig config;
-  std::ofstream csv;
-  std::string csv_path;
-  try {
-    options = parse_options(argc, argv);
-    loaded = scenario::load_scenario_file(scenario_path(options.scenario));
-    config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
-    if (!options.seed_given) {
-      options.plan.first_seed = loaded.scene.seed;
-    }
-    options.plan.validate(kSource);
-    std::filesystem::create_directories(options.out);
-    const bool sharded = options.plan.shard_count > 1;
-    csv_path = options.out + "/" + loaded.name +
-               (sharded ? "_shard" + std::to_string(options.plan.shard_index) + "-of-" +
-                              std::to_string(options.plan.shard_count)
-                        : "") +
-               ".csv";
-    csv.open(csv_path);
-    if (!csv) {
-      throw core::ConfigError(std::string(kSource) + ": --out: cannot write " + csv_path);
-    }
-  } catch (const core::Error& e) {
-    std::cerr << e.what() << "\n";
-    print_usage();
-    return 2;
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << kSource << ": --out: " << e.what() << "\n";
-    return 2;
+  OutputPaths paths;
+  std::vector<scenario::EpisodeCsvRow> kept;  // rows of an earlier run that --resume keeps
+  std::ofstream csv;                          // open for appending, the header written
+};
+
+// Checks everything the user gave and deals with the earlier output before the first episode, so
+// that a bad option or path costs no run. Throws core::Error (or std::filesystem_error).
+Batch prepare(int argc, char** argv) {
+  Batch batch;
+  Options& options = batch.options;
+  options = parse_options(argc, argv);
+  const std::string scenario_file = scenario_path(options.scenario);
+  core::check_input_file("--scenario", scenario_file);
+  batch.scenario = scenario::load_scenario_file(scenario_file);
+  batch.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
+  if (fs::exists(options.out) && !fs::is_directory(options.out)) {
+    throw core::ConfigError("--out: " + options.out + ": expected a directory, got a file");
+  }
+  OutputPaths& paths = batch.paths;
+  paths.dir = options.out;
+  paths.name = batch.scenario.name;
+  paths.stem = paths.name + (options.plan.shard_count > 1
+                                 ? "_shard" + std::to_string(options.plan.shard_index) + "-of-" +
+                                       std::to_string(options.plan.shard_count)
+                                 : "");
+
+  // The plan: --resume goes on with the earlier run's count and seeds unless told otherwise.
+  std::optional<scenario::BatchSettings> earlier;
+  if (options.resume && fs::exists(paths.settings())) {
+    earlier = scenario::BatchSettings::parse(read_file(paths.settings()), paths.settings());
+  }
+  if (!options.episodes_given && !earlier) {
+    throw core::ConfigError("--resume: " + paths.settings() +
+                            " not found: nothing to resume, give --episodes");
+  }
+  if (!options.episodes_given) {
+    options.plan.episodes = earlier->plan.episodes;
+  }
+  if (!options.seed_given) {
+    options.plan.first_seed = earlier ? earlier->plan.first_seed : batch.scenario.scene.seed;
+  }
+  options.plan.validate("");
+  scenario::BatchSettings settings;
+  settings.scenario = batch.scenario.name;
+  settings.scenario_file = scenario_file;
+  settings.scenario_digest =
+      scenario::digest_files({scenario_file, batch.scenario.scene.world_path});
+  settings.config_digest = scenario::digest_files(config_files());
+  settings.plan = options.plan;
+  settings.bags = options.bags;
+
+  // The earlier output: resumed, replaced, or a reason to stop.
+  std::vector<uint64_t> seeds;
+  for (uint64_t index : options.plan.episode_indices()) {
+    seeds.push_back(options.plan.seed_of(index));
+  }
+  bool csv_has_header = false;
+  const std::string found = existing_outputs(paths, seeds);
+  if (options.resume && fs::exists(paths.csv())) {
+    batch.kept = resume_earlier_run(paths, earlier, settings, csv_has_header);
+  } else if (options.resume) {
+    std::cerr << "--resume: " << paths.csv() << " not found: starting the run\n";
+    remove_earlier_run(paths, seeds, /*say=*/false);
+  } else if (options.overwrite && !found.empty()) {
+    remove_earlier_run(paths, seeds, /*say=*/true);
+  } else if (!options.overwrite && !found.empty()) {
+    throw core::ConfigError("--out: " + options.out + " holds this run's output already (" + found +
+                            "): pass --resume to finish it or --overwrite to replace it");
   }
 
-  csv << scenario::csv_header() << "\n";
-  const std::vector<uint64_t> episodes = options.plan.episode_indices();
+  // Settings first, then the CSV: a CSV is never without the settings that made it.
+  core::prepare_output_directory("--out", options.out);
+  core::OutputFile settings_file("--out", paths.settings());
+  settings_file.stream() << settings.to_yaml();
+  settings_file.commit();
+  batch.csv.open(paths.csv(), std::ios::app);
+  if (!batch.csv) {
+    throw core::ConfigError("--out: cannot write " + paths.csv());
+  }
+  if (!csv_has_header) {
+    batch.csv << scenario::csv_header() << "\n" << std::flush;
+  }
+  return batch;
+}
+
+void install_stop_handler() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  // A second Ctrl-C kills at once (the default action is back), leaving at most one .active file.
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+// Runs the planned episodes that have no row yet, each to its bag and then its row, until done or
+// stopped by a signal; returns the exit code.
+int run(Batch& batch) {
+  const Options& options = batch.options;
+  const OutputPaths& paths = batch.paths;
+  std::vector<uint64_t> row_seeds;  // every row in the CSV, kept or new
+  std::set<uint64_t> done;
+  for (const scenario::EpisodeCsvRow& row : batch.kept) {
+    done.insert(row.episode);
+    row_seeds.push_back(row.seed);
+  }
+  std::vector<uint64_t> episodes;
+  for (uint64_t index : options.plan.episode_indices()) {
+    if (done.count(index) == 0) {
+      episodes.push_back(index);
+    }
+  }
+  const size_t planned = done.size() + episodes.size();
+  if (!batch.kept.empty()) {
+    std::cerr << "--resume: " << batch.kept.size() << " of " << planned << " episodes are in "
+              << paths.csv() << "; running the other " << episodes.size() << "\n";
+  }
+  if (episodes.empty()) {
+    std::printf("%s: nothing to do, all %zu episodes are in %s\n", paths.name.c_str(), planned,
+                paths.csv().c_str());
+    return 0;
+  }
+
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
   const auto seconds_since = [](std::chrono::steady_clock::time_point from) {
@@ -147,44 +409,100 @@ int main(int argc, char** argv) {
   };
   int successes = 0;
   double sim_time_s = 0.0;
-  for (size_t done = 0; done < episodes.size(); ++done) {
-    const uint64_t index = episodes[done];
+  std::optional<uint64_t> dropped_seed;
+  for (size_t ran = 0; ran < episodes.size() && g_stop_signal == 0; ++ran) {
+    const uint64_t index = episodes[ran];
     const uint64_t seed = options.plan.seed_of(index);
     const auto episode_start = std::chrono::steady_clock::now();
     try {
-      scenario::Episode episode(loaded, seed, config);
+      scenario::Episode episode(batch.scenario, seed, batch.config);
       std::unique_ptr<tools::EpisodeBag> bag;
       if (options.bags) {
-        bag = std::make_unique<tools::EpisodeBag>(
-            options.out + "/" + loaded.name + "_" + std::to_string(seed) + ".bag", loaded.name);
+        bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), paths.name);
       }
-      while (!episode.finished()) {
+      while (!episode.finished() && g_stop_signal == 0) {
         episode.step();
         if (bag) {
           bag->record_step(episode);
         }
       }
+      if (g_stop_signal != 0) {
+        dropped_seed = seed;  // `bag` deletes its .active file; the episode gets no row
+        break;
+      }
+      // The bag under its name first, then the row: a row always has its bag.
+      if (bag) {
+        bag->finish();
+      }
       const auto summary =
-          scenario::EpisodeSummary::of(loaded.name, index, seed, episode.runner(),
-                                       episode.metrics(), seconds_since(episode_start));
-      csv << scenario::csv_row(summary) << "\n" << std::flush;
+          scenario::EpisodeSummary::of(paths.name, index, seed, episode.runner(), episode.metrics(),
+                                       seconds_since(episode_start));
+      batch.csv << scenario::csv_row(summary) << "\n" << std::flush;
+      if (!batch.csv) {
+        throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
+                          " failed");
+      }
+      row_seeds.push_back(seed);
       successes += summary.outcome.success ? 1 : 0;
       sim_time_s += summary.outcome.end_time_s;
     } catch (const core::Error& e) {
-      std::cerr << "\nepisode " << index << " (seed " << seed << "): " << e.what() << "\n";
-      return 2;
+      // A scene that cannot be built is bad input (2); a file that cannot be written is not (1).
+      const bool bad_input = dynamic_cast<const core::ConfigError*>(&e) != nullptr ||
+                             dynamic_cast<const core::RequestError*>(&e) != nullptr;
+      std::cerr << "\nrun_episodes: episode " << index << " (seed " << seed << "): " << e.what()
+                << "\n";
+      return bad_input ? 2 : 1;
     }
     const std::string line =
-        scenario::progress_line(done + 1, episodes.size(), seconds_since(start));
+        scenario::progress_line(ran + 1, episodes.size(), seconds_since(start));
     std::cerr << (terminal ? "\r" : "") << line << (terminal ? "" : "\n") << std::flush;
   }
   const double wall_s = seconds_since(start);
   std::cerr << (terminal ? "\n" : "");
+
+  // Stopped: what is kept, and how to go on.
+  if (g_stop_signal != 0) {
+    size_t bags = 0;
+    for (uint64_t seed : row_seeds) {
+      bags += fs::exists(paths.bag(seed)) ? 1 : 0;
+    }
+    std::cerr << "run_episodes: interrupted by " << (g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
+              << " after " << row_seeds.size() << " of " << planned
+              << " episodes: " << row_seeds.size() << " rows in " << paths.csv();
+    if (options.bags) {
+      std::cerr << ", " << bags << " bags";
+    }
+    if (dropped_seed) {
+      std::cerr << "; the episode under way (seed " << *dropped_seed << ") was dropped"
+                << (options.bags ? ", its bag deleted" : "");
+    }
+    std::cerr << "; rerun with --resume to finish\n";
+    return 128 + g_stop_signal;
+  }
+  const size_t ran = episodes.size();
   std::printf(
       "%s: %zu episodes, %d succeeded; %.1f s of sim time in %.2f s of wall time (%.0fx "
       "real time, %.1f episodes per minute)\nmetrics: %s\n",
-      loaded.name.c_str(), episodes.size(), successes, sim_time_s, wall_s,
-      wall_s > 0 ? sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * episodes.size() / wall_s : 0.0,
-      csv_path.c_str());
+      paths.name.c_str(), ran, successes, sim_time_s, wall_s,
+      wall_s > 0 ? sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * ran / wall_s : 0.0,
+      paths.csv().c_str());
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Batch batch;
+  try {
+    batch = prepare(argc, argv);
+  } catch (const core::Error& e) {
+    std::cerr << "run_episodes: " << e.what() << "\n";
+    print_usage();
+    return 2;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "run_episodes: --out: " << e.what() << "\n";
+    return 2;
+  }
+  install_stop_handler();
+  return run(batch);
 }

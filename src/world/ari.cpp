@@ -3,23 +3,47 @@
 #include <box2d/box2d.h>
 
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
 
 void AriSpec::validate() const {
+  const RequestCheck check;
   if (id == kNoObject) {
-    throw core::RequestError("ari.id must be a positive integer");
+    check.fail("id", "a positive integer", "0");
   }
-  if (std::abs(head_pan_rad) > limits.head_pan_limit_rad) {
-    throw core::RequestError("ari.head_pan must be within +-" +
-                             std::to_string(limits.head_pan_limit_rad) + " rad, got " +
-                             std::to_string(head_pan_rad));
+  check.finite("pose.x", pose.position.x());
+  check.finite("pose.y", pose.position.y());
+  check.heading("pose.theta", pose.theta);
+  check.in_range("words_per_minute", words_per_minute, core::positive(), "1/min");
+  for (const auto& [field, value] :
+       {std::pair<const char*, double>{"max_linear", limits.max_linear_mps},
+        {"max_linear_accel", limits.max_linear_accel_mps2},
+        {"max_angular", limits.max_angular_rps},
+        {"max_angular_accel", limits.max_angular_accel_rps2},
+        {"head_pan_limit", limits.head_pan_limit_rad},
+        {"head_pan_max_speed", limits.head_pan_max_speed_rps},
+        {"cmd_vel_timeout", limits.cmd_vel_timeout_s}}) {
+    check.in_range(std::string("limits.") + field, value, core::positive());
   }
-  if (!(words_per_minute > 0.0)) {
-    throw core::RequestError("ari.words_per_minute must be > 0");
+  check.in_range("limits.min_linear", limits.min_linear_mps,
+                 {-std::numeric_limits<double>::infinity(), 0.0, false});
+  // The head starts where the joint can go.
+  check.in_range("head_pan", head_pan_rad,
+                 core::between(-limits.head_pan_limit_rad, limits.head_pan_limit_rad), "rad");
+  if (!(footprint.rear_x_m < footprint.front_x_m && footprint.half_width_m > 0.0 &&
+        std::isfinite(footprint.rear_x_m) && std::isfinite(footprint.front_x_m) &&
+        std::isfinite(footprint.half_width_m))) {
+    check.fail("footprint", "finite numbers with rear_x < front_x and half_width > 0",
+               "rear_x " + RequestCheck::text(footprint.rear_x_m) + ", front_x " +
+                   RequestCheck::text(footprint.front_x_m) + ", half_width " +
+                   RequestCheck::text(footprint.half_width_m));
   }
 }
 
@@ -33,6 +57,8 @@ Ari::Ari(const AriSpec& spec, double map_resolution_m)
 }
 
 void Ari::follow(const core::Pose2& pose, double linear_mps, double angular_rps) {
+  ARI_DCHECK(pose.position.allFinite() && std::isfinite(pose.theta) && std::isfinite(linear_mps) &&
+             std::isfinite(angular_rps));
   followed_ = pose;
   followed_linear_mps_ = linear_mps;
   followed_angular_rps_ = angular_rps;
@@ -43,6 +69,7 @@ void Ari::apply_motion(const StepContext& context) {
     // The velocity that lands the body on the followed pose at the end of this step; contacts
     // with people may still stop it short, as they would stop the 3D robot.
     const Eigen::Vector2d velocity = (followed_->position - pose_.position) / context.dt_s;
+    ARI_DCHECK(velocity.allFinite());
     body()->SetLinearVelocity(
         b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
     body()->SetAngularVelocity(
@@ -52,6 +79,8 @@ void Ari::apply_motion(const StepContext& context) {
   // The body's centre of mass is placed at base_footprint, so Box2D rotates it about the wheel
   // axle as a differential drive turns.
   const double v = drive_->linear_mps();
+  ARI_DCHECK(std::isfinite(v) && std::isfinite(drive_->angular_rps()) &&
+             std::isfinite(pose_.theta));
   body()->SetLinearVelocity(b2Vec2(static_cast<float>(v * std::cos(pose_.theta)),
                                    static_cast<float>(v * std::sin(pose_.theta))));
   body()->SetAngularVelocity(static_cast<float>(drive_->angular_rps()));

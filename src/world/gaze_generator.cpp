@@ -3,43 +3,53 @@
 #include <cmath>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
 namespace ari_social_sim::world {
 
 void GazeModel::validate() const {
+  const RequestCheck check;
   if (targets.empty() == !directions.has_value()) {
-    throw core::RequestError("gaze: give either targets with probabilities or directions");
+    check.fail("gaze", "either targets with probabilities or directions (exactly one of them)",
+               targets.empty() ? "neither" : "both");
+  }
+  if (targets.size() > kMaxGazeTargets) {
+    check.fail("gaze.targets", "at most " + std::to_string(kMaxGazeTargets) + " targets",
+               std::to_string(targets.size()));
   }
   double total = 0.0;
-  for (const GazeTarget& target : targets) {
-    if (target.id == kNoObject) {
-      throw core::RequestError("gaze: target id must be a positive object id");
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (targets[i].id == kNoObject) {
+      check.fail("gaze.targets[" + std::to_string(i) + "]", "a positive object id", "0");
     }
-    if (!(target.probability >= 0.0 && target.probability <= 1.0)) {
-      throw core::RequestError("gaze: probability of target " + std::to_string(target.id) +
-                               " must be in [0, 1], got " + std::to_string(target.probability));
-    }
-    total += target.probability;
+    check.in_range("gaze.probabilities[" + std::to_string(i) + "]", targets[i].probability,
+                   core::between(0.0, 1.0));
+    total += targets[i].probability;
   }
   if (!targets.empty() && std::abs(total - 1.0) > 1e-6) {
-    throw core::RequestError("gaze: target probabilities must sum to 1, got " +
-                             std::to_string(total));
+    check.fail("gaze.probabilities", "numbers in [0, 1] that sum to 1 (within 1e-6)",
+               "a sum of " + RequestCheck::text(total));
   }
   if (directions) {
     const bool uniform = directions->distribution == GazeDirections::Distribution::kUniform;
-    if (uniform && !(directions->low_rad <= directions->high_rad)) {
-      throw core::RequestError("gaze: directions need low <= high");
-    }
-    if (!uniform && !(directions->stddev_rad >= 0.0)) {
-      throw core::RequestError("gaze: directions need a standard deviation >= 0");
+    if (uniform) {
+      check.heading("gaze.directions.low", directions->low_rad);
+      check.heading("gaze.directions.high", directions->high_rad);
+      if (!(directions->low_rad <= directions->high_rad)) {
+        check.fail("gaze.directions", "low <= high",
+                   "low " + RequestCheck::text(directions->low_rad) + ", high " +
+                       RequestCheck::text(directions->high_rad));
+      }
+    } else {
+      check.heading("gaze.directions.mean", directions->mean_rad);
+      check.in_range("gaze.directions.stddev", directions->stddev_rad,
+                     core::between(0.0, kMaxHeadingRad), "rad");
     }
   }
-  if (!(mean_duration_s > 0.0)) {
-    throw core::RequestError("gaze: mean_duration must be > 0 s, got " +
-                             std::to_string(mean_duration_s));
-  }
+  check.in_range("gaze.mean_duration", mean_duration_s, {0.0, kMaxGazeMeanDurationS, true}, "s");
 }
 
 GazeGenerator::GazeGenerator(GazeModel model, core::Rng rng)
@@ -98,6 +108,7 @@ void GazeGenerator::step(Object& owner, const StepContext& context) {
   } else {
     direction_rad_ = core::wrap_angle(owner.pose().theta + relative_direction_rad_);
   }
+  ARI_DCHECK(std::isfinite(direction_rad_));
 }
 
 }  // namespace ari_social_sim::world

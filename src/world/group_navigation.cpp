@@ -5,8 +5,10 @@
 #include <set>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/social_forces.hpp"
 #include "ari_social_sim/world/step_motion.hpp"
@@ -14,24 +16,32 @@
 namespace ari_social_sim::world {
 
 void GroupSpec::validate() const {
+  const RequestCheck check;
   if (id == kNoObject) {
-    throw core::RequestError("group id must be a positive integer");
+    check.fail("id", "a positive integer", "0");
   }
+  const std::string group = "group " + std::to_string(id);
   if (members.empty()) {
-    throw core::RequestError("group " + std::to_string(id) + " has no members");
+    throw core::RequestError(group + " has no members");
+  }
+  if (members.size() > kMaxGroupMembers) {
+    check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans",
+               std::to_string(members.size()));
   }
   if (std::set<ObjectId>(members.begin(), members.end()).size() != members.size()) {
-    throw core::RequestError("group " + std::to_string(id) + " lists a member twice");
+    throw core::RequestError(group + " lists a member twice");
   }
-  if (!(ospace_radius_m >= 0.0)) {
-    throw core::RequestError("ospace_radius must be >= 0 (0 = automatic)");
+  check.finite("centre.x", centre.x());
+  check.finite("centre.y", centre.y());
+  check.in_range("ospace_radius", ospace_radius_m, core::between(0.0, kMaxOspaceRadiusM),
+                 "m (0 = automatic)");
+  check.in_range("min_ospace_radius", min_ospace_radius_m, {0.0, kMaxOspaceRadiusM, true}, "m");
+  check.in_range("member_spacing", member_spacing_m, {0.0, kMaxOspaceRadiusM, true}, "m");
+  check.in_range("social_distance", social_distance_m, core::positive(), "m");
+  if (!(spacing_factor >= 1.0 && spacing_factor < 1.6)) {
+    check.fail("spacing_factor", "a finite number in [1, 1.6)", RequestCheck::text(spacing_factor));
   }
-  if (!(min_ospace_radius_m > 0.0 && member_spacing_m > 0.0 && social_distance_m > 0.0 &&
-        spacing_factor >= 1.0 && spacing_factor < 1.6 && step_speed_mps > 0.0)) {
-    throw core::RequestError(
-        "group parameters need min_ospace_radius, member_spacing, social_distance, step_speed > 0 "
-        "and spacing_factor in [1, 1.6)");
-  }
+  check.in_range("step_speed", step_speed_mps, core::positive(), "m/s per unit force");
 }
 
 GroupNavigation::GroupNavigation(const GroupSpec& spec) : spec_(spec) {}
@@ -72,6 +82,11 @@ double GroupNavigation::cohesion_radius_m() const {
   const double chord = 2.0 * s * std::sin(core::kPi / static_cast<double>(n));
   const double excess = std::max(0.0, member_personal_distance_m() - chord);
   return std::max(0.0, s - excess * excess);
+}
+
+void GroupNavigation::set_centre(const Eigen::Vector2d& centre) {
+  ARI_DCHECK(centre.allFinite());
+  spec_.centre = centre;
 }
 
 void GroupNavigation::remove_member(ObjectId id) {

@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ari_social_sim/core/check.hpp"
+
 namespace ari_social_sim::world {
 
 bool HeadPanController::command_velocity(double pan_velocity_rps) {
+  // std::clamp passes NaN through: requests are checked by the Simulation's head commands.
+  ARI_DCHECK(std::isfinite(pan_velocity_rps));
   has_target_ = false;
   commanded_velocity_rps_ =
       std::clamp(pan_velocity_rps, -limits_.head_pan_max_speed_rps, limits_.head_pan_max_speed_rps);
@@ -13,6 +17,7 @@ bool HeadPanController::command_velocity(double pan_velocity_rps) {
 }
 
 bool HeadPanController::command_position(double pan_rad) {
+  ARI_DCHECK(std::isfinite(pan_rad));
   has_target_ = true;
   target_rad_ = std::clamp(pan_rad, -limits_.head_pan_limit_rad, limits_.head_pan_limit_rad);
   return target_rad_ != pan_rad;
@@ -26,6 +31,7 @@ void HeadPanController::step(Object& owner, const StepContext& context) {
       std::clamp(pan_rad_ + move, -limits_.head_pan_limit_rad, limits_.head_pan_limit_rad);
   velocity_rps_ = (next - pan_rad_) / context.dt_s;
   pan_rad_ = next;
+  ARI_DCHECK(std::isfinite(pan_rad_));
 }
 
 }  // namespace ari_social_sim::world

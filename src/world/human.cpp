@@ -2,35 +2,36 @@
 
 #include <box2d/box2d.h>
 
+#include <cmath>
+
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/human_navigation.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
-namespace {
-
-void require_positive(double value, const char* field) {
-  if (!(value > 0.0)) {
-    throw core::RequestError(std::string(field) + " must be > 0, got " + std::to_string(value));
-  }
-}
-
-}  // namespace
-
 void HumanSpec::validate() const {
+  const RequestCheck check;
   if (id == kNoObject) {
-    throw core::RequestError("id must be a positive integer");
+    check.fail("id", "a positive integer", "0");
   }
-  if (!(age_years >= 0.0 && age_years <= 130.0)) {
-    throw core::RequestError("age must be in [0, 130] years, got " + std::to_string(age_years));
+  check.finite("pose.x", pose.position.x());
+  check.finite("pose.y", pose.position.y());
+  check.heading("pose.theta", pose.theta);
+  check.in_range("age", age_years, core::between(0.0, kMaxAgeYears), "years");
+  check.in_range("motion.walking_speed", motion.walking_speed_mps, core::positive(), "m/s");
+  check.in_range("motion.max_speed", motion.max_speed_mps, core::positive(), "m/s");
+  check.in_range("motion.turn_gain", motion.turn_gain_per_s, core::positive(), "1/s");
+  check.in_range("motion.goal_distance", motion.goal_distance_m, core::positive(), "m");
+  check.in_range("motion.personal_distance", motion.personal_distance_m, core::positive(), "m");
+  check.in_range("motion.body_radius", motion.body_radius_m, core::positive(), "m");
+  check.in_range("words_per_minute", words_per_minute, core::positive(), "1/min");
+  if (goal) {
+    check.finite("goal.x", goal->position.x());
+    check.finite("goal.y", goal->position.y());
+    check.heading("goal.theta", goal->theta);
   }
-  require_positive(motion.walking_speed_mps, "walking_speed");
-  require_positive(motion.max_speed_mps, "max_speed");
-  require_positive(motion.turn_gain_per_s, "turn_gain");
-  require_positive(motion.goal_distance_m, "goal_distance");
-  require_positive(motion.personal_distance_m, "personal_distance");
-  require_positive(motion.body_radius_m, "body_radius");
-  require_positive(words_per_minute, "words_per_minute");
   if (gaze) {
     gaze->validate();
   }
@@ -62,6 +63,7 @@ const std::optional<core::Pose2>& Human::goal() const {
 }
 
 void Human::set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps) {
+  ARI_DCHECK(velocity_mps.allFinite() && std::isfinite(angular_velocity_rps));
   mode_ = MotionMode::kDirect;
   navigation_->clear_goal();
   direct_velocity_ = velocity_mps;
@@ -69,6 +71,7 @@ void Human::set_velocity(const Eigen::Vector2d& velocity_mps, double angular_vel
 }
 
 void Human::set_goal(const core::Pose2& goal) {
+  ARI_DCHECK(goal.position.allFinite() && std::isfinite(goal.theta));
   mode_ = MotionMode::kNavigation;
   navigation_->set_goal(goal);
 }
@@ -94,6 +97,8 @@ void Human::leave_group() {
 }
 
 void Human::plan_motion(const Eigen::Vector2d& velocity_mps, double rotation_rad) {
+  // The navigation component and the group script plan every step: a NaN is caught where made.
+  ARI_DCHECK(velocity_mps.allFinite() && std::isfinite(rotation_rad));
   planned_velocity_ = velocity_mps;
   planned_rotation_ = rotation_rad;
 }
@@ -129,6 +134,7 @@ void Human::sync_from_body(double dt_s) {
   pose_.position = {position.x, position.y};
   const b2Vec2 velocity = body()->GetLinearVelocity();
   velocity_ = {velocity.x, velocity.y};
+  ARI_DCHECK(pose_.position.allFinite() && velocity_.allFinite() && std::isfinite(pose_.theta));
 }
 
 }  // namespace ari_social_sim::world

@@ -2,18 +2,56 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
+#include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
 namespace ari_social_sim::world {
 
+namespace {
+
+int cells_along(double extent_m, double resolution_m) {
+  return static_cast<int>(std::ceil(extent_m / resolution_m - 1e-9));
+}
+
+std::string number_text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+double map_cell_count(const WorldDescription& world, double resolution_m) {
+  return std::ceil(world.size.x() / resolution_m - 1e-9) *
+         std::ceil(world.size.y() / resolution_m - 1e-9);
+}
+
+void check_map_size(const WorldDescription& world, double resolution_m) {
+  if (!(std::isfinite(resolution_m) && resolution_m > 0.0)) {
+    throw core::ConfigError("map_resolution: expected a finite number > 0 m, got " +
+                            number_text(resolution_m));
+  }
+  const double cells = map_cell_count(world, resolution_m);
+  if (!(cells <= static_cast<double>(kMaxMapCells))) {
+    throw core::ConfigError("map_resolution: " + number_text(resolution_m) +
+                            " m over the floor of world '" + world.name + "' (" +
+                            number_text(world.size.x()) + " x " + number_text(world.size.y()) +
+                            " m) gives " + number_text(cells) + " cells, more than the " +
+                            std::to_string(kMaxMapCells) + " an occupancy grid may have");
+  }
+}
+
 OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolution_m) {
+  check_map_size(world, resolution_m);
   OccupancyGrid grid;
   grid.origin = world.origin;
   grid.resolution_m = resolution_m;
-  grid.width = static_cast<int>(std::ceil(world.size.x() / resolution_m - 1e-9));
-  grid.height = static_cast<int>(std::ceil(world.size.y() / resolution_m - 1e-9));
+  grid.width = cells_along(world.size.x(), resolution_m);
+  grid.height = cells_along(world.size.y(), resolution_m);
   grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, OccupancyGrid::kFree);
 
   // Box2D pads every polygon with a skin of b2_polygonRadius. The cell square is shrunk by the
@@ -60,6 +98,7 @@ OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolut
 
 void MapSensor::step(Object& owner, const StepContext& context) {
   if (!has_map_) {
+    // Cannot throw here: the Simulation checked this world and resolution when it was built.
     map_ = rasterize_static_map(context.simulation.world(), resolution_m_);
     has_map_ = true;
   }

@@ -28,7 +28,12 @@ void validate_entry(const Spec& spec, const core::YamlMap& entry) {
 GazeModel read_gaze(const core::YamlMap& map) {
   GazeModel gaze;
   gaze.mean_duration_s = map.required<double>("mean_duration", core::positive());
-  for (const core::YamlMap& target : map.list("targets", true)) {
+  const std::vector<core::YamlMap> targets = map.list("targets", true);
+  if (targets.size() > kMaxGazeTargets) {
+    map.fail("targets", "at most " + std::to_string(kMaxGazeTargets) + " targets",
+             std::to_string(targets.size()));
+  }
+  for (const core::YamlMap& target : targets) {
     gaze.targets.push_back({target.required<unsigned>("id", core::positive()),
                             target.required<double>("probability", core::between(0.0, 1.0))});
     target.finish();
@@ -168,11 +173,21 @@ Scene parse_scene(const core::YamlMap& root, const std::string& base_dir) {
     scene.ari = read_ari(entry);
     validate_entry(*scene.ari, entry);
   }
-  for (const core::YamlMap& entry : root.list("humans", true)) {
+  const std::vector<core::YamlMap> humans = root.list("humans", true);
+  if (humans.size() > kMaxHumans) {
+    root.fail("humans", "at most " + std::to_string(kMaxHumans) + " humans",
+              std::to_string(humans.size()));
+  }
+  for (const core::YamlMap& entry : humans) {
     scene.humans.push_back(parse_human(entry));
     scene.human_fields.push_back(entry.where());
   }
-  for (const core::YamlMap& entry : root.list("groups", true)) {
+  const std::vector<core::YamlMap> groups = root.list("groups", true);
+  if (groups.size() > kMaxSceneGroups) {
+    root.fail("groups", "at most " + std::to_string(kMaxSceneGroups) + " groups",
+              std::to_string(groups.size()));
+  }
+  for (const core::YamlMap& entry : groups) {
     scene.groups.push_back(parse_group(entry));
     scene.group_fields.push_back(entry.where());
   }

@@ -9,6 +9,7 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -86,6 +87,8 @@ Simulation::Simulation(WorldDescription world, SimulationConfig config)
       physics_(std::make_unique<b2World>(b2Vec2(0, 0))),
       agent_grid_(kAgentGridCellM) {
   config_.validate();
+  world_.validate();
+  check_map_size(world_, config_.map_resolution_m);
   for (const StaticObject& description : world_.objects) {
     auto object = std::make_unique<StaticBody>(description);
     b2BodyDef def;
@@ -101,6 +104,22 @@ Simulation::Simulation(WorldDescription world, SimulationConfig config)
     register_object(*object);
     statics_.push_back(std::move(object));
   }
+  add_floor_fence();
+}
+
+void Simulation::add_floor_fence() {
+  // The floor's edge as a fence, so that nothing leaves the world through a door (a human set
+  // walking, ARI driven on) and every pose stays inside the map. It is no object: no user data.
+  const Eigen::Vector2d low = world_.origin;
+  const Eigen::Vector2d high = world_.origin + world_.size;
+  // Clockwise: Box2D's chain edges collide on their right side only, here the floor's.
+  const b2Vec2 corners[4] = {to_b2(low), to_b2({low.x(), high.y()}), to_b2(high),
+                             to_b2({high.x(), low.y()})};
+  b2ChainShape fence;
+  fence.CreateLoop(corners, 4);
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  physics_->CreateBody(&def)->CreateFixture(&fence, 0.0f);
 }
 
 Simulation::~Simulation() = default;
@@ -150,8 +169,8 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
     const Object* hit{nullptr};
     bool ReportFixture(b2Fixture* fixture) override {
       const Object* other = object_of(fixture->GetBody());
-      if (other == ignore) {
-        return true;
+      if (other == nullptr || other == ignore) {
+        return true;  // the floor fence is checked as the floor's bounds above
       }
       if (b2TestOverlap(shape, 0, fixture->GetShape(), 0, transform,
                         fixture->GetBody()->GetTransform())) {
@@ -175,10 +194,19 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
 }
 
 Human& Simulation::add_human(const HumanSpec& spec) {
-  spec.validate();
+  const RequestCheck check("spawn_human");
+  check.on_floor("pose", spec.pose.position, world_);
+  if (spec.goal) {
+    check.on_floor("goal", spec.goal->position, world_);
+  }
+  check.valid(spec);
   const std::string what = "human " + std::to_string(spec.id);
   if (find_object(spec.id) != nullptr) {
     throw core::RequestError(what + ": id is already used");
+  }
+  if (humans_.size() >= kMaxHumans) {
+    throw core::RequestError("spawn_human: the world already holds " +
+                             std::to_string(humans_.size()) + " humans, the most it may hold");
   }
   b2CircleShape circle;
   circle.m_radius = static_cast<float>(spec.motion.body_radius_m);
@@ -219,6 +247,7 @@ void Simulation::remove_human(ObjectId id) {
 
 Ari& Simulation::add_ari(const AriSpec& spec) {
   spec.validate();
+  RequestCheck().on_floor("pose", spec.pose.position, world_);
   if (ari_) {
     throw core::RequestError("the world already has ARI (id " + std::to_string(ari_->id()) + ")");
   }
@@ -248,7 +277,9 @@ Ari& Simulation::add_ari(const AriSpec& spec) {
 }
 
 GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
-  spec.validate();
+  const RequestCheck check("create_group");
+  check.valid(spec);
+  check.on_floor("centre", spec.centre, world_);
   if (find_group(spec.id) != nullptr) {
     throw core::RequestError("group id " + std::to_string(spec.id) + " is already used");
   }
@@ -281,11 +312,27 @@ void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId
   if (group == nullptr) {
     throw core::RequestError("no group with id " + std::to_string(group_id));
   }
-  for (ObjectId member : members) {
-    if (find_human(member) == nullptr) {
+  const RequestCheck check("add_group_members");
+  // A longer list cannot fit, and is refused before the quadratic search for repeats below.
+  if (members.size() > kMaxGroupMembers) {
+    check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans",
+               std::to_string(members.size()));
+  }
+  size_t joining = 0;
+  for (size_t i = 0; i < members.size(); ++i) {
+    const Human* human = find_human(members[i]);
+    if (human == nullptr) {
       throw core::RequestError("group " + std::to_string(group_id) + ": no human with id " +
-                               std::to_string(member));
+                               std::to_string(members[i]));
     }
+    const bool repeated =
+        std::find(members.begin(), members.begin() + i, members[i]) != members.begin() + i;
+    joining += human->group_id() != group_id && !repeated ? 1 : 0;
+  }
+  if (group->members().size() + joining > kMaxGroupMembers) {
+    check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans in a group",
+               std::to_string(group->members().size()) + " members and " + std::to_string(joining) +
+                   " joining");
   }
   for (ObjectId member : members) {
     Human& human = *find_human(member);
@@ -317,8 +364,62 @@ void Simulation::remove_group(ObjectId group_id) {
 }
 
 void Simulation::set_human_goal(ObjectId human_id, const core::Pose2& goal) {
-  release_from_group(human_id);  // throws for an unknown id
-  find_human(human_id)->set_goal(goal);
+  Human& human = existing_human(human_id);
+  RequestCheck("set_goal").pose_on_floor("goal", goal, world_);
+  release_from_group(human_id);
+  human.set_goal(goal);
+}
+
+void Simulation::set_human_velocity(ObjectId human_id, const Eigen::Vector2d& velocity_mps,
+                                    double angular_velocity_rps) {
+  Human& human = existing_human(human_id);
+  const RequestCheck check("set_velocity");
+  check.finite("vx", velocity_mps.x());
+  check.finite("vy", velocity_mps.y());
+  // hypot: the norm of (1e300, 0) must not overflow to infinity on the way.
+  const double speed = std::hypot(velocity_mps.x(), velocity_mps.y());
+  const double max_speed = human.spec().motion.max_speed_mps;
+  if (!(speed <= max_speed)) {
+    check.fail("(vx, vy)",
+               "a speed of at most " + RequestCheck::text(max_speed) + " m/s (human " +
+                   std::to_string(human_id) + "'s max_speed)",
+               RequestCheck::text(speed) + " m/s");
+  }
+  check.in_range("omega", angular_velocity_rps,
+                 core::between(-kMaxHumanTurnRateRps, kMaxHumanTurnRateRps), "rad/s");
+  release_from_group(human_id);
+  human.set_velocity(velocity_mps, angular_velocity_rps);
+}
+
+void Simulation::set_human_gaze(ObjectId human_id, const GazeModel& model) {
+  Human& human = existing_human(human_id);
+  const RequestCheck check("set_gaze_targets");
+  check.valid(model);
+  for (size_t i = 0; i < model.targets.size(); ++i) {
+    const ObjectId target = model.targets[i].id;
+    if (find_object(target) == nullptr || target == human_id) {
+      check.fail("targets[" + std::to_string(i) + "]", "another object of the world",
+                 std::to_string(target));
+    }
+  }
+  human.set_gaze_model(model);
+}
+
+void Simulation::set_group_centre(ObjectId group_id, const Eigen::Vector2d& centre) {
+  GroupNavigation* group = find_group(group_id);
+  if (group == nullptr) {
+    throw core::RequestError("no group with id " + std::to_string(group_id));
+  }
+  RequestCheck("set_group_centre").on_floor("centre", centre, world_);
+  group->set_centre(centre);
+}
+
+Human& Simulation::existing_human(ObjectId human_id) const {
+  Human* human = find_human(human_id);
+  if (human == nullptr) {
+    throw core::RequestError("no human with id " + std::to_string(human_id));
+  }
+  return *human;
 }
 
 SpeechGenerator& Simulation::speech_of(ObjectId speaker_id) {
@@ -353,9 +454,13 @@ void Simulation::set_pose(ObjectId id, const core::Pose2& pose) {
   if (object == nullptr || object->kind() == ObjectKind::kStatic) {
     throw core::RequestError("no human or ARI with id " + std::to_string(id));
   }
+  RequestCheck("set_pose").pose_on_floor("pose", pose, world_);
   b2Body* body = object->body();
   check_placement(*body->GetFixtureList()->GetShape(), pose, object,
                   "object " + std::to_string(id));
+  if (object->kind() == ObjectKind::kHuman) {
+    release_from_group(id);
+  }
   body->SetTransform(to_b2(pose.position), static_cast<float>(pose.theta));
   body->SetLinearVelocity(b2Vec2(0, 0));
   object->sync_from_body(config_.step_s);
@@ -373,6 +478,9 @@ void Simulation::command_ari_twist(double linear_mps, double angular_rps) {
   if (!ari_) {
     throw core::RequestError("the world has no ARI");
   }
+  const RequestCheck check("cmd_vel");
+  check.finite("linear.x", linear_mps);
+  check.finite("angular.z", angular_rps);
   diagnostics_.clamped_commands += ari_->drive().command(linear_mps, angular_rps, time_s());
 }
 
@@ -380,6 +488,12 @@ void Simulation::follow_ari(const core::Pose2& pose, double linear_mps, double a
   if (!ari_) {
     throw core::RequestError("the world has no ARI to follow");
   }
+  const RequestCheck check("follow_ari");
+  check.finite("pose.x", pose.position.x());
+  check.finite("pose.y", pose.position.y());
+  check.heading("pose.theta", pose.theta);
+  check.finite("linear", linear_mps);
+  check.finite("angular", angular_rps);
   ari_->follow(pose, linear_mps, angular_rps);
 }
 
@@ -387,6 +501,7 @@ void Simulation::command_ari_head_pan(double pan_rad) {
   if (!ari_) {
     throw core::RequestError("the world has no ARI");
   }
+  RequestCheck("head_command").finite("position", pan_rad);
   diagnostics_.clamped_commands += ari_->head().command_position(pan_rad);
 }
 
@@ -394,6 +509,7 @@ void Simulation::command_ari_head_pan_velocity(double pan_velocity_rps) {
   if (!ari_) {
     throw core::RequestError("the world has no ARI");
   }
+  RequestCheck("head_command").finite("velocity", pan_velocity_rps);
   diagnostics_.clamped_commands += ari_->head().command_velocity(pan_velocity_rps);
 }
 

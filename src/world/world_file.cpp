@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <set>
+#include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
 
@@ -36,6 +37,16 @@ bool is_convex(const std::vector<Eigen::Vector2d>& points) {
   return true;
 }
 
+// Coordinates and extents in a world file: finite (YamlMap's numbers always are) and bounded.
+const core::Bounds kCoordinate = core::between(-kMaxWorldCoordinateM, kMaxWorldCoordinateM);
+const core::Bounds kExtent{0.0, kMaxWorldSideM, true};
+
+std::string number_text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 StaticObject parse_object(const core::YamlMap& entry) {
   StaticObject object;
   const std::string type = entry.required<std::string>("type");
@@ -43,9 +54,9 @@ StaticObject parse_object(const core::YamlMap& entry) {
   object.name = entry.optional<std::string>("name", "");
   if (type == "wall") {
     object.type = ShapeType::kWall;
-    const Eigen::Vector2d from = entry.required<Eigen::Vector2d>("from");
-    const Eigen::Vector2d to = entry.required<Eigen::Vector2d>("to");
-    const double thickness = entry.optional<double>("thickness", 0.1, core::positive());
+    const Eigen::Vector2d from = entry.required<Eigen::Vector2d>("from", kCoordinate);
+    const Eigen::Vector2d to = entry.required<Eigen::Vector2d>("to", kCoordinate);
+    const double thickness = entry.optional<double>("thickness", 0.1, kExtent);
     const double length = (to - from).norm();
     if (length < 1e-6) {
       entry.fail("to", "a point different from 'from' (a wall needs a length)",
@@ -56,16 +67,16 @@ StaticObject parse_object(const core::YamlMap& entry) {
     object.size = {length, thickness};
   } else if (type == "box") {
     object.type = ShapeType::kBox;
-    object.pose.position = entry.required<Eigen::Vector2d>("position");
+    object.pose.position = entry.required<Eigen::Vector2d>("position", kCoordinate);
     object.pose.theta = entry.optional<double>("orientation", 0.0);
-    object.size = entry.required<Eigen::Vector2d>("size", core::positive());
+    object.size = entry.required<Eigen::Vector2d>("size", kExtent);
   } else if (type == "circle") {
     object.type = ShapeType::kCircle;
-    object.pose.position = entry.required<Eigen::Vector2d>("position");
-    object.radius_m = entry.required<double>("radius", core::positive());
+    object.pose.position = entry.required<Eigen::Vector2d>("position", kCoordinate);
+    object.radius_m = entry.required<double>("radius", kExtent);
   } else if (type == "polygon") {
     object.type = ShapeType::kPolygon;
-    object.points = entry.required<std::vector<Eigen::Vector2d>>("points");
+    object.points = entry.required<std::vector<Eigen::Vector2d>>("points", kCoordinate);
     // Box2D takes convex polygons of at most 8 vertices; larger furniture is several objects.
     if (object.points.size() < 3 || object.points.size() > 8 || !is_convex(object.points)) {
       entry.fail(
@@ -82,7 +93,7 @@ StaticObject parse_object(const core::YamlMap& entry) {
     entry.fail("type", "one of wall, box, circle, polygon", "'" + type + "'");
   }
   object.height_m = entry.optional<double>(
-      "height", type == "wall" ? kDefaultWallHeightM : kDefaultFurnitureHeightM, core::positive());
+      "height", type == "wall" ? kDefaultWallHeightM : kDefaultFurnitureHeightM, kExtent);
   entry.finish();
   return object;
 }
@@ -94,14 +105,40 @@ bool WorldDescription::contains(const Eigen::Vector2d& point) const {
          point.y() <= origin.y() + size.y();
 }
 
+void WorldDescription::validate() const {
+  const std::string where = "world '" + name + "': ";
+  for (int axis = 0; axis < 2; ++axis) {
+    const char* suffix = axis == 0 ? ".x" : ".y";
+    if (!(std::abs(origin[axis]) <= kMaxWorldCoordinateM)) {
+      throw core::ConfigError(where + "origin" + suffix + ": expected a finite number in [" +
+                              number_text(-kMaxWorldCoordinateM) + ", " +
+                              number_text(kMaxWorldCoordinateM) + "] m, got " +
+                              number_text(origin[axis]));
+    }
+    if (!(size[axis] > 0.0 && size[axis] <= kMaxWorldSideM)) {
+      throw core::ConfigError(where + "size" + suffix + ": expected a finite number in (0, " +
+                              number_text(kMaxWorldSideM) + "] m, got " + number_text(size[axis]));
+    }
+  }
+  if (objects.size() > kMaxWorldObjects) {
+    throw core::ConfigError(where + "objects: expected at most " +
+                            std::to_string(kMaxWorldObjects) + " objects, got " +
+                            std::to_string(objects.size()));
+  }
+}
+
 WorldDescription parse_world(const core::YamlMap& root) {
   WorldDescription world;
   world.name = root.required<std::string>("name");
-  world.origin = root.optional<Eigen::Vector2d>("origin", Eigen::Vector2d::Zero());
-  world.size = root.required<Eigen::Vector2d>("size", core::positive());
+  world.origin = root.optional<Eigen::Vector2d>("origin", Eigen::Vector2d::Zero(), kCoordinate);
+  world.size = root.required<Eigen::Vector2d>("size", {0.0, kMaxWorldSideM, true});
   std::set<ObjectId> ids;
   ObjectId next_id = kFirstAutomaticStaticId;
   const std::vector<core::YamlMap> entries = root.list("objects");
+  if (entries.size() > kMaxWorldObjects) {
+    root.fail("objects", "at most " + std::to_string(kMaxWorldObjects) + " objects",
+              std::to_string(entries.size()));
+  }
   for (const core::YamlMap& entry : entries) {
     StaticObject object = parse_object(entry);
     if (object.id != kNoObject && !ids.insert(object.id).second) {

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 
@@ -49,6 +52,38 @@ TEST(YamlMap, UnknownKeysAreErrors) {
 TEST(YamlMap, MissingFileIsAConfigError) {
   expect_config_error([] { YamlMap::load_file("/nonexistent/x.yaml"); },
                       {"/nonexistent/x.yaml", "cannot open"});
+}
+
+// Writes `bytes` bytes of a valid YAML mapping (a key, then a comment filling the rest).
+std::string write_yaml(const std::string& name, size_t bytes) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream out(path);
+  const std::string head = "a: 1\n#";
+  out << head << std::string(bytes - head.size(), 'x');
+  return path;
+}
+
+TEST(YamlMap, FilesAreCheckedBeforeTheyAreRead) {
+  // A directory (every node's file parameters end here: exit 134 before).
+  expect_config_error([] { YamlMap::load_file(::testing::TempDir()); },
+                      {::testing::TempDir(), "expected a YAML file, got a directory"});
+  // A FIFO would block the reader forever; /dev/zero would never end.
+  expect_config_error([] { YamlMap::load_file("/dev/zero"); },
+                      {"/dev/zero", "expected a YAML file, got a special file"});
+  // Exactly the limit is read; one byte more is refused with both numbers.
+  EXPECT_EQ(YamlMap::load_file(write_yaml("limit.yaml", kMaxYamlFileBytes)).required<int>("a"), 1);
+  expect_config_error([] { YamlMap::load_file(write_yaml("over.yaml", kMaxYamlFileBytes + 1)); },
+                      {"over.yaml", "at most 1048576 bytes", "got 1048577 bytes"});
+}
+
+TEST(YamlMap, UnreadableFileIsAConfigError) {
+  const std::string path = write_yaml("unreadable.yaml", 16);
+  std::filesystem::permissions(path, std::filesystem::perms::none);
+  if (std::ifstream(path).good()) {
+    GTEST_SKIP() << "running as root: permissions do not stop reading";
+  }
+  expect_config_error([&] { YamlMap::load_file(path); },
+                      {"unreadable.yaml", "cannot open the file", "Permission denied"});
 }
 
 }  // namespace

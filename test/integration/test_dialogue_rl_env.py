@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """rostest, dialogue_node mode 2 (rl_env): /sim/dialogue/reset and /sim/dialogue/step behave as
-a Gymnasium environment: numbers per step, same seed -> same observations, bad requests refused."""
+a Gymnasium environment: numbers per step, same seed -> same observations, bad requests refused
+with the field named, the episode untouched and the node still answering."""
 import unittest
 
 import rospy
@@ -126,6 +127,35 @@ class DialogueRlEnv(unittest.TestCase):
         good = self.step(GREETING, ["patient"], "")
         self.assertTrue(good.success)
         self.assertEqual(good.info.robot_turns, 1)
+
+    def test_6_every_bad_field_is_named_and_the_node_goes_on(self):
+        start = self.reset(4)
+        self.assertTrue(start.success)
+        cases = [
+            # (acts, addressees, text), the start of the message
+            (["greet()"] * 17, [], "", "acts: expected at most 16 acts, got 17"),
+            (["greet()", "inform(ari(name)"], [], "", "acts[1]: dialogue act 'inform(ari(name)'"),
+            (["greet()", "thank(\x00)"], [], "",
+             "acts[1]: expected UTF-8 text without control characters, got byte 0x00 at 6"),
+            (["greet()"], ["patient", "patient"], "",
+             "addressees[1]: expected each role once, got 'patient' again"),
+            (["greet()"], ["ARI"], "", "addressees[0]: expected one of the humans' roles"),
+            (["greet()"], [], "x" * 5000, "text: expected at most 4096 bytes, got 5000"),
+            (["greet()"], [], "Hello\athere",
+             "text: expected UTF-8 text without control characters, got byte 0x07 at 5"),
+        ]
+        for acts, addressees, text, message in cases:
+            refused = self.step(acts, addressees, text)
+            self.assertFalse(refused.success, message)
+            self.assertTrue(refused.message.startswith(message), refused.message)
+        # Every refusal left the episode as it was: the next good step is turn 1, and text in any
+        # script (UTF-8) with tabs and newlines is fine.
+        good = self.step(GREETING, ["patient", "companion"], "Hello,\tI am ARI.\nBonjour, ça va ?")
+        self.assertTrue(good.success, good.message)
+        self.assertEqual(good.info.robot_turns, 1)
+        # Seeds take the whole uint64 range.
+        for seed in (0, 2 ** 63, 2 ** 64 - 1):
+            self.assertTrue(self.reset(seed).success)
 
 
 if __name__ == "__main__":

@@ -1,15 +1,18 @@
 #!/usr/bin/python3
 """rostest: world_node's topics and services behave as documented (README, world_node)."""
+import math
 import threading
 import time
 import unittest
 
+import genpy.dynamic
 import rospy
 import rostest
 from geometry_msgs.msg import Point, Pose2D, Twist
 from nav_msgs.msg import OccupancyGrid, Odometry
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import SetBool, Trigger
+from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import WorldState
 from ari_social_sim.srv import (AddGroupMembers, CreateGroup, RemoveHuman, Say, SetGazeTargets,
@@ -17,6 +20,9 @@ from ari_social_sim.srv import (AddGroupMembers, CreateGroup, RemoveHuman, Say, 
                                 StepSimulation)
 
 STEP_S = 0.05  # world_node's default step
+NAN = float("nan")
+INF = float("inf")
+MAX_STEPS = 100000  # world_node's most steps per /sim/step request (README)
 
 
 class Latest:
@@ -48,6 +54,41 @@ def human(state, human_id):
     return next((h for h in state.humans if h.id == human_id), None)
 
 
+class LatestDiagnostics(Latest):
+    """The last /diagnostics message as a dict of its values, decoded without diagnostic_msgs'
+    Python package (Debian's python3-diagnostic-msgs is not installed here): the class is built
+    from the message definition the publisher sends in its connection header."""
+
+    def __init__(self):
+        self._classes = {}
+        super().__init__("/diagnostics", rospy.AnyMsg)
+
+    def _on_msg(self, raw):
+        header = raw._connection_header
+        msg_type = header["type"]
+        if msg_type not in self._classes:
+            self._classes.update(genpy.dynamic.generate_dynamic(msg_type,
+                                                               header["message_definition"]))
+        array = self._classes[msg_type]().deserialize(raw._buff)
+        values = {}
+        for status in array.status:
+            if status.name == "world_node: inputs":
+                values.update({kv.key: int(kv.value) for kv in status.values})
+        super()._on_msg(values)
+
+
+def finite_world(state):
+    """True when every number of ARI, the humans and the groups in a world state is finite."""
+    numbers = [state.ari.pose.x, state.ari.pose.y, state.ari.pose.theta, state.ari.head_pan,
+               state.ari.linear_velocity, state.ari.angular_velocity]
+    for h in state.humans:
+        numbers += [h.pose.x, h.pose.y, h.pose.theta, h.velocity.linear.x, h.velocity.linear.y,
+                    h.velocity.angular.z, h.gaze.direction]
+    for g in state.groups:
+        numbers += [g.centre.x, g.centre.y, g.ospace_radius]
+    return all(math.isfinite(x) for x in numbers)
+
+
 class WorldNodeContract(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -55,6 +96,7 @@ class WorldNodeContract(unittest.TestCase):
         cls.clock = Latest("/clock", Clock)
         cls.state = Latest("/sim/world_state", WorldState)
         cls.odom = Latest("/mobile_base_controller/odom", Odometry)
+        cls.diagnostics = LatestDiagnostics()
         for name in ["spawn_human", "remove_human", "set_goal", "set_velocity", "set_pose",
                      "create_group", "add_group_members", "set_group_centre", "say",
                      "set_gaze_targets", "reset", "pause", "step"]:
@@ -200,6 +242,145 @@ class WorldNodeContract(unittest.TestCase):
         self.assertIn("paused", running.message)
         # The world is intact after the refusals: still six people.
         self.assertEqual(len(self.state.wait().humans), 6)
+
+    def step_paused(self, steps):
+        """Pauses, steps, and returns the world state of the last step."""
+        self.assertTrue(self.call["pause"](True).success)
+        stepped = self.call["step"](steps=steps)
+        self.assertTrue(stepped.success, stepped.message)
+        return self.state.wait(lambda m: abs(m.header.stamp.to_sec() - stepped.sim_time) < 1e-6)
+
+    def test_08_non_finite_service_fields_are_refused_and_named(self):
+        # The default scene: Marie (10) and her companion (11) are group 1; 20-22 are group 2.
+        calls = [
+            ("spawn_human: pose.x", lambda v: self.call["spawn"](id=0, pose=Pose2D(v, 2.0, 0.0))),
+            ("spawn_human: pose.y", lambda v: self.call["spawn"](id=0, pose=Pose2D(6.0, v, 0.0))),
+            ("spawn_human: pose.theta",
+             lambda v: self.call["spawn"](id=0, pose=Pose2D(6.0, 2.0, v))),
+            ("spawn_human: age",
+             lambda v: self.call["spawn"](id=0, pose=Pose2D(6.0, 2.0, 0.0), age=v)),
+            ("set_goal: goal.x", lambda v: self.call["goal"](id=10, goal=Pose2D(v, 3.0, 0.0))),
+            ("set_goal: goal.y", lambda v: self.call["goal"](id=10, goal=Pose2D(3.0, v, 0.0))),
+            ("set_goal: goal.theta",
+             lambda v: self.call["goal"](id=10, goal=Pose2D(3.0, 3.0, v))),
+            ("set_velocity: vx", lambda v: self.call["velocity"](id=10, vx=v, vy=0.0, omega=0.0)),
+            ("set_velocity: vy", lambda v: self.call["velocity"](id=10, vx=0.0, vy=v, omega=0.0)),
+            ("set_velocity: omega",
+             lambda v: self.call["velocity"](id=10, vx=0.0, vy=0.0, omega=v)),
+            ("set_pose: pose.x", lambda v: self.call["pose"](id=10, pose=Pose2D(v, 3.0, 0.0))),
+            ("set_pose: pose.y", lambda v: self.call["pose"](id=1, pose=Pose2D(8.6, v, 0.0))),
+            ("set_pose: pose.theta",
+             lambda v: self.call["pose"](id=10, pose=Pose2D(2.0, 3.0, v))),
+            ("create_group: centre.x", lambda v: self.call["group"](
+                id=0, members=[30], centre=Point(v, 3.0, 0.0), ospace_radius=0.0)),
+            ("create_group: centre.y", lambda v: self.call["group"](
+                id=0, members=[30], centre=Point(6.0, v, 0.0), ospace_radius=0.0)),
+            ("create_group: ospace_radius", lambda v: self.call["group"](
+                id=0, members=[30], centre=Point(6.0, 3.0, 0.0), ospace_radius=v)),
+            ("set_group_centre: centre.x",
+             lambda v: self.call["centre"](group_id=1, centre=Point(v, 3.0, 0.0))),
+            ("set_group_centre: centre.y",
+             lambda v: self.call["centre"](group_id=1, centre=Point(3.0, v, 0.0))),
+            ("set_gaze_targets: gaze.probabilities[0]", lambda v: self.call["gaze"](
+                id=10, targets=[1], probabilities=[v], mean_duration=1.0)),
+            ("set_gaze_targets: gaze.mean_duration", lambda v: self.call["gaze"](
+                id=10, targets=[1], probabilities=[1.0], mean_duration=v)),
+        ]
+        refusals = 0
+        for field, call in calls:
+            for value in (NAN, INF, -INF):
+                response = call(value)
+                self.assertFalse(response.success, "%s = %s accepted" % (field, value))
+                self.assertIn(field + ": expected", response.message)
+                refusals += 1
+        # Finite but far beyond a human's 1.3 m/s, and a goal off the 12.4 m floor.
+        fast = self.call["velocity"](id=10, vx=1e300, vy=0.0, omega=0.0)
+        self.assertFalse(fast.success)
+        self.assertIn("at most 1.3 m/s", fast.message)
+        far = self.call["goal"](id=10, goal=Pose2D(50.0, 3.0, 0.0))
+        self.assertFalse(far.success)
+        self.assertIn("set_goal: goal.x: expected a finite number inside the world [-0.2, 12.2], "
+                      "got 50", far.message)
+        rospy.loginfo("%d non-finite service fields refused", refusals)
+        # 40 steps later every pose, velocity, gaze and centre is finite; both groups are intact.
+        state = self.step_paused(40)
+        self.assertTrue(finite_world(state))
+        self.assertEqual(len(state.humans), 6)
+        self.assertEqual(sorted(g.id for g in state.groups), [1, 2])
+        self.assertEqual(human(state, 10).group_id, 1)
+
+    def test_09_non_finite_topic_messages_are_dropped_and_counted(self):
+        cmd_vel = rospy.Publisher("/mobile_base_controller/cmd_vel", Twist, queue_size=10)
+        head = rospy.Publisher("/head_controller/command", JointTrajectory, queue_size=10)
+        limit = time.monotonic() + 10
+        while time.monotonic() < limit and (cmd_vel.get_num_connections() == 0 or
+                                            head.get_num_connections() == 0):
+            time.sleep(0.05)
+        before = self.diagnostics.wait()
+        # 50 ms apart: world_node keeps one message per topic between two looks at its callbacks
+        # (every 12.5 ms at this real-time factor), so none is superseded unseen.
+        for _ in range(5):
+            cmd_vel.publish(Twist(linear=Point(NAN, 0, 0)))
+            time.sleep(0.05)
+            cmd_vel.publish(Twist(angular=Point(0, 0, INF)))
+            head.publish(JointTrajectory(joint_names=["head_1_joint"], points=[
+                JointTrajectoryPoint(positions=[NAN], time_from_start=rospy.Duration(0.5))]))
+            time.sleep(0.05)
+        state = self.state.wait(lambda m: m.header.stamp.to_sec() > 0.5)
+        self.assertTrue(finite_world(state))
+        # The next valid commands still drive ARI (forward is -x in this scene) and pan its head.
+        start = self.odom.wait().pose.pose.position.x
+        limit = time.monotonic() + 10
+        while time.monotonic() < limit and self.odom.msg.pose.pose.position.x > start - 0.3:
+            cmd_vel.publish(Twist(linear=Point(0.3, 0, 0)))
+            head.publish(JointTrajectory(joint_names=["head_1_joint"], points=[
+                JointTrajectoryPoint(positions=[0.5], time_from_start=rospy.Duration(0.5))]))
+            time.sleep(0.05)
+        self.assertLess(self.odom.msg.pose.pose.position.x, start - 0.3)
+        state = self.state.wait(lambda m: abs(m.ari.head_pan - 0.5) < 1e-6)
+        self.assertTrue(finite_world(state))
+        # A finite command beyond ARI's 1 m/s is clamped, and counted as such.
+        cmd_vel.publish(Twist(linear=Point(3.0, 0, 0)))
+        # Every NaN and infinity is counted under its topic and field (1 Hz diagnostics).
+        cmd_x = "dropped /mobile_base_controller/cmd_vel linear.x"
+        cmd_z = "dropped /mobile_base_controller/cmd_vel angular.z"
+        pan = "dropped /head_controller/command points[last].positions[head_1_joint]"
+        after = self.diagnostics.wait(lambda d: d.get(pan, 0) >= before[pan] + 5 and
+                                      d.get(cmd_z, 0) >= before[cmd_z] + 5)
+        self.assertEqual(after[cmd_x] - before[cmd_x], 5)
+        self.assertEqual(after[cmd_z] - before[cmd_z], 5)
+        self.assertEqual(after[pan] - before[pan], 5)
+        after = self.diagnostics.wait(
+            lambda d: d["clamped /mobile_base_controller/cmd_vel"] > before[
+                "clamped /mobile_base_controller/cmd_vel"])
+        self.assertEqual(after["clamped /mobile_base_controller/cmd_vel"] -
+                         before["clamped /mobile_base_controller/cmd_vel"], 1)
+        rospy.loginfo("/diagnostics: %s", after)
+
+    def test_10_step_requests_have_a_maximum(self):
+        self.assertTrue(self.call["pause"](True).success)
+        for steps in (MAX_STEPS + 1, 4294967295, 0):
+            refused = self.call["step"](steps=steps)
+            self.assertFalse(refused.success)
+            self.assertIn("step: steps: expected an integer in [1, 100000] per request",
+                          refused.message)
+            self.assertIn("got %d" % steps, refused.message)
+        # The node still serves requests at once.
+        stepped = self.call["step"](steps=2)
+        self.assertTrue(stepped.success, stepped.message)
+
+    def test_11_reset_restarts_the_pacing(self):
+        # At a real-time factor of 4, sim time runs 4 s per wall second from the reset on. Before
+        # the fix a reset ran the world as fast as possible until it was back at its old time.
+        self.clock.wait(lambda m: m.clock.to_sec() > 8.0)
+        self.assertTrue(self.call["reset"]().success)
+        reset_wall = time.monotonic()
+        time.sleep(1.0)
+        latest = self.clock.wait().clock.to_sec()
+        elapsed = time.monotonic() - reset_wall
+        rospy.loginfo("%.2f s of sim time in %.2f s of wall time after a reset", latest, elapsed)
+        self.assertLess(latest, 4.0 * elapsed + 0.5)
+        self.assertGreater(latest, 4.0 * 1.0 - 1.0)
 
 
 if __name__ == "__main__":

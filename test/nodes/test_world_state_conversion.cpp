@@ -2,6 +2,9 @@
 // hri_perception_node perceives over the wire is what the world core produced.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <limits>
+
 #include "../../src/nodes/conversions/world_state.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/scene.hpp"
@@ -56,6 +59,82 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
   EXPECT_EQ(grid_back.width, grid.width);
   EXPECT_NEAR(grid_back.resolution_m, 0.05, 1e-7);  // float32 on the wire
   EXPECT_EQ(grid_back.origin, grid.origin);
+}
+
+// The waiting room's state after a second, as world_node publishes it.
+WorldState waiting_room_state() {
+  const world::Scene scene =
+      world::load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/waiting_room.yaml");
+  auto simulation = world::build_simulation(scene, world::SimulationConfig{});
+  for (int i = 0; i < 20; ++i) {
+    simulation->step();
+  }
+  return to_msg(world::WorldSnapshot::of(*simulation), "map");
+}
+
+std::string describe(const std::optional<InputProblem>& problem) {
+  return problem ? problem->field + ": " + problem->what : "fine";
+}
+
+TEST(WorldStateInput, EveryNumberTheConsumersUseMustBeFiniteAndEnumsKnown) {
+  const WorldState good = waiting_room_state();
+  ASSERT_GE(good.humans.size(), 3u);
+  EXPECT_EQ(describe(input_problem(good)), "fine");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<std::function<void(WorldState&)>, std::string>> cases = {
+      {[&](WorldState& m) { m.ari.pose.x = nan; }, "ari.pose.x: nan, not a finite number"},
+      {[&](WorldState& m) { m.ari.head_pan = -inf; }, "ari.head_pan: -inf, not a finite number"},
+      {[&](WorldState& m) { m.humans[2].pose.theta = nan; },
+       "humans[2].pose.theta: nan, not a finite number"},
+      {[&](WorldState& m) { m.humans[1].velocity.linear.y = inf; },
+       "humans[1].velocity.linear.y: inf, not a finite number"},
+      {[&](WorldState& m) { m.humans[0].age = std::numeric_limits<float>::quiet_NaN(); },
+       "humans[0].age: nan, not a finite number"},
+      {[&](WorldState& m) { m.humans[0].gender = 7; }, "humans[0].gender: 7, not one of 1..3"},
+      {[&](WorldState& m) { m.humans[1].emotion = 4; }, "humans[1].emotion: 4, not one of 0..3"},
+      {[&](WorldState& m) { m.humans[1].motion_mode = 200; },
+       "humans[1].motion_mode: 200, not one of 0..3"},
+      {[&](WorldState& m) { m.humans[0].gaze.direction = nan; },
+       "humans[0].gaze.direction: nan, not a finite number"},
+      {[&](WorldState& m) { m.groups.at(0).ospace_radius = nan; },
+       "groups[0].ospace_radius: nan, not a finite number"},
+      {[&](WorldState& m) { m.humans.resize(world::kMaxHumans + 1, m.humans[0]); },
+       "humans (count): 1001, more than 1000"}};
+  for (const auto& [spoil, expected] : cases) {
+    WorldState bad = good;
+    spoil(bad);
+    EXPECT_EQ(describe(input_problem(bad)), expected);
+  }
+  // A NaN in ARI's pose does not count when the message says there is no ARI.
+  WorldState without_ari = good;
+  without_ari.has_ari = false;
+  without_ari.ari.pose.x = nan;
+  EXPECT_EQ(describe(input_problem(without_ari)), "fine");
+}
+
+TEST(MapInput, CellsMustMatchTheSizeAndStayWithinTheLimit) {
+  world::OccupancyGrid grid;
+  grid.resolution_m = 0.05;
+  grid.width = 40;
+  grid.height = 30;
+  grid.cells.assign(1200, 0);
+  const nav_msgs::OccupancyGrid good = to_msg(grid, "map", 0.0);
+  EXPECT_EQ(describe(input_problem(good)), "fine");
+  nav_msgs::OccupancyGrid bad = good;
+  bad.data.pop_back();
+  EXPECT_EQ(describe(input_problem(bad)), "data: 1199 cells for a 40 x 30 grid");
+  bad = good;
+  bad.info.resolution = 0.0f;
+  EXPECT_EQ(describe(input_problem(bad)), "info.resolution: 0.000000, not > 0");
+  bad = good;
+  bad.info.origin.position.y = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(describe(input_problem(bad)), "info.origin.position.y: nan, not a finite number");
+  bad = good;
+  bad.info.width = 100000;
+  bad.info.height = 100000;  // 1e10 cells: refused before anything is allocated from it
+  EXPECT_EQ(describe(input_problem(bad)),
+            "info.width x info.height: 10000000000, more than 16777216");
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "ari_social_sim/scenario/batch_plan.hpp"
@@ -47,6 +49,79 @@ TEST(BatchPlan, SeedsMustStayBelowTwoToThe31) {
       },
       "command line: --episodes", {"at least 1"});
   EXPECT_NO_THROW((BatchPlan{8, 2147483640u, 1, 1}).validate("command line"));
+}
+
+BatchSettings example_settings() {
+  BatchSettings settings;
+  settings.scenario = "join_group";
+  settings.scenario_file = "/data/it's here/join_group.yaml";
+  settings.scenario_digest = "00000000000000ab";
+  settings.config_digest = "1234567890abcdef";
+  settings.plan = BatchPlan{40, 7, 2, 4};
+  settings.bags = false;
+  return settings;
+}
+
+TEST(BatchSettings, RoundTripsThroughTheirYaml) {
+  const BatchSettings settings = example_settings();
+  const BatchSettings read = BatchSettings::parse(settings.to_yaml(), "x.settings.yaml");
+  EXPECT_EQ(read.scenario, "join_group");
+  EXPECT_EQ(read.scenario_file, "/data/it's here/join_group.yaml");
+  EXPECT_EQ(read.scenario_digest, "00000000000000ab");  // digits stay text, zeros kept
+  EXPECT_EQ(read.config_digest, "1234567890abcdef");
+  EXPECT_EQ(read.plan.episodes, 40u);
+  EXPECT_EQ(read.plan.first_seed, 7u);
+  EXPECT_EQ(read.plan.shard_index, 2u);
+  EXPECT_EQ(read.plan.shard_count, 4u);
+  EXPECT_FALSE(read.bags);
+  EXPECT_TRUE(settings.differences(read).empty());
+}
+
+TEST(BatchSettings, NameEveryDifferenceButTheEpisodeCount) {
+  const BatchSettings there = example_settings();
+  BatchSettings now = there;
+  now.plan.episodes = 80;  // a resumed run may ask for more
+  now.scenario_file = "scenarios/join_group.yaml";
+  EXPECT_TRUE(there.differences(now).empty());
+  now.plan.first_seed = 5;
+  now.plan.shard_index = 1;
+  now.bags = true;
+  now.config_digest = "0";
+  EXPECT_EQ(there.differences(now),
+            (std::vector<std::string>{
+                "config: the configuration files changed since (digest 1234567890abcdef there, "
+                "0 now)",
+                "--seed: first seed 7 there, 5 now", "--shard: 2/4 there, 1/4 now",
+                "--no-bags: no bags there, bags now"}));
+}
+
+TEST(BatchSettings, BadFilesAreNamed) {
+  world::test::expect_config_error(
+      [] { BatchSettings::parse("scenario: x\n", "out/x.settings.yaml"); },
+      "out/x.settings.yaml: scenario_file", {"required"});
+  std::string text = example_settings().to_yaml();
+  text.replace(text.find("first_seed: 7"), 13, "first_seed: -7");
+  world::test::expect_config_error([&] { BatchSettings::parse(text, "s.yaml"); },
+                                   "s.yaml: first_seed", {"-7"});
+}
+
+TEST(DigestFiles, ChangesWithAnyByteAndTheFileBoundary) {
+  const std::string dir = ::testing::TempDir() + "digest_files/";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "a") << "seed: 1\n";
+  std::ofstream(dir + "b") << "x";
+  const std::string digest = digest_files({dir + "a", dir + "b"});
+  EXPECT_EQ(digest.size(), 16u);
+  EXPECT_EQ(digest_files({dir + "a", dir + "b"}), digest);
+  // FNV-1a 64 of nothing is its offset basis, cbf29ce484222325.
+  std::ofstream(dir + "empty");
+  EXPECT_EQ(digest_files({}), "cbf29ce484222325");
+  EXPECT_NE(digest_files({dir + "empty"}), "cbf29ce484222325");  // one boundary
+  EXPECT_NE(digest_files({dir + "b", dir + "a"}), digest);
+  std::ofstream(dir + "a") << "seed: 2\n";
+  EXPECT_NE(digest_files({dir + "a", dir + "b"}), digest);
+  world::test::expect_config_error([&] { digest_files({dir + "none"}); }, dir + "none",
+                                   {"cannot read"});
 }
 
 }  // namespace

@@ -1,27 +1,15 @@
 // Runs the detect_groups program as a user would, through the shell.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "program_run.hpp"
 
 namespace {
 
-struct ProgramRun {
-  int status{-1};
-  std::string out;
-  std::string err;
-};
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using ari_social_sim::tools::test::ProgramRun;
 
 std::string temp_path(const std::string& name) {
   return ::testing::TempDir() + "detect_groups_" + name;
@@ -29,16 +17,7 @@ std::string temp_path(const std::string& name) {
 
 // Runs detect_groups with `arguments` (shell syntax), capturing its output and exit status.
 ProgramRun run(const std::string& arguments) {
-  const std::string out = temp_path("stdout.txt");
-  const std::string err = temp_path("stderr.txt");
-  const std::string command =
-      std::string(ARI_DETECT_GROUPS_BIN) + " " + arguments + " >" + out + " 2>" + err;
-  const int raw = std::system(command.c_str());
-  ProgramRun result;
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  result.out = read_all(out);
-  result.err = read_all(err);
-  return result;
+  return ari_social_sim::tools::test::run_program(ARI_DETECT_GROUPS_BIN, arguments);
 }
 
 std::string data_file(const std::string& name) {
@@ -95,9 +74,29 @@ TEST(DetectGroups, BadArgumentsExitWithTwo) {
                      "--frames");
   expect_usage_error(run("--features /nonexistent.csv --stride 30 --mdl 1"),
                      "/nonexistent.csv: cannot open");
+  expect_usage_error(run("--features " + features + " --stride nan --mdl 1"),
+                     "--stride: expected a finite number > 0, got 'nan'");
+  expect_usage_error(run("--features " + features + " --stride 1e400 --mdl 1"), "got '1e400'");
+  expect_usage_error(run("--features " + ::testing::TempDir() + " --stride 30 --mdl 1"),
+                     "--features: " + ::testing::TempDir() +
+                         ": expected a readable file, got a "
+                         "directory");
+  expect_usage_error(run("--features " + features + " --stride 30 --mdl 1 --evaluate " + features +
+                         " --frames /nonexistent_frames.csv"),
+                     "--frames: /nonexistent_frames.csv: cannot open");
   // Ground truth given as features: the header is wrong, named with file, line and column.
   expect_usage_error(run("--features " + data_file("Synth_groups.csv") + " --stride 30 --mdl 1"),
                      "Synth_groups.csv:1:1:");
+}
+
+TEST(DetectGroups, AFailedWriteExitsWithOne) {
+  // /dev/full takes the open and refuses the bytes, as a full disk does.
+  const ProgramRun full = ari_social_sim::tools::test::run_program(
+      ARI_DETECT_GROUPS_BIN,
+      "--features " + data_file("Synth_features.csv") + " --stride 30 --mdl 6000", "/dev/full");
+  EXPECT_EQ(full.status, 1);
+  EXPECT_NE(full.err.find("standard output: writing the groups failed"), std::string::npos)
+      << full.err;
 }
 
 }  // namespace

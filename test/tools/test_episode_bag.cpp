@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <rosbag/view.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -45,6 +46,7 @@ std::string run_to_bag(const scenario::Scenario& scenario, uint64_t seed, const 
       episode.step();
       bag.record_step(episode);
     }
+    bag.finish();
   }
   std::ifstream file(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(file), {});
@@ -58,6 +60,37 @@ TEST(EpisodeBag, SameSeedSameBytesOtherSeedOtherBytes) {
   ASSERT_GT(a.size(), 100000u);  // 120 steps of world state, the map
   EXPECT_TRUE(a == b) << "two runs with seed 4 wrote different bags";
   EXPECT_FALSE(a == c) << "seeds 4 and 5 wrote the same bag";
+}
+
+TEST(EpisodeBag, CompleteUnderItsNameOrAbsent) {
+  namespace fs = std::filesystem;
+  const scenario::Scenario scenario = random_group_scenario();
+  static const scenario::EpisodeConfig config = scenario::EpisodeConfig::load(kSource + "/config");
+  const std::string done = ::testing::TempDir() + "finished.bag";
+  const std::string cut = ::testing::TempDir() + "interrupted.bag";
+  fs::remove(done);
+  fs::remove(cut);
+  {
+    scenario::Episode episode(scenario, 4, config);
+    EpisodeBag finished(done, scenario.name);
+    EpisodeBag interrupted(cut, scenario.name);
+    for (int step = 0; step < 40; ++step) {  // 2 s of the 6 s chat
+      episode.step();
+      finished.record_step(episode);
+      interrupted.record_step(episode);
+    }
+    // While written, each bag exists only as .active.
+    EXPECT_TRUE(fs::exists(done + ".active"));
+    EXPECT_FALSE(fs::exists(done));
+    finished.finish();
+    EXPECT_TRUE(fs::exists(done));
+    EXPECT_FALSE(fs::exists(done + ".active"));
+  }  // `interrupted` is dropped unfinished, as an interrupted run drops the episode under way
+  EXPECT_FALSE(fs::exists(cut));
+  EXPECT_FALSE(fs::exists(cut + ".active"));
+  rosbag::Bag bag(done, rosbag::bagmode::Read);
+  rosbag::View clock(bag, rosbag::TopicQuery("/clock"));
+  EXPECT_EQ(clock.size(), 40u);  // one per step
 }
 
 TEST(EpisodeBag, TopicsTypesAndCounts) {

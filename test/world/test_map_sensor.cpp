@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "scene_builders.hpp"
@@ -49,6 +52,27 @@ TEST(MapSensor, RasterisesWallsAndFurnitureButNotAgents) {
   const MapSensor& sensor = simulation.ari()->map_sensor();
   ASSERT_TRUE(sensor.has_map());
   EXPECT_EQ(sensor.map().cells, grid.cells);
+}
+
+TEST(MapSensor, GridsBeyondTheCellLimitAreRefusedBeforeAllocation) {
+  WorldDescription world = test::square_room(6.0);
+  world.size = {200.0, 200.0};
+  // 200 m at 0.05 m: 4000 x 4000 = 16 000 000 cells, within 4096 x 4096 = 16 777 216.
+  EXPECT_DOUBLE_EQ(map_cell_count(world, 0.05), 16e6);
+  EXPECT_NO_THROW(check_map_size(world, 0.05));
+  // At 0.01 m: 20000 x 20000 = 4e8 cells, refused with the numbers.
+  try {
+    rasterize_static_map(world, 0.01);
+    FAIL() << "a 4e8-cell grid was allocated";
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "map_resolution: 0.01 m over the floor of world 'room' (200 x 200 m) gives 4e+08 "
+              "cells, more than the 16777216 an occupancy grid may have");
+  }
+  // Sizes that reach the grid without WorldDescription::validate (C++ callers) are caught too.
+  world.size = {3000.0, 3000.0};
+  EXPECT_THROW(rasterize_static_map(world, 0.05), core::ConfigError);
+  EXPECT_THROW(check_map_size(world, std::nan("")), core::ConfigError);
 }
 
 }  // namespace

@@ -90,6 +90,59 @@ TEST(Scene, MissingWorldFileIsNamed) {
   }
 }
 
+TEST(Scene, GoalsAndCentresOffTheFloorAreRefused) {
+  // room_6x6's floor spans [-0.2, 6.2] on both axes.
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3], goal: {position: [3, 40]}}\n",
+                  {"humans[0]", "spawn_human: goal.y",
+                   "expected a finite number inside the world [-0.2, 6.2], got 40"});
+  expect_rejected(
+      "humans:\n  - {id: 10, position: [3, 3]}\ngroups:\n  - {id: 1, members: [10], centre: "
+      "[-9, 3]}\n",
+      {"groups[0]", "create_group: centre.x", "got -9"});
+  expect_rejected(
+      "humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 1e6, "
+      "directions: {distribution: normal, mean: 0, stddev: 0.3}}}\n",
+      {"humans[0]", "gaze.mean_duration", "(0, 86400] s", "1e+06"});
+  expect_rejected("ari: {position: [1e9, 1]}\n",
+                  {"ari", "pose.x", "inside the world [-0.2, 6.2]", "1e+09"});
+}
+
+TEST(Scene, CountsHaveDocumentedMaxima) {
+  std::string humans = "humans:\n";
+  for (int i = 0; i <= 1000; ++i) {
+    humans += "  - {id: " + std::to_string(10 + i) + ", position: [3, 3]}\n";
+  }
+  expect_rejected(humans, {": humans", "at most 1000 humans", "1001"});
+  std::string members = "[10";
+  for (int i = 11; i <= 60; ++i) {
+    members += ", " + std::to_string(i);
+  }
+  expect_rejected("groups:\n  - {id: 1, members: " + members + "], centre: [3, 3]}\n",
+                  {"groups[0]", "members", "at most 50 humans", "got 51"});
+  std::string targets = "[{id: 1, probability: 1}";
+  for (int i = 0; i < 50; ++i) {
+    targets += ", {id: 1, probability: 0}";
+  }
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 1, targets: " +
+                      targets + "]}}\n",
+                  {"humans[0].gaze.targets", "at most 50 targets", "51"});
+}
+
+TEST(Scene, DirectoriesAndOversizedScenesAreRefusedBeforeReading) {
+  // A directory used to abort world_node with an uncaught exception (exit 134).
+  test::expect_config_error([] { load_scene_file(kWorlds); }, kWorlds,
+                            {"expected a YAML file, got a directory"});
+  // A 50 MB scene used to take 3.5 GB and 24 s before its error; 2 MB is refused unread.
+  const std::string path = write_scene("# " + std::string(2 * 1024 * 1024, 'x') + "\n");
+  test::expect_config_error([&] { load_scene_file(path); }, path,
+                            {"expected a YAML file of at most 1048576 bytes"});
+  // The scene's world file gets the same checks, named through the scene's `world` field.
+  const std::string scene = ::testing::TempDir() + "scene_world_is_a_directory.yaml";
+  std::ofstream(scene) << "world: " << kWorlds << "\nseed: 1\n";
+  test::expect_config_error([&] { load_scene_file(scene); }, scene + ": world",
+                            {"got a directory"});
+}
+
 TEST(Scene, ShippedScenesBuild) {
   for (const char* name : {"waiting_room", "flat_group_formation"}) {
     const Scene scene = load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/" + name + ".yaml");

@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <limits>
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/simulation.hpp"
@@ -83,6 +86,24 @@ TEST(Simulation, WallsStopHumansWalkingIntoThem) {
   }
   // East wall inner face at x = 5.95; the body's radius 0.2 keeps the centre at <= 5.75 (+ slop).
   EXPECT_NEAR(human.pose().position.x(), 5.75, 0.02);
+}
+
+TEST(Simulation, NobodyLeavesTheFloorThroughAnOpening) {
+  // A room without its east wall: the floor ends 0.2 m past where the wall would stand (x 6.2).
+  WorldDescription open_room = test::square_room(6.0);
+  open_room.objects.erase(
+      std::remove_if(open_room.objects.begin(), open_room.objects.end(),
+                     [](const StaticObject& wall) { return wall.pose.position.x() > 5.9; }),
+      open_room.objects.end());
+  ASSERT_EQ(open_room.objects.size(), 3u);
+  Simulation simulation(open_room, SimulationConfig{});
+  simulation.add_human(person(10, 3.0, 3.0));
+  simulation.set_human_velocity(10, {1.3, 0.0}, 0.0);
+  for (int i = 0; i < 200; ++i) {  // 10 s at 1.3 m/s: 13 m, far past the floor without a fence
+    simulation.step();
+  }
+  // The floor's edge at x = 6.2 stops the body's radius of 0.2 short of it (+ Box2D's slop).
+  EXPECT_NEAR(simulation.find_human(10)->pose().position.x(), 6.0, 0.02);
 }
 
 TEST(Simulation, HumanNavigationReachesItsGoalPose) {
@@ -205,6 +226,317 @@ TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeechIsFoundById) {
   EXPECT_EQ(&simulation.speech_of(1), &simulation.ari()->speech());
   EXPECT_EQ(&simulation.speech_of(11), &simulation.find_human(11)->speech());
   EXPECT_THROW(simulation.speech_of(1002), core::RequestError);  // a wall says nothing
+}
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A small world every kind of request can act on: three humans (10 and 11 in group 1, 12 gazing
+// at 10), ARI, in square_room(6) whose floor spans [-0.2, 6.2] on both axes.
+std::unique_ptr<Simulation> request_world() {
+  auto simulation = std::make_unique<Simulation>(test::square_room(6.0), SimulationConfig{});
+  simulation->add_human(person(10, 2.0, 2.0));
+  simulation->add_human(person(11, 4.0, 2.0));
+  simulation->add_human(person(12, 3.0, 4.0));
+  AriSpec ari;
+  ari.pose = {{1.0, 5.0}, 0.0};
+  simulation->add_ari(ari);
+  GroupSpec group;
+  group.id = 1;
+  group.members = {10, 11};
+  group.centre = {3.0, 2.0};
+  simulation->add_group(group);
+  GazeModel gaze;
+  gaze.targets = {{10, 1.0}};
+  simulation->set_human_gaze(12, gaze);
+  return simulation;
+}
+
+// Every number of the ground truth, plus the modes, goals and groups: equal hashes, equal worlds.
+uint64_t full_hash(const WorldSnapshot& s) {
+  uint64_t h = hash_of(s);
+  auto mix = [&h](double value) {
+    uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    h = (h ^ bits) * 1099511628211ULL;
+  };
+  for (const HumanSnapshot& human : s.humans) {
+    mix(human.velocity_mps.x());
+    mix(human.velocity_mps.y());
+    mix(human.angular_velocity_rps);
+    mix(static_cast<double>(human.motion_mode));
+    mix(human.group_id);
+    mix(human.goal ? human.goal->position.x() : -1.0);
+  }
+  for (const GroupSnapshot& group : s.groups) {
+    mix(group.id);
+    mix(group.members.size());
+    mix(group.centre.x());
+    mix(group.centre.y());
+    mix(group.ospace_radius_m);
+  }
+  mix(s.ari->pose.position.x());
+  mix(s.ari->pose.position.y());
+  mix(s.ari->pose.theta);
+  mix(s.ari->linear_mps);
+  mix(s.ari->head_pan_rad);
+  return h;
+}
+
+bool all_finite(const WorldSnapshot& s) {
+  bool finite = s.ari->pose.position.allFinite() && std::isfinite(s.ari->pose.theta) &&
+                std::isfinite(s.ari->head_pan_rad) && std::isfinite(s.ari->linear_mps);
+  for (const HumanSnapshot& human : s.humans) {
+    finite = finite && human.pose.position.allFinite() && std::isfinite(human.pose.theta) &&
+             human.velocity_mps.allFinite() && std::isfinite(human.gaze.direction_rad);
+  }
+  for (const GroupSnapshot& group : s.groups) {
+    finite = finite && group.centre.allFinite() && std::isfinite(group.ospace_radius_m);
+  }
+  return finite;
+}
+
+struct BadRequest {
+  std::string expected;  // the start of the refusal: request and field
+  std::function<void(Simulation&)> send;
+};
+
+// One refused request per numeric field of every request world_node serves (and the ARI commands
+// its topics give), NaN, infinity or out of range.
+std::vector<BadRequest> bad_requests() {
+  auto spawn = [](double x, double y, double theta, double age) {
+    return [=](Simulation& sim) {
+      HumanSpec spec = person(20, x, y, theta);
+      spec.age_years = age;
+      sim.add_human(spec);
+    };
+  };
+  auto group = [](double cx, double cy, double radius) {
+    return [=](Simulation& sim) {
+      GroupSpec spec;
+      spec.id = 2;
+      spec.members = {12};
+      spec.centre = {cx, cy};
+      spec.ospace_radius_m = radius;
+      sim.add_group(spec);
+    };
+  };
+  auto gaze = [](double probability, double mean_duration_s) {
+    return [=](Simulation& sim) {
+      GazeModel model;
+      model.targets = {{11, probability}};
+      model.mean_duration_s = mean_duration_s;
+      sim.set_human_gaze(12, model);
+    };
+  };
+  const std::string floor = "expected a finite number inside the world [-0.2, 6.2], got ";
+  return {
+      {"spawn_human: pose.x: " + floor + "nan", spawn(kNan, 1.0, 0.0, 30.0)},
+      {"spawn_human: pose.y: " + floor + "inf", spawn(1.0, kInf, 0.0, 30.0)},
+      {"spawn_human: pose.x: " + floor + "20", spawn(20.0, 1.0, 0.0, 30.0)},
+      {"spawn_human: pose.theta: expected a finite number [-1e+06, 1e+06] rad, got nan",
+       spawn(1.0, 1.0, kNan, 30.0)},
+      {"spawn_human: age: expected a finite number [0, 130] years, got nan",
+       spawn(1.0, 1.0, 0.0, kNan)},
+      {"spawn_human: age: expected a finite number [0, 130] years, got 200",
+       spawn(1.0, 1.0, 0.0, 200.0)},
+      {"set_goal: goal.x: " + floor + "nan",
+       [](Simulation& sim) {
+         sim.set_human_goal(10, {{kNan, 1.0}, 0.0});
+       }},
+      {"set_goal: goal.y: " + floor + "inf",
+       [](Simulation& sim) {
+         sim.set_human_goal(10, {{1.0, kInf}, 0.0});
+       }},
+      {"set_goal: goal.x: " + floor + "-50",
+       [](Simulation& sim) {
+         sim.set_human_goal(10, {{-50.0, 1.0}, 0.0});
+       }},
+      {"set_goal: goal.theta: expected a finite number [-1e+06, 1e+06] rad, got nan",
+       [](Simulation& sim) {
+         sim.set_human_goal(10, {{1.0, 1.0}, kNan});
+       }},
+      {"set_velocity: vx: expected a finite number, got nan",
+       [](Simulation& sim) {
+         sim.set_human_velocity(10, {kNan, 0.0}, 0.0);
+       }},
+      {"set_velocity: vy: expected a finite number, got -inf",
+       [](Simulation& sim) {
+         sim.set_human_velocity(10, {0.0, -kInf}, 0.0);
+       }},
+      // 1e300 is finite, and 1e300 m/s beyond the default max_speed of 1.3 m/s.
+      {"set_velocity: (vx, vy): expected a speed of at most 1.3 m/s (human 10's max_speed), got "
+       "1e+300 m/s",
+       [](Simulation& sim) {
+         sim.set_human_velocity(10, {1e300, 0.0}, 0.0);
+       }},
+      // (1, 1) m/s is 1.414 m/s.
+      {"set_velocity: (vx, vy): expected a speed of at most 1.3 m/s (human 10's max_speed), got "
+       "1.41421 m/s",
+       [](Simulation& sim) {
+         sim.set_human_velocity(10, {1.0, 1.0}, 0.0);
+       }},
+      {"set_velocity: omega: expected a finite number [-6.28319, 6.28319] rad/s, got nan",
+       [](Simulation& sim) {
+         sim.set_human_velocity(10, {0.5, 0.0}, kNan);
+       }},
+      {"set_pose: pose.x: " + floor + "nan",
+       [](Simulation& sim) {
+         sim.set_pose(10, {{kNan, 1.0}, 0.0});
+       }},
+      {"set_pose: pose.y: " + floor + "-inf",
+       [](Simulation& sim) {
+         sim.set_pose(1, {{1.0, -kInf}, 0.0});
+       }},  // ARI
+      {"set_pose: pose.theta: expected a finite number [-1e+06, 1e+06] rad, got 1e+300",
+       [](Simulation& sim) {
+         sim.set_pose(10, {{1.0, 1.0}, 1e300});
+       }},
+      {"create_group: centre.x: expected a finite number, got nan", group(kNan, 3.0, 0.0)},
+      {"create_group: centre.y: expected a finite number, got inf", group(3.0, kInf, 0.0)},
+      {"create_group: centre.x: " + floor + "7", group(7.0, 3.0, 0.0)},
+      {"create_group: ospace_radius: expected a finite number [0, 10] m (0 = automatic), got nan",
+       group(3.0, 3.0, kNan)},
+      {"create_group: ospace_radius: expected a finite number [0, 10] m (0 = automatic), got inf",
+       group(3.0, 3.0, kInf)},
+      {"create_group: ospace_radius: expected a finite number [0, 10] m (0 = automatic), got 11",
+       group(3.0, 3.0, 11.0)},
+      {"set_group_centre: centre.x: " + floor + "nan",
+       [](Simulation& sim) {
+         sim.set_group_centre(1, {kNan, 3.0});
+       }},
+      {"set_group_centre: centre.y: " + floor + "inf",
+       [](Simulation& sim) {
+         sim.set_group_centre(1, {3.0, kInf});
+       }},
+      {"set_gaze_targets: gaze.probabilities[0]: expected a finite number [0, 1], got nan",
+       gaze(kNan, 1.0)},
+      {"set_gaze_targets: gaze.mean_duration: expected a finite number (0, 86400] s, got nan",
+       gaze(1.0, kNan)},
+      {"set_gaze_targets: gaze.mean_duration: expected a finite number (0, 86400] s, got inf",
+       gaze(1.0, kInf)},
+      {"set_gaze_targets: gaze.mean_duration: expected a finite number (0, 86400] s, got 0",
+       gaze(1.0, 0.0)},
+      {"set_gaze_targets: targets[0]: expected another object of the world, got 12",
+       [](Simulation& sim) {
+         sim.set_human_gaze(12, {{{12, 1.0}}, std::nullopt, 1.0});
+       }},
+      {"cmd_vel: linear.x: expected a finite number, got nan",
+       [](Simulation& sim) { sim.command_ari_twist(kNan, 0.0); }},
+      {"cmd_vel: angular.z: expected a finite number, got inf",
+       [](Simulation& sim) { sim.command_ari_twist(0.5, kInf); }},
+      {"head_command: position: expected a finite number, got nan",
+       [](Simulation& sim) { sim.command_ari_head_pan(kNan); }},
+      {"head_command: velocity: expected a finite number, got -inf",
+       [](Simulation& sim) { sim.command_ari_head_pan_velocity(-kInf); }},
+      {"follow_ari: pose.x: expected a finite number, got nan",
+       [](Simulation& sim) {
+         sim.follow_ari({{kNan, 5.0}, 0.0}, 0.0, 0.0);
+       }},
+      {"follow_ari: linear: expected a finite number, got inf",
+       [](Simulation& sim) {
+         sim.follow_ari({{1.0, 5.0}, 0.0}, kInf, 0.0);
+       }},
+  };
+}
+
+TEST(Simulation, NonFiniteOrOutOfRangeRequestsAreRefusedAndChangeNothing) {
+  // Each refused request leaves its world exactly as an untouched twin: same hash after the
+  // refusal and after 40 more steps, every number still finite.
+  for (const BadRequest& request : bad_requests()) {
+    auto refused = request_world();
+    auto untouched = request_world();
+    refused->step();
+    untouched->step();
+    try {
+      request.send(*refused);
+      ADD_FAILURE() << "accepted: " << request.expected;
+    } catch (const core::RequestError& e) {
+      EXPECT_EQ(std::string(e.what()), request.expected);
+    }
+    EXPECT_EQ(full_hash(WorldSnapshot::of(*refused)), full_hash(WorldSnapshot::of(*untouched)))
+        << request.expected;
+    for (int i = 0; i < 40; ++i) {
+      refused->step();
+      untouched->step();
+    }
+    const WorldSnapshot after = WorldSnapshot::of(*refused);
+    EXPECT_TRUE(all_finite(after)) << request.expected;
+    EXPECT_EQ(full_hash(after), full_hash(WorldSnapshot::of(*untouched))) << request.expected;
+  }
+}
+
+TEST(Simulation, ValidRequestsAtTheLimitsAreAccepted) {
+  auto simulation = request_world();
+  // 1.3 m/s is human 10's max_speed exactly; a goal and a centre on the floor's corners.
+  simulation->set_group_centre(1, {-0.2, 6.2});
+  simulation->set_human_velocity(10, {1.3, 0.0}, kMaxHumanTurnRateRps);
+  simulation->set_human_goal(11, {{6.2, -0.2}, -3.0});
+  for (int i = 0; i < 40; ++i) {
+    simulation->step();
+  }
+  EXPECT_TRUE(all_finite(WorldSnapshot::of(*simulation)));
+  // 10 and 11 left group 1 (velocity and goal requests take a human out), which was dropped empty.
+  EXPECT_EQ(simulation->find_group(1), nullptr);
+  EXPECT_EQ(simulation->find_human(10)->motion_mode(), MotionMode::kDirect);
+}
+
+TEST(Simulation, SetPoseTakesAHumanOutOfItsGroupOnlyWhenAccepted) {
+  auto simulation = request_world();
+  EXPECT_THROW(simulation->set_pose(10, {{4.0, 2.0}, 0.0}), core::RequestError);  // onto 11
+  EXPECT_EQ(simulation->find_human(10)->group_id(), 1u);
+  simulation->set_pose(10, {{1.0, 1.0}, 0.0});
+  EXPECT_EQ(simulation->find_human(10)->group_id(), kNoObject);
+  EXPECT_EQ(simulation->find_group(1)->members(), std::vector<ObjectId>{11});
+}
+
+TEST(Simulation, DebugBuildsCatchANanWhereItIsMade) {
+#ifdef NDEBUG
+  GTEST_SKIP() << "ARI_DCHECK is compiled out of release builds";
+#else
+  // Past the checked entry points (Simulation's requests), the core's own setters assert.
+  auto simulation = request_world();
+  EXPECT_DEATH(simulation->find_human(10)->set_velocity({kNan, 0.0}, 0.0), "ARI_CHECK");
+  EXPECT_DEATH(simulation->find_human(12)->plan_motion({0.0, kInf}, 0.0), "ARI_CHECK");
+  EXPECT_DEATH(simulation->find_group(1)->set_centre({kNan, 1.0}), "ARI_CHECK");
+#endif
+}
+
+TEST(Simulation, GroupsAndWorldsHaveDocumentedMaxima) {
+  // 51 humans in a 12 m room; a group of 50 takes no 51st member.
+  Simulation simulation(test::square_room(12.0), SimulationConfig{});
+  core::Rng rng(3);
+  const std::vector<ObjectId> ids = test::add_random_humans(simulation, 51, 12.0, 0.5, rng);
+  GroupSpec group;
+  group.id = 1;
+  group.members.assign(ids.begin(), ids.begin() + 50);
+  group.centre = {6.0, 6.0};
+  simulation.add_group(group);
+  try {
+    simulation.add_group_members(1, {ids[50], ids[0]});
+    ADD_FAILURE() << "a 51st member was accepted";
+  } catch (const core::RequestError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "add_group_members: members: expected at most 50 humans in a group, got 50 members "
+              "and 1 joining");
+  }
+  // A list longer than any group is refused before it is searched (a client may send 1e6 ids).
+  EXPECT_THROW(simulation.add_group_members(1, std::vector<ObjectId>(100000, ids[0])),
+               core::RequestError);
+  group.id = 2;
+  group.members = ids;
+  EXPECT_THROW(simulation.add_group(group), core::RequestError);
+  EXPECT_EQ(simulation.find_human(ids[50])->group_id(), kNoObject);
+
+  // A world of more than 200 m per side, or whose map would exceed 4096 x 4096 cells, is refused
+  // before anything is allocated: 150 m at 0.01 m is 15000 x 15000 cells.
+  WorldDescription huge = test::square_room(6.0);
+  huge.size = {3000.0, 3000.0};
+  EXPECT_THROW((Simulation{huge, SimulationConfig{}}), core::ConfigError);
+  WorldDescription fine_grid = test::square_room(6.0);
+  fine_grid.size = {150.0, 150.0};
+  EXPECT_THROW((Simulation{fine_grid, SimulationConfig{0.05, 0, 0.01}}), core::ConfigError);
+  EXPECT_NO_THROW((Simulation{fine_grid, SimulationConfig{0.05, 0, 0.05}}));  // 3000 x 3000 cells
 }
 
 }  // namespace

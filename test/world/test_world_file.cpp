@@ -56,7 +56,7 @@ TEST(WorldFile, NonPositiveHeightNamesTheField) {
   expect_rejected(std::string(kHeader) +
                       "  - {type: circle, position: [1, 1], radius: 0.3, "
                       "height: 0}\n",
-                  {"objects[0].height", "> 0"});
+                  {"objects[0].height", "(0, 200]"});
 }
 
 TEST(WorldFile, UnknownTypeNamesTheEntry) {
@@ -76,8 +76,8 @@ TEST(WorldFile, WrongTypeNamesFieldAndValue) {
 
 TEST(WorldFile, NegativeSizeNamesFieldAndBound) {
   expect_rejected(std::string(kHeader) + "  - {type: box, position: [1, 1], size: [1, -2]}\n",
-                  {"objects[0].size", "> 0", "-2"});
-  expect_rejected("name: test\nsize: [5, -5]\nobjects: []\n", {"size", "> 0"});
+                  {"objects[0].size", "(0, 200]", "-2"});
+  expect_rejected("name: test\nsize: [5, -5]\nobjects: []\n", {"size", "(0, 200]"});
 }
 
 TEST(WorldFile, UnknownFieldIsNotIgnored) {
@@ -94,6 +94,33 @@ TEST(WorldFile, NonConvexPolygonAndDuplicateIdsAreRejected) {
                       "  - {type: circle, id: 3, position: [1, 1], radius: 1}\n"
                       "  - {type: circle, id: 3, position: [3, 3], radius: 1}\n",
                   {"objects[1].id", "3"});
+}
+
+TEST(WorldFile, WorldsBeyondTheDocumentedMaximaAreRefused) {
+  // 3000 m used to allocate a 60000 x 60000 occupancy grid and die of bad_alloc.
+  expect_rejected("name: test\nsize: [3000, 10]\nobjects: []\n",
+                  {": size", "each (0, 200]", "[3000, 10]"});
+  expect_rejected("name: test\nsize: [10, 10]\norigin: [1e300, 0]\nobjects: []\n",
+                  {": origin", "[-1000, 1000]", "1e300"});
+  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1e30, 1], radius: 1}\n",
+                  {"objects[0].position", "[-1000, 1000]"});
+  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: 1e9}\n",
+                  {"objects[0].radius", "(0, 200]", "1e9"});
+  std::string many = kHeader;
+  for (int i = 0; i <= 2000; ++i) {
+    many += "  - {type: circle, position: [1, 1], radius: 0.1}\n";
+  }
+  expect_rejected(many, {": objects", "at most 2000 objects", "2001"});
+}
+
+TEST(WorldFile, DirectoriesAndOversizedFilesAreRefusedBeforeReading) {
+  test::expect_config_error([] { load_world_file(::testing::TempDir()); }, ::testing::TempDir(),
+                            {"expected a YAML file, got a directory"});
+  // 1 MiB + 1 byte of comment: refused by its size, not parsed.
+  const std::string path =
+      write_file("huge_world.yaml", std::string(kHeader) + "#" + std::string(1024 * 1024, 'x'));
+  test::expect_config_error([&] { load_world_file(path); }, path,
+                            {"at most 1048576 bytes", "got 1048625 bytes"});
 }
 
 TEST(WorldFile, ShippedWorldsLoad) {

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <set>
@@ -10,6 +11,11 @@
 #include <vector>
 
 namespace ari_social_sim::core {
+
+/// Largest YAML file YamlMap::load_file reads (bytes): 1 MiB. The shipped configs, worlds, scenes
+/// and scenarios are under 6 KB; yaml-cpp holds a document as nodes hundreds of times larger than
+/// its text (a 50 MB scene took 3.5 GB), so a bigger file is refused before it is read.
+constexpr std::uintmax_t kMaxYamlFileBytes = 1024 * 1024;
 
 /// Allowed interval for a number read from a user's file; part of the error message on violation.
 struct Bounds {
@@ -45,7 +51,9 @@ class YamlMap {
   /// `source` names the file or parameter namespace; `path` the position inside it ("" at the top).
   YamlMap(YAML::Node node, std::string source, std::string path = "");
 
-  /// Parses a file. Throws ConfigError if it cannot be read, is not YAML, or is not a mapping.
+  /// Parses a file. Throws ConfigError naming the file, before reading it, if it does not exist,
+  /// is a directory or anything but a regular file (a FIFO would block), cannot be opened, or is
+  /// larger than kMaxYamlFileBytes; and after reading it if it is not YAML or not a mapping.
   static YamlMap load_file(const std::string& file_path);
   /// Parses YAML text (tests, service payloads); `source` is used in messages.
   static YamlMap parse(const std::string& text, const std::string& source);

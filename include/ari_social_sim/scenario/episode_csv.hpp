@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
@@ -31,5 +32,27 @@ struct EpisodeSummary {
 std::string csv_header();
 /// One row (no newline); text fields are quoted when they hold a comma or a quote.
 std::string csv_row(const EpisodeSummary& summary);
+
+/// Which run a row of a batch CSV is.
+struct EpisodeCsvRow {
+  std::string scenario;
+  uint64_t episode{0};
+  uint64_t seed{0};
+};
+
+/// A batch CSV as found on disk, read to resume it.
+struct EpisodeCsvContents {
+  std::vector<EpisodeCsvRow> rows;  // the complete rows, in file order
+  /// Bytes of the header and the complete rows: what a resumed run keeps. 0 when not even the
+  /// header is complete (the resumed run writes it).
+  size_t complete_bytes{0};
+  /// The text ends in a row without its newline (a run killed while writing it); not in `rows`.
+  bool partial_row{false};
+};
+
+/// Reads a CSV written with csv_header() and csv_row(). Throws core::ConfigError naming `source`
+/// and the line for another header (another version's columns), a row with another number of
+/// columns, an episode or seed that is not a number, or an episode found twice.
+EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& source);
 
 }  // namespace ari_social_sim::scenario

@@ -30,7 +30,10 @@ struct AriSpec {
   AriLimits limits;
   AriFootprint footprint;
 
-  /// Throws core::RequestError naming the first invalid field.
+  /// Throws core::RequestError naming the first invalid field, its value and the expectation: id
+  /// 0, a non-finite pose, a heading beyond +-kMaxHeadingRad, a head pan beyond the joint limit,
+  /// a non-positive speech rate, limits or footprint that are not finite and positive. Whether
+  /// the pose lies on the floor is the simulation's check (Simulation::add_ari).
   void validate() const;
 };
 
@@ -56,6 +59,7 @@ class Ari : public Object {
 
   /// 3D mode: ARI's base is simulated elsewhere (ari_physics_node). From now on each step moves
   /// the 2D body onto this pose (map frame) and reports this twist, instead of driving it.
+  /// Expects finite numbers: requests are checked by Simulation::follow_ari.
   void follow(const core::Pose2& pose, double linear_mps, double angular_rps);
   bool is_following() const { return followed_.has_value(); }
   /// The base's twist: the drive's, or the followed one in 3D mode.

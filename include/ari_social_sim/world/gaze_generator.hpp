@@ -25,6 +25,11 @@ struct GazeDirections {
   double stddev_rad{0.3};  // normal: standard deviation
 };
 
+/// Most targets one gaze model may list (each is drawn from at every gaze change).
+constexpr size_t kMaxGazeTargets = 50;
+/// Longest mean dwell (s) of a gaze model: a day, far beyond any run.
+constexpr double kMaxGazeMeanDurationS = 86400.0;
+
 /// Seed 3.3.2: either targets with probabilities summing to 1, or a distribution of directions.
 /// Gaze changes follow a Poisson process: dwell times are exponential with mean `mean_duration_s`.
 /// (The seed calls the parameter a rate lambda yet says the mean is lambda seconds; the mean is
@@ -34,8 +39,10 @@ struct GazeModel {
   std::optional<GazeDirections> directions;
   double mean_duration_s{3.0};
 
-  /// Throws core::RequestError unless exactly one of targets / directions is given, every
-  /// probability is in [0, 1] and they sum to 1 (within 1e-6), and the mean duration is > 0.
+  /// Throws core::RequestError naming the field unless exactly one of targets / directions is
+  /// given, there are at most kMaxGazeTargets targets, every probability is a finite number in
+  /// [0, 1] and they sum to 1 (within 1e-6), directions are finite (low <= high, stddev >= 0) and
+  /// the mean duration is a finite number in (0, kMaxGazeMeanDurationS] s.
   void validate() const;
 };
 

@@ -9,6 +9,11 @@ namespace ari_social_sim::world {
 
 class Human;
 
+/// Most members one group may have: an F-formation of more people is a crowd.
+constexpr size_t kMaxGroupMembers = 50;
+/// Largest o-space radius and member spacing (m) a group may be given.
+constexpr double kMaxOspaceRadiusM = 10.0;
+
 /// A conversational group's parameters (seed 3.4.1).
 struct GroupSpec {
   ObjectId id{kNoObject};
@@ -32,7 +37,11 @@ struct GroupSpec {
   /// still capped at the member's max_speed.
   double step_speed_mps{2.0};
 
-  /// Throws core::RequestError naming the first invalid field.
+  /// Throws core::RequestError naming the first invalid field, its value and the expectation:
+  /// id 0, no members or more than kMaxGroupMembers, a member twice, a non-finite centre, a radius
+  /// or spacing outside its range (ospace_radius [0, 10] m, min_ospace_radius and member_spacing
+  /// (0, 10] m, social_distance and step_speed > 0, spacing_factor [1, 1.6)). Whether the centre
+  /// lies on the floor is the simulation's check (Simulation::add_group).
   void validate() const;
 };
 
@@ -57,7 +66,8 @@ class GroupNavigation : public Script {
 
   void add_member(ObjectId id) { spec_.members.push_back(id); }
   void remove_member(ObjectId id);
-  void set_centre(const Eigen::Vector2d& centre) { spec_.centre = centre; }
+  /// Expects a finite centre: requests are checked by Simulation::set_group_centre.
+  void set_centre(const Eigen::Vector2d& centre);
 
   /// Radius (m) at which `member_count` evenly spaced members stand `spacing_m` apart:
   /// spacing = 2 s sin(pi / n), never below `min_radius_m`.

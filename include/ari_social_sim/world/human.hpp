@@ -9,6 +9,12 @@
 
 namespace ari_social_sim::world {
 
+/// Oldest age (years) a human may be given.
+constexpr double kMaxAgeYears = 130.0;
+/// Fastest turn (rad/s) a direct velocity command may ask of a human: one turn per second, well
+/// above a person turning on the spot (about half a turn per second).
+constexpr double kMaxHumanTurnRateRps = 6.283185307179586;
+
 /// Parameters of a human's movement (seed 3.3: step length, goal distance, personal distance).
 struct HumanMotionParams {
   /// m/s under a unit force. The seed's step length is eta = walking_speed * step, so that motion
@@ -43,8 +49,10 @@ struct HumanSpec {
   /// When set, the human walks there with HumanNavigation from the start.
   std::optional<core::Pose2> goal;
 
-  /// Throws core::RequestError naming the first invalid field (non-positive id, age outside
-  /// [0, 130], non-positive speeds or distances, invalid gaze model).
+  /// Throws core::RequestError naming the first invalid field, its value and the expectation:
+  /// id 0, a non-finite pose or goal, a heading beyond +-kMaxHeadingRad, age outside [0, 130],
+  /// a speed, distance or rate that is not a finite number > 0, an invalid gaze model. Whether the
+  /// pose and goal lie on the floor is the simulation's check (Simulation::add_human).
   void validate() const;
 };
 
@@ -62,9 +70,11 @@ class Human : public Object {
   const HumanSpec& spec() const { return spec_; }
   MotionMode motion_mode() const { return mode_; }
 
-  /// Direct velocity (map frame), held until another command.
+  /// Direct velocity (map frame), held until another command. Expects finite numbers: requests
+  /// are checked by Simulation::set_human_velocity.
   void set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps);
-  /// Walks to a goal with HumanNavigation (eq. 3.1-3.7).
+  /// Walks to a goal with HumanNavigation (eq. 3.1-3.7). Expects a finite pose: requests are
+  /// checked by Simulation::set_human_goal.
   void set_goal(const core::Pose2& goal);
   /// Stands still.
   void stop();
@@ -85,7 +95,8 @@ class Human : public Object {
   const SpeechGenerator& speech() const { return *speech_; }
   GazeGenerator* gaze() { return gaze_; }
   const GazeGenerator* gaze() const { return gaze_; }
-  /// Installs or replaces the gaze model.
+  /// Installs or replaces the gaze model. Expects a valid model: requests are checked by
+  /// Simulation::set_human_gaze.
   void set_gaze_model(GazeModel model);
 
   void apply_motion(const StepContext& context) override;

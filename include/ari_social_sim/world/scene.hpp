@@ -15,6 +15,9 @@
 
 namespace ari_social_sim::world {
 
+/// Most groups one scene file may list (each needs members of its own, so at most one per human).
+constexpr size_t kMaxSceneGroups = kMaxHumans;
+
 /// Who is in a world at the start of a run: the world file, the seed, ARI, humans and groups.
 /// Read from scenes/*.yaml (format in docs/world.md). Scenario files (scenarios/*.yaml,
 /// docs/scenario.md) are scene files with a `script` section, which this loader leaves to the
@@ -33,7 +36,9 @@ struct Scene {
 };
 
 /// Reads a scene file; `world:` is resolved relative to the scene file's folder. Throws
-/// core::ConfigError naming the file, the entry and the field.
+/// core::ConfigError naming the file, the entry and the field; a scene lists at most kMaxHumans
+/// humans and kMaxSceneGroups groups, a group at most kMaxGroupMembers members, a gaze model at
+/// most kMaxGazeTargets targets (and the file is read only within core::kMaxYamlFileBytes).
 Scene load_scene_file(const std::string& path);
 /// The same from a parsed mapping; `base_dir` resolves the world path.
 Scene parse_scene(const core::YamlMap& root, const std::string& base_dir);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,15 @@ struct StaticObject {
   double height_m{0.0};                 // m, standing on the floor; used by the 3D scene only
 };
 
+/// Largest floor (m per side) a world may have: a building floor, and at the default 0.05 m map
+/// resolution 4000 x 4000 cells (16 MB of occupancy grid).
+constexpr double kMaxWorldSideM = 200.0;
+/// Farthest any coordinate of a world (its origin, an object's position or vertex) may lie from
+/// the map origin (m, each axis). Box2D works in float: at 1000 m its resolution is 0.06 mm.
+constexpr double kMaxWorldCoordinateM = 1000.0;
+/// Most walls and furniture one world may hold.
+constexpr size_t kMaxWorldObjects = 2000;
+
 /// Heights of objects whose world file gives none (m): a room's walls, and a table or chair.
 constexpr double kDefaultWallHeightM = 2.5;
 constexpr double kDefaultFurnitureHeightM = 0.75;
@@ -37,6 +47,10 @@ struct WorldDescription {
   std::vector<StaticObject> objects;
 
   bool contains(const Eigen::Vector2d& point) const;
+  /// Throws core::ConfigError naming the world and the field unless the origin is finite and within
+  /// +-kMaxWorldCoordinateM, the size is finite, > 0 and at most kMaxWorldSideM per side, and there
+  /// are at most kMaxWorldObjects objects. load_world_file checks the same with the file's name.
+  void validate() const;
 };
 
 }  // namespace ari_social_sim::world

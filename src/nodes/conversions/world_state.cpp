@@ -1,5 +1,11 @@
 #include "world_state.hpp"
 
+#include <cmath>
+#include <sstream>
+
+#include "ari_social_sim/world/map_sensor.hpp"
+#include "ari_social_sim/world/simulation.hpp"
+
 namespace ari_social_sim::nodes {
 
 geometry_msgs::Pose2D to_msg(const core::Pose2& pose) {
@@ -165,6 +171,101 @@ world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg) {
   grid.height = static_cast<int>(msg.info.height);
   grid.cells = msg.data;
   return grid;
+}
+
+namespace {
+
+// Collects the first problem of a message, field by field.
+class ProblemFinder {
+ public:
+  void finite(const std::string& field, double value) {
+    if (!problem_ && !std::isfinite(value)) {
+      std::ostringstream text;
+      text << value << ", not a finite number";
+      problem_ = InputProblem{field, text.str()};
+    }
+  }
+  void at_most(const std::string& field, uint64_t value, uint64_t most) {
+    if (!problem_ && value > most) {
+      problem_ = InputProblem{field, std::to_string(value) + ", more than " + std::to_string(most)};
+    }
+  }
+  void one_of(const std::string& field, uint64_t value, uint64_t first, uint64_t last) {
+    if (!problem_ && (value < first || value > last)) {
+      problem_ = InputProblem{field, std::to_string(value) + ", not one of " +
+                                         std::to_string(first) + ".." + std::to_string(last)};
+    }
+  }
+  void that(bool holds, const std::string& field, const std::string& what) {
+    if (!problem_ && !holds) {
+      problem_ = InputProblem{field, what};
+    }
+  }
+  void pose(const std::string& field, const geometry_msgs::Pose2D& pose) {
+    finite(field + ".x", pose.x);
+    finite(field + ".y", pose.y);
+    finite(field + ".theta", pose.theta);
+  }
+  std::optional<InputProblem> result() const { return problem_; }
+
+ private:
+  std::optional<InputProblem> problem_;
+};
+
+}  // namespace
+
+std::optional<InputProblem> input_problem(const WorldState& msg) {
+  ProblemFinder check;
+  check.finite("header.stamp", msg.header.stamp.toSec());
+  check.at_most("humans (count)", msg.humans.size(), world::kMaxHumans);
+  if (msg.has_ari) {
+    check.pose("ari.pose", msg.ari.pose);
+    check.finite("ari.linear_velocity", msg.ari.linear_velocity);
+    check.finite("ari.angular_velocity", msg.ari.angular_velocity);
+    check.finite("ari.head_pan", msg.ari.head_pan);
+    check.finite("ari.head_pan_velocity", msg.ari.head_pan_velocity);
+  }
+  for (size_t i = 0; i < msg.humans.size(); ++i) {
+    const HumanState& h = msg.humans[i];
+    const std::string field = "humans[" + std::to_string(i) + "]";
+    check.pose(field + ".pose", h.pose);
+    check.finite(field + ".velocity.linear.x", h.velocity.linear.x);
+    check.finite(field + ".velocity.linear.y", h.velocity.linear.y);
+    check.finite(field + ".velocity.angular.z", h.velocity.angular.z);
+    check.finite(field + ".age", h.age);
+    check.one_of(field + ".gender", h.gender, HumanState::GENDER_FEMALE,
+                 HumanState::GENDER_NON_IDENTIFIED);
+    check.one_of(field + ".emotion", h.emotion, HumanState::EMOTION_NEUTRAL,
+                 HumanState::EMOTION_DISTURBED);
+    check.one_of(field + ".motion_mode", h.motion_mode, HumanState::MOTION_IDLE,
+                 HumanState::MOTION_GROUP);
+    if (h.has_goal) {
+      check.pose(field + ".goal", h.goal);
+    }
+    check.finite(field + ".gaze.direction", h.gaze.direction);
+  }
+  for (size_t i = 0; i < msg.groups.size(); ++i) {
+    const std::string field = "groups[" + std::to_string(i) + "]";
+    check.finite(field + ".centre.x", msg.groups[i].centre.x);
+    check.finite(field + ".centre.y", msg.groups[i].centre.y);
+    check.finite(field + ".ospace_radius", msg.groups[i].ospace_radius);
+  }
+  return check.result();
+}
+
+std::optional<InputProblem> input_problem(const nav_msgs::OccupancyGrid& msg) {
+  ProblemFinder check;
+  check.finite("info.resolution", msg.info.resolution);
+  check.that(msg.info.resolution > 0.0f, "info.resolution",
+             std::to_string(msg.info.resolution) + ", not > 0");
+  check.finite("info.origin.position.x", msg.info.origin.position.x);
+  check.finite("info.origin.position.y", msg.info.origin.position.y);
+  const uint64_t cells = static_cast<uint64_t>(msg.info.width) * msg.info.height;
+  check.at_most("info.width x info.height", cells, world::kMaxMapCells);
+  check.that(msg.data.size() == cells, "data",
+             std::to_string(msg.data.size()) + " cells for a " + std::to_string(msg.info.width) +
+                 " x " + std::to_string(msg.info.height) + " grid");
+  return check.result();
 }
 
 }  // namespace ari_social_sim::nodes

@@ -3,6 +3,9 @@
 #include <geometry_msgs/Pose2D.h>
 #include <nav_msgs/OccupancyGrid.h>
 
+#include <optional>
+#include <string>
+
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/world/occupancy_grid.hpp"
@@ -24,5 +27,17 @@ nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::stri
 world::WorldSnapshot from_msg(const WorldState& msg);
 /// A /map message as a grid (an origin rotation, which the world never writes, is ignored).
 world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
+
+/// What makes a received message unusable, as `field` and `what` ("humans[2].pose.x", "nan, not
+/// a finite number"); nullopt when it is fine. A /sim/world_state needs finite numbers where the
+/// consumers compute (stamp, poses, velocities, ages, head pan, gaze direction), known enum
+/// values and at most world::kMaxHumans humans; a /map a finite resolution > 0, a finite origin,
+/// width x height cells (at most world::kMaxMapCells) and that many values.
+struct InputProblem {
+  std::string field;
+  std::string what;
+};
+std::optional<InputProblem> input_problem(const WorldState& msg);
+std::optional<InputProblem> input_problem(const nav_msgs::OccupancyGrid& msg);
 
 }  // namespace ari_social_sim::nodes

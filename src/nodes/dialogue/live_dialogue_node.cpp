@@ -2,7 +2,9 @@
 
 #include "ari_social_sim/DialogueOutcome.h"
 #include "ari_social_sim/DialogueUtterance.h"
+#include "ari_social_sim/core/error.hpp"
 #include "conversions/dialogue.hpp"
+#include "dialogue/request_checks.hpp"
 
 namespace ari_social_sim::nodes {
 
@@ -21,11 +23,13 @@ LiveDialogueNode::LiveDialogueNode(ros::NodeHandle& nh, const dialogue::Dialogue
 void LiveDialogueNode::on_goal() {
   const TtsGoalConstPtr goal = tts_.acceptNewGoal();
   TtsResult result;
-  if (goal->rawtext.text.empty() && !goal->text.key.empty()) {
-    result.msg = "text: I18nText lookup (section/key) is not simulated; fill rawtext.text";
-    dialogue_.cancel_robot();
-  } else {
+  try {
+    check_tts_goal(*goal);
     result.msg = dialogue_.request_robot(goal->rawtext.text, goal->wait_before_speaking);
+  } catch (const core::RequestError& e) {
+    // The new goal preempted the one before (actionlib), refused or not: ARI stops there too.
+    result.msg = e.what();
+    dialogue_.cancel_robot();
   }
   publish(dialogue_.take_events());
   if (!result.msg.empty()) {

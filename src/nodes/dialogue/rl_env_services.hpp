@@ -11,8 +11,9 @@ namespace ari_social_sim::nodes {
 
 /// Mode 2: the dialogue RL environment as two services, /sim/dialogue/reset (seed -> observation,
 /// info) and /sim/dialogue/step (robot acts -> observation, reward, terminated, truncated, info).
-/// A bad request (unknown intent, unknown addressee, no episode) gets success = false and the
-/// reason; the episode is left as it was.
+/// A bad request (unknown intent, more than 16 acts, an unknown or repeated addressee, text over
+/// 4 KiB or not UTF-8, no episode) gets success = false and the reason, naming the field; the
+/// episode is left as it was.
 class RlEnvServices {
  public:
   /// Holds a reference to the setup, which must outlive it.

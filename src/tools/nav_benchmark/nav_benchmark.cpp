@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -16,7 +15,9 @@
 #include <vector>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/navigation/episode_scorer.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
@@ -32,16 +33,27 @@ using tools::EpisodeType;
 
 constexpr int kUsageError = 2;
 
-constexpr const char* kUsage = R"(Usage:
+// The documented ranges (README): 10 000 episodes of all 8 types with both controllers are
+// 160 000 runs, some four hours at the 0.08 s each of docs/PERFORMANCE.md, with every record held
+// until the CSV is written; any seed that fits a signed 64-bit integer.
+constexpr core::IntegerOption kEpisodes{"--episodes", 1, 10000};
+constexpr core::IntegerOption kSeed{"--seed", 0, INT64_MAX};
+
+std::string usage() {
+  return R"(Usage:
   nav_benchmark [--episodes N] [--seed S] [--types T1,T2,...] [--controllers social,baseline]
-                [--solver lbfgs|slsqp|mppi] [--config FILE] [--csv FILE] [--worlds DIR] [--trace]
+                [--solver lbfgs|slsqp|mppi] [--config FILE] [--csv FILE [--overwrite]]
+                [--worlds DIR] [--trace]
 
 Runs N seeded episodes of each type with each controller, on the world core in one process,
 with ground-truth perception, and prints a summary table per type and controller. Solve times
 are CPU time of the solving thread (one core); the wall-clock figures follow the table.
 
-  --episodes N      episodes per type (default 50)
-  --seed S          base seed (default 1); episode i of a type always gets the same world
+  --episodes N      episodes per type, in )" +
+         kEpisodes.range() + R"( (default 50)
+  --seed S          base seed (default 1), in )" +
+         kSeed.range() + R"(; episode i of a type
+                    always gets the same world
   --types LIST      comma-separated subset of pose, doorway, corridor, crossing, approach,
                     join2, join3, join4 (default all)
   --controllers L   social, baseline or both (default social,baseline); baseline = the same MPC
@@ -50,13 +62,16 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
                     group areas in its geodesic field (people remain obstacles)
   --solver NAME     overrides the config's mpc.solver
   --config FILE     SocialMPC parameters (default: the package's config/social_mpc.yaml)
-  --csv FILE        writes one row per episode (default: no CSV)
+  --csv FILE        writes one row per episode (default: no CSV); checked before the first
+                    episode, refused if it exists unless --overwrite, written when all have run
   --worlds DIR      folder of the shipped worlds (default: the package's worlds/)
   --trace           print every replanning cycle (pose, goal, command, cost by term) to stderr
   --help            print this text
 
-Exit status: 0 after a complete run, 2 on bad arguments or configuration.
+Exit status: 0 after a complete run, 2 on bad arguments or configuration, 1 when the CSV cannot
+be written.
 )";
+}
 
 struct Options {
   int episodes{50};
@@ -68,6 +83,7 @@ struct Options {
   std::string csv;
   std::string worlds{std::string(ARI_SOURCE_DIR) + "/worlds"};
   bool trace{false};
+  bool overwrite{false};
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -80,14 +96,14 @@ std::vector<std::string> split(const std::string& text) {
   return items;
 }
 
-long parse_integer(const std::string& option, const std::string& text, long min) {
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || value < min) {
-    throw core::ConfigError(option + ": expected an integer >= " + std::to_string(min) + ", got '" +
-                            text + "'");
+// Throws core::ConfigError naming `option` for a name given twice: its table would count its
+// episodes twice.
+void check_list(const std::string& option, const std::vector<std::string>& names) {
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i) {
+      throw core::ConfigError(option + ": expected each name once, got '" + names[i] + "' twice");
+    }
   }
-  return value;
 }
 
 Options parse(int argc, char** argv) {
@@ -95,24 +111,27 @@ Options parse(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help") {
-      std::cout << kUsage;
+      std::cout << usage();
       std::exit(0);
     }
     if (arg == "--trace") {
       options.trace = true;
       continue;
     }
-    if (i + 1 >= argc) {
-      throw core::ConfigError(arg + ": unknown option or missing value (see --help)");
+    if (arg == "--overwrite") {
+      options.overwrite = true;
+      continue;
     }
-    const std::string value = argv[++i];
+    const std::string value = core::option_value(argc, argv, i);
     if (arg == "--episodes") {
-      options.episodes = static_cast<int>(parse_integer(arg, value, 1));
+      options.episodes = static_cast<int>(kEpisodes.parse(value));
     } else if (arg == "--seed") {
-      options.seed = static_cast<uint64_t>(parse_integer(arg, value, 0));
+      options.seed = static_cast<uint64_t>(kSeed.parse(value));
     } else if (arg == "--types") {
       options.types.clear();
-      for (const std::string& name : split(value)) {
+      const std::vector<std::string> names = split(value);
+      check_list(arg, names);
+      for (const std::string& name : names) {
         EpisodeType type;
         if (!tools::parse_type(name, type)) {
           throw core::ConfigError(
@@ -124,6 +143,7 @@ Options parse(int argc, char** argv) {
       }
     } else if (arg == "--controllers") {
       options.controllers = split(value);
+      check_list(arg, options.controllers);
       for (const std::string& name : options.controllers) {
         if (name != "social" && name != "baseline") {
           throw core::ConfigError("--controllers: expected social and/or baseline, got '" + name +
@@ -144,6 +164,14 @@ Options parse(int argc, char** argv) {
     } else {
       throw core::ConfigError(arg + ": unknown option (see --help)");
     }
+  }
+  // Paths before any episode: a typo must not cost the run.
+  core::check_input_file("--config", options.config);
+  core::check_input_directory("--worlds", options.worlds);
+  if (!options.csv.empty()) {
+    core::check_output_file("--csv", options.csv, options.overwrite);
+  } else if (options.overwrite) {
+    throw core::ConfigError("--overwrite: expected --csv too");
   }
   return options;
 }
@@ -368,11 +396,10 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
   return record;
 }
 
+// Throws core::Error naming the path when writing fails; the file then keeps what it held.
 void write_csv(const std::string& path, const std::vector<EpisodeRecord>& records) {
-  std::ofstream out(path);
-  if (!out) {
-    throw core::ConfigError("--csv: cannot write " + path);
-  }
+  core::OutputFile file("--csv", path);
+  std::ostream& out = file.stream();
   out << "type,episode,seed,controller,success,outcome,time_to_goal_s,path_length_m,"
          "path_length_ratio,person_collisions,static_collisions,min_person_distance_m,"
          "personal_space_share,ospace_intrusions,final_position_error_m,"
@@ -397,6 +424,7 @@ void write_csv(const std::string& path, const std::vector<EpisodeRecord>& record
                   r.solve_times_s.size(), reason.c_str());
     out << line;
   }
+  file.commit();
 }
 
 double mean_of(const std::vector<double>& values) {
@@ -529,7 +557,7 @@ int main(int argc, char** argv) {
       write_csv(options.csv, records);
     } catch (const core::Error& e) {
       std::cerr << "nav_benchmark: " << e.what() << "\n";
-      return kUsageError;
+      return 1;
     }
   }
   print_summary(records, options);

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/world/world_description.hpp"
+
+namespace ari_social_sim::world {
+
+/// Largest heading (rad, either sign) a request may give. Box2D keeps angles as float, and an
+/// angle beyond float's range would turn every body it touches into NaN; a million radians is far
+/// beyond any heading a caller means, yet still within float's range.
+constexpr double kMaxHeadingRad = 1e6;
+
+/// Checks the numbers of one request against a running simulation before anything changes, so a
+/// refused request leaves the world as it was. Every failed check throws core::RequestError
+///   `<request>: <field>: expected <expectation>, got <value>`,
+/// e.g. `set_goal: goal.x: expected a finite number inside the world [-0.2, 12.2], got nan`.
+/// Requests are named after world_node's services (spawn_human, set_goal, ...), which the
+/// in-process engine mirrors; a check without a request name (a spec's own validate()) leaves the
+/// prefix out, and `valid(spec)` adds it.
+class RequestCheck {
+ public:
+  RequestCheck() = default;
+  explicit RequestCheck(std::string request) : request_(std::move(request)) {}
+
+  /// Any finite number.
+  void finite(const std::string& field, double value) const;
+  /// A finite number within `bounds`; `unit` (may be empty) follows the interval in the message.
+  void in_range(const std::string& field, double value, const core::Bounds& bounds,
+                const std::string& unit = "") const;
+  /// A finite heading within +-kMaxHeadingRad.
+  void heading(const std::string& field, double theta_rad) const;
+  /// A point on the world's floor: `field.x` and `field.y` each finite and inside its rectangle.
+  void on_floor(const std::string& field, const Eigen::Vector2d& point,
+                const WorldDescription& world) const;
+  /// A pose on the floor with a valid heading (`field.x`, `field.y`, `field.theta`).
+  void pose_on_floor(const std::string& field, const core::Pose2& pose,
+                     const WorldDescription& world) const;
+  /// Runs `spec.validate()` and names this request in front of its refusal.
+  template <class Spec>
+  void valid(const Spec& spec) const {
+    try {
+      spec.validate();
+    } catch (const core::RequestError& e) {
+      throw core::RequestError(prefix() + e.what());
+    }
+  }
+  /// Throws the refusal for `field`.
+  [[noreturn]] void fail(const std::string& field, const std::string& expectation,
+                         const std::string& got) const;
+
+  /// A number as messages print it (`nan`, `inf`, `1e+300`, `0.5`).
+  static std::string text(double value);
+
+ private:
+  std::string prefix() const { return request_.empty() ? "" : request_ + ": "; }
+
+  std::string request_;
+};
+
+}  // namespace ari_social_sim::world

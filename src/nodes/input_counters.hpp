@@ -1,0 +1,50 @@
+#pragma once
+
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <ros/time.h>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace ari_social_sim::nodes {
+
+/// What a node did with the numbers of its input topics: messages dropped because a field it uses
+/// is not finite (or the message does not make sense), and finite commands clamped to ARI's
+/// limits, counted per topic and field, each drop warned about at most every
+/// kDropWarningPeriodS per field, and reported as one DiagnosticStatus for /diagnostics.
+class InputCounters {
+ public:
+  /// `node` names the status ("world_node: inputs").
+  explicit InputCounters(std::string node) : node_(std::move(node)) {}
+
+  /// Lists a counter (at 0) so that /diagnostics shows it before anything happens.
+  void declare_drop(const std::string& topic, const std::string& field) {
+    drops_.emplace(topic + " " + field, Count{});
+  }
+  void declare_clamp(const std::string& topic) { clamps_.emplace(topic, 0); }
+
+  /// True if `value` is finite. Otherwise counts a drop of `topic`'s message for `field` and warns.
+  bool finite(const std::string& topic, const std::string& field, double value);
+  /// Counts a drop of `topic`'s message for `field` (which holds `what`) and warns.
+  void drop(const std::string& topic, const std::string& field, const std::string& what);
+  void add_clamps(const std::string& topic, uint64_t clamped) { clamps_[topic] += clamped; }
+
+  /// The status once a wall second (the diagnostics convention, 1 Hz), else nothing.
+  std::optional<diagnostic_msgs::DiagnosticStatus> status_when_due();
+  diagnostic_msgs::DiagnosticStatus status() const;
+
+ private:
+  struct Count {
+    uint64_t dropped{0};
+    ros::WallTime last_warning;
+  };
+
+  std::string node_;
+  std::map<std::string, Count> drops_;
+  std::map<std::string, uint64_t> clamps_;
+  ros::WallTime last_status_;
+};
+
+}  // namespace ari_social_sim::nodes

@@ -1,0 +1,99 @@
+// Runs the dialogue_corpus program as a user would: counts, seeds and paths checked before the
+// first dialogue, outputs never half-written nor silently replaced.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "program_run.hpp"
+
+namespace ari_social_sim::tools::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+ProgramRun run(const std::string& arguments) {
+  return run_program(ARI_DIALOGUE_CORPUS_BIN, arguments);
+}
+
+// A fresh empty folder for one test.
+std::string scratch(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "dialogue_corpus_" + name + "/";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+size_t count_lines(const std::string& text) {
+  return static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(DialogueCorpus, BadOptionsExitWithTwoBeforeWritingAnything) {
+  const std::string dir = scratch("bad");
+  const std::string out = " --out " + dir + "c.jsonl";
+  // -1 once wrapped to 2^64 - 1 dialogues and filled the disk.
+  expect_refused(run("--dialogues -1 --seed 1" + out),
+                 "--dialogues: expected an integer in [1, 100000], got '-1'");
+  expect_refused(run("--dialogues 0 --seed 1" + out), "got '0'");
+  expect_refused(run("--dialogues 100001 --seed 1" + out), "got '100001'");
+  expect_refused(run("--dialogues 1e3 --seed 1" + out), "got '1e3'");
+  expect_refused(run("--dialogues 2 --seed -1" + out),
+                 "--seed: expected an integer in [0, 9223372036854775807], got '-1'");
+  expect_refused(run("--dialogues 2 --seed 9223372036854775808" + out), "--seed");
+  expect_refused(run("--dialogues 2 --seed 1 --out " + dir),
+                 "--out: " + dir + ": expected a file name, got a directory");
+  expect_refused(run("--dialogues 2 --seed 1 --out " + dir + "no/c.jsonl"), "does not exist");
+  expect_refused(run("--dialogues 2 --seed 1 --compare --report /proc/report.md"),
+                 "--report: /proc/report.md: cannot write in /proc");
+  expect_refused(run("--dialogues 2 --seed 1 --report " + dir + "r.md" + out),
+                 "--report: the report is the comparison's: expected --compare too");
+  expect_refused(run("--dialogues 2 --seed 1 --compare --report " + dir + "c.jsonl" + out),
+                 "expected two files");
+  expect_refused(run("--dialogues 2 --seed 1 --config " + dir + out),
+                 "--config: " + dir + ": expected a readable file, got a directory");
+  expect_refused(run("--dialogues 2 --seed 1 --corpus " + dir + "none" + out),
+                 "--corpus: " + dir + "none: expected a directory");
+  expect_refused(run("--dialogues 2 --seed 1 --nlg fancy" + out), "--nlg");
+  expect_refused(run("--dialogues 2 --seed 1 --frobnicate" + out), "--frobnicate");
+  expect_refused(run("--dialogues 2" + out), "are required");
+  expect_refused(run("--dialogues 2 --seed 1 --compare --out ''"),
+                 "--out: expected a value, got ''");
+  EXPECT_EQ(fs::directory_iterator(dir), fs::directory_iterator());  // nothing written
+}
+
+TEST(DialogueCorpus, AnExistingOutputIsReplacedOnlyWithOverwrite) {
+  const std::string dir = scratch("existing");
+  const std::string args = "--seed 1 --out " + dir + "c.jsonl";
+  ASSERT_EQ(run("--dialogues 2 " + args).status, 0);
+  const std::string two = read_all(dir + "c.jsonl");
+  EXPECT_GE(count_lines(two), 10u);  // two dialogues of several utterances
+  expect_refused(run("--dialogues 3 " + args), "c.jsonl: exists (pass --overwrite to replace it)");
+  EXPECT_EQ(read_all(dir + "c.jsonl"), two);
+  ASSERT_EQ(run("--dialogues 3 --overwrite " + args).status, 0);
+  const std::string three = read_all(dir + "c.jsonl");
+  EXPECT_EQ(three.substr(0, two.size()), two);  // dialogue d has the same seed whatever N
+  EXPECT_GT(count_lines(three), count_lines(two));
+  EXPECT_FALSE(fs::exists(dir + "c.jsonl.part"));
+}
+
+TEST(DialogueCorpus, TheReportIsWhatStandardOutputShows) {
+  const std::string dir = scratch("report");
+  const ProgramRun run_1 = run("--dialogues 3 --seed 2 --compare --report " + dir + "r.md");
+  ASSERT_EQ(run_1.status, 0) << run_1.err;
+  EXPECT_EQ(read_all(dir + "r.md"), run_1.out);
+  EXPECT_NE(run_1.out.find("Generated: 3 dialogues, seed 2"), std::string::npos);
+}
+
+TEST(DialogueCorpus, AFailedWriteExitsWithOneAndLeavesNoFile) {
+  const std::string dir = scratch("full");
+  // The .part file is where the corpus goes first; /dev/full refuses the bytes as a full disk.
+  fs::create_symlink("/dev/full", dir + "c.jsonl.part");
+  const ProgramRun full = run("--dialogues 20 --seed 1 --out " + dir + "c.jsonl");
+  EXPECT_EQ(full.status, 1);
+  EXPECT_NE(full.err.find(dir + "c.jsonl: writing failed"), std::string::npos) << full.err;
+  EXPECT_FALSE(fs::exists(dir + "c.jsonl"));
+}
+
+}  // namespace
+}  // namespace ari_social_sim::tools::test
