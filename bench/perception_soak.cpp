@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -128,18 +129,18 @@ Options parse(int argc, char** argv) {
   return options;
 }
 
-// kB the world's speech histories hold (SpeechGenerator keeps every finished act; see
-// docs/PERFORMANCE.md, "Soak"), and their number: each record's slot and any string too long for
-// the small-string buffer, with malloc's 16-byte header per block.
+// kB the world's speech histories hold (SpeechGenerator keeps the last kHistoryLength acts of each
+// speaker; see docs/PERFORMANCE.md, "Soak"), and their number: each record's slot and any string
+// too long for the small-string buffer, with malloc's 16-byte header per block.
 long world_speech_kb(const world::Simulation& simulation, size_t& records) {
   constexpr size_t kSmallString = 15;
   constexpr size_t kMallocHeader = 16;
   size_t bytes = 0;
   records = 0;
   for (const auto& human : simulation.humans()) {
-    const std::vector<world::SpeechRecord>& history = human->speech().history();
+    const std::deque<world::SpeechRecord>& history = human->speech().history();
     records += history.size();
-    bytes += history.capacity() * sizeof(world::SpeechRecord) + kMallocHeader;
+    bytes += history.size() * sizeof(world::SpeechRecord) + kMallocHeader;
     for (const world::SpeechRecord& record : history) {
       for (const std::string* text : {&record.act, &record.content}) {
         bytes += text->capacity() > kSmallString ? text->capacity() + 1 + kMallocHeader : 0;

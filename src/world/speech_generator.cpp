@@ -74,6 +74,9 @@ void SpeechGenerator::step(Object& owner, const StepContext& context) {
 
 void SpeechGenerator::finish(double end_s, bool interrupted) {
   history_.push_back({act_, content_, start_s_, end_s, interrupted});
+  if (history_.size() > kHistoryLength) {
+    history_.pop_front();
+  }
   act_.clear();
   content_.clear();
   words_.clear();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -17,11 +18,14 @@ struct SpeechRecord {
 };
 
 /// Seed 3.3.3: plays an utterance word by word at a words-per-minute rate and keeps the history of
-/// acts with their start and end times. Word i is current during
+/// acts with their start and end times: the last kHistoryLength of them, so that a speaker who
+/// talks for hours does not grow without bound (only the previous act is published). Word i is current during
 /// [start + i * 60 / wpm, start + (i + 1) * 60 / wpm); the act ends at the first step at or after
 /// start + n * 60 / wpm, so an n-word act lasts n * 60 / wpm plus at most one step.
 class SpeechGenerator : public Component {
  public:
+  static constexpr size_t kHistoryLength = 32;
+
   explicit SpeechGenerator(double words_per_minute);
 
   ComponentPhase phase() const override { return ComponentPhase::kGenerator; }
@@ -42,7 +46,8 @@ class SpeechGenerator : public Component {
   double start_s() const { return start_s_; }
   /// The most recent act that finished (seed: previous_speech_act); empty before the first.
   const SpeechRecord* previous() const { return history_.empty() ? nullptr : &history_.back(); }
-  const std::vector<SpeechRecord>& history() const { return history_; }
+  /// The last kHistoryLength finished acts, oldest first.
+  const std::deque<SpeechRecord>& history() const { return history_; }
   double words_per_minute() const { return words_per_minute_; }
 
  private:
@@ -54,7 +59,7 @@ class SpeechGenerator : public Component {
   std::vector<std::string> words_;
   size_t word_index_{0};
   double start_s_{0.0};
-  std::vector<SpeechRecord> history_;
+  std::deque<SpeechRecord> history_;
 };
 
 }  // namespace ari_social_sim::world
