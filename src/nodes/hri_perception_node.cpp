@@ -173,12 +173,7 @@ class HriPerceptionNode {
     if (problem) {
       inputs_.drop(topic, problem->field, problem->what);
     }
-    if (std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due()) {
-      diagnostic_msgs::DiagnosticArray array;
-      array.header.stamp = ros::Time::now();
-      array.status.push_back(*status);
-      diagnostics_pub_.publish(array);
-    }
+    inputs_.publish_when_due(diagnostics_pub_, ros::Time::now());
     return !problem;
   }
 

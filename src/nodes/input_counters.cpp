@@ -1,5 +1,6 @@
 #include "input_counters.hpp"
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/console.h>
 
 #include <cmath>
@@ -42,13 +43,16 @@ void InputCounters::drop(const std::string& topic, const std::string& field,
   }
 }
 
-std::optional<diagnostic_msgs::DiagnosticStatus> InputCounters::status_when_due() {
+void InputCounters::publish_when_due(ros::Publisher& diagnostics, const ros::Time& stamp) {
   const ros::WallTime now = ros::WallTime::now();
   if ((now - last_status_).toSec() < kStatusPeriodS) {
-    return std::nullopt;
+    return;
   }
   last_status_ = now;
-  return status();
+  diagnostic_msgs::DiagnosticArray array;
+  array.header.stamp = stamp;
+  array.status.push_back(status());
+  diagnostics.publish(array);
 }
 
 diagnostic_msgs::DiagnosticStatus InputCounters::status() const {

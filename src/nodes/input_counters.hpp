@@ -1,11 +1,11 @@
 #pragma once
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
+#include <ros/publisher.h>
 #include <ros/time.h>
 
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <string>
 
 namespace ari_social_sim::nodes {
@@ -31,8 +31,9 @@ class InputCounters {
   void drop(const std::string& topic, const std::string& field, const std::string& what);
   void add_clamps(const std::string& topic, uint64_t clamped) { clamps_[topic] += clamped; }
 
-  /// The status once a wall second (the diagnostics convention, 1 Hz), else nothing.
-  std::optional<diagnostic_msgs::DiagnosticStatus> status_when_due();
+  /// Publishes the status on `diagnostics` (a diagnostic_msgs/DiagnosticArray publisher) stamped
+  /// `stamp`, once a wall second at most (the diagnostics convention, 1 Hz).
+  void publish_when_due(ros::Publisher& diagnostics, const ros::Time& stamp);
   diagnostic_msgs::DiagnosticStatus status() const;
 
  private:

@@ -409,12 +409,7 @@ class SocialMpcNode {
 
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
-    if (std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due()) {
-      diagnostic_msgs::DiagnosticArray array;
-      array.header.stamp = ros::Time::now();
-      array.status.push_back(*status);
-      diagnostics_pub_.publish(array);
-    }
+    inputs_.publish_when_due(diagnostics_pub_, ros::Time::now());
     // People are followed all the time, so that a goal naming someone finds them known already;
     // those perception stopped reporting are let go.
     observe_people();

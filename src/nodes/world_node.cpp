@@ -197,14 +197,7 @@ class WorldNode {
   }
 
   void publish_diagnostics_when_due() {
-    std::optional<diagnostic_msgs::DiagnosticStatus> status = inputs_.status_when_due();
-    if (!status) {
-      return;
-    }
-    diagnostic_msgs::DiagnosticArray array;
-    array.header.stamp = ros::Time(simulation_->time_s());
-    array.status.push_back(*status);
-    diagnostics_pub_.publish(array);
+    inputs_.publish_when_due(diagnostics_pub_, ros::Time(simulation_->time_s()));
   }
 
   // The clamps StepDiagnostics counted during `command`, credited to `topic`.
