@@ -103,6 +103,7 @@ if(CATKIN_ENABLE_TESTING)
 
   add_rostest(test/integration/hri_wire.test DEPENDENCIES world_node hri_perception_node)
   add_rostest(test/integration/hri_perception.test DEPENDENCIES world_node hri_perception_node)
+  add_rostest(test/integration/launch_arguments.test)
   add_rostest(test/integration/group_detection.test
     DEPENDENCIES world_node hri_perception_node group_detection_node)
   add_rostest(test/integration/group_detection_alone.test DEPENDENCIES group_detection_node)
