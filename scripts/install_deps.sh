@@ -14,7 +14,7 @@ packages=(
   librosbag-dev
   python3-std-msgs python3-geometry-msgs python3-nav-msgs python3-sensor-msgs
   python3-visualization-msgs python3-actionlib-msgs python3-rosgraph-msgs python3-std-srvs
-  python3-trajectory-msgs python3-rospy
+  python3-trajectory-msgs python3-rospy python3-diagnostic-msgs
   libstd-srvs-dev
   # simulation cores
   libbox2d-dev libbullet-dev libeigen3-dev libyaml-cpp-dev libopencv-dev liboctomap-dev libnlopt-dev

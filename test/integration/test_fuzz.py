@@ -25,6 +25,7 @@ import rosnode
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
+from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import Pose2D, PoseStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid, Odometry
@@ -222,6 +223,16 @@ class Fuzz(unittest.TestCase):
             time.sleep(0.05)
         self.assertIsNotNone(world.latest(), "no /sim/world_state")
         sent, refused, errors = Counter(), Counter(), []
+        # Topic messages cannot answer: the nodes count the ones they drop on /diagnostics.
+        dropped = {}
+
+        def on_diagnostics(array):
+            for status in array.status:
+                for pair in status.values:
+                    if pair.key.startswith("dropped ") and pair.value != "0":
+                        dropped[status.name + ": " + pair.key] = int(pair.value)
+
+        rospy.Subscriber("/diagnostics", DiagnosticArray, on_diagnostics, queue_size=50)
 
         # Services: each request valid but for one hostile field.
         proxies = {}
@@ -291,6 +302,10 @@ class Fuzz(unittest.TestCase):
               % (total, sum(refused.values()), len(errors)))
         for key in sorted(sent):
             print("  %-70s sent %4d refused %4d" % (key, sent[key], refused[key]))
+        time.sleep(1.5)  # the nodes' next /diagnostics (1 Hz)
+        print("[ measured ] topic messages the nodes dropped (/diagnostics):")
+        for key in sorted(dropped):
+            print("  %-84s %4d" % (key, dropped[key]))
         self.assertGreaterEqual(total, 1000)
         self.assertEqual(errors, [])
 
