@@ -55,6 +55,8 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   goal_ = std::move(goal);
   geodesic_ = std::move(field);
   target_ = target;
+  target_members_.clear();
+  follow_relabelled_group(scene);
   state_ = NavigationState::kActive;
   target_seen_s_ = time_s;
   aligning_ = false;
@@ -63,6 +65,34 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   best_distance_time_s_ = time_s;
   patience_clock_s_ = time_s;
   mpc_.reset();
+}
+
+void Navigator::follow_relabelled_group(const PerceivedScene& scene) {
+  auto* target = std::get_if<GroupTarget>(&*target_);
+  if (target == nullptr) {
+    return;
+  }
+  if (const GroupEstimate* group = scene.find_group(target->group_id)) {
+    target_members_ = group->members;
+    return;
+  }
+  const GroupEstimate* best = nullptr;
+  size_t best_shared = 1;
+  for (const GroupEstimate& group : scene.groups) {
+    const auto shared = static_cast<size_t>(
+        std::count_if(group.members.begin(), group.members.end(), [&](const std::string& id) {
+          return std::find(target_members_.begin(), target_members_.end(), id) !=
+                 target_members_.end();
+        }));
+    if (shared > best_shared) {
+      best = &group;
+      best_shared = shared;
+    }
+  }
+  if (best != nullptr) {
+    target->group_id = best->id;
+    target_members_ = best->members;
+  }
 }
 
 void Navigator::cancel() {
@@ -163,6 +193,7 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   problem_.start.pan = robot.pan_rad;
 
   // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
+  follow_relabelled_group(scene);
   bool target_visible = true;
   try {
     const Goal found = goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_);

@@ -206,5 +206,39 @@ TEST(Navigator, JoinsAGroupAndEndsFacingItsCentre) {
   EXPECT_GT(run.min_distance_to_person_m, 0.0);
 }
 
+TEST(Navigator, FollowsATargetGroupThatPerceptionRelabels) {
+  PerceivedScene scene;
+  for (int i = 0; i < 3; ++i) {
+    const double a = M_PI / 2 + 2.0 * M_PI * i / 3.0;
+    scene.people.push_back(test::person("p" + std::to_string(i), 5.0 + 0.64 * std::cos(a),
+                                        5.0 + 0.64 * std::sin(a), a + M_PI));
+  }
+  scene.groups.push_back(estimate_group("g1", scene.people, 0.64));
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
+  navigator.start(GroupTarget{"g1"}, scene, robot, 0.0);
+  // Group detection now reports the same three as g2 (and two others as g3): for 10 s, twice the
+  // lost-target timeout, ARI keeps joining them under the new id.
+  PerceivedScene relabelled = scene;
+  relabelled.groups = {estimate_group("g2", scene.people, 0.64)};
+  relabelled.people.push_back(test::person("q1", 2.0, 6.0, 0.0));
+  relabelled.people.push_back(test::person("q2", 3.0, 6.0, M_PI));
+  relabelled.groups.push_back(
+      estimate_group("g3", {relabelled.people[3], relabelled.people[4]}, 0.5));
+  for (double t = 0.5; t <= 10.0; t += 0.5) {
+    ASSERT_EQ(navigator.update(t, robot, relabelled).state, NavigationState::kActive) << t;
+  }
+  EXPECT_EQ(std::get<GroupTarget>(*navigator.target()).group_id, "g2");
+  // A group sharing a single member is not the target: ARI gives up after the timeout.
+  PerceivedScene split = relabelled;
+  split.groups = {estimate_group("g4", {relabelled.people[0], relabelled.people[3]}, 0.5)};
+  NavigatorStep step;
+  for (double t = 10.5; t <= 16.0 && step.state != NavigationState::kAborted; t += 0.5) {
+    step = navigator.update(t, robot, split);
+  }
+  EXPECT_EQ(step.state, NavigationState::kAborted);
+  EXPECT_NE(step.reason.find("group g2 lost for 5.5 s"), std::string::npos) << step.reason;
+}
+
 }  // namespace
 }  // namespace ari_social_sim::navigation

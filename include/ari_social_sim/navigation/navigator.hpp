@@ -89,6 +89,10 @@ class Navigator {
   /// GoalUnreachable.
   void adopt_goal(const Goal& goal, const core::Pose2& robot, const PerceivedScene& scene);
   NavigatorStep finish(NavigationState state, const std::string& reason);
+  /// A group target whose id perception no longer reports continues as the group that shares
+  /// the most of its last members (at least two): group detection gives a group a new id when
+  /// its membership changes for a moment (a member hidden from ARI), and the group is still there.
+  void follow_relabelled_group(const PerceivedScene& scene);
   /// Weight factor of personal spaces, 1 until ARI has been stalled for the patience time.
   double patience(double time_s) const;
   /// True when ARI's footprint at `robot` is inside the personal space of someone other than the
@@ -107,8 +111,9 @@ class Navigator {
   std::unique_ptr<GeodesicField> geodesic_;
   std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
-  bool aligning_{false};                // at the goal position, turning to the goal heading
-  std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
+  std::vector<std::string> target_members_;  // of a group target, when last reported
+  bool aligning_{false};                     // at the goal position, turning to the goal heading
+  std::optional<double> jump_since_s_;       // since when the goal finder wants a distant new goal
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
   // Progress that restarts patience; once personal spaces have given way it only counts with
