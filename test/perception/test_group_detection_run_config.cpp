@@ -19,8 +19,7 @@ TEST(GroupDetectionRunConfig, NoParametersGiveTheDefaults) {
 }
 
 TEST(GroupDetectionRunConfig, ReadsEveryParameter) {
-  const GroupDetectionRunConfig config =
-      parse("{config: a.yaml, reference_frame: odom, rate: 15}");
+  const GroupDetectionRunConfig config = parse("{config: a.yaml, reference_frame: odom, rate: 15}");
   EXPECT_EQ(config.config, "a.yaml");
   EXPECT_EQ(config.reference_frame, "odom");
   EXPECT_DOUBLE_EQ(config.rate_hz, 15.0);
