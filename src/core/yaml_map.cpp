@@ -8,15 +8,10 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::core {
 namespace {
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 bool is_scalar(const YAML::Node& node) {
   return node.IsScalar();

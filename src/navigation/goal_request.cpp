@@ -6,20 +6,14 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::navigation {
 namespace {
 
-// A number as %g prints it ("nan", "inf", "1e+300", "0.5").
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", value);
-  return text;
-}
-
 void check_finite(double value, const std::string& name) {
   if (!std::isfinite(value)) {
-    throw core::RequestError(name + ": expected a finite number, got " + number(value));
+    throw core::RequestError(name + ": expected a finite number, got " + core::number_text(value));
   }
 }
 
@@ -42,10 +36,11 @@ core::Pose2 planar_goal(const PoseGoalRequest& request, const std::string& field
                                 request.qz * request.qz + request.qw * request.qw);
   if (std::abs(norm - 1.0) > kQuaternionNormTolerance) {
     throw core::RequestError(field + "pose.orientation: expected a unit quaternion (norm within " +
-                             number(kQuaternionNormTolerance) + " of 1), got (" +
-                             number(request.qx) + ", " + number(request.qy) + ", " +
-                             number(request.qz) + ", " + number(request.qw) + ") of norm " +
-                             number(norm));
+                             core::number_text(kQuaternionNormTolerance) + " of 1), got (" +
+                             core::number_text(request.qx) + ", " + core::number_text(request.qy) +
+                             ", " + core::number_text(request.qz) + ", " +
+                             core::number_text(request.qw) + ") of norm " +
+                             core::number_text(norm));
   }
   core::Pose2 pose;
   pose.position = {request.x, request.y};

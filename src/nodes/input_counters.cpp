@@ -4,7 +4,8 @@
 #include <ros/console.h>
 
 #include <cmath>
-#include <sstream>
+
+#include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -25,9 +26,7 @@ bool InputCounters::finite(const std::string& topic, const std::string& field, d
   if (std::isfinite(value)) {
     return true;
   }
-  std::ostringstream text;
-  text << value;
-  drop(topic, field, text.str() + ", not a finite number");
+  drop(topic, field, core::number_text(value) + ", not a finite number");
   return false;
 }
 

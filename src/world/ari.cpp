@@ -9,6 +9,7 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
@@ -41,9 +42,9 @@ void AriSpec::validate() const {
         std::isfinite(footprint.rear_x_m) && std::isfinite(footprint.front_x_m) &&
         std::isfinite(footprint.half_width_m))) {
     check.fail("footprint", "finite numbers with rear_x < front_x and half_width > 0",
-               "rear_x " + RequestCheck::text(footprint.rear_x_m) + ", front_x " +
-                   RequestCheck::text(footprint.front_x_m) + ", half_width " +
-                   RequestCheck::text(footprint.half_width_m));
+               "rear_x " + core::number_text(footprint.rear_x_m) + ", front_x " +
+                   core::number_text(footprint.front_x_m) + ", half_width " +
+                   core::number_text(footprint.half_width_m));
   }
 }
 

@@ -5,6 +5,7 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
@@ -31,7 +32,7 @@ void GazeModel::validate() const {
   }
   if (!targets.empty() && std::abs(total - 1.0) > 1e-6) {
     check.fail("gaze.probabilities", "numbers in [0, 1] that sum to 1 (within 1e-6)",
-               "a sum of " + RequestCheck::text(total));
+               "a sum of " + core::number_text(total));
   }
   if (directions) {
     const bool uniform = directions->distribution == GazeDirections::Distribution::kUniform;
@@ -40,8 +41,8 @@ void GazeModel::validate() const {
       check.heading("gaze.directions.high", directions->high_rad);
       if (!(directions->low_rad <= directions->high_rad)) {
         check.fail("gaze.directions", "low <= high",
-                   "low " + RequestCheck::text(directions->low_rad) + ", high " +
-                       RequestCheck::text(directions->high_rad));
+                   "low " + core::number_text(directions->low_rad) + ", high " +
+                       core::number_text(directions->high_rad));
       }
     } else {
       check.heading("gaze.directions.mean", directions->mean_rad);

@@ -7,6 +7,7 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/simulation.hpp"
@@ -39,7 +40,7 @@ void GroupSpec::validate() const {
   check.in_range("member_spacing", member_spacing_m, {0.0, kMaxOspaceRadiusM, true}, "m");
   check.in_range("social_distance", social_distance_m, core::positive(), "m");
   if (!(spacing_factor >= 1.0 && spacing_factor < 1.6)) {
-    check.fail("spacing_factor", "a finite number in [1, 1.6)", RequestCheck::text(spacing_factor));
+    check.fail("spacing_factor", "a finite number in [1, 1.6)", core::number_text(spacing_factor));
   }
   check.in_range("step_speed", step_speed_mps, core::positive(), "m/s per unit force");
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
@@ -15,12 +16,6 @@ namespace {
 
 int cells_along(double extent_m, double resolution_m) {
   return static_cast<int>(std::ceil(extent_m / resolution_m - 1e-9));
-}
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
 }
 
 }  // namespace
@@ -33,15 +28,15 @@ double map_cell_count(const WorldDescription& world, double resolution_m) {
 void check_map_size(const WorldDescription& world, double resolution_m) {
   if (!(std::isfinite(resolution_m) && resolution_m > 0.0)) {
     throw core::ConfigError("map_resolution: expected a finite number > 0 m, got " +
-                            number_text(resolution_m));
+                            core::number_text(resolution_m));
   }
   const double cells = map_cell_count(world, resolution_m);
   if (!(cells <= static_cast<double>(kMaxMapCells))) {
-    throw core::ConfigError("map_resolution: " + number_text(resolution_m) +
-                            " m over the floor of world '" + world.name + "' (" +
-                            number_text(world.size.x()) + " x " + number_text(world.size.y()) +
-                            " m) gives " + number_text(cells) + " cells, more than the " +
-                            std::to_string(kMaxMapCells) + " an occupancy grid may have");
+    throw core::ConfigError(
+        "map_resolution: " + core::number_text(resolution_m) + " m over the floor of world '" +
+        world.name + "' (" + core::number_text(world.size.x()) + " x " +
+        core::number_text(world.size.y()) + " m) gives " + core::number_text(cells) +
+        " cells, more than the " + std::to_string(kMaxMapCells) + " an occupancy grid may have");
   }
 }
 

@@ -3,13 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-namespace ari_social_sim::world {
+#include "ari_social_sim/core/number_text.hpp"
 
-std::string RequestCheck::text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
+namespace ari_social_sim::world {
 
 void RequestCheck::fail(const std::string& field, const std::string& expectation,
                         const std::string& got) const {
@@ -18,7 +14,7 @@ void RequestCheck::fail(const std::string& field, const std::string& expectation
 
 void RequestCheck::finite(const std::string& field, double value) const {
   if (!std::isfinite(value)) {
-    fail(field, "a finite number", text(value));
+    fail(field, "a finite number", core::number_text(value));
   }
 }
 
@@ -27,7 +23,7 @@ void RequestCheck::in_range(const std::string& field, double value, const core::
   // Bounds::contains lets infinity through an open end; a request's numbers are always finite.
   if (!std::isfinite(value) || !bounds.contains(value)) {
     fail(field, "a finite number " + bounds.describe() + (unit.empty() ? "" : " " + unit),
-         text(value));
+         core::number_text(value));
   }
 }
 
@@ -43,7 +39,9 @@ void RequestCheck::on_floor(const std::string& field, const Eigen::Vector2d& poi
     const double value = point[axis];
     if (!(std::isfinite(value) && value >= low && value <= high)) {
       fail(field + (axis == 0 ? ".x" : ".y"),
-           "a finite number inside the world [" + text(low) + ", " + text(high) + "]", text(value));
+           "a finite number inside the world [" + core::number_text(low) + ", " +
+               core::number_text(high) + "]",
+           core::number_text(value));
     }
   }
 }

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
 #include "ari_social_sim/world/request_check.hpp"
 
@@ -381,9 +382,9 @@ void Simulation::set_human_velocity(ObjectId human_id, const Eigen::Vector2d& ve
   const double max_speed = human.spec().motion.max_speed_mps;
   if (!(speed <= max_speed)) {
     check.fail("(vx, vy)",
-               "a speed of at most " + RequestCheck::text(max_speed) + " m/s (human " +
+               "a speed of at most " + core::number_text(max_speed) + " m/s (human " +
                    std::to_string(human_id) + "'s max_speed)",
-               RequestCheck::text(speed) + " m/s");
+               core::number_text(speed) + " m/s");
   }
   check.in_range("omega", angular_velocity_rps,
                  core::between(-kMaxHumanTurnRateRps, kMaxHumanTurnRateRps), "rad/s");

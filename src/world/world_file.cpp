@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -40,12 +41,6 @@ bool is_convex(const std::vector<Eigen::Vector2d>& points) {
 // Coordinates and extents in a world file: finite (YamlMap's numbers always are) and bounded.
 const core::Bounds kCoordinate = core::between(-kMaxWorldCoordinateM, kMaxWorldCoordinateM);
 const core::Bounds kExtent{0.0, kMaxWorldSideM, true};
-
-std::string number_text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 StaticObject parse_object(const core::YamlMap& entry) {
   StaticObject object;
@@ -111,13 +106,14 @@ void WorldDescription::validate() const {
     const char* suffix = axis == 0 ? ".x" : ".y";
     if (!(std::abs(origin[axis]) <= kMaxWorldCoordinateM)) {
       throw core::ConfigError(where + "origin" + suffix + ": expected a finite number in [" +
-                              number_text(-kMaxWorldCoordinateM) + ", " +
-                              number_text(kMaxWorldCoordinateM) + "] m, got " +
-                              number_text(origin[axis]));
+                              core::number_text(-kMaxWorldCoordinateM) + ", " +
+                              core::number_text(kMaxWorldCoordinateM) + "] m, got " +
+                              core::number_text(origin[axis]));
     }
     if (!(size[axis] > 0.0 && size[axis] <= kMaxWorldSideM)) {
       throw core::ConfigError(where + "size" + suffix + ": expected a finite number in (0, " +
-                              number_text(kMaxWorldSideM) + "] m, got " + number_text(size[axis]));
+                              core::number_text(kMaxWorldSideM) + "] m, got " +
+                              core::number_text(size[axis]));
     }
   }
   if (objects.size() > kMaxWorldObjects) {

@@ -53,9 +53,6 @@ class RequestCheck {
   [[noreturn]] void fail(const std::string& field, const std::string& expectation,
                          const std::string& got) const;
 
-  /// A number as messages print it (`nan`, `inf`, `1e+300`, `0.5`).
-  static std::string text(double value);
-
  private:
   std::string prefix() const { return request_.empty() ? "" : request_ + ": "; }
 

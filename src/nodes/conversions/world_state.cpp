@@ -1,8 +1,8 @@
 #include "world_state.hpp"
 
 #include <cmath>
-#include <sstream>
 
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
@@ -180,9 +180,7 @@ class ProblemFinder {
  public:
   void finite(const std::string& field, double value) {
     if (!problem_ && !std::isfinite(value)) {
-      std::ostringstream text;
-      text << value << ", not a finite number";
-      problem_ = InputProblem{field, text.str()};
+      problem_ = InputProblem{field, core::number_text(value) + ", not a finite number"};
     }
   }
   void at_most(const std::string& field, uint64_t value, uint64_t most) {

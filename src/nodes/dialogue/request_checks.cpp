@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -52,12 +53,6 @@ size_t first_bad_byte(const std::string& text) {
   return text.size();
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", value);
-  return text;
-}
-
 }  // namespace
 
 void check_spoken_text(const std::string& text, const std::string& field) {
@@ -84,8 +79,8 @@ void check_tts_goal(const TtsGoal& goal) {
   if (!std::isfinite(goal.wait_before_speaking) || goal.wait_before_speaking < 0.0 ||
       goal.wait_before_speaking > kMaxWaitBeforeSpeakingS) {
     throw core::RequestError("wait_before_speaking: expected a number of seconds in [0, " +
-                             number(kMaxWaitBeforeSpeakingS) + "], got " +
-                             number(goal.wait_before_speaking));
+                             core::number_text(kMaxWaitBeforeSpeakingS) + "], got " +
+                             core::number_text(goal.wait_before_speaking));
   }
 }
 
