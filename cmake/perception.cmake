@@ -48,8 +48,9 @@ add_library(ari_perception_conversions
   src/nodes/conversions/perception_markers.cpp)
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
 
-# What the nodes that act on perceived people (social_mpc_node, scenario_node) read of ROS4HRI.
-add_library(ari_perceived_persons src/nodes/perceived_persons.cpp)
+# What the nodes that act on perceived people (social_mpc_node, scenario_node,
+# group_detection_node) read of ROS4HRI, and the tf buffer that forgets the frames of people gone.
+add_library(ari_perceived_persons src/nodes/perceived_persons.cpp src/nodes/renewing_tf_buffer.cpp)
 target_link_libraries(ari_perceived_persons PUBLIC ari_perception_conversions)
 
 add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
@@ -58,7 +59,7 @@ install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DES
 
 # group_detection_node: GCFF on whichever persons /humans/persons/tracked lists, placed from tf.
 add_executable(group_detection_node src/nodes/group_detection_node.cpp)
-target_link_libraries(group_detection_node ari_perception_conversions)
+target_link_libraries(group_detection_node ari_perceived_persons)
 install(TARGETS group_detection_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)

@@ -166,8 +166,15 @@ void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
   std::vector<CostDisc> discs = cost_discs(scene, goal);
   if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m ||
       discs_changed(discs)) {
+    const double distance_before = geodesic_->cost(robot.position);
     geodesic_ = field_to(goal, robot, discs);
     field_discs_ = std::move(discs);
+    // The progress watchdog's best distance moves with the field, by as much as ARI's own
+    // distance just did: a goal that moved away (to another gap, with a group perception now
+    // sees a little differently) would otherwise leave ARI short of the best it reached toward
+    // the old one, and abort a run still closing in; a goal that jitters back and forth shifts
+    // it back and forth and never counts as progress.
+    best_distance_m_ += geodesic_->cost(robot.position) - distance_before;
   }
   goal_ = goal;
 }

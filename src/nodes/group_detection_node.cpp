@@ -7,8 +7,6 @@
 #include <ros/ros.h>
 #include <std_msgs/String.h>
 #include <tf2/utils.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <map>
@@ -25,6 +23,8 @@
 #include "conversions/group_markers.hpp"
 #include "conversions/hri_messages.hpp"
 #include "hri_ids.hpp"
+#include "per_id_handle.hpp"
+#include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -42,7 +42,7 @@ class GroupDetectionNode {
  public:
   GroupDetectionNode(const perception::GroupDetectionRunConfig& run,
                      const perception::GroupConfig& config)
-      : run_(run), groups_(config), tf_listener_(tf_buffer_) {
+      : run_(run), groups_(config) {
     groups_pub_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
     markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
     tracked_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &GroupDetectionNode::on_tracked,
@@ -81,6 +81,7 @@ class GroupDetectionNode {
   }
 
   void detect(const ros::TimerEvent&) {
+    tf_.renew_if_stale();
     if (!last_list_s_) {
       return;  // nobody has said who is tracked yet
     }
@@ -95,14 +96,14 @@ class GroupDetectionNode {
     for (const std::string& id : tracked) {
       auto [it, is_new] = persons_.try_emplace(id);
       if (is_new) {
-        it->second.body_id_sub =
-            nh_.subscribe<std_msgs::String>("/humans/persons/" + id + "/body_id", 1,
-                                            [this, id](const std_msgs::String::ConstPtr& body) {
-                                              const auto person = persons_.find(id);
-                                              if (person != persons_.end()) {
-                                                person->second.body_id = body->data;
-                                              }
-                                            });
+        it->second.body_id_sub = per_id_handle(nh_).subscribe<std_msgs::String>(
+            "/humans/persons/" + id + "/body_id", 1,
+            [this, id](const std_msgs::String::ConstPtr& body) {
+              const auto person = persons_.find(id);
+              if (person != persons_.end()) {
+                person->second.body_id = body->data;
+              }
+            });
       }
       it->second.last_tracked_s = now_s;
     }
@@ -128,8 +129,8 @@ class GroupDetectionNode {
       }
       geometry_msgs::TransformStamped t;
       try {
-        t = tf_buffer_.lookupTransform(run_.reference_frame, body_frame(person->second.body_id),
-                                       ros::Time(0));
+        t = tf_.buffer().lookupTransform(run_.reference_frame, body_frame(person->second.body_id),
+                                         ros::Time(0));
       } catch (const tf2::TransformException&) {
         continue;
       }
@@ -163,8 +164,7 @@ class GroupDetectionNode {
 
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_{"~"};
-  tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  RenewingTfBuffer tf_;
   ros::Publisher groups_pub_, markers_;
   ros::Subscriber tracked_sub_;
   ros::Timer timer_;

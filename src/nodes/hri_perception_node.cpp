@@ -28,6 +28,7 @@
 #include "conversions/perception_markers.hpp"
 #include "conversions/world_state.hpp"
 #include "input_counters.hpp"
+#include "per_id_handle.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -133,32 +134,36 @@ class HriPerceptionNode {
   bool with_persons() const { return run_.mode == perception::PerceptionRunConfig::Mode::kSim; }
 
   BodyTopics advertise_body(const std::string& id) {
+    ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/bodies/" + id + "/";
-    return {nh_.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1)};
+    return {nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1)};
   }
   FaceTopics advertise_face(const std::string& id) {
+    ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/faces/" + id + "/";
-    return {nh_.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1),
-            nh_.advertise<Expression>(ns + "expression", 1),
-            nh_.advertise<SoftBiometrics>(ns + "softbiometrics", 1),
-            nh_.advertise<std_msgs::Bool>(ns + "mask", 1)};
+    return {nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1),
+            nh.advertise<Expression>(ns + "expression", 1),
+            nh.advertise<SoftBiometrics>(ns + "softbiometrics", 1),
+            nh.advertise<std_msgs::Bool>(ns + "mask", 1)};
   }
   VoiceTopics advertise_voice(const std::string& id) {
+    ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/voices/" + id + "/";
-    return {nh_.advertise<std_msgs::Bool>(ns + "is_speaking", 1),
-            nh_.advertise<LiveSpeech>(ns + "speech", 10)};
+    return {nh.advertise<std_msgs::Bool>(ns + "is_speaking", 1),
+            nh.advertise<LiveSpeech>(ns + "speech", 10)};
   }
   PersonTopics advertise_person(const std::string& id) {
+    ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/persons/" + id + "/";
     PersonTopics topics;
-    topics.anonymous = nh_.advertise<std_msgs::Bool>(ns + "anonymous", 1, true);
-    topics.name = nh_.advertise<std_msgs::String>(ns + "name", 1, true);
-    topics.face_id = nh_.advertise<std_msgs::String>(ns + "face_id", 1, true);
-    topics.body_id = nh_.advertise<std_msgs::String>(ns + "body_id", 1, true);
-    topics.voice_id = nh_.advertise<std_msgs::String>(ns + "voice_id", 1, true);
-    topics.engagement = nh_.advertise<EngagementLevel>(ns + "engagement_status", 1);
-    topics.location_confidence = nh_.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
-    topics.proxemic_space = nh_.advertise<std_msgs::String>(ns + "proxemic_space", 1, true);
+    topics.anonymous = nh.advertise<std_msgs::Bool>(ns + "anonymous", 1, true);
+    topics.name = nh.advertise<std_msgs::String>(ns + "name", 1, true);
+    topics.face_id = nh.advertise<std_msgs::String>(ns + "face_id", 1, true);
+    topics.body_id = nh.advertise<std_msgs::String>(ns + "body_id", 1, true);
+    topics.voice_id = nh.advertise<std_msgs::String>(ns + "voice_id", 1, true);
+    topics.engagement = nh.advertise<EngagementLevel>(ns + "engagement_status", 1);
+    topics.location_confidence = nh.advertise<std_msgs::Float32>(ns + "location_confidence", 1);
+    topics.proxemic_space = nh.advertise<std_msgs::String>(ns + "proxemic_space", 1, true);
     // Everyone is recognised from ARI's database of known persons (person_id_of).
     std_msgs::Bool anonymous;
     anonymous.data = false;

@@ -8,6 +8,7 @@
 #include "conversions/hri_messages.hpp"
 #include "frames.hpp"
 #include "hri_ids.hpp"
+#include "per_id_handle.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -71,7 +72,7 @@ void PerceivedPersons::on_tracked(const IdsList& msg) {
     Followed& followed = followed_[id];
     followed.last_tracked = now;
     if (!followed.body_id_sub) {
-      followed.body_id_sub = nh_.subscribe<std_msgs::String>(
+      followed.body_id_sub = per_id_handle(nh_).subscribe<std_msgs::String>(
           "/humans/persons/" + id + "/body_id", 1, [this, id](const std_msgs::String::ConstPtr& b) {
             const auto person = followed_.find(id);
             if (person != followed_.end()) {

@@ -13,8 +13,6 @@
 #include <ros/ros.h>
 #include <signal.h>
 #include <std_srvs/SetBool.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include <csignal>
 #include <functional>
@@ -51,6 +49,7 @@
 #include "conversions/world_state.hpp"
 #include "frames.hpp"
 #include "perceived_persons.hpp"
+#include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -356,7 +355,7 @@ class ScenarioNode {
     state_sub_ = nh_.subscribe("/sim/world_state", 100, &ScenarioNode::on_world_state, this);
     const scenario::ScriptInterfaces uses = scenario_.script.interfaces();
     if (uses.approach || uses.perceived_groups) {
-      tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_);
+      tf_ = std::make_unique<RenewingTfBuffer>();
       persons_ = std::make_unique<PerceivedPersons>(nh_);
     }
     if (uses.perceived_groups) {
@@ -419,6 +418,7 @@ class ScenarioNode {
     observations.world = from_msg(msg);
     observations.navigation = commands_.navigation();
     if (persons_) {
+      tf_->renew_if_stale();
       identities_.update(observations.world, sightings());
       observations.person_ids = identities_.person_ids();
       log_new_matches(observations.person_ids);
@@ -454,7 +454,7 @@ class ScenarioNode {
   std::vector<scenario::PersonSighting> sightings() const {
     std::vector<scenario::PersonSighting> sightings;
     for (const PerceivedPersons::Placed& person :
-         persons_->place(tf_buffer_, /*or_person_frame=*/true)) {
+         persons_->place(tf_->buffer(), /*or_person_frame=*/true)) {
       sightings.push_back({person.person_id, person.X_map_frame.position, person.from_body});
     }
     return sightings;
@@ -527,8 +527,7 @@ class ScenarioNode {
   scenario::PersonIdentities identities_;
   std::map<world::ObjectId, std::string> logged_person_ids_;  // the matches last logged
   ros::NodeHandle nh_;
-  tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::unique_ptr<RenewingTfBuffer> tf_;       // when the script approaches or sees groups
   std::unique_ptr<PerceivedPersons> persons_;  // when the script approaches or sees groups
   RosCommands commands_;
   ros::Publisher status_pub_;

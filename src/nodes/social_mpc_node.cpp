@@ -14,8 +14,6 @@
 #include <std_msgs/String.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
 #include <algorithm>
@@ -36,6 +34,7 @@
 #include "conversions/world_state.hpp"
 #include "input_counters.hpp"
 #include "perceived_persons.hpp"
+#include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -60,7 +59,6 @@ class SocialMpcNode {
       : config_(config),
         tracker_(config.scene),
         persons_(nh_),
-        tf_listener_(tf_buffer_),
         move_base_(nh_, "move_base", false),
         approach_(nh_, "/social_mpc/approach", false) {
     cmd_vel_pub_ = nh_.advertise<geometry_msgs::Twist>("/mobile_base_controller/cmd_vel", 1);
@@ -146,7 +144,7 @@ class SocialMpcNode {
   // no meaningful orientation (REP-155), and the planner needs both.
   void observe_people() {
     for (const PerceivedPersons::Placed& person :
-         persons_.place(tf_buffer_, /*or_person_frame=*/false)) {
+         persons_.place(tf_.buffer(), /*or_person_frame=*/false)) {
       tracker_.observe_person(person.person_id, person.stamp_s, person.X_map_frame.position,
                               person.X_map_frame.theta);
     }
@@ -155,7 +153,7 @@ class SocialMpcNode {
   std::optional<navigation::RobotObservation> observe_robot() const {
     geometry_msgs::TransformStamped t;
     try {
-      t = tf_buffer_.lookupTransform(kMapFrame, kBaseFrame, ros::Time(0));
+      t = tf_.buffer().lookupTransform(kMapFrame, kBaseFrame, ros::Time(0));
     } catch (const tf2::TransformException&) {
       return std::nullopt;
     }
@@ -204,7 +202,7 @@ class SocialMpcNode {
     if (!navigation::names_map_frame(frame)) {
       geometry_msgs::TransformStamped t;
       try {
-        t = tf_buffer_.lookupTransform(kMapFrame, frame, ros::Time(0));
+        t = tf_.buffer().lookupTransform(kMapFrame, frame, ros::Time(0));
       } catch (const tf2::TransformException& e) {
         throw core::RequestError(field + "header.frame_id: no transform from '" + frame +
                                  "' to map (" + e.what() + ")");
@@ -410,6 +408,7 @@ class SocialMpcNode {
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
     inputs_.publish_when_due(diagnostics_pub_, ros::Time::now());
+    tf_.renew_if_stale();
     // People are followed all the time, so that a goal naming someone finds them known already;
     // those perception stopped reporting are let go.
     observe_people();
@@ -513,8 +512,7 @@ class SocialMpcNode {
 
   ros::NodeHandle nh_;
   PerceivedPersons persons_;
-  tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  RenewingTfBuffer tf_;
   MoveBaseServer move_base_;
   ApproachServer approach_;
   ros::Publisher cmd_vel_pub_, head_pub_, plan_pub_, markers_pub_, status_pub_, diagnostics_pub_;

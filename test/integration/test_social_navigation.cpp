@@ -375,8 +375,10 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
     }
   }
   EXPECT_EQ(with_ari, 3) << persons.size() - 1 << " bodies perceived";
-  // And the members are still reported as one group by group detection.
-  EXPECT_EQ(group_of(members, 5.0), group_id);
+  // And group detection still reports the three members as one group. Its id may have changed:
+  // a member hidden behind another as ARI steps into the gap changes the membership for a moment,
+  // and group detection numbers a changed group anew (README, group_detection_node).
+  EXPECT_FALSE(group_of(members, 5.0).empty()) << "the three are no longer one group";
 }
 
 }  // namespace
