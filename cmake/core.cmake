@@ -1,9 +1,10 @@
-# core/: shared small things (seeded RNG, strict YAML reading, command-line values and output
+# core/: shared small things (seeded RNG, bounded file reading, strict YAML reading, command-line values and output
 # files, angles, errors).
 add_library(ari_core
   src/core/command_line.cpp
   src/core/output_file.cpp
   src/core/rng.cpp
+  src/core/text_file.cpp
   src/core/yaml_map.cpp)
 target_include_directories(ari_core PUBLIC include)
 target_link_libraries(ari_core PUBLIC Eigen3::Eigen yaml-cpp)
@@ -11,6 +12,6 @@ target_link_libraries(ari_core PUBLIC Eigen3::Eigen yaml-cpp)
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_core
     SOURCES test/core/test_command_line.cpp test/core/test_output_file.cpp test/core/test_pose2.cpp
-      test/core/test_rng.cpp test/core/test_yaml_map.cpp
+      test/core/test_rng.cpp test/core/test_text_file.cpp test/core/test_yaml_map.cpp
     LIBRARIES ari_core)
 endif()

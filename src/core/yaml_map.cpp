@@ -1,14 +1,11 @@
 #include "ari_social_sim/core/yaml_map.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
+#include "ari_social_sim/core/text_file.hpp"
 
 namespace ari_social_sim::core {
 namespace {
@@ -52,46 +49,7 @@ YamlMap::YamlMap(YAML::Node node, std::string source, std::string path)
 }
 
 YamlMap YamlMap::load_file(const std::string& file_path) {
-  // Everything that can be told from the file system is checked before a byte is read.
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::file_status status = fs::status(file_path, error);
-  if (!fs::exists(status)) {
-    throw ConfigError(file_path + ": cannot open the file (it does not exist)");
-  }
-  if (fs::is_directory(status)) {
-    throw ConfigError(file_path + ": expected a YAML file, got a directory");
-  }
-  if (!fs::is_regular_file(status)) {
-    throw ConfigError(file_path +
-                      ": expected a YAML file, got a special file (device, FIFO or socket)");
-  }
-  const std::uintmax_t size = fs::file_size(file_path, error);
-  if (error) {
-    throw ConfigError(file_path + ": cannot open the file (" + error.message() + ")");
-  }
-  if (size > kMaxYamlFileBytes) {
-    throw ConfigError(file_path + ": expected a YAML file of at most " +
-                      std::to_string(kMaxYamlFileBytes) + " bytes, got " + std::to_string(size) +
-                      " bytes");
-  }
-  std::ifstream in(file_path, std::ios::binary);
-  if (!in) {
-    throw ConfigError(file_path + ": cannot open the file (" + std::strerror(errno) + ")");
-  }
-  // Read at most one byte past the limit: a file that grew since it was measured is still
-  // refused without reading it all.
-  std::string text(kMaxYamlFileBytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  if (in.bad()) {
-    throw ConfigError(file_path + ": cannot read the file (" + std::strerror(errno) + ")");
-  }
-  text.resize(static_cast<size_t>(in.gcount()));
-  if (text.size() > kMaxYamlFileBytes) {
-    throw ConfigError(file_path + ": expected a YAML file of at most " +
-                      std::to_string(kMaxYamlFileBytes) + " bytes, got more (it grew while read)");
-  }
-  return parse(text, file_path);
+  return parse(read_text_file(file_path, "a YAML file", kMaxYamlFileBytes), file_path);
 }
 
 YamlMap YamlMap::parse(const std::string& text, const std::string& source) {

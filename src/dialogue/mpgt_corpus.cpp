@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/text_file.hpp"
 #include "ari_social_sim/dialogue/text.hpp"
 
 #ifndef ARI_MPGT_DIR
@@ -108,10 +108,11 @@ MpgtCorpus load_mpgt_corpus(const std::string& dir) {
   std::sort(files.begin(), files.end());
   MpgtCorpus corpus;
   for (const auto& [number, path] : files) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    CorpusDialogue dialogue = parse_mpgt_dialogue(text.str(), path.filename().string());
+    // The corpus's conversations are a few kilobytes each.
+    constexpr std::uintmax_t kMaxConversationBytes = 1024 * 1024;
+    CorpusDialogue dialogue = parse_mpgt_dialogue(
+        core::read_text_file(path.string(), "an MPGT conversation", kMaxConversationBytes),
+        path.filename().string());
     corpus.act_repairs += dialogue.act_repairs;
     corpus.skipped_goal_labels += dialogue.skipped_goal_labels;
     corpus.dialogues.push_back(std::move(dialogue));

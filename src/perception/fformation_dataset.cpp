@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/text_file.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
@@ -26,10 +27,16 @@ bool is_blank(char c) {
 }
 
 // Line-by-line reader of one CSV file with a fixed header; every error names file:line:column.
+// The datasets' tables are a few tens of kilobytes (CoffeeBreak, Synth); a table is held in memory
+// whole, so a file past this is refused before it is read.
+constexpr std::uintmax_t kMaxCsvFileBytes = 64 * 1024 * 1024;
+
 class CsvReader {
  public:
   CsvReader(std::string path, std::vector<std::string> columns)
-      : path_(std::move(path)), columns_(std::move(columns)), in_(path_) {
+      : path_(std::move(path)), columns_(std::move(columns)) {
+    core::check_text_file(path_, "a CSV file", kMaxCsvFileBytes);
+    in_.open(path_);
     if (!in_) {
       throw core::ConfigError(path_ + ": cannot open the file");
     }

@@ -2,11 +2,10 @@
 
 #include <urdf_parser/urdf_parser.h>
 
-#include <fstream>
 #include <functional>
-#include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/text_file.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -54,13 +53,9 @@ LinkShape to_shape(const urdf::GeometrySharedPtr& geometry, const urdf::Pose& or
 }  // namespace
 
 RobotModel RobotModel::from_urdf_file(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) {
-    throw core::ConfigError(path + ": cannot read the URDF file");
-  }
-  std::stringstream text;
-  text << file.rdbuf();
-  return from_urdf_string(text.str(), path);
+  // ARI's URDF is 33 KB; urdfdom builds a DOM several times the text's size.
+  constexpr std::uintmax_t kMaxUrdfBytes = 4 * 1024 * 1024;
+  return from_urdf_string(core::read_text_file(path, "a URDF file", kMaxUrdfBytes), path);
 }
 
 RobotModel RobotModel::from_urdf_string(const std::string& xml, const std::string& source) {

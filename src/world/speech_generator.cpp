@@ -35,6 +35,14 @@ double SpeechGenerator::duration_s(const std::string& content) const {
 }
 
 void SpeechGenerator::say(const std::string& act, const std::string& content, double now_s) {
+  if (content.size() > kMaxContentBytes) {
+    throw core::RequestError("say: content: expected at most " + std::to_string(kMaxContentBytes) +
+                             " bytes, got " + std::to_string(content.size()));
+  }
+  if (act.size() > kMaxActBytes) {
+    throw core::RequestError("say: act: expected at most " + std::to_string(kMaxActBytes) +
+                             " bytes, got " + std::to_string(act.size()));
+  }
   std::vector<std::string> words = split_words(content);
   if (words.empty()) {
     throw core::RequestError("say: content has no words");

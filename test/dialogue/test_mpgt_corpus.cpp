@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 
 #include "ari_social_sim/core/error.hpp"
@@ -70,6 +71,19 @@ TEST(MpgtCorpus, LoadsTheCountsOfSpecsSection21) {
 
 TEST(MpgtCorpus, MissingDirectoryIsAConfigError) {
   EXPECT_THROW(load_mpgt_corpus("/nonexistent/mpgt"), core::ConfigError);
+}
+
+TEST(MpgtCorpus, ConversationThatIsNoFileIsAConfigError) {
+  // A directory named like a conversation is refused by name, before anything is read.
+  const std::string corpus = ::testing::TempDir() + "mpgt_with_a_directory";
+  std::filesystem::create_directories(corpus + "/convo1.txt");
+  try {
+    load_mpgt_corpus(corpus);
+    FAIL() << "accepted a directory as a conversation";
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              corpus + "/convo1.txt: expected an MPGT conversation, got a directory");
+  }
 }
 
 }  // namespace

@@ -97,6 +97,13 @@ TEST(FformationDataset, ErrorsNameFileLineColumnAndField) {
   expect_config_error([&] { read_fformation_features(infinite); }, {":2:7:", "y:", "\"inf\""});
 }
 
+TEST(FformationDataset, TablesAreCheckedBeforeTheyAreRead) {
+  expect_config_error([] { read_fformation_features(::testing::TempDir()); },
+                      {::testing::TempDir(), "expected a CSV file, got a directory"});
+  expect_config_error([] { read_fformation_groups("/dev/zero"); },
+                      {"/dev/zero", "expected a CSV file, got a special file"});
+}
+
 TEST(FformationDataset, WrongShapesAreErrors) {
   const std::string header = "frame,person_id,x,y,theta\n";
   const std::string few = write_file("few.csv", header + "1,1,0,0\n");

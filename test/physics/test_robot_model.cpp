@@ -150,5 +150,17 @@ TEST(RobotModel, RejectsWhatItCannotSimulate) {
   }
 }
 
+TEST(RobotModel, UrdfFileIsCheckedBeforeItIsRead) {
+  // A directory given as ari_physics_node's ~urdf is an error naming it, not an abort.
+  try {
+    RobotModel::from_urdf_file(::testing::TempDir());
+    FAIL() << "accepted a directory";
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              ::testing::TempDir() + ": expected a URDF file, got a directory");
+  }
+  EXPECT_THROW(RobotModel::from_urdf_file("/dev/zero"), core::ConfigError);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::physics

@@ -60,5 +60,23 @@ TEST(SpeechGenerator, EmptyContentOrActIsRejected) {
   EXPECT_FALSE(speech.is_speaking());
 }
 
+TEST(SpeechGenerator, ContentAndActAreBounded) {
+  // So that a client cannot make the world hold, and publish with every state, megabytes of speech.
+  SpeechGenerator speech(150.0);
+  std::string words;
+  while (words.size() + 5 <= SpeechGenerator::kMaxContentBytes) {
+    words += "word ";
+  }
+  speech.say("INFORM", words, 0.0);  // 4095 bytes
+  try {
+    speech.say("INFORM", words + "words", 0.0);
+    FAIL() << "accepted 4100 bytes";
+  } catch (const core::RequestError& e) {
+    EXPECT_STREQ(e.what(), "say: content: expected at most 4096 bytes, got 4100");
+  }
+  EXPECT_THROW(speech.say(std::string(257, 'A'), "hello", 0.0), core::RequestError);
+  EXPECT_EQ(speech.content(), words);  // the refused acts left the one in progress alone
+}
+
 }  // namespace
 }  // namespace ari_social_sim::world

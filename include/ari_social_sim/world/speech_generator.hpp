@@ -26,6 +26,10 @@ struct SpeechRecord {
 class SpeechGenerator : public Component {
  public:
   static constexpr size_t kHistoryLength = 32;
+  /// Longest content and act a speaker takes (bytes): 4096 bytes is several minutes of speech, as
+  /// the dialogue environment's text limit; an act is an intent and a few slots.
+  static constexpr size_t kMaxContentBytes = 4096;
+  static constexpr size_t kMaxActBytes = 256;
 
   explicit SpeechGenerator(double words_per_minute);
 
@@ -33,7 +37,8 @@ class SpeechGenerator : public Component {
   void step(Object& owner, const StepContext& context) override;
 
   /// Starts an act now; an act in progress is cut off and recorded as interrupted. Throws
-  /// core::RequestError if the content has no words or the act is empty.
+  /// core::RequestError if the content has no words or more than kMaxContentBytes, or the act is
+  /// empty or longer than kMaxActBytes.
   void say(const std::string& act, const std::string& content, double now_s);
   /// Seconds an utterance of this content takes at this speaker's rate.
   double duration_s(const std::string& content) const;
