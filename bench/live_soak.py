@@ -258,7 +258,8 @@ def main():
          "scene:=%s/scene.yaml" % scene_dir, "real_time_factor:=0", "seed:=%d" % args.seed],
         stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
     interrupted = []
-    signal.signal(signal.SIGINT, lambda *_: interrupted.append(True))
+    for stop in (signal.SIGINT, signal.SIGTERM):  # either way, the launch is stopped below
+        signal.signal(stop, lambda *_: interrupted.append(True))
     samples = []
     try:
         import rospy
