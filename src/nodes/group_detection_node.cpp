@@ -86,6 +86,13 @@ class GroupDetectionNode {
       return;  // nobody has said who is tracked yet
     }
     const ros::Time now = ros::Time::now();
+    // A timer that fell behind (a busy machine) fires twice at the same sim time: the world has
+    // not moved in between, and a second report with the same stamp would only repeat the first.
+    // (Time going back, after a world reset, is a new detection.)
+    if (now == last_detection_) {
+      return;
+    }
+    last_detection_ = now;
     groups_.update(candidates(tracked_, now), detected_);
     publish(now);
   }
@@ -160,6 +167,7 @@ class GroupDetectionNode {
   std::vector<perception::PerceivedGroup> detected_;
   std::vector<std::string> tracked_;
   std::optional<double> last_list_s_;
+  ros::Time last_detection_;
   std::map<std::string, Person> persons_;
 
   ros::NodeHandle nh_;
