@@ -11,7 +11,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 if (($# < 2)) || ! [[ $1 =~ ^[1-9][0-9]{0,3}$ ]]; then
-  echo "usage: bash scripts/repeat_rostest.sh RUNS(1-9999) TEST_FILE|all [rostest args...]" >&2
+  echo "usage: bash scripts/repeat_rostest.sh RUNS(1-9999) TEST_FILE-or-all [rostest args...]" >&2
   exit 2
 fi
 runs=$1
