@@ -30,6 +30,8 @@ import sys
 import tempfile
 import time
 
+import yaml
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 PACKAGE = os.path.dirname(HERE)
 NODES = ["world_node", "robot_state_publisher", "hri_perception", "group_detection",
@@ -44,7 +46,7 @@ SPEAK_EVERY_S = 2.0
 GOAL_TIMEOUT_S = 90.0
 
 
-def positive_int(low, high):
+def int_in(low, high):
     def parse(text):
         value = int(text)
         if not low <= value <= high:
@@ -131,7 +133,6 @@ class Driver:
         self.tracked = list(msg.ids)
 
     def read_scene(self, scene_path):
-        import yaml
         with open(scene_path) as scene:
             humans = yaml.safe_load(scene)["humans"]
         self.humans = [h["id"] for h in humans]
@@ -264,11 +265,11 @@ def samples_of_report(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--minutes", type=positive_int(2, 24 * 60), default=60)
-    parser.add_argument("--warmup", type=positive_int(1, 24 * 60), default=10)
-    parser.add_argument("--humans", type=positive_int(20, 1000), default=200)
-    parser.add_argument("--seed", type=positive_int(0, 2**31 - 1), default=1)
-    parser.add_argument("--port", type=positive_int(1024, 65535), default=11411)
+    parser.add_argument("--minutes", type=int_in(2, 24 * 60), default=60)
+    parser.add_argument("--warmup", type=int_in(1, 24 * 60), default=10)
+    parser.add_argument("--humans", type=int_in(20, 1000), default=200)
+    parser.add_argument("--seed", type=int_in(0, 2**31 - 1), default=1)
+    parser.add_argument("--port", type=int_in(1024, 65535), default=11411)
     parser.add_argument("--tolerance", type=float, default=5.0, help="%% of spread allowed")
     parser.add_argument("--report", help="also write the tables to this Markdown file")
     parser.add_argument("--analyse", metavar="REPORT",
@@ -290,8 +291,9 @@ def main():
     subprocess.run([sys.executable, os.path.join(PACKAGE, "scripts", "make_crowd_scene.py"),
                     "--humans", str(args.humans), "--seed", str(args.seed), "--ari",
                     "--out", scene_dir], check=True)
-    side = float(open(os.path.join(scene_dir, "world.yaml")).read().split("size: [")[1]
-                 .split(",")[0]) - 0.4
+    with open(os.path.join(scene_dir, "world.yaml")) as world:
+        hall = yaml.safe_load(world)
+    side = hall["size"][0] + 2 * hall["origin"][0]  # the floor inside the walls
 
     os.environ["ROS_MASTER_URI"] = "http://localhost:%d" % args.port
     log = open(os.path.join(scene_dir, "launch.log"), "w")
