@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/physics/octomap_mapper.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 
 namespace {
 
@@ -47,7 +47,7 @@ physics::CameraRig rig_with(const std::vector<std::string>& names, int width, in
   }
   physics::CameraRig rig(config);
   rig.set_world(
-      world::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml"),
+      model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml"),
       physics::SceneStyle{});
   return rig;
 }

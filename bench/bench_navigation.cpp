@@ -4,12 +4,12 @@
 #include <memory>
 #include <vector>
 
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
 #include "ari_social_sim/navigation/personal_space_cost.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
 #include "ari_social_sim/navigation/social_mpc.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 #include "navigation_fixtures.hpp"
 
 namespace {
@@ -17,12 +17,12 @@ namespace {
 using namespace ari_social_sim;
 using namespace ari_social_sim::navigation;
 
-const FootprintModel kFootprint = FootprintModel::covering(world::AriFootprint{}, 3);
+const FootprintModel kFootprint = FootprintModel::covering(model::AriFootprint{}, 3);
 
 // The hospital waiting room (12 x 9 m at 0.05 m), as world_node serves it by default.
-world::OccupancyGrid waiting_room_map() {
+model::OccupancyGrid waiting_room_map() {
   return world::rasterize_static_map(
-      world::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml"),
+      model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml"),
       0.05);
 }
 
@@ -116,7 +116,7 @@ BENCHMARK(BM_SocialMpcSolve)
 
 // The signed distance field of the waiting room; items = fields.
 void BM_SignedDistanceField(benchmark::State& state) {
-  const world::OccupancyGrid map = waiting_room_map();
+  const model::OccupancyGrid map = waiting_room_map();
   for (auto _ : state) {
     benchmark::DoNotOptimize(signed_distance_field(map).values().data());
   }

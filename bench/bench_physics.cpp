@@ -6,8 +6,8 @@
 
 #include <cmath>
 
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -17,9 +17,9 @@ const RobotModel& ari() {
   return model;
 }
 
-const world::WorldDescription& waiting_room() {
-  static const world::WorldDescription world =
-      world::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml");
+const model::WorldDescription& waiting_room() {
+  static const model::WorldDescription world =
+      model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml");
   return world;
 }
 

@@ -19,7 +19,7 @@
 namespace {
 
 using namespace ari_social_sim;
-using world::ObjectId;
+using model::ObjectId;
 
 constexpr uint64_t kSeed = 7;
 constexpr double kStepS = 0.05;

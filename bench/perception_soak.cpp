@@ -52,7 +52,7 @@
 namespace {
 
 using namespace ari_social_sim;
-using world::ObjectId;
+using model::ObjectId;
 
 constexpr double kStep_s = 1.0 / 30.0;  // perception's 30 Hz, one frame per world step
 constexpr double kAreaPerHuman_m2 = 4.0;

@@ -29,8 +29,10 @@ add_library(ari_navigation
   src/navigation/trajectory_cost.cpp
   src/navigation/unicycle_model.cpp
   src/navigation/view_cost.cpp)
-target_link_libraries(ari_navigation PUBLIC ari_world PRIVATE opencv_core opencv_imgproc NLopt::nlopt)
+target_link_libraries(ari_navigation PUBLIC ari_model PRIVATE opencv_core opencv_imgproc NLopt::nlopt)
 target_include_directories(ari_navigation SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+# The navigation core runs on the real robot too: it must not depend on the 2D simulator.
+ari_forbid_link(ari_navigation "box2d|ari_world")
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_navigation
@@ -42,7 +44,7 @@ if(CATKIN_ENABLE_TESTING)
       test/navigation/test_navigator.cpp
       test/navigation/test_scene_tracker.cpp
       test/navigation/test_episode_scorer.cpp
-    LIBRARIES ari_navigation)
+    LIBRARIES ari_navigation ari_world)
   target_include_directories(test_navigation PRIVATE test/world)
   target_compile_definitions(test_navigation PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
@@ -51,7 +53,7 @@ endif()
 add_executable(nav_benchmark
   src/tools/nav_benchmark/episodes.cpp
   src/tools/nav_benchmark/nav_benchmark.cpp)
-target_link_libraries(nav_benchmark ari_navigation ari_perception)
+target_link_libraries(nav_benchmark ari_scenario)
 target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)
@@ -79,7 +81,7 @@ endif()
 if(benchmark_FOUND)
   ari_add_benchmark(bench_navigation
     SOURCES bench/bench_navigation.cpp
-    LIBRARIES ari_navigation)
+    LIBRARIES ari_navigation ari_world)
   # The scenes are the navigation tests' own (test/navigation/navigation_fixtures.hpp).
   target_include_directories(bench_navigation PRIVATE ${PROJECT_SOURCE_DIR}/test/navigation
     ${PROJECT_SOURCE_DIR}/test/world)

@@ -2,6 +2,7 @@
 # scenario_node, which plays them through the suite's public services and actions.
 add_library(ari_scenario
   src/scenario/agent_ref.cpp
+  src/scenario/ari_observation.cpp
   src/scenario/batch_plan.cpp
   src/scenario/conversation.cpp
   src/scenario/episode.cpp

@@ -12,17 +12,14 @@ add_library(ari_world
   src/world/human_navigation.cpp
   src/world/map_sensor.cpp
   src/world/object.cpp
-  src/world/occupancy_grid.cpp
   src/world/request_check.cpp
   src/world/scene.cpp
   src/world/simulation.cpp
   src/world/social_forces.cpp
   src/world/speech_generator.cpp
-  src/world/types.cpp
-  src/world/world_file.cpp
   src/world/world_run_config.cpp
   src/world/world_snapshot.cpp)
-target_link_libraries(ari_world PUBLIC ari_core box2d::box2d)
+target_link_libraries(ari_world PUBLIC ari_model box2d::box2d)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_world
@@ -37,7 +34,6 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp
       test/world/test_speech_generator.cpp
-      test/world/test_world_file.cpp
       test/world/test_world_run_config.cpp
     LIBRARIES ari_world)
   target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

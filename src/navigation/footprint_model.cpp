@@ -7,7 +7,7 @@
 
 namespace ari_social_sim::navigation {
 
-FootprintModel FootprintModel::covering(const world::AriFootprint& rectangle, int circle_count) {
+FootprintModel FootprintModel::covering(const model::AriFootprint& rectangle, int circle_count) {
   ARI_CHECK(circle_count >= 1);
   FootprintModel model;
   model.rectangle = rectangle;

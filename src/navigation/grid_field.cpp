@@ -7,7 +7,7 @@
 
 namespace ari_social_sim::navigation {
 
-GridField::GridField(const world::OccupancyGrid& grid, float fill)
+GridField::GridField(const model::OccupancyGrid& grid, float fill)
     : origin_(grid.origin),
       resolution_m_(grid.resolution_m),
       width_(grid.width),

@@ -12,15 +12,6 @@
 
 namespace ari_social_sim::navigation {
 
-RobotObservation RobotObservation::of(const world::Ari& ari) {
-  RobotObservation robot;
-  robot.pose = ari.pose();
-  robot.linear_mps = ari.drive().linear_mps();
-  robot.angular_rps = ari.drive().angular_rps();
-  robot.pan_rad = ari.head().pan_rad();
-  robot.pan_rps = ari.head().pan_velocity_rps();
-  return robot;
-}
 namespace {
 
 std::string format_seconds(double s) {
@@ -37,9 +28,9 @@ std::string format_point(const Eigen::Vector2d& p) {
 
 }  // namespace
 
-Navigator::Navigator(const NavigationConfig& config, const world::OccupancyGrid& map)
+Navigator::Navigator(const NavigationConfig& config, const model::OccupancyGrid& map)
     : config_(config),
-      footprint_(FootprintModel::covering(world::AriFootprint{}, config.mpc.footprint_circles)),
+      footprint_(FootprintModel::covering(model::AriFootprint{}, config.mpc.footprint_circles)),
       sdf_(signed_distance_field(map)),
       goal_finder_(config.goal_finder, footprint_, config.mpc.personal_space),
       mpc_(config.mpc, footprint_),

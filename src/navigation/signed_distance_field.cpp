@@ -5,7 +5,7 @@
 
 namespace ari_social_sim::navigation {
 
-GridField signed_distance_field(const world::OccupancyGrid& grid) {
+GridField signed_distance_field(const model::OccupancyGrid& grid) {
   GridField field(grid, 0.0f);
   if (grid.width == 0 || grid.height == 0) {
     return field;
@@ -14,7 +14,7 @@ GridField signed_distance_field(const world::OccupancyGrid& grid) {
   size_t free_count = 0;
   for (int y = 0; y < grid.height; ++y) {
     for (int x = 0; x < grid.width; ++x) {
-      const bool is_free = grid.at(x, y) == world::OccupancyGrid::kFree;
+      const bool is_free = grid.at(x, y) == model::OccupancyGrid::kFree;
       free_mask.at<uint8_t>(y, x) = is_free ? 255 : 0;
       free_count += is_free ? 1 : 0;
     }

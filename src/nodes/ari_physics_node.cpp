@@ -25,11 +25,11 @@
 #include "ari_social_sim/QueryTrajectoryState.h"
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
 #include "ari_social_sim/physics/point_head.hpp"
 #include "ari_social_sim/world/scene.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 #include "camera_interface.hpp"
 #include "conversions/ari_base.hpp"
 #include "conversions/joint_trajectory.hpp"
@@ -418,7 +418,7 @@ class PointHeadInterface {
 class PhysicsNode {
  public:
   /// Throws what CameraInterface throws (bad camera or mapping parameters, no OpenGL context).
-  PhysicsNode(const physics::PhysicsRunConfig& config, const world::WorldDescription& world,
+  PhysicsNode(const physics::PhysicsRunConfig& config, const model::WorldDescription& world,
               std::unique_ptr<physics::AriPhysics> physics)
       : config_(config), physics_(std::move(physics)), tf_listener_(tf_buffer_) {
     clock_.physics = physics_.get();
@@ -667,7 +667,7 @@ int main(int argc, char** argv) {
     const std::string package = ros::package::getPath("ari_social_sim");
     model = std::make_unique<physics::RobotModel>(physics::RobotModel::from_urdf_file(
         config.urdf.empty() ? package + "/urdf/ari.urdf" : config.urdf));
-    world::WorldDescription world_description;
+    model::WorldDescription world_description;
     std::unique_ptr<physics::AriPhysics> simulation;
     core::Pose2 start;
     if (!config.scene.empty()) {
@@ -678,7 +678,7 @@ int main(int argc, char** argv) {
       world_description = scene.world;
       start = scene.ari->pose;
     } else {
-      world_description = world::load_world_file(
+      world_description = model::load_world_file(
           config.world.empty() ? package + "/worlds/room_6x6.yaml" : config.world);
       start = config.initial_pose.value_or(
           core::Pose2{world_description.origin + 0.5 * world_description.size, 0.0});

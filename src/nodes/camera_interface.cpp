@@ -39,7 +39,7 @@ cv::Mat depth_in_metres(const cv::Mat& depth) {
 }  // namespace
 
 CameraInterface::CameraInterface(ros::NodeHandle& nh, const physics::PhysicsRunConfig& config,
-                                 const world::WorldDescription& world,
+                                 const model::WorldDescription& world,
                                  const physics::AriPhysics& physics)
     : physics_(physics), rig_(rig_config(config)), world_(world), map_file_(config.map_file) {
   // A relative map file lands in ROS_HOME (~/.ros), where ROS puts what nodes write.

@@ -22,7 +22,7 @@ class CameraInterface {
   /// Throws core::ConfigError for bad camera or mapping parameters and physics::RenderError when no
   /// headless OpenGL context can be made.
   CameraInterface(ros::NodeHandle& nh, const physics::PhysicsRunConfig& config,
-                  const world::WorldDescription& world, const physics::AriPhysics& physics);
+                  const model::WorldDescription& world, const physics::AriPhysics& physics);
 
   /// Renders and publishes what is due at the physics' time, stamped `stamp`.
   void update(const ros::Time& stamp);
@@ -44,7 +44,7 @@ class CameraInterface {
   // Mapping mode.
   std::optional<physics::OctomapMapper> mapper_;
   std::optional<size_t> mapping_camera_;  // the torso RGB-D camera
-  world::WorldDescription world_;
+  model::WorldDescription world_;
   std::string map_file_;
   double next_map_s_{0.0};
   ros::Publisher map_pub_, voxels_pub_;

@@ -18,12 +18,12 @@
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/per_id_store.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 #include "conversions/hri_messages.hpp"
 #include "conversions/perception_markers.hpp"
 #include "conversions/world_state.hpp"
@@ -94,7 +94,7 @@ class HriPerceptionNode {
  public:
   HriPerceptionNode(const perception::PerceptionRunConfig& run,
                     const perception::PerceptionConfig& config,
-                    std::optional<world::OccupancyGrid> sound_map)
+                    std::optional<model::OccupancyGrid> sound_map)
       : run_(run),
         pipeline_(config),
         matcher_(pipeline_.config().matchers,
@@ -346,7 +346,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle private_handle("~");
   perception::PerceptionRunConfig run;
   perception::PerceptionConfig config;
-  std::optional<world::OccupancyGrid> sound_map;
+  std::optional<model::OccupancyGrid> sound_map;
   try {
     run = perception::PerceptionRunConfig::from_yaml(nodes::read_private_params(private_handle));
     if (run.config.empty()) {
@@ -363,7 +363,7 @@ int main(int argc, char** argv) {
       config.persons.id_style = *run.person_ids;
     }
     if (!run.world.empty()) {
-      sound_map = perception::rasterize_walls(world::load_world_file(run.world),
+      sound_map = perception::rasterize_walls(model::load_world_file(run.world),
                                               nodes::kSoundMapResolution_m);
     }
   } catch (const core::Error& e) {

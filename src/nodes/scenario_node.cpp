@@ -184,7 +184,7 @@ class RosCommands : public scenario::Commands {
     call("/sim/say", service);
   }
 
-  void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
+  void set_human_goal(model::ObjectId human, const core::Pose2& goal) override {
     SetGoal service;
     service.request.id = human;
     service.request.goal = to_msg(goal);
@@ -237,9 +237,9 @@ class RosCommands : public scenario::Commands {
     spawn.request.role = spec.role;
     spawn.request.pose = to_msg(spec.pose);
     spawn.request.age = static_cast<float>(spec.age_years);
-    spawn.request.gender = world::to_string(spec.gender);
+    spawn.request.gender = model::to_string(spec.gender);
     spawn.request.mask = spec.mask;
-    spawn.request.emotion = world::to_string(spec.emotion);
+    spawn.request.emotion = model::to_string(spec.emotion);
     call("/sim/spawn_human", spawn);
     if (spec.goal) {
       set_human_goal(spec.id, *spec.goal);
@@ -256,7 +256,7 @@ class RosCommands : public scenario::Commands {
     }
   }
 
-  void remove_human(world::ObjectId human) override {
+  void remove_human(model::ObjectId human) override {
     RemoveHuman service;
     service.request.id = human;
     call("/sim/remove_human", service);
@@ -272,15 +272,15 @@ class RosCommands : public scenario::Commands {
     call("/sim/create_group", service);
   }
 
-  void add_group_members(world::ObjectId group,
-                         const std::vector<world::ObjectId>& members) override {
+  void add_group_members(model::ObjectId group,
+                         const std::vector<model::ObjectId>& members) override {
     AddGroupMembers service;
     service.request.group_id = group;
     service.request.members = members;
     call("/sim/add_group_members", service);
   }
 
-  void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) override {
+  void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) override {
     SetGroupCentre service;
     service.request.group_id = group;
     service.request.centre.x = centre.x();
@@ -461,7 +461,7 @@ class ScenarioNode {
   }
 
   // Who is who is the first thing to check when a script never sees its people.
-  void log_new_matches(const std::map<world::ObjectId, std::string>& person_ids) {
+  void log_new_matches(const std::map<model::ObjectId, std::string>& person_ids) {
     for (const auto& [human, person] : person_ids) {
       const auto logged = logged_person_ids_.find(human);
       if (logged == logged_person_ids_.end() || logged->second != person) {
@@ -525,7 +525,7 @@ class ScenarioNode {
   scenario::MetricsRecorder metrics_;
   std::map<std::string, PerceivedGroupEntry> groups_;  // by group id
   scenario::PersonIdentities identities_;
-  std::map<world::ObjectId, std::string> logged_person_ids_;  // the matches last logged
+  std::map<model::ObjectId, std::string> logged_person_ids_;  // the matches last logged
   ros::NodeHandle nh_;
   std::unique_ptr<RenewingTfBuffer> tf_;       // when the script approaches or sees groups
   std::unique_ptr<PerceivedPersons> persons_;  // when the script approaches or sees groups

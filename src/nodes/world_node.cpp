@@ -363,7 +363,7 @@ class WorldNode {
         spec.age_years = req.age;
       }
       if (!req.gender.empty()) {
-        const auto gender = world::parse_gender(req.gender);
+        const auto gender = model::parse_gender(req.gender);
         if (!gender) {
           throw core::RequestError(
               "spawn_human: gender: expected female, male or non-identified, got '" + req.gender +
@@ -373,7 +373,7 @@ class WorldNode {
       }
       spec.mask = req.mask;
       if (!req.emotion.empty()) {
-        const auto emotion = world::parse_emotion(req.emotion);
+        const auto emotion = model::parse_emotion(req.emotion);
         if (!emotion) {
           throw core::RequestError(
               "spawn_human: emotion: expected neutral, happy, angry or disturbed, got '" +
@@ -491,7 +491,7 @@ class WorldNode {
   world::WorldRunConfig config_;
   world::Scene scene_;
   std::unique_ptr<world::Simulation> simulation_;
-  world::OccupancyGrid map_;
+  model::OccupancyGrid map_;
   bool paused_{false};
   ros::WallTime last_clock_wall_;
   uint64_t reported_clamps_{0};

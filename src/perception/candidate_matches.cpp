@@ -8,10 +8,10 @@ namespace {
 // The observation of `human` in a list ordered by human id, or null.
 template <class Observation>
 const Observation* observation_of(const std::vector<Observation>& observations,
-                                  world::ObjectId human) {
+                                  model::ObjectId human) {
   const auto it = std::lower_bound(
       observations.begin(), observations.end(), human,
-      [](const Observation& observation, world::ObjectId id) { return observation.human < id; });
+      [](const Observation& observation, model::ObjectId id) { return observation.human < id; });
   return it != observations.end() && it->human == human ? &*it : nullptr;
 }
 

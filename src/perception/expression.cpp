@@ -2,15 +2,15 @@
 
 namespace ari_social_sim::perception {
 
-ExpressionLabel expression_of(world::Emotion emotion) {
+ExpressionLabel expression_of(model::Emotion emotion) {
   switch (emotion) {
-    case world::Emotion::kHappy:
+    case model::Emotion::kHappy:
       return {"happy", 0.8, 0.5};
-    case world::Emotion::kAngry:
+    case model::Emotion::kAngry:
       return {"angry", -0.6, 0.8};
-    case world::Emotion::kDisturbed:
+    case model::Emotion::kDisturbed:
       return {"scared", -0.6, 0.6};
-    case world::Emotion::kNeutral:
+    case model::Emotion::kNeutral:
     default:
       return {"neutral", 0.0, 0.0};
   }

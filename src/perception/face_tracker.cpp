@@ -16,13 +16,13 @@ constexpr double kFaceHeight_m = 0.22;
 // The oldest age a face analyser reports; hri_msgs/SoftBiometrics.age is a uint8.
 constexpr double kMaxAge_years = 120.0;
 
-world::Gender other_gender(world::Gender truth, core::Rng& rng) {
+model::Gender other_gender(model::Gender truth, core::Rng& rng) {
   // The two genders that are not the true one, in enum order.
-  constexpr world::Gender kAll[] = {world::Gender::kFemale, world::Gender::kMale,
-                                    world::Gender::kNonIdentified};
-  world::Gender others[2];
+  constexpr model::Gender kAll[] = {model::Gender::kFemale, model::Gender::kMale,
+                                    model::Gender::kNonIdentified};
+  model::Gender others[2];
   size_t count = 0;
-  for (world::Gender gender : kAll) {
+  for (model::Gender gender : kAll) {
     if (gender != truth) {
       others[count++] = gender;
     }
@@ -65,7 +65,7 @@ void FaceTracker::analyse(const world::HumanSnapshot& human, PerceivedFace& face
   const std::vector<double>& row = errors.emotion_confusion.row(human.emotion);
   face.emotion = human.emotion;
   if (row[static_cast<size_t>(human.emotion)] < 1.0) {
-    face.emotion = static_cast<world::Emotion>(rng_.categorical(row));
+    face.emotion = static_cast<model::Emotion>(rng_.categorical(row));
   }
   face.emotion_confidence =
       errors.emotion_confusion.row(face.emotion)[static_cast<size_t>(face.emotion)];

@@ -6,7 +6,7 @@
 
 namespace ari_social_sim::perception {
 
-bool segment_is_clear(const world::OccupancyGrid& grid, int occupied_threshold,
+bool segment_is_clear(const model::OccupancyGrid& grid, int occupied_threshold,
                       const Eigen::Vector2d& from_map, const Eigen::Vector2d& to_map) {
   if (grid.width <= 0 || grid.height <= 0) {
     return true;

@@ -148,15 +148,15 @@ void check_speech(const SpeechErrors& speech) {
 
 }  // namespace
 
-const std::vector<double>& EmotionConfusion::row(world::Emotion truth) const {
+const std::vector<double>& EmotionConfusion::row(model::Emotion truth) const {
   switch (truth) {
-    case world::Emotion::kHappy:
+    case model::Emotion::kHappy:
       return happy;
-    case world::Emotion::kAngry:
+    case model::Emotion::kAngry:
       return angry;
-    case world::Emotion::kDisturbed:
+    case model::Emotion::kDisturbed:
       return disturbed;
-    case world::Emotion::kNeutral:
+    case model::Emotion::kNeutral:
     default:
       return neutral;
   }

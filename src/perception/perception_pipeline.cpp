@@ -52,11 +52,11 @@ PipelineMemory PerceptionPipeline::memory() const {
   return memory;
 }
 
-void PerceptionPipeline::set_sight_map(world::OccupancyGrid grid) {
+void PerceptionPipeline::set_sight_map(model::OccupancyGrid grid) {
   sight_map_ = std::move(grid);
 }
 
-void PerceptionPipeline::set_sound_map(world::OccupancyGrid grid) {
+void PerceptionPipeline::set_sound_map(model::OccupancyGrid grid) {
   sound_map_ = std::move(grid);
 }
 
@@ -71,9 +71,9 @@ std::vector<GazeRelation> PerceptionPipeline::gaze_relations(
     const world::WorldSnapshot& snapshot) const {
   // Receivers must be known persons (REP-155); ARI is the empty receiver.
   std::vector<GazeRelation> gazes;
-  const world::ObjectId ari = snapshot.ari ? snapshot.ari->id : world::kNoObject;
+  const model::ObjectId ari = snapshot.ari ? snapshot.ari->id : model::kNoObject;
   for (const PerceivedFace& face : frame_.faces) {
-    if (face.gaze_target == world::kNoObject) {
+    if (face.gaze_target == model::kNoObject) {
       continue;
     }
     if (face.gaze_target == ari) {
@@ -100,7 +100,7 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
   frame_.voices.clear();
   frame_.gazes.clear();
 
-  std::set<world::ObjectId> present;
+  std::set<model::ObjectId> present;
   people_.clear();
   for (const world::HumanSnapshot& human : snapshot.humans) {
     present.insert(human.id);
@@ -117,7 +117,7 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
                                    config_.occlusion.person_radius_m};
     bodies_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.bodies);
     faces_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.faces);
-    const world::OccupancyGrid* sound_map =
+    const model::OccupancyGrid* sound_map =
         sound_map_ ? &*sound_map_ : (sight_map_ ? &*sight_map_ : nullptr);
     speech_.update(snapshot, frame_.sensors, sound_map, config_.occlusion.occupied_threshold,
                    frame_.voices);

@@ -7,10 +7,10 @@ namespace {
 
 // The observation of `human` in a list ordered by human id, or null.
 template <class Observation>
-const Observation* find_of(const std::vector<Observation>& observations, world::ObjectId human) {
+const Observation* find_of(const std::vector<Observation>& observations, model::ObjectId human) {
   const auto it = std::lower_bound(
       observations.begin(), observations.end(), human,
-      [](const Observation& observation, world::ObjectId id) { return observation.human < id; });
+      [](const Observation& observation, model::ObjectId id) { return observation.human < id; });
   return it != observations.end() && it->human == human ? &*it : nullptr;
 }
 
@@ -30,7 +30,7 @@ PersonRegistry::PersonRegistry(const PersonConfig& persons, const EngagementConf
                                core::Rng id_rng)
     : config_(persons), engagement_config_(engagement), random_ids_(id_rng) {}
 
-std::string PersonRegistry::id_of(world::ObjectId human) {
+std::string PersonRegistry::id_of(model::ObjectId human) {
   if (config_.id_style != "random") {
     return person_id_of(human);
   }
@@ -59,7 +59,7 @@ void PersonRegistry::forget(const world::WorldSnapshot& snapshot) {
   if (random_ids_by_human_.empty()) {
     return;
   }
-  std::vector<world::ObjectId> in_world;
+  std::vector<model::ObjectId> in_world;
   in_world.reserve(snapshot.humans.size());
   for (const world::HumanSnapshot& human : snapshot.humans) {
     in_world.push_back(human.id);

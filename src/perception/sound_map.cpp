@@ -6,11 +6,11 @@
 
 namespace ari_social_sim::perception {
 
-world::OccupancyGrid rasterize_walls(const world::WorldDescription& world, double resolution_m) {
-  world::WorldDescription walls = world;
+model::OccupancyGrid rasterize_walls(const model::WorldDescription& world, double resolution_m) {
+  model::WorldDescription walls = world;
   walls.objects.erase(std::remove_if(walls.objects.begin(), walls.objects.end(),
-                                     [](const world::StaticObject& object) {
-                                       return object.type != world::ShapeType::kWall;
+                                     [](const model::StaticObject& object) {
+                                       return object.type != model::ShapeType::kWall;
                                      }),
                       walls.objects.end());
   return world::rasterize_static_map(walls, resolution_m);

@@ -17,7 +17,7 @@ void SpeechListener::clear() {
   voices_.clear();
 }
 
-SpeechListener::VoiceTrack& SpeechListener::voice_of(world::ObjectId human) {
+SpeechListener::VoiceTrack& SpeechListener::voice_of(model::ObjectId human) {
   VoiceTrack& voice = voices_[human];
   if (voice.id.empty()) {
     voice.id = ids_.next();
@@ -35,11 +35,11 @@ void SpeechListener::finish(const Utterance& utterance, double now_s) {
 }
 
 void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
-                            const world::OccupancyGrid* sound_map, int occupied_threshold,
+                            const model::OccupancyGrid* sound_map, int occupied_threshold,
                             std::vector<PerceivedVoice>& voices) {
   const double now = snapshot.time_s;
   const std::vector<world::HumanSnapshot>& humans = snapshot.humans;
-  std::map<world::ObjectId, size_t> index_of;
+  std::map<model::ObjectId, size_t> index_of;
   std::vector<bool> audible(humans.size(), false);
   for (size_t i = 0; i < humans.size(); ++i) {
     const Eigen::Vector2d& position = humans[i].pose.position;
@@ -85,7 +85,7 @@ void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSenso
       utterance.voice_owner = humans[i].id;
       const double misattribution = config_.speech_errors.misattribution_rate;
       if (misattribution > 0.0 && rng_.bernoulli(misattribution)) {
-        std::vector<world::ObjectId> others;
+        std::vector<model::ObjectId> others;
         for (size_t j = 0; j < humans.size(); ++j) {
           if (j != i && audible[j]) {
             others.push_back(humans[j].id);

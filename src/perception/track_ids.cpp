@@ -13,7 +13,7 @@ void TrackIds::renew(Track& track) {
   track.id = ids_.next();
 }
 
-const std::string* TrackIds::update(world::ObjectId human, Sighting sighting, double dt_s) {
+const std::string* TrackIds::update(model::ObjectId human, Sighting sighting, double dt_s) {
   Track& track = tracks_[human];
   if (sighting != Sighting::kDetected) {
     track.gap_cause = track.seen_last_frame ? sighting : std::max(track.gap_cause, sighting);
@@ -41,7 +41,7 @@ const std::string* TrackIds::update(world::ObjectId human, Sighting sighting, do
   return &track.id;
 }
 
-void TrackIds::retain(const std::set<world::ObjectId>& present) {
+void TrackIds::retain(const std::set<model::ObjectId>& present) {
   for (auto it = tracks_.begin(); it != tracks_.end();) {
     it = present.count(it->first) > 0 ? std::next(it) : tracks_.erase(it);
   }

@@ -103,7 +103,7 @@ struct AriPhysics::Engine {
     std::unique_ptr<btRigidBody> body;
   };
 
-  Engine(const RobotModel& robot_model, const world::WorldDescription& world,
+  Engine(const RobotModel& robot_model, const model::WorldDescription& world,
          const core::Pose2& start, const PhysicsConfig& config);
   ~Engine();
 
@@ -186,7 +186,7 @@ struct AriPhysics::Engine {
   std::vector<double> good_positions;
 };
 
-AriPhysics::Engine::Engine(const RobotModel& robot_model, const world::WorldDescription& world,
+AriPhysics::Engine::Engine(const RobotModel& robot_model, const model::WorldDescription& world,
                            const core::Pose2& start, const PhysicsConfig& config)
     : model(robot_model),
       layout(MultibodyLayout::of(robot_model,
@@ -561,7 +561,7 @@ void AriPhysics::Engine::restore_good_state() {
 
 // ---------------------------------------------------------------------------------------------
 
-AriPhysics::AriPhysics(const RobotModel& model, const world::WorldDescription& world,
+AriPhysics::AriPhysics(const RobotModel& model, const model::WorldDescription& world,
                        const core::Pose2& start, const PhysicsConfig& config)
     : config_(config) {
   config_.validate();

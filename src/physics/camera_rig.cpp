@@ -29,7 +29,7 @@ CameraRig::CameraRig(const CameraRigConfig& config)
   }
 }
 
-void CameraRig::set_world(const world::WorldDescription& world, const SceneStyle& style) {
+void CameraRig::set_world(const model::WorldDescription& world, const SceneStyle& style) {
   renderer_->set_static_primitives(static_primitives_of(world, style));
 }
 

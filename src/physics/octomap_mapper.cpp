@@ -59,14 +59,14 @@ void OctomapMapper::save_binary(const std::string& path) const {
   }
 }
 
-world::OccupancyGrid OctomapMapper::project_to_grid(const Eigen::Vector2d& origin, int width,
+model::OccupancyGrid OctomapMapper::project_to_grid(const Eigen::Vector2d& origin, int width,
                                                     int height) const {
-  world::OccupancyGrid grid;
+  model::OccupancyGrid grid;
   grid.origin = origin;
   grid.resolution_m = config_.resolution_m;
   grid.width = width;
   grid.height = height;
-  grid.cells.assign(static_cast<size_t>(width) * height, world::OccupancyGrid::kUnknown);
+  grid.cells.assign(static_cast<size_t>(width) * height, model::OccupancyGrid::kUnknown);
   const double r = config_.resolution_m;
   const octomap::point3d low(static_cast<float>(origin.x()), static_cast<float>(origin.y()),
                              static_cast<float>(config_.min_height_m));
@@ -94,9 +94,9 @@ world::OccupancyGrid OctomapMapper::project_to_grid(const Eigen::Vector2d& origi
       for (int x = x0; x <= x1; ++x) {
         int8_t& cell = grid.cells[static_cast<size_t>(y) * width + x];
         if (occupied) {
-          cell = world::OccupancyGrid::kOccupied;
-        } else if (cell == world::OccupancyGrid::kUnknown) {
-          cell = world::OccupancyGrid::kFree;
+          cell = model::OccupancyGrid::kOccupied;
+        } else if (cell == model::OccupancyGrid::kUnknown) {
+          cell = model::OccupancyGrid::kFree;
         }
       }
     }

@@ -2,11 +2,11 @@
 
 namespace ari_social_sim::physics {
 
-StaticScene StaticScene::from_world(const world::WorldDescription& world) {
+StaticScene StaticScene::from_world(const model::WorldDescription& world) {
   StaticScene scene;
   scene.floor_origin = world.origin;
   scene.floor_size = world.size;
-  for (const world::StaticObject& object : world.objects) {
+  for (const model::StaticObject& object : world.objects) {
     SceneSolid solid;
     solid.id = object.id;
     solid.name = object.name;
@@ -16,17 +16,17 @@ StaticScene StaticScene::from_world(const world::WorldDescription& world) {
     solid.X_map_solid.linear() =
         Eigen::AngleAxisd(object.pose.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     switch (object.type) {
-      case world::ShapeType::kWall:
-      case world::ShapeType::kBox:
+      case model::ShapeType::kWall:
+      case model::ShapeType::kBox:
         solid.type = SceneSolid::Type::kBox;
-        solid.is_wall = object.type == world::ShapeType::kWall;
+        solid.is_wall = object.type == model::ShapeType::kWall;
         solid.box_size_m = {object.size.x(), object.size.y(), object.height_m};
         break;
-      case world::ShapeType::kCircle:
+      case model::ShapeType::kCircle:
         solid.type = SceneSolid::Type::kCylinder;
         solid.radius_m = object.radius_m;
         break;
-      case world::ShapeType::kPolygon:
+      case model::ShapeType::kPolygon:
         solid.type = SceneSolid::Type::kPrism;
         solid.footprint = object.points;
         break;

@@ -53,7 +53,7 @@ SceneStyle SceneStyle::from_yaml(const core::YamlMap& map) {
   return style;
 }
 
-std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription& world,
+std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
                                                   const SceneStyle& style) {
   std::vector<RenderPrimitive> out;
   // The floor is a thin slab whose top face is z = 0.
@@ -64,8 +64,8 @@ std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription&
   floor.checker = true;
   out.push_back(floor);
 
-  for (const world::StaticObject& object : world.objects) {
-    const bool is_wall = object.type == world::ShapeType::kWall;
+  for (const model::StaticObject& object : world.objects) {
+    const bool is_wall = object.type == model::ShapeType::kWall;
     // The world file's height (the physics collides with the same solid); the style's for
     // objects built in code without one.
     const double height = object.height_m > 0.0
@@ -74,17 +74,17 @@ std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription&
     const Eigen::Vector3f colour = is_wall ? kWallColour : kFurnitureColour;
     const Eigen::Isometry3d X = planar(object.pose.position, 0.5 * height, object.pose.theta);
     switch (object.type) {
-      case world::ShapeType::kWall:
-      case world::ShapeType::kBox:
+      case model::ShapeType::kWall:
+      case model::ShapeType::kBox:
         out.push_back(solid(PrimitiveShape::kBox, X,
                             Eigen::Vector3d(object.size.x(), object.size.y(), height), colour));
         break;
-      case world::ShapeType::kCircle:
+      case model::ShapeType::kCircle:
         out.push_back(solid(PrimitiveShape::kCylinder, X,
                             Eigen::Vector3d(2.0 * object.radius_m, 2.0 * object.radius_m, height),
                             colour));
         break;
-      case world::ShapeType::kPolygon: {
+      case model::ShapeType::kPolygon: {
         // Polygon vertices are in the map frame; the prism's frame sits on their centroid.
         RenderPrimitive prism =
             solid(PrimitiveShape::kPrism, planar(object.pose.position, 0.5 * height, 0.0),

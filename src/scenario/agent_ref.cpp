@@ -7,19 +7,19 @@ namespace ari_social_sim::scenario {
 namespace {
 
 // A decimal id > 0 that fits an ObjectId, or kNoObject.
-world::ObjectId parse_id(const std::string& text) {
+model::ObjectId parse_id(const std::string& text) {
   if (text.empty() || text.size() > 10 || text[0] == '0') {
-    return world::kNoObject;
+    return model::kNoObject;
   }
   uint64_t value = 0;
   for (char c : text) {
     if (!std::isdigit(static_cast<unsigned char>(c))) {
-      return world::kNoObject;
+      return model::kNoObject;
     }
     value = value * 10 + static_cast<uint64_t>(c - '0');
   }
-  return value > std::numeric_limits<world::ObjectId>::max() ? world::kNoObject
-                                                             : static_cast<world::ObjectId>(value);
+  return value > std::numeric_limits<model::ObjectId>::max() ? model::kNoObject
+                                                             : static_cast<model::ObjectId>(value);
 }
 
 }  // namespace
@@ -32,8 +32,8 @@ std::optional<AgentRef> parse_agent_ref(const std::string& text) {
   if (text == "ari") {
     return AgentRef::ari();
   }
-  const world::ObjectId id = parse_id(text);
-  if (id == world::kNoObject) {
+  const model::ObjectId id = parse_id(text);
+  if (id == model::kNoObject) {
     return std::nullopt;
   }
   return AgentRef::human(id);

@@ -24,7 +24,7 @@ class Episode::InProcessCommands : public Commands {
     world_.speech_of(speaker.human_id).say(act, text, world_.time_s());
   }
 
-  void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
+  void set_human_goal(model::ObjectId human, const core::Pose2& goal) override {
     world_.set_human_goal(human, goal);
   }
 
@@ -61,13 +61,13 @@ class Episode::InProcessCommands : public Commands {
     }
   }
 
-  void remove_human(world::ObjectId human) override { world_.remove_human(human); }
+  void remove_human(model::ObjectId human) override { world_.remove_human(human); }
   void create_group(const world::GroupSpec& spec) override { world_.add_group(spec); }
-  void add_group_members(world::ObjectId group,
-                         const std::vector<world::ObjectId>& members) override {
+  void add_group_members(model::ObjectId group,
+                         const std::vector<model::ObjectId>& members) override {
     world_.add_group_members(group, members);
   }
-  void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) override {
+  void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) override {
     world_.set_group_centre(group, centre);
   }
 

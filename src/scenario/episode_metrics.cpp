@@ -10,7 +10,7 @@ namespace {
 
 // Distance (m) from a point to ARI's footprint rectangle (0 inside it).
 double distance_to_footprint(const core::Pose2& X_map_base, const Eigen::Vector2d& p_map) {
-  const world::AriFootprint footprint;
+  const model::AriFootprint footprint;
   const Eigen::Vector2d d = p_map - X_map_base.position;
   const double c = std::cos(X_map_base.theta), s = std::sin(X_map_base.theta);
   const Eigen::Vector2d p_base(c * d.x() + s * d.y(), -s * d.x() + c * d.y());

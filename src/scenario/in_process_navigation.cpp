@@ -3,11 +3,12 @@
 #include <algorithm>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/scenario/ari_observation.hpp"
 
 namespace ari_social_sim::scenario {
 
 InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& config,
-                                         const world::OccupancyGrid& map,
+                                         const model::OccupancyGrid& map,
                                          world::Simulation& simulation)
     : config_(config), simulation_(simulation), tracker_(config.scene), navigator_(config, map) {}
 
@@ -39,8 +40,7 @@ void InProcessNavigation::start(const navigation::NavigationTarget& target) {
     if (simulation_.ari() == nullptr) {
       throw core::RequestError("no transform from map to base_footprint: the scene has no ARI");
     }
-    navigator_.start(target, tracker_.scene(now),
-                     navigation::RobotObservation::of(*simulation_.ari()), now);
+    navigator_.start(target, tracker_.scene(now), observe_ari(*simulation_.ari()), now);
   } catch (const core::Error& e) {
     // The previous goal stays as it was, as with an action server that rejects a new goal.
     status_ = {NavigationState::kFailed, e.what()};
@@ -71,8 +71,8 @@ void InProcessNavigation::control() {
   if (navigator_.state() != navigation::NavigationState::kActive || simulation_.ari() == nullptr) {
     return;
   }
-  const navigation::NavigatorStep step = navigator_.update(
-      now, navigation::RobotObservation::of(*simulation_.ari()), tracker_.scene(now));
+  const navigation::NavigatorStep step =
+      navigator_.update(now, observe_ari(*simulation_.ari()), tracker_.scene(now));
   if (step.state == navigation::NavigationState::kSucceeded) {
     status_ = {NavigationState::kSucceeded, ""};
     stop();

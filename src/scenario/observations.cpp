@@ -7,7 +7,7 @@ PerceivedGroup perceived_group(const std::string& group_id,
                                const PersonIdentities& identities) {
   PerceivedGroup group{group_id, {}};
   for (const std::string& person : person_ids) {
-    if (const std::optional<world::ObjectId> human = identities.human_of(person)) {
+    if (const std::optional<model::ObjectId> human = identities.human_of(person)) {
       group.members.push_back(AgentRef::human(*human));
     }
   }

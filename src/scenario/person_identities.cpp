@@ -10,7 +10,7 @@ namespace {
 // A sighting close enough to be a human.
 struct Candidate {
   double distance_m{0.0};
-  world::ObjectId human{world::kNoObject};
+  model::ObjectId human{model::kNoObject};
   const PersonSighting* sighting{nullptr};
 };
 
@@ -61,7 +61,7 @@ void PersonIdentities::update(const world::WorldSnapshot& world,
   });
 
   // Greedy one-to-one assignment: each human and each person at most once per frame.
-  std::set<world::ObjectId> assigned_humans;
+  std::set<model::ObjectId> assigned_humans;
   std::set<std::string> assigned_persons;
   for (const Candidate& c : candidates) {
     const std::string& person = c.sighting->person_id;
@@ -75,7 +75,7 @@ void PersonIdentities::update(const world::WorldSnapshot& world,
       const bool human_matched_by_body = current != matches_.end() &&
                                          current->second.through_body &&
                                          current->second.person_id != person;
-      const std::optional<world::ObjectId> owner = human_of(person);
+      const std::optional<model::ObjectId> owner = human_of(person);
       const bool person_matched_by_body =
           owner && *owner != c.human && matches_.at(*owner).through_body;
       if (human_matched_by_body || person_matched_by_body) {
@@ -93,13 +93,13 @@ void PersonIdentities::update(const world::WorldSnapshot& world,
   }
 }
 
-std::optional<std::string> PersonIdentities::person_of(world::ObjectId human) const {
+std::optional<std::string> PersonIdentities::person_of(model::ObjectId human) const {
   const auto match = matches_.find(human);
   return match == matches_.end() ? std::nullopt
                                  : std::optional<std::string>(match->second.person_id);
 }
 
-std::optional<world::ObjectId> PersonIdentities::human_of(const std::string& person_id) const {
+std::optional<model::ObjectId> PersonIdentities::human_of(const std::string& person_id) const {
   for (const auto& [human, match] : matches_) {
     if (match.person_id == person_id) {
       return human;
@@ -108,8 +108,8 @@ std::optional<world::ObjectId> PersonIdentities::human_of(const std::string& per
   return std::nullopt;
 }
 
-std::map<world::ObjectId, std::string> PersonIdentities::person_ids() const {
-  std::map<world::ObjectId, std::string> ids;
+std::map<model::ObjectId, std::string> PersonIdentities::person_ids() const {
+  std::map<model::ObjectId, std::string> ids;
   for (const auto& [human, match] : matches_) {
     ids.emplace(human, match.person_id);
   }

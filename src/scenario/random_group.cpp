@@ -25,7 +25,7 @@ GeneratedGroup generate_group(const RandomGroup& spec, core::Rng& rng) {
         group.centre + radius_m * Eigen::Vector2d(std::cos(bearing_rad), std::sin(bearing_rad));
     human.pose.theta = core::wrap_angle(bearing_rad + core::kPi);  // facing the centre
     human.age_years = rng.uniform(18.0, 80.0);
-    human.gender = rng.bernoulli(0.5) ? world::Gender::kFemale : world::Gender::kMale;
+    human.gender = rng.bernoulli(0.5) ? model::Gender::kFemale : model::Gender::kMale;
     group.members.push_back(human.id);
     generated.humans.push_back(human);
   }

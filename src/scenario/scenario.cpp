@@ -43,12 +43,12 @@ std::string read_text(const core::YamlMap& map, const std::string& key) {
   return text;
 }
 
-world::ObjectId read_id(const core::YamlMap& map, const std::string& key) {
+model::ObjectId read_id(const core::YamlMap& map, const std::string& key) {
   return map.required<unsigned>(key, core::positive());
 }
 
 // A human (never ARI) named by id.
-world::ObjectId read_human_ref(const core::YamlMap& map, const std::string& key) {
+model::ObjectId read_human_ref(const core::YamlMap& map, const std::string& key) {
   const AgentRef ref = read_agent_ref(map, key);
   if (ref.is_ari()) {
     map.fail(key, "a human id", "ari");
@@ -60,16 +60,16 @@ world::ObjectId read_human_ref(const core::YamlMap& map, const std::string& key)
 // groups plus those the script itself adds.
 struct KnownIds {
   bool has_ari{false};
-  world::ObjectId ari_id{world::kNoObject};
-  std::set<world::ObjectId> statics;  // walls and furniture
-  std::set<world::ObjectId> humans;
-  std::set<world::ObjectId> groups;
+  model::ObjectId ari_id{model::kNoObject};
+  std::set<model::ObjectId> statics;  // walls and furniture
+  std::set<model::ObjectId> humans;
+  std::set<model::ObjectId> groups;
 };
 
 // A reference to check once every state is read (a human may be added by a later state).
 struct PendingCheck {
   enum class Kind { kAgent, kGroup } kind;
-  world::ObjectId id;  // for agents kNoObject means ARI
+  model::ObjectId id;  // for agents kNoObject means ARI
   std::string field;   // `file: script.states[0].enter[1].speaker`
 };
 
@@ -80,7 +80,7 @@ class ScriptReader {
     if (scene.ari) {
       known_.ari_id = scene.ari->id;
     }
-    for (const world::StaticObject& object : scene.world.objects) {
+    for (const model::StaticObject& object : scene.world.objects) {
       known_.statics.insert(object.id);
     }
     for (const world::HumanSpec& human : scene.humans) {
@@ -163,7 +163,7 @@ class ScriptReader {
       entry.fail("centre_max", "a corner with x and y >= centre_min's", "a smaller corner");
     }
     entry.finish();
-    for (world::ObjectId id = group.first_human_id; id < group.first_human_id + group.max_size;
+    for (model::ObjectId id = group.first_human_id; id < group.first_human_id + group.max_size;
          ++id) {
       if (!known_.humans.insert(id).second) {
         entry.fail("first_human_id",
@@ -249,7 +249,7 @@ class ScriptReader {
       action = a;
     } else if (type == "approach" || type == "join_group") {
       require_ari(entry, "type");
-      const world::ObjectId person = read_human(entry, "person");
+      const model::ObjectId person = read_human(entry, "person");
       action =
           type == "approach" ? Action{ApproachAction{person}} : Action{JoinGroupAction{person}};
     } else if (type == "cancel_navigation") {
@@ -265,7 +265,7 @@ class ScriptReader {
       AddGroupMembersAction a;
       a.group = read_group_ref(entry, "group");
       a.members = entry.required<std::vector<unsigned>>("members", core::positive());
-      for (world::ObjectId id : a.members) {
+      for (model::ObjectId id : a.members) {
         check_agent(AgentRef::human(id), entry.field_name("members"));
       }
       action = a;
@@ -326,7 +326,7 @@ class ScriptReader {
       entry.fail("id", "a group id used by no other group of the scenario",
                  std::to_string(spec.id));
     }
-    for (world::ObjectId id : spec.members) {
+    for (model::ObjectId id : spec.members) {
       check_agent(AgentRef::human(id), entry.field_name("members"));
     }
     return spec;
@@ -338,20 +338,20 @@ class ScriptReader {
     return ref;
   }
 
-  world::ObjectId read_human(const core::YamlMap& entry, const std::string& key) {
-    const world::ObjectId id = read_human_ref(entry, key);
+  model::ObjectId read_human(const core::YamlMap& entry, const std::string& key) {
+    const model::ObjectId id = read_human_ref(entry, key);
     check_agent(AgentRef::human(id), entry.field_name(key));
     return id;
   }
 
-  world::ObjectId read_group_ref(const core::YamlMap& entry, const std::string& key) {
-    const world::ObjectId id = read_id(entry, key);
+  model::ObjectId read_group_ref(const core::YamlMap& entry, const std::string& key) {
+    const model::ObjectId id = read_id(entry, key);
     pending_.push_back({PendingCheck::Kind::kGroup, id, entry.field_name(key)});
     return id;
   }
 
   void require_ari(const core::YamlMap& entry, const std::string& key) {
-    pending_.push_back({PendingCheck::Kind::kAgent, world::kNoObject, entry.field_name(key)});
+    pending_.push_back({PendingCheck::Kind::kAgent, model::kNoObject, entry.field_name(key)});
   }
 
   void check_agent(const AgentRef& ref, const std::string& field) {
@@ -393,7 +393,7 @@ class ScriptReader {
               check.field + ": expected a group of the scene or one the script creates, got " +
               std::to_string(check.id));
         }
-      } else if (check.id == world::kNoObject) {
+      } else if (check.id == model::kNoObject) {
         if (!known_.has_ari) {
           throw core::ConfigError(check.field +
                                   ": expected a scene with ARI (an `ari` entry) for this line, got "

@@ -34,7 +34,7 @@ std::optional<Eigen::Vector2d> position_of(const AgentRef& agent,
   return std::nullopt;
 }
 
-const world::HumanSnapshot* find_human(world::ObjectId id, const world::WorldSnapshot& world) {
+const world::HumanSnapshot* find_human(model::ObjectId id, const world::WorldSnapshot& world) {
   for (const world::HumanSnapshot& human : world.humans) {
     if (human.id == id) {
       return &human;
@@ -285,7 +285,7 @@ bool ScriptRunner::run(const std::vector<Action>& actions, const Observations& o
   return true;
 }
 
-void ScriptRunner::approach(world::ObjectId human, bool join_group,
+void ScriptRunner::approach(model::ObjectId human, bool join_group,
                             const Observations& observations, Commands& commands) {
   const auto person = observations.person_ids.find(human);
   if (person != observations.person_ids.end()) {

@@ -10,8 +10,8 @@
 
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 
 namespace {
 
@@ -81,7 +81,7 @@ void write_png(const std::string& path, const cv::Mat& bgr) {
 
 int run(const std::string& world_path, const std::string& out_dir, bool overwrite) {
   core::check_input_file("--world", world_path);
-  const world::WorldDescription world = world::load_world_file(world_path);
+  const model::WorldDescription world = model::load_world_file(world_path);
   physics::CameraRigConfig config;
   for (physics::CameraSpec& spec : config.cameras) {
     spec.enabled = true;

@@ -16,7 +16,7 @@ namespace ari_social_sim::world {
 
 void AriSpec::validate() const {
   const RequestCheck check;
-  if (id == kNoObject) {
+  if (id == model::kNoObject) {
     check.fail("id", "a positive integer", "0");
   }
   check.finite("pose.x", pose.position.x());

@@ -2,26 +2,26 @@
 
 namespace ari_social_sim::world {
 
-StaticShape make_static_shape(const StaticObject& object) {
+StaticShape make_static_shape(const model::StaticObject& object) {
   StaticShape result;
   result.transform.SetIdentity();
   switch (object.type) {
-    case ShapeType::kWall:
-    case ShapeType::kBox:
+    case model::ShapeType::kWall:
+    case model::ShapeType::kBox:
       result.polygon.SetAsBox(static_cast<float>(0.5 * object.size.x()),
                               static_cast<float>(0.5 * object.size.y()));
       result.transform.Set(b2Vec2(static_cast<float>(object.pose.position.x()),
                                   static_cast<float>(object.pose.position.y())),
                            static_cast<float>(object.pose.theta));
       break;
-    case ShapeType::kCircle:
+    case model::ShapeType::kCircle:
       result.is_circle = true;
       result.circle.m_radius = static_cast<float>(object.radius_m);
       result.transform.Set(b2Vec2(static_cast<float>(object.pose.position.x()),
                                   static_cast<float>(object.pose.position.y())),
                            0.0f);
       break;
-    case ShapeType::kPolygon: {
+    case model::ShapeType::kPolygon: {
       b2Vec2 vertices[b2_maxPolygonVertices];
       for (size_t i = 0; i < object.points.size(); ++i) {
         vertices[i].Set(static_cast<float>(object.points[i].x()),

@@ -23,7 +23,7 @@ void GazeModel::validate() const {
   }
   double total = 0.0;
   for (size_t i = 0; i < targets.size(); ++i) {
-    if (targets[i].id == kNoObject) {
+    if (targets[i].id == model::kNoObject) {
       check.fail("gaze.targets[" + std::to_string(i) + "]", "a positive object id", "0");
     }
     check.in_range("gaze.probabilities[" + std::to_string(i) + "]", targets[i].probability,
@@ -65,7 +65,7 @@ void GazeGenerator::draw(Object& owner, const StepContext& context, double now_s
   since_s_ = now_s;
   if (model_.directions) {
     const GazeDirections& d = *model_.directions;
-    target_ = kNoObject;
+    target_ = model::kNoObject;
     relative_direction_rad_ = d.distribution == GazeDirections::Distribution::kUniform
                                   ? rng_.uniform(d.low_rad, d.high_rad)
                                   : rng_.normal(d.mean_rad, d.stddev_rad);
@@ -81,7 +81,7 @@ void GazeGenerator::draw(Object& owner, const StepContext& context, double now_s
     total += weights.back();
   }
   if (total <= 0.0) {
-    target_ = kNoObject;
+    target_ = model::kNoObject;
     relative_direction_rad_ = 0.0;
     return;
   }
@@ -94,7 +94,7 @@ void GazeGenerator::step(Object& owner, const StepContext& context) {
     next_change_s_ = now_s;
   }
   const bool target_lost =
-      target_ != kNoObject && context.simulation.find_object(target_) == nullptr;
+      target_ != model::kNoObject && context.simulation.find_object(target_) == nullptr;
   if (now_s + 1e-9 >= *next_change_s_ || target_lost) {
     draw(owner, context, now_s);
     // Next change counts from the sampled time, not the step it was noticed at, so step
@@ -102,7 +102,8 @@ void GazeGenerator::step(Object& owner, const StepContext& context) {
     *next_change_s_ =
         (target_lost ? now_s : *next_change_s_) + rng_.exponential(model_.mean_duration_s);
   }
-  const Object* target = target_ == kNoObject ? nullptr : context.simulation.find_object(target_);
+  const Object* target =
+      target_ == model::kNoObject ? nullptr : context.simulation.find_object(target_);
   if (target != nullptr) {
     const Eigen::Vector2d to_target = target->centre() - owner.centre();
     direction_rad_ = std::atan2(to_target.y(), to_target.x());

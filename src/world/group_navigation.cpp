@@ -18,7 +18,7 @@ namespace ari_social_sim::world {
 
 void GroupSpec::validate() const {
   const RequestCheck check;
-  if (id == kNoObject) {
+  if (id == model::kNoObject) {
     check.fail("id", "a positive integer", "0");
   }
   const std::string group = "group " + std::to_string(id);
@@ -29,7 +29,7 @@ void GroupSpec::validate() const {
     check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans",
                std::to_string(members.size()));
   }
-  if (std::set<ObjectId>(members.begin(), members.end()).size() != members.size()) {
+  if (std::set<model::ObjectId>(members.begin(), members.end()).size() != members.size()) {
     throw core::RequestError(group + " lists a member twice");
   }
   check.finite("centre.x", centre.x());
@@ -90,7 +90,7 @@ void GroupNavigation::set_centre(const Eigen::Vector2d& centre) {
   spec_.centre = centre;
 }
 
-void GroupNavigation::remove_member(ObjectId id) {
+void GroupNavigation::remove_member(model::ObjectId id) {
   spec_.members.erase(std::remove(spec_.members.begin(), spec_.members.end(), id),
                       spec_.members.end());
 }
@@ -98,7 +98,7 @@ void GroupNavigation::remove_member(ObjectId id) {
 void GroupNavigation::step(const StepContext& context) {
   Simulation& simulation = context.simulation;
   member_positions_.clear();
-  for (ObjectId id : spec_.members) {
+  for (model::ObjectId id : spec_.members) {
     member_positions_.push_back(simulation.find_human(id)->pose().position);
   }
   const double member_personal_distance = member_personal_distance_m();

@@ -39,7 +39,7 @@ GroupReport GroupReport::of(const Simulation& simulation, const GroupNavigation&
   report.id = group.id();
   report.centre = group.centre();
   report.ospace_radius_m = group.ospace_radius_m();
-  for (ObjectId id : group.members()) {
+  for (model::ObjectId id : group.members()) {
     const Human& human = *simulation.find_human(id);
     MemberPlacement m;
     m.id = id;

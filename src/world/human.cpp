@@ -13,7 +13,7 @@
 namespace ari_social_sim::world {
 void HumanSpec::validate() const {
   const RequestCheck check;
-  if (id == kNoObject) {
+  if (id == model::kNoObject) {
     check.fail("id", "a positive integer", "0");
   }
   check.finite("pose.x", pose.position.x());
@@ -83,14 +83,14 @@ void Human::stop() {
   planned_rotation_ = 0.0;
 }
 
-void Human::join_group(ObjectId group_id) {
+void Human::join_group(model::ObjectId group_id) {
   stop();
   mode_ = MotionMode::kGroup;
   group_id_ = group_id;
 }
 
 void Human::leave_group() {
-  group_id_ = kNoObject;
+  group_id_ = model::kNoObject;
   if (mode_ == MotionMode::kGroup) {
     stop();
   }

@@ -20,12 +20,12 @@ int cells_along(double extent_m, double resolution_m) {
 
 }  // namespace
 
-double map_cell_count(const WorldDescription& world, double resolution_m) {
+double map_cell_count(const model::WorldDescription& world, double resolution_m) {
   return std::ceil(world.size.x() / resolution_m - 1e-9) *
          std::ceil(world.size.y() / resolution_m - 1e-9);
 }
 
-void check_map_size(const WorldDescription& world, double resolution_m) {
+void check_map_size(const model::WorldDescription& world, double resolution_m) {
   if (!(std::isfinite(resolution_m) && resolution_m > 0.0)) {
     throw core::ConfigError("map_resolution: expected a finite number > 0 m, got " +
                             core::number_text(resolution_m));
@@ -40,14 +40,15 @@ void check_map_size(const WorldDescription& world, double resolution_m) {
   }
 }
 
-OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolution_m) {
+model::OccupancyGrid rasterize_static_map(const model::WorldDescription& world,
+                                          double resolution_m) {
   check_map_size(world, resolution_m);
-  OccupancyGrid grid;
+  model::OccupancyGrid grid;
   grid.origin = world.origin;
   grid.resolution_m = resolution_m;
   grid.width = cells_along(world.size.x(), resolution_m);
   grid.height = cells_along(world.size.y(), resolution_m);
-  grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, OccupancyGrid::kFree);
+  grid.cells.assign(static_cast<size_t>(grid.width) * grid.height, model::OccupancyGrid::kFree);
 
   // Box2D pads every polygon with a skin of b2_polygonRadius. The cell square is shrunk by the
   // skins in play (its own, and the obstacle's unless it is a circle) so that a cell merely
@@ -61,7 +62,7 @@ OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolut
   const b2PolygonShape cell_near_polygon = cell_square(2);
   const b2PolygonShape cell_near_circle = cell_square(1);
 
-  for (const StaticObject& object : world.objects) {
+  for (const model::StaticObject& object : world.objects) {
     const StaticShape shape = make_static_shape(object);
     const b2PolygonShape& cell = shape.is_circle ? cell_near_circle : cell_near_polygon;
     b2AABB box;
@@ -76,14 +77,14 @@ OccupancyGrid rasterize_static_map(const WorldDescription& world, double resolut
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         int8_t& value = grid.cells[static_cast<size_t>(y) * grid.width + x];
-        if (value == OccupancyGrid::kOccupied) {
+        if (value == model::OccupancyGrid::kOccupied) {
           continue;
         }
         const Eigen::Vector2d c = grid.cell_centre(x, y);
         b2Transform cell_pose(b2Vec2(static_cast<float>(c.x()), static_cast<float>(c.y())),
                               b2Rot(0.0f));
         if (b2TestOverlap(&cell, 0, &shape.shape(), 0, cell_pose, shape.transform)) {
-          value = OccupancyGrid::kOccupied;
+          value = model::OccupancyGrid::kOccupied;
         }
       }
     }

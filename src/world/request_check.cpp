@@ -32,7 +32,7 @@ void RequestCheck::heading(const std::string& field, double theta_rad) const {
 }
 
 void RequestCheck::on_floor(const std::string& field, const Eigen::Vector2d& point,
-                            const WorldDescription& world) const {
+                            const model::WorldDescription& world) const {
   for (int axis = 0; axis < 2; ++axis) {
     const double low = world.origin[axis];
     const double high = world.origin[axis] + world.size[axis];
@@ -47,7 +47,7 @@ void RequestCheck::on_floor(const std::string& field, const Eigen::Vector2d& poi
 }
 
 void RequestCheck::pose_on_floor(const std::string& field, const core::Pose2& pose,
-                                 const WorldDescription& world) const {
+                                 const model::WorldDescription& world) const {
   on_floor(field, pose.position, world);
   heading(field + ".theta", pose.theta);
 }

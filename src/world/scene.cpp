@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/world/world_file.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -82,14 +82,14 @@ HumanSpec parse_human(const core::YamlMap& entry) {
   spec.pose.theta = entry.optional<double>("orientation", 0.0);
   spec.age_years = entry.optional<double>("age", spec.age_years, core::between(0.0, 130.0));
   const std::string gender = entry.optional<std::string>("gender", "non-identified");
-  if (const auto parsed = parse_gender(gender)) {
+  if (const auto parsed = model::parse_gender(gender)) {
     spec.gender = *parsed;
   } else {
     entry.fail("gender", "female, male or non-identified", "'" + gender + "'");
   }
   spec.mask = entry.optional<bool>("mask", false);
   const std::string emotion = entry.optional<std::string>("emotion", "neutral");
-  if (const auto parsed = parse_emotion(emotion)) {
+  if (const auto parsed = model::parse_emotion(emotion)) {
     spec.emotion = *parsed;
   } else {
     entry.fail("emotion", "neutral, happy, angry or disturbed", "'" + emotion + "'");
@@ -163,7 +163,7 @@ Scene parse_scene(const core::YamlMap& root, const std::string& base_dir) {
                                                : std::filesystem::path(base_dir) / world;
   scene.world_path = world_path.lexically_normal().string();
   try {
-    scene.world = load_world_file(scene.world_path);
+    scene.world = model::load_world_file(scene.world_path);
   } catch (const core::ConfigError& e) {
     throw core::ConfigError(root.field_name("world") + ": " + e.what());
   }

@@ -22,7 +22,7 @@ constexpr int32 kPositionIterations = 3;
 constexpr float kAriMassKg = 50.0f;
 constexpr float kHumanMassKg = 70.0f;
 // The first id handed out by next_free_id for humans spawned without one.
-constexpr ObjectId kFirstAutomaticAgentId = 10;
+constexpr model::ObjectId kFirstAutomaticAgentId = 10;
 // About one personal distance: a neighbour query then visits a 3 x 3 block of cells.
 constexpr double kAgentGridCellM = 1.0;
 
@@ -35,10 +35,10 @@ Object* object_of(b2Body* body) {
 }
 
 template <class T>
-T* find_sorted(const std::vector<std::unique_ptr<T>>& items, ObjectId id) {
+T* find_sorted(const std::vector<std::unique_ptr<T>>& items, model::ObjectId id) {
   auto it = std::lower_bound(
       items.begin(), items.end(), id,
-      [](const std::unique_ptr<T>& item, ObjectId key) { return item->id() < key; });
+      [](const std::unique_ptr<T>& item, model::ObjectId key) { return item->id() < key; });
   return it != items.end() && (*it)->id() == id ? it->get() : nullptr;
 }
 
@@ -46,7 +46,7 @@ template <class T>
 void insert_sorted(std::vector<std::unique_ptr<T>>& items, std::unique_ptr<T> item) {
   auto it = std::lower_bound(
       items.begin(), items.end(), item->id(),
-      [](const std::unique_ptr<T>& existing, ObjectId key) { return existing->id() < key; });
+      [](const std::unique_ptr<T>& existing, model::ObjectId key) { return existing->id() < key; });
   items.insert(it, std::move(item));
 }
 
@@ -54,7 +54,7 @@ void insert_sorted(std::vector<std::unique_ptr<T>>& items, std::unique_ptr<T> it
 // the body's: polygons are given in map coordinates on a body at the origin.
 class StaticBody : public Object {
  public:
-  explicit StaticBody(const StaticObject& description)
+  explicit StaticBody(const model::StaticObject& description)
       : Object(description.id, ObjectKind::kStatic) {
     pose_ = description.pose;
   }
@@ -82,7 +82,7 @@ void SimulationConfig::validate() const {
   }
 }
 
-Simulation::Simulation(WorldDescription world, SimulationConfig config)
+Simulation::Simulation(model::WorldDescription world, SimulationConfig config)
     : world_(std::move(world)),
       config_(config),
       physics_(std::make_unique<b2World>(b2Vec2(0, 0))),
@@ -90,7 +90,7 @@ Simulation::Simulation(WorldDescription world, SimulationConfig config)
   config_.validate();
   world_.validate();
   check_map_size(world_, config_.map_resolution_m);
-  for (const StaticObject& description : world_.objects) {
+  for (const model::StaticObject& description : world_.objects) {
     auto object = std::make_unique<StaticBody>(description);
     b2BodyDef def;
     def.type = b2_staticBody;
@@ -131,24 +131,24 @@ void Simulation::register_object(Object& object) {
   }
 }
 
-ObjectId Simulation::next_free_id(ObjectId from) const {
-  ObjectId id = std::max<ObjectId>(from, kFirstAutomaticAgentId);
+model::ObjectId Simulation::next_free_id(model::ObjectId from) const {
+  model::ObjectId id = std::max<model::ObjectId>(from, kFirstAutomaticAgentId);
   while (objects_by_id_.count(id) > 0) {
     ++id;
   }
   return id;
 }
 
-Object* Simulation::find_object(ObjectId id) const {
+Object* Simulation::find_object(model::ObjectId id) const {
   const auto it = objects_by_id_.find(id);
   return it == objects_by_id_.end() ? nullptr : it->second;
 }
 
-Human* Simulation::find_human(ObjectId id) const {
+Human* Simulation::find_human(model::ObjectId id) const {
   return find_sorted(humans_, id);
 }
 
-GroupNavigation* Simulation::find_group(ObjectId id) const {
+GroupNavigation* Simulation::find_group(model::ObjectId id) const {
   return find_sorted(groups_, id);
 }
 
@@ -233,7 +233,7 @@ Human& Simulation::add_human(const HumanSpec& spec) {
   return ref;
 }
 
-void Simulation::remove_human(ObjectId id) {
+void Simulation::remove_human(model::ObjectId id) {
   Human* human = find_human(id);
   if (human == nullptr) {
     throw core::RequestError("no human with id " + std::to_string(id));
@@ -255,7 +255,7 @@ Ari& Simulation::add_ari(const AriSpec& spec) {
   if (find_object(spec.id) != nullptr) {
     throw core::RequestError("ARI: id " + std::to_string(spec.id) + " is already used");
   }
-  const AriFootprint& f = spec.footprint;
+  const model::AriFootprint& f = spec.footprint;
   b2PolygonShape footprint;
   footprint.SetAsBox(static_cast<float>(0.5 * (f.front_x_m - f.rear_x_m)),
                      static_cast<float>(f.half_width_m), to_b2(f.centre_local()), 0.0f);
@@ -284,13 +284,13 @@ GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
   if (find_group(spec.id) != nullptr) {
     throw core::RequestError("group id " + std::to_string(spec.id) + " is already used");
   }
-  for (ObjectId member : spec.members) {
+  for (model::ObjectId member : spec.members) {
     if (find_human(member) == nullptr) {
       throw core::RequestError("group " + std::to_string(spec.id) + ": no human with id " +
                                std::to_string(member));
     }
   }
-  for (ObjectId member : spec.members) {
+  for (model::ObjectId member : spec.members) {
     Human& human = *find_human(member);
     if (GroupNavigation* previous = find_group(human.group_id())) {
       previous->remove_member(member);
@@ -308,7 +308,8 @@ GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
   return ref;
 }
 
-void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId>& members) {
+void Simulation::add_group_members(model::ObjectId group_id,
+                                   const std::vector<model::ObjectId>& members) {
   GroupNavigation* group = find_group(group_id);
   if (group == nullptr) {
     throw core::RequestError("no group with id " + std::to_string(group_id));
@@ -335,7 +336,7 @@ void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId
                std::to_string(group->members().size()) + " members and " + std::to_string(joining) +
                    " joining");
   }
-  for (ObjectId member : members) {
+  for (model::ObjectId member : members) {
     Human& human = *find_human(member);
     if (human.group_id() == group_id) {
       continue;
@@ -351,12 +352,12 @@ void Simulation::add_group_members(ObjectId group_id, const std::vector<ObjectId
   }
 }
 
-void Simulation::remove_group(ObjectId group_id) {
+void Simulation::remove_group(model::ObjectId group_id) {
   GroupNavigation* group = find_group(group_id);
   if (group == nullptr) {
     throw core::RequestError("no group with id " + std::to_string(group_id));
   }
-  for (ObjectId member : group->members()) {
+  for (model::ObjectId member : group->members()) {
     find_human(member)->leave_group();
   }
   groups_.erase(std::find_if(
@@ -364,14 +365,14 @@ void Simulation::remove_group(ObjectId group_id) {
       [group_id](const std::unique_ptr<GroupNavigation>& g) { return g->id() == group_id; }));
 }
 
-void Simulation::set_human_goal(ObjectId human_id, const core::Pose2& goal) {
+void Simulation::set_human_goal(model::ObjectId human_id, const core::Pose2& goal) {
   Human& human = existing_human(human_id);
   RequestCheck("set_goal").pose_on_floor("goal", goal, world_);
   release_from_group(human_id);
   human.set_goal(goal);
 }
 
-void Simulation::set_human_velocity(ObjectId human_id, const Eigen::Vector2d& velocity_mps,
+void Simulation::set_human_velocity(model::ObjectId human_id, const Eigen::Vector2d& velocity_mps,
                                     double angular_velocity_rps) {
   Human& human = existing_human(human_id);
   const RequestCheck check("set_velocity");
@@ -392,12 +393,12 @@ void Simulation::set_human_velocity(ObjectId human_id, const Eigen::Vector2d& ve
   human.set_velocity(velocity_mps, angular_velocity_rps);
 }
 
-void Simulation::set_human_gaze(ObjectId human_id, const GazeModel& model) {
+void Simulation::set_human_gaze(model::ObjectId human_id, const GazeModel& model) {
   Human& human = existing_human(human_id);
   const RequestCheck check("set_gaze_targets");
   check.valid(model);
   for (size_t i = 0; i < model.targets.size(); ++i) {
-    const ObjectId target = model.targets[i].id;
+    const model::ObjectId target = model.targets[i].id;
     if (find_object(target) == nullptr || target == human_id) {
       check.fail("targets[" + std::to_string(i) + "]", "another object of the world",
                  std::to_string(target));
@@ -406,7 +407,7 @@ void Simulation::set_human_gaze(ObjectId human_id, const GazeModel& model) {
   human.set_gaze_model(model);
 }
 
-void Simulation::set_group_centre(ObjectId group_id, const Eigen::Vector2d& centre) {
+void Simulation::set_group_centre(model::ObjectId group_id, const Eigen::Vector2d& centre) {
   GroupNavigation* group = find_group(group_id);
   if (group == nullptr) {
     throw core::RequestError("no group with id " + std::to_string(group_id));
@@ -415,7 +416,7 @@ void Simulation::set_group_centre(ObjectId group_id, const Eigen::Vector2d& cent
   group->set_centre(centre);
 }
 
-Human& Simulation::existing_human(ObjectId human_id) const {
+Human& Simulation::existing_human(model::ObjectId human_id) const {
   Human* human = find_human(human_id);
   if (human == nullptr) {
     throw core::RequestError("no human with id " + std::to_string(human_id));
@@ -423,7 +424,7 @@ Human& Simulation::existing_human(ObjectId human_id) const {
   return *human;
 }
 
-SpeechGenerator& Simulation::speech_of(ObjectId speaker_id) {
+SpeechGenerator& Simulation::speech_of(model::ObjectId speaker_id) {
   if (ari_ && ari_->id() == speaker_id) {
     return ari_->speech();
   }
@@ -434,7 +435,7 @@ SpeechGenerator& Simulation::speech_of(ObjectId speaker_id) {
   return human->speech();
 }
 
-void Simulation::release_from_group(ObjectId human_id) {
+void Simulation::release_from_group(model::ObjectId human_id) {
   Human* human = find_human(human_id);
   if (human == nullptr) {
     throw core::RequestError("no human with id " + std::to_string(human_id));
@@ -450,7 +451,7 @@ void Simulation::release_from_group(ObjectId human_id) {
   }
 }
 
-void Simulation::set_pose(ObjectId id, const core::Pose2& pose) {
+void Simulation::set_pose(model::ObjectId id, const core::Pose2& pose) {
   Object* object = find_object(id);
   if (object == nullptr || object->kind() == ObjectKind::kStatic) {
     throw core::RequestError("no human or ARI with id " + std::to_string(id));
@@ -516,7 +517,7 @@ void Simulation::command_ari_head_pan_velocity(double pan_velocity_rps) {
 
 void Simulation::agent_centres_near(const Eigen::Vector2d& point, double radius_m,
                                     const Object* exclude, std::vector<Eigen::Vector2d>& out,
-                                    ObjectId exclude_group) const {
+                                    model::ObjectId exclude_group) const {
   if (agent_grid_stale_) {
     std::vector<const Object*> agents;
     agents.reserve(humans_.size() + 1);
@@ -536,7 +537,7 @@ void Simulation::agent_centres_near(const Eigen::Vector2d& point, double radius_
         if (&other == exclude || (centre - point).squaredNorm() >= radius_sq) {
           return;
         }
-        if (exclude_group != kNoObject && other.kind() == ObjectKind::kHuman &&
+        if (exclude_group != model::kNoObject && other.kind() == ObjectKind::kHuman &&
             static_cast<const Human&>(other).group_id() == exclude_group) {
           return;
         }

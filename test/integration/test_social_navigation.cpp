@@ -39,7 +39,7 @@ constexpr double kSameBody_m = 0.5;
 // group_detection_node's GCFF parameters (config/perception.yaml, groups).
 constexpr double kGcffStride = 0.6;
 constexpr double kGcffMdl = 0.8;
-// ARI's body centre is 0.22 m behind base_footprint (world::AriFootprint).
+// ARI's body centre is 0.22 m behind base_footprint (model::AriFootprint).
 constexpr double kBodyCentreBehindBase = 0.22;
 
 class SocialNavigation : public ::testing::Test {

@@ -14,7 +14,7 @@
 namespace ari_social_sim::navigation::test {
 
 /// The occupancy grid of world::test::square_room(side_m) at 0.05 m.
-inline world::OccupancyGrid room_map(double side_m) {
+inline model::OccupancyGrid room_map(double side_m) {
   return world::rasterize_static_map(world::test::square_room(side_m), 0.05);
 }
 
@@ -30,7 +30,7 @@ inline PersonEstimate person(const std::string& id, double x, double y, double h
 
 /// A room, its fields and a problem of going from `start` to `goal` in it, with nobody around.
 struct RoomProblem {
-  world::OccupancyGrid map;
+  model::OccupancyGrid map;
   GridField sdf;
   std::unique_ptr<GeodesicField> geodesic;
   MpcProblem problem;

@@ -22,7 +22,7 @@
 namespace ari_social_sim::navigation {
 namespace {
 
-const FootprintModel kFootprint = FootprintModel::covering(world::AriFootprint{}, 3);
+const FootprintModel kFootprint = FootprintModel::covering(model::AriFootprint{}, 3);
 constexpr double kStep = 0.15;
 
 // A rollout of `steps` steps that holds still at `start` (zero controls).
@@ -65,15 +65,15 @@ TEST(GoalCost, HuberOfTheGeodesicDistanceAtEveryStepPlusTheTerminalWeight) {
 TEST(GeodesicField, LeadsAroundAWallInsteadOfThroughIt) {
   // A wall across the middle of an 8 m room from the south wall to y = 6: from (2, 1) to (6, 1)
   // the way goes over the wall's end, far longer than the 4 m straight line.
-  world::WorldDescription world = world::test::square_room(8.0);
-  world::StaticObject wall;
+  model::WorldDescription world = world::test::square_room(8.0);
+  model::StaticObject wall;
   wall.id = 1;
-  wall.type = world::ShapeType::kWall;
+  wall.type = model::ShapeType::kWall;
   wall.pose.position = {4.0, 3.0};
   wall.pose.theta = M_PI / 2;
   wall.size = {6.0, 0.1};
   world.objects.push_back(wall);
-  const world::OccupancyGrid map = world::rasterize_static_map(world, 0.05);
+  const model::OccupancyGrid map = world::rasterize_static_map(world, 0.05);
   const GridField sdf = signed_distance_field(map);
   const GeodesicField field(sdf, {6.0, 1.0}, GeodesicParams{});
   // Shortest way: up to the wall's end (6 m) and back down: about 2 * sqrt(2^2 + 5^2) = 10.8 m.
@@ -89,11 +89,11 @@ TEST(GeodesicField, LeadsAroundAWallInsteadOfThroughIt) {
 
 TEST(GeodesicField, ClosedRoomIsUnreachable) {
   // A closed 2 m box inside the room: its inside is not joined to the outside.
-  world::WorldDescription world = world::test::square_room(8.0);
-  auto wall = [&](world::ObjectId id, double x, double y, double length, double theta) {
-    world::StaticObject object;
+  model::WorldDescription world = world::test::square_room(8.0);
+  auto wall = [&](model::ObjectId id, double x, double y, double length, double theta) {
+    model::StaticObject object;
     object.id = id;
-    object.type = world::ShapeType::kWall;
+    object.type = model::ShapeType::kWall;
     object.pose.position = {x, y};
     object.pose.theta = theta;
     object.size = {length, 0.1};
@@ -258,7 +258,7 @@ TEST(ControlCost, EffortSmoothnessAccelerationAndReverse) {
   w.smooth_pan = 0.0;
   w.acceleration = 100.0;
   w.reverse = 10.0;
-  const ControlCost cost(w, world::AriLimits{}, kStep);
+  const ControlCost cost(w, model::AriLimits{}, kStep);
   Eigen::VectorXd u = Eigen::VectorXd::Zero(6);
   // From standstill to 0.1 m/s: within 1 m/s^2 * 0.15 s, so only effort 0.01 for each step.
   u << 0.1, 0.0, 0.0, 0.1, 0.0, 0.0;
@@ -274,7 +274,7 @@ TEST(ControlCost, EffortSmoothnessAccelerationAndReverse) {
   w.effort_linear = 0.0;
   w.smooth_linear = 2.0;
   w.reverse = 0.0;
-  const ControlCost smooth(w, world::AriLimits{}, kStep);
+  const ControlCost smooth(w, model::AriLimits{}, kStep);
   room.problem.start_linear_mps = 0.4;
   u << 0.4, 0.0, 0.0, 0.3, 0.0, 0.0;
   EXPECT_NEAR(smooth.evaluate(room.problem, still.rollout, u, nullptr), 2.0 * 0.01, 1e-12);
@@ -325,7 +325,7 @@ TEST_P(TermGradient, MatchesFiniteDifferences) {
   terms.push_back(std::make_unique<AgentClearanceCost>(100.0, kFootprint, 0.2, 0.3, kStep));
   terms.push_back(std::make_unique<PersonalSpaceCost>(3.0, 50.0, kFootprint, spaces, 0.2, kStep));
   terms.push_back(std::make_unique<GroupSpaceCost>(3.0, 200.0, kFootprint, spaces, 0.1));
-  terms.push_back(std::make_unique<ControlCost>(weights, world::AriLimits{}, kStep));
+  terms.push_back(std::make_unique<ControlCost>(weights, model::AriLimits{}, kStep));
   terms.push_back(std::make_unique<ViewCost>(1.0, 100.0, kFootprint, 0.3));
   const CostTerm& term = *terms[GetParam()];
 

@@ -6,7 +6,7 @@
 namespace ari_social_sim::navigation {
 namespace {
 
-const FootprintModel kFootprint = FootprintModel::covering(world::AriFootprint{}, 3);
+const FootprintModel kFootprint = FootprintModel::covering(model::AriFootprint{}, 3);
 
 // ARI driving along y = 0 from x = 0 at 1 m/s, ticks of 0.1 s, past `people`.
 EpisodeScore drive_past(const std::vector<PersonEstimate>& people,

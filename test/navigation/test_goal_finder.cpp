@@ -12,8 +12,8 @@
 namespace ari_social_sim::navigation {
 namespace {
 
-const FootprintModel kFootprint = FootprintModel::covering(world::AriFootprint{}, 3);
-// ARI's body centre is 0.22 m behind base_footprint (world::AriFootprint: x -0.60..+0.16).
+const FootprintModel kFootprint = FootprintModel::covering(model::AriFootprint{}, 3);
+// ARI's body centre is 0.22 m behind base_footprint (model::AriFootprint: x -0.60..+0.16).
 constexpr double kCentreBehindBase = 0.22;
 
 class GoalFinderTest : public ::testing::Test {

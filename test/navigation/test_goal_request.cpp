@@ -92,12 +92,12 @@ TEST(GoalRequest, AnEmptyFrameIsRejectedAndOnlyMapIsTheMap) {
 
 TEST(GoalRequest, AGoalOutsideTheMapIsRejectedWithTheBounds) {
   // A 248 x 168 grid at 0.05 m from (-0.2, -0.2): x [-0.2, 12.2], y [-0.2, 8.2].
-  world::OccupancyGrid grid;
+  model::OccupancyGrid grid;
   grid.origin = {-0.2, -0.2};
   grid.resolution_m = 0.05;
   grid.width = 248;
   grid.height = 168;
-  grid.cells.assign(248 * 168, world::OccupancyGrid::kFree);
+  grid.cells.assign(248 * 168, model::OccupancyGrid::kFree);
   const MapBounds bounds = MapBounds::of(GridField(grid, 0.0f));
   EXPECT_NEAR(bounds.max.x(), 12.2, 1e-12);
   EXPECT_NEAR(bounds.max.y(), 8.2, 1e-12);

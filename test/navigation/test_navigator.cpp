@@ -135,15 +135,15 @@ TEST(Navigator, KeepsTheWayItClaimedThroughAPersonalSpaceUntilClearOfIt) {
 
 TEST(Navigator, UnreachableGoalIsRefusedWithTheReason) {
   // A closed 2 m box in the room: a goal inside it has free floor but no way in.
-  world::WorldDescription world = world::test::square_room(8.0);
+  model::WorldDescription world = world::test::square_room(8.0);
   const double xs[4][4] = {{5.0, 4.0, 2.1, 0.0},
                            {5.0, 6.0, 2.1, 0.0},
                            {4.0, 5.0, 2.0, M_PI / 2},
                            {6.0, 5.0, 2.0, M_PI / 2}};
   for (int i = 0; i < 4; ++i) {
-    world::StaticObject wall;
+    model::StaticObject wall;
     wall.id = i + 1;
-    wall.type = world::ShapeType::kWall;
+    wall.type = model::ShapeType::kWall;
     wall.pose = test::pose(xs[i][0], xs[i][1], xs[i][3]);
     wall.size = {xs[i][2], 0.1};
     world.objects.push_back(wall);

@@ -53,8 +53,8 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
   ASSERT_EQ(back.groups.size(), truth.groups.size());
   EXPECT_EQ(back.groups[1].members, truth.groups[1].members);
 
-  const world::OccupancyGrid grid = world::rasterize_static_map(scene.world, 0.05);
-  const world::OccupancyGrid grid_back = from_msg(to_msg(grid, "map", 0.0));
+  const model::OccupancyGrid grid = world::rasterize_static_map(scene.world, 0.05);
+  const model::OccupancyGrid grid_back = from_msg(to_msg(grid, "map", 0.0));
   EXPECT_EQ(grid_back.cells, grid.cells);
   EXPECT_EQ(grid_back.width, grid.width);
   EXPECT_NEAR(grid_back.resolution_m, 0.05, 1e-7);  // float32 on the wire
@@ -114,7 +114,7 @@ TEST(WorldStateInput, EveryNumberTheConsumersUseMustBeFiniteAndEnumsKnown) {
 }
 
 TEST(MapInput, CellsMustMatchTheSizeAndStayWithinTheLimit) {
-  world::OccupancyGrid grid;
+  model::OccupancyGrid grid;
   grid.resolution_m = 0.05;
   grid.width = 40;
   grid.height = 30;

@@ -9,17 +9,17 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/perception/ari_sensors.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/transient_ids.hpp"
 #include "ari_social_sim/perception/visibility.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
-#include "ari_social_sim/world/world_description.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::perception::test {
 
-constexpr world::ObjectId kAriId = 1;
+constexpr model::ObjectId kAriId = 1;
 
 /// A world snapshot at `time_s` with ARI at `X_map_base` (default: the origin facing +x), its
 /// head turned by `head_pan_rad`, and no humans yet.
@@ -37,19 +37,19 @@ inline world::WorldSnapshot snapshot_with_ari(double time_s = 0.0,
 }
 
 /// A silent human at (x, y) with body and gaze along `theta_rad`, looking at nobody.
-inline world::HumanSnapshot human_at(world::ObjectId id, double x, double y, double theta_rad) {
+inline world::HumanSnapshot human_at(model::ObjectId id, double x, double y, double theta_rad) {
   world::HumanSnapshot human;
   human.id = id;
   human.name = "human " + std::to_string(id);
   human.pose = {{x, y}, theta_rad};
   human.gaze.direction_rad = theta_rad;
   human.age_years = 40.0;
-  human.gender = world::Gender::kFemale;
+  human.gender = model::Gender::kFemale;
   return human;
 }
 
 /// A human at (x, y) facing the point (tx, ty).
-inline world::HumanSnapshot human_facing(world::ObjectId id, double x, double y, double tx,
+inline world::HumanSnapshot human_facing(model::ObjectId id, double x, double y, double tx,
                                          double ty) {
   return human_at(id, x, y, std::atan2(ty - y, tx - x));
 }
@@ -71,13 +71,13 @@ inline void speaking(world::HumanSnapshot& human, const std::string& content, do
 
 /// A 0.1 m thick wall from `from` to `to`, rasterised at 5 cm over a 20 x 20 m floor centred on
 /// the origin.
-inline world::OccupancyGrid map_with_wall(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-  world::WorldDescription world;
+inline model::OccupancyGrid map_with_wall(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  model::WorldDescription world;
   world.origin = {-10.0, -10.0};
   world.size = {20.0, 20.0};
-  world::StaticObject wall;
+  model::StaticObject wall;
   wall.id = 1000;
-  wall.type = world::ShapeType::kWall;
+  wall.type = model::ShapeType::kWall;
   wall.pose.position = 0.5 * (from + to);
   wall.pose.theta = std::atan2(to.y() - from.y(), to.x() - from.x());
   wall.size = {(to - from).norm(), 0.1};
@@ -101,7 +101,7 @@ class TrackerHarness {
 
   /// This snapshot's observations, 0.05 s after the previous one; `grid` blocks sight.
   std::vector<Observation> perceive(const world::WorldSnapshot& snapshot,
-                                    const world::OccupancyGrid* grid = nullptr) {
+                                    const model::OccupancyGrid* grid = nullptr) {
     people_.clear();
     for (const world::HumanSnapshot& human : snapshot.humans) {
       people_.push_back(human.pose.position);
@@ -125,13 +125,13 @@ class TrackerHarness {
 inline world::WorldSnapshot crowd_snapshot(size_t count, uint64_t seed, double time_s = 0.0) {
   core::Rng rng(seed);
   world::WorldSnapshot snapshot = snapshot_with_ari(time_s);
-  world::ObjectId id = 10;
+  model::ObjectId id = 10;
   while (snapshot.humans.size() < count) {
     const size_t size = std::min<size_t>(count - snapshot.humans.size(), 1 + rng.uniform_index(4));
     const Eigen::Vector2d centre(rng.uniform(1.0, 9.0), rng.uniform(-4.0, 4.0));
     const double radius = rng.uniform(0.6, 0.9);
     const double phase = rng.uniform(0.0, 2.0 * core::kPi);
-    const world::ObjectId first = id;
+    const model::ObjectId first = id;
     for (size_t k = 0; k < size; ++k) {
       const double bearing = phase + 2.0 * core::kPi * static_cast<double>(k) / size;
       world::HumanSnapshot human =

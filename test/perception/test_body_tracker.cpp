@@ -17,7 +17,7 @@ class BodyTrackerTest : public ::testing::Test {
     harness_ = std::make_unique<test::TrackerHarness<BodyTracker, PerceivedBody>>(config);
   }
   std::vector<PerceivedBody> perceive(const world::WorldSnapshot& snapshot,
-                                      const world::OccupancyGrid* grid = nullptr) {
+                                      const model::OccupancyGrid* grid = nullptr) {
     return harness_->perceive(snapshot, grid);
   }
 
@@ -48,7 +48,7 @@ TEST_F(BodyTrackerTest, WithoutErrorsBodiesAreTheGroundTruth) {
 
 TEST_F(BodyTrackerTest, BehindAWallBehindARIOrBeyondRangeIsNotTracked) {
   make(test::config_without_errors());
-  const world::OccupancyGrid grid = test::map_with_wall({2.0, -1.0}, {2.0, 1.0});
+  const model::OccupancyGrid grid = test::map_with_wall({2.0, -1.0}, {2.0, 1.0});
   world::WorldSnapshot snapshot = snapshot_with_ari();
   snapshot.humans = {human_at(10, 3.0, 0.0, 0.0),   // behind the wall
                      human_at(11, -1.0, 0.0, 0.0),  // behind ARI: outside the 180 deg fisheye

@@ -10,7 +10,7 @@ namespace {
 
 // A frame in which human 10 is seen (body and face) and heard, human 11 has a body only and
 // human 12 a face only; person ids as the person manager names them.
-PerceivedBody body_of(world::ObjectId human, const std::string& body_id,
+PerceivedBody body_of(model::ObjectId human, const std::string& body_id,
                       const std::string& person_id) {
   PerceivedBody body;
   body.human = human;
@@ -108,7 +108,7 @@ TEST(CandidateMatcher, VerdictKeptThroughGapsAndDroppedAMinuteAfterTheFaceLeft) 
   PerceptionFrame frame;
   for (int track = 0; track < 200; ++track) {
     PerceivedFace face;
-    face.human = static_cast<world::ObjectId>(track);
+    face.human = static_cast<model::ObjectId>(track);
     face.face_id = "f" + std::to_string(track);
     face.person_id = "p" + std::to_string(track);
     frame.faces.push_back(face);

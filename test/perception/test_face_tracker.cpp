@@ -21,7 +21,7 @@ class FaceTrackerTest : public ::testing::Test {
     harness_ = std::make_unique<test::TrackerHarness<FaceTracker, PerceivedFace>>(config);
   }
   std::vector<PerceivedFace> perceive(const world::WorldSnapshot& snapshot,
-                                      const world::OccupancyGrid* grid = nullptr) {
+                                      const model::OccupancyGrid* grid = nullptr) {
     return harness_->perceive(snapshot, grid);
   }
 
@@ -33,9 +33,9 @@ TEST_F(FaceTrackerTest, AFaceTurnedToARIReportsTheTruth) {
   world::WorldSnapshot snapshot = snapshot_with_ari();
   world::HumanSnapshot human = human_facing(10, 1.5, 0.3, 0.0, 0.0);
   human.age_years = 78;
-  human.gender = world::Gender::kMale;
+  human.gender = model::Gender::kMale;
   human.mask = true;
-  human.emotion = world::Emotion::kDisturbed;
+  human.emotion = model::Emotion::kDisturbed;
   human.gaze.target = test::kAriId;
   snapshot.humans = {human};
   const std::vector<PerceivedFace> faces = perceive(snapshot);
@@ -45,9 +45,9 @@ TEST_F(FaceTrackerTest, AFaceTurnedToARIReportsTheTruth) {
   EXPECT_EQ(face.person_id, "");  // the person manager links faces to persons
   EXPECT_EQ(face.face_id.size(), 5u);
   EXPECT_DOUBLE_EQ(face.age_years, 78.0);
-  EXPECT_EQ(face.gender, world::Gender::kMale);
+  EXPECT_EQ(face.gender, model::Gender::kMale);
   EXPECT_TRUE(face.mask);
-  EXPECT_EQ(face.emotion, world::Emotion::kDisturbed);
+  EXPECT_EQ(face.emotion, model::Emotion::kDisturbed);
   EXPECT_STREQ(expression_of(face.emotion).name, "scared");
   EXPECT_DOUBLE_EQ(face.age_confidence, 1.0);
   EXPECT_DOUBLE_EQ(face.gender_confidence, 1.0);
@@ -100,13 +100,13 @@ TEST_F(FaceTrackerTest, MeasuredAttributeErrorRatesMatchTheConfiguredOnes) {
   config.face_errors.mask_error_rate = 0.07;
   config.face_errors.emotion_confusion = PerceptionConfig().face_errors.emotion_confusion;
   make(config);
-  const std::vector<world::Emotion> emotions = {world::Emotion::kNeutral, world::Emotion::kHappy,
-                                                world::Emotion::kAngry, world::Emotion::kDisturbed};
+  const std::vector<model::Emotion> emotions = {model::Emotion::kNeutral, model::Emotion::kHappy,
+                                                model::Emotion::kAngry, model::Emotion::kDisturbed};
   // 200 000 frames per emotion: a 0.01 entry has a binomial sd of 0.00022, a tenth of it 4.5 sd.
   const int frames = 200000;
   int gender_errors = 0, mask_errors = 0, faces_seen = 0;
   double age_sq = 0.0;
-  for (world::Emotion emotion : emotions) {
+  for (model::Emotion emotion : emotions) {
     world::WorldSnapshot snapshot = snapshot_with_ari();
     world::HumanSnapshot human = human_facing(10, 1.0, 0.0, 0.0, 0.0);
     human.age_years = 50.0;
@@ -131,7 +131,7 @@ TEST_F(FaceTrackerTest, MeasuredAttributeErrorRatesMatchTheConfiguredOnes) {
     std::printf(
         "[ measured ] %-9s perceived as neutral/happy/angry/disturbed: %.4f %.4f %.4f "
         "%.4f (configured %.2f %.2f %.2f %.2f)\n",
-        world::to_string(emotion), counts[0] / double(frames), counts[1] / double(frames),
+        model::to_string(emotion), counts[0] / double(frames), counts[1] / double(frames),
         counts[2] / double(frames), counts[3] / double(frames), row[0], row[1], row[2], row[3]);
   }
   const double gender_rate = static_cast<double>(gender_errors) / faces_seen;

@@ -10,7 +10,7 @@
 namespace ari_social_sim::perception {
 namespace {
 
-PerceivedBody body(world::ObjectId human, const std::string& body_id, double x, double y,
+PerceivedBody body(model::ObjectId human, const std::string& body_id, double x, double y,
                    double theta) {
   PerceivedBody b;
   b.human = human;

@@ -12,7 +12,7 @@ namespace ari_social_sim::perception {
 namespace {
 
 // A candidate: human `human` at (x, y) facing the point (cx, cy).
-GcffPerson facing(world::ObjectId human, double x, double y, double cx, double cy) {
+GcffPerson facing(model::ObjectId human, double x, double y, double cx, double cy) {
   return {person_id_of(human), x, y, std::atan2(cy - y, cx - x)};
 }
 

@@ -81,8 +81,8 @@ TEST(PerceptionPipeline, WithoutErrorsTheFrameIsTheGroundTruth) {
   world::WorldSnapshot snapshot = snapshot_with_ari(3.0);
   world::HumanSnapshot talker = human_facing(10, 1.2, -0.3, 0.0, 0.0);
   talker.age_years = 33;
-  talker.gender = world::Gender::kMale;
-  talker.emotion = world::Emotion::kHappy;
+  talker.gender = model::Gender::kMale;
+  talker.emotion = model::Emotion::kHappy;
   talker.gaze.target = test::kAriId;
   test::speaking(talker, "hello there", 2.9, 0);
   // A pair talking face to face farther away (beyond the 2 m of faces), and someone behind ARI.
@@ -103,8 +103,8 @@ TEST(PerceptionPipeline, WithoutErrorsTheFrameIsTheGroundTruth) {
   ASSERT_EQ(frame.faces.size(), 1u);
   EXPECT_EQ(frame.faces[0].person_id, "human10");
   EXPECT_DOUBLE_EQ(frame.faces[0].age_years, 33.0);
-  EXPECT_EQ(frame.faces[0].gender, world::Gender::kMale);
-  EXPECT_EQ(frame.faces[0].emotion, world::Emotion::kHappy);
+  EXPECT_EQ(frame.faces[0].gender, model::Gender::kMale);
+  EXPECT_EQ(frame.faces[0].emotion, model::Emotion::kHappy);
   ASSERT_EQ(frame.voices.size(), 1u);
   EXPECT_EQ(frame.voices[0].speech.at(0).incremental, "hello");
   ASSERT_EQ(frame.persons.size(), 3u);
@@ -175,7 +175,7 @@ TEST(PerceptionPipeline, MemoryFollowsThePeopleNotTheRun) {
     for (int frame = 0; frame < 2; ++frame) {
       world::WorldSnapshot snapshot = snapshot_with_ari(2.0 * k + frame);
       world::HumanSnapshot human =
-          human_facing(static_cast<world::ObjectId>(10 + k), 1.2, 0.0, 0.0, 0.0);
+          human_facing(static_cast<model::ObjectId>(10 + k), 1.2, 0.0, 0.0, 0.0);
       test::speaking(human, "hello there", 2.0 * k, 0);
       snapshot.humans = {human};
       pipeline.update(snapshot);

@@ -8,7 +8,7 @@ namespace {
 
 using test::human_at;
 
-PerceivedBody body_of(world::ObjectId human, const std::string& id, double x, double y) {
+PerceivedBody body_of(model::ObjectId human, const std::string& id, double x, double y) {
   PerceivedBody body;
   body.human = human;
   body.body_id = id;
@@ -159,7 +159,7 @@ TEST(PersonRegistry, KnownPersonsBoundedByWhoWasSeenInTheLastMinute) {
   PersonRegistry registry(config, {}, core::Rng(2));
   std::vector<PersonReport> reports;
   size_t most_known = 0;
-  for (world::ObjectId human = 10; human < 1010; ++human) {
+  for (model::ObjectId human = 10; human < 1010; ++human) {
     world::WorldSnapshot snapshot = test::snapshot_with_ari(2.0 * (human - 10));
     snapshot.humans = {human_at(human, 2.0, 0.0, 0.0)};
     registry.update(snapshot, nullptr, {body_of(human, "bodya", 2.0, 0.0)}, {}, {}, reports);

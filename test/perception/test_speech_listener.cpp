@@ -22,7 +22,7 @@ class SpeechListenerTest : public ::testing::Test {
     listener_ = std::make_unique<SpeechListener>(config_, *ids_, core::Rng(4));
   }
   std::vector<PerceivedVoice> hear(const world::WorldSnapshot& snapshot,
-                                   const world::OccupancyGrid* grid = nullptr) {
+                                   const model::OccupancyGrid* grid = nullptr) {
     std::vector<PerceivedVoice> voices;
     listener_->update(snapshot, AriSensors::of(*snapshot.ari, config_), grid, 50, voices);
     return voices;
@@ -76,7 +76,7 @@ TEST_F(SpeechListenerTest, AnUtteranceInRangeArrivesWordByWordThenFinal) {
 
 TEST_F(SpeechListenerTest, NothingArrivesThroughAWallOrBeyondRange) {
   make(test::config_without_errors());
-  const world::OccupancyGrid grid = test::map_with_wall({2.0, -1.0}, {2.0, 1.0});
+  const model::OccupancyGrid grid = test::map_with_wall({2.0, -1.0}, {2.0, 1.0});
   world::HumanSnapshot behind_wall = human_at(10, 3.0, 0.0, 0.0);
   world::HumanSnapshot far_away = human_at(11, -1.0, 5.2, 0.0);  // 5.2 m from the microphone
   for (uint32_t word = 0; word < 5; ++word) {

@@ -10,7 +10,7 @@ namespace {
 const FieldOfView kFisheye{{{0.0, 0.0}, 0.0}, core::kPi / 2, 10.0};
 
 double fraction(const std::vector<Eigen::Vector2d>& people, size_t target,
-                const world::OccupancyGrid* grid = nullptr, const FieldOfView& fov = kFisheye,
+                const model::OccupancyGrid* grid = nullptr, const FieldOfView& fov = kFisheye,
                 int rays = 100) {
   return visible_fraction(fov, {grid, 50, &people, 0.2}, target, rays);
 }
@@ -38,7 +38,7 @@ TEST(Visibility, HalfHiddenGivesAboutHalf) {
 }
 
 TEST(Visibility, AWallHidesWhatIsBehindIt) {
-  const world::OccupancyGrid grid = test::map_with_wall({2.0, -1.0}, {2.0, 1.0});
+  const model::OccupancyGrid grid = test::map_with_wall({2.0, -1.0}, {2.0, 1.0});
   EXPECT_DOUBLE_EQ(fraction({{3.0, 0.0}}, 0, &grid), 0.0);
   EXPECT_DOUBLE_EQ(fraction({{1.5, 0.0}}, 0, &grid), 1.0);  // in front of the wall
   // Past the wall's end at y = 1 (+ up to 5 cm of raster): the rays to (4, 2.1) cross x = 2 at

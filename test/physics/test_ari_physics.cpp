@@ -4,8 +4,8 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -16,8 +16,8 @@ const RobotModel& ari() {
 }
 
 // A 10 x 10 m floor with one wall across x = 6 (its near face at x = 5.95).
-world::WorldDescription walled_floor() {
-  return world::parse_world(core::YamlMap::parse(
+model::WorldDescription walled_floor() {
+  return model::parse_world(core::YamlMap::parse(
       "name: test\norigin: [-5, -5]\nsize: [15, 10]\n"
       "objects:\n  - {type: wall, from: [6, -4], to: [6, 4], thickness: 0.1}\n",
       "inline world"));

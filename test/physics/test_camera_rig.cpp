@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 #include "render_test_scenes.hpp"
 
 namespace ari_social_sim::physics {
@@ -12,8 +12,8 @@ namespace {
 constexpr size_t kHead = 0;  // enabled cameras by default: head, then torso
 constexpr size_t kTorso = 1;
 
-world::WorldDescription waiting_room() {
-  return world::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml");
+model::WorldDescription waiting_room() {
+  return model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml");
 }
 
 // Must-show 3: ARI faces the north wall of the waiting room (near face y = 8.95 m) from 1.5 m

@@ -8,7 +8,7 @@ namespace ari_social_sim::physics {
 namespace {
 
 DiffDriveController ari_base() {
-  return DiffDriveController(world::AriLimits{}, DriveGeometry{0.125, 0.44});
+  return DiffDriveController(model::AriLimits{}, DriveGeometry{0.125, 0.44});
 }
 
 void run(DiffDriveController& drive, double from_s, double seconds) {

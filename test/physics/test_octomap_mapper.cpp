@@ -4,16 +4,16 @@
 #include <cstdio>
 #include <limits>
 
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/physics/octomap_mapper.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 #include "render_test_scenes.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
 
-int8_t cell_at(const world::OccupancyGrid& grid, double x, double y) {
+int8_t cell_at(const model::OccupancyGrid& grid, double x, double y) {
   int cx = 0, cy = 0;
   EXPECT_TRUE(grid.cell_of({x, y}, cx, cy));
   return grid.at(cx, cy);
@@ -39,18 +39,18 @@ TEST(OctomapMapper, WallAheadIsOccupiedWithFreeSpaceBeforeIt) {
   // The wall plane is x = 2.0 (inside voxel [2.0, 2.05)).
   const OctomapMapper mapper =
       mapper_after_uniform_depth(PinholeModel::from_horizontal_fov(160, 120, 1.0), 2.0f, config);
-  const world::OccupancyGrid grid = mapper.project_to_grid({-1.0, -2.0}, 80, 80);
-  EXPECT_EQ(cell_at(grid, 2.02, 0.0), world::OccupancyGrid::kOccupied);
-  EXPECT_EQ(cell_at(grid, 1.0, 0.0), world::OccupancyGrid::kFree);
-  EXPECT_EQ(cell_at(grid, 0.2, 0.0), world::OccupancyGrid::kFree);
-  EXPECT_EQ(cell_at(grid, 2.5, 0.0), world::OccupancyGrid::kUnknown);
-  EXPECT_EQ(cell_at(grid, -0.5, 0.0), world::OccupancyGrid::kUnknown);
+  const model::OccupancyGrid grid = mapper.project_to_grid({-1.0, -2.0}, 80, 80);
+  EXPECT_EQ(cell_at(grid, 2.02, 0.0), model::OccupancyGrid::kOccupied);
+  EXPECT_EQ(cell_at(grid, 1.0, 0.0), model::OccupancyGrid::kFree);
+  EXPECT_EQ(cell_at(grid, 0.2, 0.0), model::OccupancyGrid::kFree);
+  EXPECT_EQ(cell_at(grid, 2.5, 0.0), model::OccupancyGrid::kUnknown);
+  EXPECT_EQ(cell_at(grid, -0.5, 0.0), model::OccupancyGrid::kUnknown);
   // The wall's image spans 2 * 2 tan(0.5) = 2.19 m across: about 44 occupied cells in one column.
   int occupied = 0;
   for (int y = 0; y < grid.height; ++y) {
     int x = 0, unused = 0;
     grid.cell_of({2.02, 0.0}, x, unused);
-    occupied += grid.at(x, y) == world::OccupancyGrid::kOccupied ? 1 : 0;
+    occupied += grid.at(x, y) == model::OccupancyGrid::kOccupied ? 1 : 0;
   }
   EXPECT_NEAR(occupied, 44, 2);
   EXPECT_GT(mapper.occupied_voxels().size(), 400u);  // the wall's 2.19 x 1.2 m patch
@@ -62,9 +62,9 @@ TEST(OctomapMapper, RangesBeyondMaxRangeClearWithoutMarking) {
   const OctomapMapper mapper =
       mapper_after_uniform_depth(PinholeModel::from_horizontal_fov(80, 60, 0.5), 9.0f, config);
   EXPECT_TRUE(mapper.occupied_voxels().empty());
-  const world::OccupancyGrid grid = mapper.project_to_grid({-1.0, -2.0}, 200, 80);
-  EXPECT_EQ(cell_at(grid, 3.5, 0.0), world::OccupancyGrid::kFree);
-  EXPECT_EQ(cell_at(grid, 5.0, 0.0), world::OccupancyGrid::kUnknown);
+  const model::OccupancyGrid grid = mapper.project_to_grid({-1.0, -2.0}, 200, 80);
+  EXPECT_EQ(cell_at(grid, 3.5, 0.0), model::OccupancyGrid::kFree);
+  EXPECT_EQ(cell_at(grid, 5.0, 0.0), model::OccupancyGrid::kUnknown);
 }
 
 TEST(OctomapMapper, SavesAReadableBinaryOctomap) {
@@ -123,8 +123,8 @@ std::vector<core::Pose2> waiting_room_drive() {
 // Must-show 4: the projected OctoMap agrees with the world's rasterised map on at least 90% of the
 // cells it observed.
 TEST(OctomapMapper, DrivingThroughTheWaitingRoomMatchesTheRasterisedMap) {
-  const world::WorldDescription world =
-      world::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml");
+  const model::WorldDescription world =
+      model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml");
   CameraRigConfig rig_config;
   for (CameraSpec& spec : rig_config.cameras) {
     spec.enabled = spec.name == "torso_front_camera";
@@ -145,19 +145,19 @@ TEST(OctomapMapper, DrivingThroughTheWaitingRoomMatchesTheRasterisedMap) {
     mapper.insert_depth(frame.depth, model, X_world_optical);
   }
 
-  const world::OccupancyGrid truth = world::rasterize_static_map(world, 0.05);
-  const world::OccupancyGrid built =
+  const model::OccupancyGrid truth = world::rasterize_static_map(world, 0.05);
+  const model::OccupancyGrid built =
       mapper.project_to_grid(truth.origin, truth.width, truth.height);
   size_t observed = 0, agree = 0, observed_occupied = 0, agree_occupied = 0;
   for (size_t i = 0; i < built.cells.size(); ++i) {
-    if (built.cells[i] == world::OccupancyGrid::kUnknown) {
+    if (built.cells[i] == model::OccupancyGrid::kUnknown) {
       continue;
     }
     ++observed;
     agree += built.cells[i] == truth.cells[i] ? 1 : 0;
-    if (built.cells[i] == world::OccupancyGrid::kOccupied) {
+    if (built.cells[i] == model::OccupancyGrid::kOccupied) {
       ++observed_occupied;
-      agree_occupied += truth.cells[i] == world::OccupancyGrid::kOccupied ? 1 : 0;
+      agree_occupied += truth.cells[i] == model::OccupancyGrid::kOccupied ? 1 : 0;
     }
   }
   const double agreement = static_cast<double>(agree) / observed;

@@ -3,14 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/static_scene.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
 
 TEST(StaticScene, ExtrudesEveryShapeToItsHeight) {
-  const world::WorldDescription world = world::parse_world(core::YamlMap::parse(
+  const model::WorldDescription world = model::parse_world(core::YamlMap::parse(
       "name: t\norigin: [-1, -2]\nsize: [8, 6]\nobjects:\n"
       "  - {type: wall, from: [0, 0], to: [0, 4], thickness: 0.1}\n"
       "  - {type: box, position: [2, 2], orientation: 0.5, size: [1, 0.5], height: 1.1}\n"

@@ -11,16 +11,16 @@ const std::string kSource = ARI_SOURCE_DIR;
 class NoCommands : public Commands {
  public:
   void say(const AgentRef&, const std::string&, const std::string&) override {}
-  void set_human_goal(world::ObjectId, const core::Pose2&) override {}
+  void set_human_goal(model::ObjectId, const core::Pose2&) override {}
   void navigate(const core::Pose2&) override {}
   void approach(const std::string&, bool) override {}
   void fail_navigation(const std::string&) override {}
   void cancel_navigation() override {}
   void add_human(const world::HumanSpec&) override {}
-  void remove_human(world::ObjectId) override {}
+  void remove_human(model::ObjectId) override {}
   void create_group(const world::GroupSpec&) override {}
-  void add_group_members(world::ObjectId, const std::vector<world::ObjectId>&) override {}
-  void set_group_centre(world::ObjectId, const Eigen::Vector2d&) override {}
+  void add_group_members(model::ObjectId, const std::vector<model::ObjectId>&) override {}
+  void set_group_centre(model::ObjectId, const Eigen::Vector2d&) override {}
 };
 
 // test/integration/scenario_humans.yaml from 2 s of sim time to 5.5 s: Ana walks (state walk).

@@ -9,7 +9,7 @@ TEST(PerceivedGroup, MembersAreTheHumansTheirPersonsWereFoundToBe) {
   // Humans 10 at (2, 2) and 11 at (3, 2), seen under a person manager's anonymous ids; a third
   // person, 2 m from both, is nobody the script knows.
   world::WorldSnapshot world;
-  for (world::ObjectId id : {10u, 11u}) {
+  for (model::ObjectId id : {10u, 11u}) {
     world::HumanSnapshot human;
     human.id = id;
     human.pose.position = {id == 10 ? 2.0 : 3.0, 2.0};

@@ -13,7 +13,7 @@ const std::string kCarl = "anonymous_person_klmno";
 // Humans 10 at (2, 2) and 11 at (3, 2): 1 m apart.
 world::WorldSnapshot two_humans() {
   world::WorldSnapshot world;
-  for (world::ObjectId id : {10u, 11u}) {
+  for (model::ObjectId id : {10u, 11u}) {
     world::HumanSnapshot human;
     human.id = id;
     human.pose.position = {id == 10 ? 2.0 : 3.0, 2.0};
@@ -140,7 +140,7 @@ TEST(PersonIdentities, AHumanWhoLeftTheWorldIsForgotten) {
   identities.update(world, {});
   EXPECT_EQ(identities.person_of(10), std::nullopt);
   EXPECT_EQ(identities.human_of(kAnna), std::nullopt);
-  EXPECT_EQ(identities.person_ids(), (std::map<world::ObjectId, std::string>{{11, kBert}}));
+  EXPECT_EQ(identities.person_ids(), (std::map<model::ObjectId, std::string>{{11, kBert}}));
 }
 
 TEST(PersonIdentities, TiesGoToTheLowerIdsWhateverTheOrder) {

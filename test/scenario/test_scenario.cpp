@@ -138,7 +138,7 @@ TEST(Scenario, EveryConditionAndActionTypeReads) {
   EXPECT_TRUE(a.transitions[1].when.empty());
   const auto& added = std::get<AddHumanAction>(a.on_enter[6]).human;
   EXPECT_EQ(added.id, 12u);
-  EXPECT_EQ(added.gender, world::Gender::kMale);
+  EXPECT_EQ(added.gender, model::Gender::kMale);
   ASSERT_TRUE(added.goal.has_value());
   EXPECT_DOUBLE_EQ(std::get<GoalReachedCondition>(a.transitions[0].when[2]).tolerance_m, 0.2);
   EXPECT_DOUBLE_EQ(std::get<GoalReachedCondition>(a.transitions[0].when[3]).tolerance_m, 0.3);

@@ -17,7 +17,7 @@ class RecordingCommands : public Commands {
   void say(const AgentRef& speaker, const std::string& act, const std::string&) override {
     record("say " + speaker.describe() + " " + act);
   }
-  void set_human_goal(world::ObjectId human, const core::Pose2& goal) override {
+  void set_human_goal(model::ObjectId human, const core::Pose2& goal) override {
     record("goal " + std::to_string(human) + " " + std::to_string(goal.position.x()));
   }
   void navigate(const core::Pose2& goal) override {
@@ -31,14 +31,14 @@ class RecordingCommands : public Commands {
   void add_human(const world::HumanSpec& spec) override {
     record("add " + std::to_string(spec.id));
   }
-  void remove_human(world::ObjectId human) override { record("remove " + std::to_string(human)); }
+  void remove_human(model::ObjectId human) override { record("remove " + std::to_string(human)); }
   void create_group(const world::GroupSpec& spec) override {
     record("group " + std::to_string(spec.id) + " of " + std::to_string(spec.members.size()));
   }
-  void add_group_members(world::ObjectId group, const std::vector<world::ObjectId>&) override {
+  void add_group_members(model::ObjectId group, const std::vector<model::ObjectId>&) override {
     record("members " + std::to_string(group));
   }
-  void set_group_centre(world::ObjectId group, const Eigen::Vector2d&) override {
+  void set_group_centre(model::ObjectId group, const Eigen::Vector2d&) override {
     record("centre " + std::to_string(group));
   }
 
@@ -63,7 +63,7 @@ struct Stage {
   Stage() {
     obs.world.ari = world::AriSnapshot{};
     obs.world.ari->pose.position = {1.0, 5.0};
-    for (world::ObjectId id : {10u, 11u}) {
+    for (model::ObjectId id : {10u, 11u}) {
       world::HumanSnapshot human;
       human.id = id;
       human.pose.position = id == 10 ? Eigen::Vector2d(3.0, 2.0) : Eigen::Vector2d(4.0, 2.0);

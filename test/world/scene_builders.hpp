@@ -14,16 +14,16 @@
 namespace ari_social_sim::world::test {
 
 /// A square room of `side_m` with 0.1 m walls along its edges, floor from (0, 0).
-inline WorldDescription square_room(double side_m) {
-  WorldDescription world;
+inline model::WorldDescription square_room(double side_m) {
+  model::WorldDescription world;
   world.name = "room";
   world.origin = {-0.2, -0.2};
   world.size = {side_m + 0.4, side_m + 0.4};
   const double h = 0.5 * side_m;
-  auto wall = [&](ObjectId id, double x, double y, double length, double theta) {
-    StaticObject object;
+  auto wall = [&](model::ObjectId id, double x, double y, double length, double theta) {
+    model::StaticObject object;
     object.id = id;
-    object.type = ShapeType::kWall;
+    object.type = model::ShapeType::kWall;
     object.pose.position = {x, y};
     object.pose.theta = theta;
     object.size = {length, 0.1};
@@ -37,11 +37,12 @@ inline WorldDescription square_room(double side_m) {
 }
 
 /// Adds `count` humans at random free positions inside [margin, side - margin]^2.
-inline std::vector<ObjectId> add_random_humans(Simulation& simulation, int count, double side_m,
-                                               double margin_m, core::Rng& rng,
-                                               ObjectId first_id = 10) {
-  std::vector<ObjectId> ids;
-  ObjectId id = first_id;
+inline std::vector<model::ObjectId> add_random_humans(Simulation& simulation, int count,
+                                                      double side_m, double margin_m,
+                                                      core::Rng& rng,
+                                                      model::ObjectId first_id = 10) {
+  std::vector<model::ObjectId> ids;
+  model::ObjectId id = first_id;
   while (static_cast<int>(ids.size()) < count) {
     HumanSpec spec;
     spec.id = id;

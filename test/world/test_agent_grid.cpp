@@ -67,8 +67,8 @@ TEST(AgentGrid, NeighbourQueriesEqualABruteForceScanWhilePeopleMove) {
   ari.pose.position = {0.5 * kSide, 0.5 * kSide};
   simulation.add_ari(ari);
   core::Rng rng(11);
-  const std::vector<ObjectId> ids = test::add_random_humans(simulation, 40, kSide, 0.4, rng);
-  for (ObjectId id : ids) {
+  const std::vector<model::ObjectId> ids = test::add_random_humans(simulation, 40, kSide, 0.4, rng);
+  for (model::ObjectId id : ids) {
     simulation.find_human(id)->set_velocity({rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)}, 0.0);
   }
   size_t neighbours = expect_queries_match_brute_force(simulation, kSide, rng);
@@ -83,7 +83,7 @@ TEST(AgentGrid, NeighbourQueriesEqualABruteForceScanWhilePeopleMove) {
 TEST(AgentGrid, QueriesSeeAgentsMovedRemovedOrAddedBetweenSteps) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{});
   core::Rng rng(5);
-  const std::vector<ObjectId> ids = test::add_random_humans(simulation, 6, 6.0, 0.5, rng);
+  const std::vector<model::ObjectId> ids = test::add_random_humans(simulation, 6, 6.0, 0.5, rng);
   const Eigen::Vector2d corner{0.6, 0.6};
   std::vector<Eigen::Vector2d> near_corner;
   simulation.agent_centres_near(corner, 0.3, nullptr, near_corner);

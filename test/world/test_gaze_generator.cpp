@@ -12,7 +12,7 @@
 namespace ari_social_sim::world {
 namespace {
 
-HumanSpec person(ObjectId id, double x, double y) {
+HumanSpec person(model::ObjectId id, double x, double y) {
   HumanSpec spec;
   spec.id = id;
   spec.pose.position = {x, y};
@@ -35,7 +35,7 @@ TEST(GazeGenerator, SharesOfTimeAndMeanDwellMatchTheModel) {
   watcher.gaze = model;
   const Human& human = simulation.add_human(watcher);
 
-  std::map<ObjectId, int> steps_on;
+  std::map<model::ObjectId, int> steps_on;
   int events = 0;
   double last_since = -1.0;
   const int steps = static_cast<int>(10000.0 / 0.02);
@@ -82,7 +82,7 @@ TEST(GazeGenerator, DirectionFollowsTheTargetAndDistributionModeSamplesAroundThe
     const double offset = wandering.gaze()->direction_rad() - wandering.pose().theta;
     min_offset = std::min(min_offset, offset);
     max_offset = std::max(max_offset, offset);
-    ASSERT_EQ(wandering.gaze()->target(), kNoObject);
+    ASSERT_EQ(wandering.gaze()->target(), model::kNoObject);
   }
   // About 200 draws from U(-0.5, 0.5): the extremes come within 0.05 of the bounds.
   EXPECT_GE(min_offset, -0.5);
@@ -99,7 +99,7 @@ TEST(GazeGenerator, ALostTargetIsReplacedAtOnce) {
   watcher.gaze = GazeModel{{{11, 0.5}, {12, 0.5}}, std::nullopt, 100.0};
   const Human& human = simulation.add_human(watcher);
   simulation.step();
-  const ObjectId first = human.gaze()->target();
+  const model::ObjectId first = human.gaze()->target();
   simulation.remove_human(first);
   simulation.step();
   EXPECT_EQ(human.gaze()->target(), first == 11 ? 12u : 11u);

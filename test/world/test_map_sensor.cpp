@@ -11,21 +11,21 @@ namespace ari_social_sim::world {
 namespace {
 
 TEST(MapSensor, RasterisesWallsAndFurnitureButNotAgents) {
-  WorldDescription world = test::square_room(6.0);
-  StaticObject table;
+  model::WorldDescription world = test::square_room(6.0);
+  model::StaticObject table;
   table.id = 50;
-  table.type = ShapeType::kCircle;
+  table.type = model::ShapeType::kCircle;
   table.pose.position = {4.0, 4.0};
   table.radius_m = 0.5;
   world.objects.push_back(table);
-  const OccupancyGrid grid = rasterize_static_map(world, 0.05);
+  const model::OccupancyGrid grid = rasterize_static_map(world, 0.05);
   // Floor 6.4 m at 0.05 m: 128 x 128 cells from (-0.2, -0.2).
   EXPECT_EQ(grid.width, 128);
   EXPECT_EQ(grid.height, 128);
   auto occupied = [&](double x, double y) {
     int cx, cy;
     EXPECT_TRUE(grid.cell_of({x, y}, cx, cy));
-    return grid.at(cx, cy) == OccupancyGrid::kOccupied;
+    return grid.at(cx, cy) == model::OccupancyGrid::kOccupied;
   };
   EXPECT_TRUE(occupied(3.0, 0.0));    // south wall centre line
   EXPECT_TRUE(occupied(0.02, 3.0));   // inside the 0.1 m west wall
@@ -55,7 +55,7 @@ TEST(MapSensor, RasterisesWallsAndFurnitureButNotAgents) {
 }
 
 TEST(MapSensor, GridsBeyondTheCellLimitAreRefusedBeforeAllocation) {
-  WorldDescription world = test::square_room(6.0);
+  model::WorldDescription world = test::square_room(6.0);
   world.size = {200.0, 200.0};
   // 200 m at 0.05 m: 4000 x 4000 = 16 000 000 cells, within 4096 x 4096 = 16 777 216.
   EXPECT_DOUBLE_EQ(map_cell_count(world, 0.05), 16e6);
@@ -69,7 +69,8 @@ TEST(MapSensor, GridsBeyondTheCellLimitAreRefusedBeforeAllocation) {
               "map_resolution: 0.01 m over the floor of world 'room' (200 x 200 m) gives 4e+08 "
               "cells, more than the 16777216 an occupancy grid may have");
   }
-  // Sizes that reach the grid without WorldDescription::validate (C++ callers) are caught too.
+  // Sizes that reach the grid without model::WorldDescription::validate (C++ callers) are caught
+  // too.
   world.size = {3000.0, 3000.0};
   EXPECT_THROW(rasterize_static_map(world, 0.05), core::ConfigError);
   EXPECT_THROW(check_map_size(world, std::nan("")), core::ConfigError);

@@ -42,7 +42,7 @@ TEST(RequestCheck, RefusalsNameRequestFieldExpectationAndValue) {
 
 TEST(RequestCheck, PointsMustLieOnTheFloor) {
   // square_room(6): floor from (-0.2, -0.2), 6.4 m on each side, to (6.2, 6.2).
-  const WorldDescription world = test::square_room(6.0);
+  const model::WorldDescription world = test::square_room(6.0);
   const RequestCheck check("set_goal");
   EXPECT_EQ(refusal([&] {
               check.on_floor("goal", {kNan, 1.0}, world);

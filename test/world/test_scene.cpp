@@ -37,9 +37,9 @@ TEST(Scene, BuildsHumansGroupsAndAri) {
   ASSERT_NE(simulation->ari(), nullptr);
   EXPECT_DOUBLE_EQ(simulation->ari()->pose().theta, 0.5);
   const Human& human = *simulation->find_human(10);
-  EXPECT_EQ(human.spec().gender, Gender::kFemale);
+  EXPECT_EQ(human.spec().gender, model::Gender::kFemale);
   EXPECT_TRUE(human.spec().mask);
-  EXPECT_EQ(human.spec().emotion, Emotion::kAngry);
+  EXPECT_EQ(human.spec().emotion, model::Emotion::kAngry);
   EXPECT_EQ(human.group_id(), 1u);
   EXPECT_EQ(simulation->config().seed, 3u);
 }

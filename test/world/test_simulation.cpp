@@ -14,7 +14,7 @@
 namespace ari_social_sim::world {
 namespace {
 
-HumanSpec person(ObjectId id, double x, double y, double theta = 0.0) {
+HumanSpec person(model::ObjectId id, double x, double y, double theta = 0.0) {
   HumanSpec spec;
   spec.id = id;
   spec.pose = {{x, y}, theta};
@@ -46,8 +46,9 @@ std::unique_ptr<Simulation> crowd(uint64_t seed) {
   auto simulation =
       std::make_unique<Simulation>(test::square_room(8.0), SimulationConfig{0.05, seed, 0.05});
   core::Rng layout(99);  // the same people in every run; only the simulation seed differs
-  const std::vector<ObjectId> ids = test::add_random_humans(*simulation, 8, 8.0, 0.5, layout);
-  for (ObjectId id : ids) {
+  const std::vector<model::ObjectId> ids =
+      test::add_random_humans(*simulation, 8, 8.0, 0.5, layout);
+  for (model::ObjectId id : ids) {
     GazeModel gaze;
     gaze.targets = {{ids[(id + 1) % ids.size()], 0.6}, {ids[(id + 2) % ids.size()], 0.4}};
     gaze.mean_duration_s = 1.0;
@@ -90,10 +91,10 @@ TEST(Simulation, WallsStopHumansWalkingIntoThem) {
 
 TEST(Simulation, NobodyLeavesTheFloorThroughAnOpening) {
   // A room without its east wall: the floor ends 0.2 m past where the wall would stand (x 6.2).
-  WorldDescription open_room = test::square_room(6.0);
+  model::WorldDescription open_room = test::square_room(6.0);
   open_room.objects.erase(
       std::remove_if(open_room.objects.begin(), open_room.objects.end(),
-                     [](const StaticObject& wall) { return wall.pose.position.x() > 5.9; }),
+                     [](const model::StaticObject& wall) { return wall.pose.position.x() > 5.9; }),
       open_room.objects.end());
   ASSERT_EQ(open_room.objects.size(), 3u);
   Simulation simulation(open_room, SimulationConfig{});
@@ -219,9 +220,9 @@ TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeechIsFoundById) {
   group.centre = {3.0, 3.0};
   simulation.add_group(group);
   simulation.set_human_goal(10, {{1.0, 5.0}, 0.0});
-  EXPECT_EQ(simulation.find_human(10)->group_id(), kNoObject);
+  EXPECT_EQ(simulation.find_human(10)->group_id(), model::kNoObject);
   EXPECT_EQ(simulation.find_human(10)->motion_mode(), MotionMode::kNavigation);
-  EXPECT_EQ(simulation.find_group(1)->members(), std::vector<ObjectId>{11});
+  EXPECT_EQ(simulation.find_group(1)->members(), std::vector<model::ObjectId>{11});
   EXPECT_THROW(simulation.set_human_goal(12, {{1.0, 5.0}, 0.0}), core::RequestError);
   EXPECT_EQ(&simulation.speech_of(1), &simulation.ari()->speech());
   EXPECT_EQ(&simulation.speech_of(11), &simulation.find_human(11)->speech());
@@ -486,8 +487,8 @@ TEST(Simulation, SetPoseTakesAHumanOutOfItsGroupOnlyWhenAccepted) {
   EXPECT_THROW(simulation->set_pose(10, {{4.0, 2.0}, 0.0}), core::RequestError);  // onto 11
   EXPECT_EQ(simulation->find_human(10)->group_id(), 1u);
   simulation->set_pose(10, {{1.0, 1.0}, 0.0});
-  EXPECT_EQ(simulation->find_human(10)->group_id(), kNoObject);
-  EXPECT_EQ(simulation->find_group(1)->members(), std::vector<ObjectId>{11});
+  EXPECT_EQ(simulation->find_human(10)->group_id(), model::kNoObject);
+  EXPECT_EQ(simulation->find_group(1)->members(), std::vector<model::ObjectId>{11});
 }
 
 TEST(Simulation, DebugBuildsCatchANanWhereItIsMade) {
@@ -506,7 +507,7 @@ TEST(Simulation, GroupsAndWorldsHaveDocumentedMaxima) {
   // 51 humans in a 12 m room; a group of 50 takes no 51st member.
   Simulation simulation(test::square_room(12.0), SimulationConfig{});
   core::Rng rng(3);
-  const std::vector<ObjectId> ids = test::add_random_humans(simulation, 51, 12.0, 0.5, rng);
+  const std::vector<model::ObjectId> ids = test::add_random_humans(simulation, 51, 12.0, 0.5, rng);
   GroupSpec group;
   group.id = 1;
   group.members.assign(ids.begin(), ids.begin() + 50);
@@ -521,19 +522,19 @@ TEST(Simulation, GroupsAndWorldsHaveDocumentedMaxima) {
               "and 1 joining");
   }
   // A list longer than any group is refused before it is searched (a client may send 1e6 ids).
-  EXPECT_THROW(simulation.add_group_members(1, std::vector<ObjectId>(100000, ids[0])),
+  EXPECT_THROW(simulation.add_group_members(1, std::vector<model::ObjectId>(100000, ids[0])),
                core::RequestError);
   group.id = 2;
   group.members = ids;
   EXPECT_THROW(simulation.add_group(group), core::RequestError);
-  EXPECT_EQ(simulation.find_human(ids[50])->group_id(), kNoObject);
+  EXPECT_EQ(simulation.find_human(ids[50])->group_id(), model::kNoObject);
 
   // A world of more than 200 m per side, or whose map would exceed 4096 x 4096 cells, is refused
   // before anything is allocated: 150 m at 0.01 m is 15000 x 15000 cells.
-  WorldDescription huge = test::square_room(6.0);
+  model::WorldDescription huge = test::square_room(6.0);
   huge.size = {3000.0, 3000.0};
   EXPECT_THROW((Simulation{huge, SimulationConfig{}}), core::ConfigError);
-  WorldDescription fine_grid = test::square_room(6.0);
+  model::WorldDescription fine_grid = test::square_room(6.0);
   fine_grid.size = {150.0, 150.0};
   EXPECT_THROW((Simulation{fine_grid, SimulationConfig{0.05, 0, 0.01}}), core::ConfigError);
   EXPECT_NO_THROW((Simulation{fine_grid, SimulationConfig{0.05, 0, 0.05}}));  // 3000 x 3000 cells

@@ -10,7 +10,7 @@ namespace ari_social_sim::navigation {
 /// change is taken from the measured velocities.
 class ControlCost : public CostTerm {
  public:
-  ControlCost(const CostWeights& weights, const world::AriLimits& limits, double step_s)
+  ControlCost(const CostWeights& weights, const model::AriLimits& limits, double step_s)
       : weights_(weights),
         max_linear_change_(limits.max_linear_accel_mps2 * step_s),
         max_angular_change_(limits.max_angular_accel_rps2 * step_s) {}

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "ari_social_sim/world/occupancy_grid.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 
 namespace ari_social_sim::navigation {
 
@@ -14,7 +14,7 @@ class GridField {
  public:
   GridField() = default;
   /// A field the size of `grid`, every cell `fill`.
-  GridField(const world::OccupancyGrid& grid, float fill);
+  GridField(const model::OccupancyGrid& grid, float fill);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -4,10 +4,10 @@
 #include <string>
 
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "ari_social_sim/navigation/social_spaces.hpp"
-#include "ari_social_sim/world/ari_limits.hpp"
 
 namespace ari_social_sim::navigation {
 
@@ -68,7 +68,7 @@ struct MpcConfig {
   double target_space_fade_m{2.5};  // ... fading from this distance to the goal to 0 at half of it
   CostWeights weights;
   PersonalSpaceParams personal_space;
-  world::AriLimits limits;  // ARI's own limits (not read from files)
+  model::AriLimits limits;  // ARI's own limits (not read from files)
 
   int control_count() const { return horizon_steps * 3; }
   void read(const core::YamlMap& map);

@@ -6,12 +6,11 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
 #include "ari_social_sim/navigation/goal_finder.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/social_mpc.hpp"
-#include "ari_social_sim/world/ari.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 
 namespace ari_social_sim::navigation {
 
@@ -22,9 +21,6 @@ struct RobotObservation {
   double angular_rps{0.0};
   double pan_rad{0.0};  // head_1_joint
   double pan_rps{0.0};
-
-  /// The simulated 2D ARI's state, for loops that run the world in-process (batch, benchmark).
-  static RobotObservation of(const world::Ari& ari);
 };
 
 /// What to send to ARI now.
@@ -52,7 +48,7 @@ struct NavigatorStep {
 /// timeout, or ARI makes no progress. Holds the static map's signed distance field.
 class Navigator {
  public:
-  Navigator(const NavigationConfig& config, const world::OccupancyGrid& map);
+  Navigator(const NavigationConfig& config, const model::OccupancyGrid& map);
   Navigator(const Navigator&) = delete;
   Navigator& operator=(const Navigator&) = delete;
 

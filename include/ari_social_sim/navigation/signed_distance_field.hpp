@@ -1,7 +1,7 @@
 #pragma once
 
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/grid_field.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 
 namespace ari_social_sim::navigation {
 
@@ -10,6 +10,6 @@ namespace ari_social_sim::navigation {
 /// edge. Unknown cells count as occupied, so the planner never relies on unmapped space. Exact
 /// Euclidean distances (OpenCV's precise distance transform). A grid with no occupied cell reads
 /// as far from everything (its diagonal).
-GridField signed_distance_field(const world::OccupancyGrid& grid);
+GridField signed_distance_field(const model::OccupancyGrid& grid);
 
 }  // namespace ari_social_sim::navigation

@@ -1,6 +1,7 @@
 #pragma once
 
-#include "ari_social_sim/world/types.hpp"
+#include "ari_social_sim/model/object_id.hpp"
+#include "ari_social_sim/model/person_attributes.hpp"
 
 namespace ari_social_sim::perception {
 
@@ -13,6 +14,6 @@ struct ExpressionLabel {
   double arousal;
 };
 
-ExpressionLabel expression_of(world::Emotion emotion);
+ExpressionLabel expression_of(model::Emotion emotion);
 
 }  // namespace ari_social_sim::perception

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 
-#include "ari_social_sim/world/occupancy_grid.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 
 namespace ari_social_sim::perception {
 
@@ -12,7 +12,7 @@ namespace ari_social_sim::perception {
 /// holding the two end points are not tested, so a sensor or a person touching a cell that a wall
 /// only partly fills still sees past it. Cells outside the grid, unknown cells (-1) and an empty
 /// grid are free.
-bool segment_is_clear(const world::OccupancyGrid& grid, int occupied_threshold,
+bool segment_is_clear(const model::OccupancyGrid& grid, int occupied_threshold,
                       const Eigen::Vector2d& from_map, const Eigen::Vector2d& to_map);
 
 }  // namespace ari_social_sim::perception

@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/object_id.hpp"
+#include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
-#include "ari_social_sim/world/types.hpp"
 
 // Parameters of ARI's simulated perception (docs/perception.md). Defaults are ARI's sensors
 // (specs/ari.md section 3) and moderate error levels; config/perception.yaml spells them out.
@@ -172,7 +173,7 @@ struct EmotionConfusion {
   std::vector<double> angry{0.08, 0.01, 0.81, 0.10};
   std::vector<double> disturbed{0.12, 0.01, 0.10, 0.77};
 
-  const std::vector<double>& row(world::Emotion truth) const;
+  const std::vector<double>& row(model::Emotion truth) const;
   static EmotionConfusion identity();
 
   template <class V>

@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/object_id.hpp"
+#include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/perception/ari_sensors.hpp"
-#include "ari_social_sim/world/types.hpp"
 
 // What ARI perceives in one frame: plain data that hri_perception_node publishes as ROS4HRI
 // topics and frames, and that tests and the batch tool read. Poses are in the map frame; heights
@@ -19,7 +20,7 @@ namespace ari_social_sim::perception {
 /// The permanent ROS4HRI person id of simulated human N in the "human" id style: "human<N>" (e.g.
 /// "human10"), as if ARI recognised everyone from a database of known persons. ARI itself is
 /// never a person.
-inline std::string person_id_of(world::ObjectId human) {
+inline std::string person_id_of(model::ObjectId human) {
   return "human" + std::to_string(human);
 }
 
@@ -42,7 +43,7 @@ enum class EngagementLevel : uint8_t {
 
 /// A body tracked by the torso fisheye.
 struct PerceivedBody {
-  world::ObjectId human{world::kNoObject};
+  model::ObjectId human{model::kNoObject};
   std::string body_id;
   std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_body;  ///< Mid-hips; theta = body orientation. Noisy.
@@ -54,20 +55,20 @@ struct PerceivedBody {
 
 /// A face seen by the head camera, with what the face analysers report about it.
 struct PerceivedFace {
-  world::ObjectId human{world::kNoObject};
+  model::ObjectId human{model::kNoObject};
   std::string face_id;
   std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_face;  ///< Sellion; theta = where the face points. Noisy.
   double gaze_rad{0.0};    ///< Gaze direction in the map frame.
-  world::ObjectId gaze_target{world::kNoObject};  ///< Whom or what the person looks at.
+  model::ObjectId gaze_target{model::kNoObject};  ///< Whom or what the person looks at.
   double distance_m{0.0};                         ///< From the head camera.
   double age_years{0.0};
   double age_confidence{1.0};
-  world::Gender gender{world::Gender::kNonIdentified};
+  model::Gender gender{model::Gender::kNonIdentified};
   double gender_confidence{1.0};
   bool mask{false};
   double mask_confidence{1.0};
-  world::Emotion emotion{world::Emotion::kNeutral};
+  model::Emotion emotion{model::Emotion::kNeutral};
   double emotion_confidence{1.0};
   ImageRegion roi;  ///< In the head camera image.
 };
@@ -82,7 +83,7 @@ struct SpeechResult {
 
 /// A voice the microphone array tracks, and what the recogniser made of it in this frame.
 struct PerceivedVoice {
-  world::ObjectId human{world::kNoObject};  ///< Whose voice it is taken to be.
+  model::ObjectId human{model::kNoObject};  ///< Whose voice it is taken to be.
   std::string voice_id;
   std::string person_id;  ///< Set by the person manager (PersonRegistry), not the detector.
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};  ///< Sound source.
@@ -99,7 +100,7 @@ enum class ProxemicSpace : uint8_t { kUnknown, kPersonal, kSocial, kPublic };
 /// A permanent person as the person manager reports it: tracked while a face, body or voice of
 /// theirs is, known once ever tracked.
 struct PersonReport {
-  world::ObjectId human{world::kNoObject};
+  model::ObjectId human{model::kNoObject};
   std::string person_id;
   std::string name;
   bool tracked{false};

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/perception/body_tracker.hpp"
 #include "ari_social_sim/perception/face_tracker.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
@@ -11,7 +12,6 @@
 #include "ari_social_sim/perception/person_registry.hpp"
 #include "ari_social_sim/perception/speech_listener.hpp"
 #include "ari_social_sim/perception/transient_ids.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::perception {
@@ -49,9 +49,9 @@ class PerceptionPipeline {
   PerceptionPipeline& operator=(const PerceptionPipeline&) = delete;
 
   /// The static map that blocks sight (walls and furniture). Without one nothing static does.
-  void set_sight_map(world::OccupancyGrid grid);
+  void set_sight_map(model::OccupancyGrid grid);
   /// The static map that blocks sound (walls only). Without one the sight map does.
-  void set_sound_map(world::OccupancyGrid grid);
+  void set_sound_map(model::OccupancyGrid grid);
 
   /// Perceives one snapshot. The reference stays valid until the next call.
   const PerceptionFrame& update(const world::WorldSnapshot& snapshot);
@@ -72,8 +72,8 @@ class PerceptionPipeline {
   FaceTracker faces_;
   SpeechListener speech_;
   PersonRegistry persons_;
-  std::optional<world::OccupancyGrid> sight_map_;
-  std::optional<world::OccupancyGrid> sound_map_;
+  std::optional<model::OccupancyGrid> sight_map_;
+  std::optional<model::OccupancyGrid> sound_map_;
   std::vector<Eigen::Vector2d> people_;
   std::optional<double> last_time_s_;
   PerceptionFrame frame_;

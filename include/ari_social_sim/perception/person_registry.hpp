@@ -40,9 +40,9 @@ class PersonRegistry {
               const std::vector<PerceivedBody>& bodies, const std::vector<PerceivedFace>& faces,
               const std::vector<PerceivedVoice>& voices, std::vector<PersonReport>& reports);
 
-  bool is_known(world::ObjectId human) const { return persons_.count(human) > 0; }
+  bool is_known(model::ObjectId human) const { return persons_.count(human) > 0; }
   /// The person id of a known human; throws std::out_of_range for an unknown one.
-  const std::string& person_id(world::ObjectId human) const {
+  const std::string& person_id(model::ObjectId human) const {
     return persons_.at(human).report.person_id;
   }
   /// Forgets everyone (a world reset). Their ids stay theirs: a person met again after a reset is
@@ -63,16 +63,16 @@ class PersonRegistry {
     EngagementTracker engagement;
   };
 
-  std::string id_of(world::ObjectId human);
+  std::string id_of(model::ObjectId human);
   /// Forgets persons unseen for more than forget_after, then the random ids of humans that are
   /// neither in `snapshot` nor known.
   void forget(const world::WorldSnapshot& snapshot);
 
   PersonConfig config_;
   EngagementConfig engagement_config_;
-  std::map<world::ObjectId, Person> persons_;
+  std::map<model::ObjectId, Person> persons_;
   TransientIds random_ids_;
-  std::map<world::ObjectId, std::string> random_ids_by_human_;  ///< "random" style only.
+  std::map<model::ObjectId, std::string> random_ids_by_human_;  ///< "random" style only.
 };
 
 }  // namespace ari_social_sim::perception

@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/perception/ari_sensors.hpp"
 #include "ari_social_sim/perception/asr_errors.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/perception/transient_ids.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::perception {
@@ -33,7 +33,7 @@ class SpeechListener {
   /// Appends the tracked voices of this frame to `voices`, ordered by human id. `sound_map` is
   /// null when nothing blocks sound.
   void update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
-              const world::OccupancyGrid* sound_map, int occupied_threshold,
+              const model::OccupancyGrid* sound_map, int occupied_threshold,
               std::vector<PerceivedVoice>& voices);
 
   /// Forgets every utterance and voice track (ids already handed out stay used).
@@ -45,7 +45,7 @@ class SpeechListener {
 
  private:
   struct Utterance {
-    world::ObjectId voice_owner{world::kNoObject};  ///< Whose voice it is attributed to.
+    model::ObjectId voice_owner{model::kNoObject};  ///< Whose voice it is attributed to.
     double start_s{0.0};
     std::vector<std::string> words;  ///< As spoken.
     int last_heard{-1};              ///< Index of the last word passed to the recogniser.
@@ -59,15 +59,15 @@ class SpeechListener {
     std::string transcript;
   };
 
-  VoiceTrack& voice_of(world::ObjectId human);
+  VoiceTrack& voice_of(model::ObjectId human);
   void finish(const Utterance& utterance, double now_s);
 
   const PerceptionConfig& config_;
   TransientIds& ids_;
   core::Rng rng_;
   AsrErrors asr_;
-  std::map<world::ObjectId, Utterance> utterances_;  ///< By speaker.
-  std::map<world::ObjectId, VoiceTrack> voices_;     ///< By voice owner.
+  std::map<model::ObjectId, Utterance> utterances_;  ///< By speaker.
+  std::map<model::ObjectId, VoiceTrack> voices_;     ///< By voice owner.
 };
 
 }  // namespace ari_social_sim::perception

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/perception/detection_model.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/transient_ids.hpp"
-#include "ari_social_sim/world/types.hpp"
 
 namespace ari_social_sim::perception {
 
@@ -27,9 +27,9 @@ class TrackIds {
 
   /// The id of `human` in this frame, or null when the sighting is not kDetected. `dt_s` is the
   /// time since the previous frame. The pointer stays valid until the next call.
-  const std::string* update(world::ObjectId human, Sighting sighting, double dt_s);
+  const std::string* update(model::ObjectId human, Sighting sighting, double dt_s);
   /// Forgets the humans not in `present` (removed from the world).
-  void retain(const std::set<world::ObjectId>& present);
+  void retain(const std::set<model::ObjectId>& present);
 
   /// Ids handed out after a human's first one, over the run.
   uint64_t switches() const { return switches_; }
@@ -48,7 +48,7 @@ class TrackIds {
   DetectionErrors errors_;
   TransientIds& ids_;
   core::Rng rng_;
-  std::map<world::ObjectId, Track> tracks_;
+  std::map<model::ObjectId, Track> tracks_;
   uint64_t switches_{0};
 };
 

@@ -4,14 +4,14 @@
 #include <cstddef>
 #include <vector>
 
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/perception/field_of_view.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 
 namespace ari_social_sim::perception {
 
 /// What blocks sight in one instant: the static map and the people, as circles of one radius.
 struct SightObstacles {
-  const world::OccupancyGrid* grid{nullptr};  ///< Not owned; null = no static obstacles.
+  const model::OccupancyGrid* grid{nullptr};  ///< Not owned; null = no static obstacles.
   int occupied_threshold{50};
   const std::vector<Eigen::Vector2d>* people{nullptr};  ///< Circle centres (map); not owned.
   double person_radius_m{0.2};

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/physics/diff_drive_controller.hpp"
 #include "ari_social_sim/physics/imu_model.hpp"
 #include "ari_social_sim/physics/person_shape.hpp"
@@ -14,7 +15,6 @@
 #include "ari_social_sim/physics/static_scene.hpp"
 #include "ari_social_sim/physics/trajectory_controller.hpp"
 #include "ari_social_sim/physics/wheel_odometry.hpp"
-#include "ari_social_sim/world/world_description.hpp"
 
 namespace ari_social_sim::physics {
 
@@ -37,7 +37,7 @@ class AriPhysics {
  public:
   /// `start`: base_footprint in the map frame. Throws core::ConfigError for an invalid config and
   /// core::RequestError if the model lacks one of ARI's controlled joints.
-  AriPhysics(const RobotModel& model, const world::WorldDescription& world,
+  AriPhysics(const RobotModel& model, const model::WorldDescription& world,
              const core::Pose2& start, const PhysicsConfig& config);
   ~AriPhysics();
   AriPhysics(const AriPhysics&) = delete;

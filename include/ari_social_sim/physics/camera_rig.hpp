@@ -35,7 +35,7 @@ class CameraRig {
   DepthEncoding depth_encoding() const { return depth_encoding_; }
   Renderer& renderer() { return *renderer_; }
 
-  void set_world(const world::WorldDescription& world, const SceneStyle& style);
+  void set_world(const model::WorldDescription& world, const SceneStyle& style);
   void set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives);
 
   /// Indices of the cameras with a frame due at sim time t: camera i's k-th frame is due at

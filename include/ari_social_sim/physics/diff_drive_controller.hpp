@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ari_social_sim/world/ari_limits.hpp"
+#include "ari_social_sim/model/ari_limits.hpp"
 
 namespace ari_social_sim::physics {
 
@@ -17,7 +17,7 @@ struct DriveGeometry {
 /// a stop (within the acceleration limits) when no command arrived for cmd_vel_timeout.
 class DiffDriveController {
  public:
-  DiffDriveController(const world::AriLimits& limits, const DriveGeometry& geometry)
+  DiffDriveController(const model::AriLimits& limits, const DriveGeometry& geometry)
       : limits_(limits), geometry_(geometry) {}
 
   /// A cmd_vel received at sim time `now_s`. Returns true if it had to be scaled to the limits.
@@ -33,7 +33,7 @@ class DiffDriveController {
   double right_wheel_rps() const;
 
  private:
-  world::AriLimits limits_;
+  model::AriLimits limits_;
   DriveGeometry geometry_;
   double commanded_linear_mps_{0.0};
   double commanded_angular_rps_{0.0};

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/physics/camera_model.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 
 namespace ari_social_sim::physics {
 
@@ -51,7 +51,7 @@ class OctomapMapper {
   /// multiple of the resolution): a cell is occupied when a voxel of its column within
   /// [min_height_m, max_height_m] is, free when the column has only free voxels there, unknown
   /// when none was observed.
-  world::OccupancyGrid project_to_grid(const Eigen::Vector2d& origin, int width, int height) const;
+  model::OccupancyGrid project_to_grid(const Eigen::Vector2d& origin, int width, int height) const;
 
   /// Occupied voxels (leaves, merged where the tree pruned them), for rviz markers.
   std::vector<Voxel> occupied_voxels() const;

@@ -2,9 +2,9 @@
 
 #include <cstdint>
 
+#include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/physics/imu_model.hpp"
 #include "ari_social_sim/physics/person_shape.hpp"
-#include "ari_social_sim/world/ari_limits.hpp"
 
 namespace ari_social_sim::physics {
 
@@ -22,7 +22,7 @@ struct PhysicsConfig {
   // velocity error corrected per step. Effort is capped at the URDF's effort limit.
   double joint_position_gain{0.2};
   double joint_velocity_gain{1.0};
-  world::AriLimits base_limits;  // mobile_base_controller's limits and cmd_vel timeout
+  model::AriLimits base_limits;  // mobile_base_controller's limits and cmd_vel timeout
   double imu_rate_hz{100.0};
   ImuNoise imu_noise;
   PersonShapeConfig person;

@@ -4,14 +4,14 @@
 #include <string>
 #include <vector>
 
-#include "ari_social_sim/world/world_description.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 
 namespace ari_social_sim::physics {
 
 /// One wall or piece of furniture as a solid standing on the floor, in the map frame.
 struct SceneSolid {
   enum class Type { kBox, kCylinder, kPrism };
-  world::ObjectId id{world::kNoObject};
+  model::ObjectId id{model::kNoObject};
   std::string name;
   Type type{Type::kBox};
   bool is_wall{false};
@@ -31,7 +31,7 @@ struct StaticScene {
   Eigen::Vector2d floor_size{Eigen::Vector2d::Zero()};    // m
   std::vector<SceneSolid> solids;
 
-  static StaticScene from_world(const world::WorldDescription& world);
+  static StaticScene from_world(const model::WorldDescription& world);
 };
 
 }  // namespace ari_social_sim::physics

@@ -4,8 +4,8 @@
 
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/physics/render_primitive.hpp"
-#include "ari_social_sim/world/world_description.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::physics {
@@ -33,7 +33,7 @@ struct SceneStyle {
 };
 
 /// The floor (checkered), walls and furniture of a world, extruded upwards from z = 0.
-std::vector<RenderPrimitive> static_primitives_of(const world::WorldDescription& world,
+std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
                                                   const SceneStyle& style);
 
 /// Appends one person standing at `body` (map frame) with the head turned to face_direction_rad.

@@ -4,18 +4,18 @@
 #include <string>
 
 #include "ari_social_sim/core/yaml_map.hpp"
-#include "ari_social_sim/world/types.hpp"
+#include "ari_social_sim/model/object_id.hpp"
 
 namespace ari_social_sim::scenario {
 
 /// Who a script line is about: ARI or one simulated human, by its world id. Written `ari` or the
 /// human's id in scenario files.
 struct AgentRef {
-  world::ObjectId human_id{world::kNoObject};  // kNoObject means ARI
+  model::ObjectId human_id{model::kNoObject};  // kNoObject means ARI
 
   static AgentRef ari() { return {}; }
-  static AgentRef human(world::ObjectId id) { return {id}; }
-  bool is_ari() const { return human_id == world::kNoObject; }
+  static AgentRef human(model::ObjectId id) { return {id}; }
+  bool is_ari() const { return human_id == model::kNoObject; }
   /// `ARI` or `human 11`, for messages and transcripts.
   std::string describe() const;
 

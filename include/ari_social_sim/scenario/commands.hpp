@@ -22,7 +22,7 @@ class Commands {
   /// A human or ARI says `text` as speech act `act`; ARI speaks through its text-to-speech.
   virtual void say(const AgentRef& speaker, const std::string& act, const std::string& text) = 0;
   /// A human walks to a pose (leaving its group).
-  virtual void set_human_goal(world::ObjectId human, const core::Pose2& goal) = 0;
+  virtual void set_human_goal(model::ObjectId human, const core::Pose2& goal) = 0;
   /// ARI navigates to a pose (move_base). Replaces any navigation goal in progress.
   virtual void navigate(const core::Pose2& goal) = 0;
   /// ARI approaches a person, or joins the group the person belongs to (/social_mpc/approach),
@@ -36,11 +36,11 @@ class Commands {
   virtual void cancel_navigation() = 0;
   /// Spawns a human (profile and pose), then sets its goal and gaze targets if the spec has them.
   virtual void add_human(const world::HumanSpec& spec) = 0;
-  virtual void remove_human(world::ObjectId human) = 0;
+  virtual void remove_human(model::ObjectId human) = 0;
   virtual void create_group(const world::GroupSpec& spec) = 0;
-  virtual void add_group_members(world::ObjectId group,
-                                 const std::vector<world::ObjectId>& members) = 0;
-  virtual void set_group_centre(world::ObjectId group, const Eigen::Vector2d& centre) = 0;
+  virtual void add_group_members(model::ObjectId group,
+                                 const std::vector<model::ObjectId>& members) = 0;
+  virtual void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) = 0;
 };
 
 }  // namespace ari_social_sim::scenario

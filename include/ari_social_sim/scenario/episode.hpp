@@ -10,6 +10,7 @@
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
@@ -20,7 +21,6 @@
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "ari_social_sim/scenario/world_speech_stage.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
 namespace ari_social_sim::scenario {
@@ -76,7 +76,7 @@ class Episode {
   const world::Simulation& simulation() const { return *simulation_; }
   /// The world after the last step (before the first: the initial state).
   const world::WorldSnapshot& snapshot() const { return observations_.world; }
-  const world::OccupancyGrid& map() const { return map_; }
+  const model::OccupancyGrid& map() const { return map_; }
   const ScriptRunner& runner() const { return runner_; }
   const EpisodeMetrics& metrics() const { return metrics_.metrics(); }
   uint64_t seed() const { return seed_; }
@@ -105,7 +105,7 @@ class Episode {
   uint64_t seed_;
   EpisodeConfig config_;
   std::unique_ptr<world::Simulation> simulation_;
-  world::OccupancyGrid map_;
+  model::OccupancyGrid map_;
   perception::PerceptionPipeline perception_;
   perception::GroupPerception group_detection_;
   std::optional<double> last_perceived_s_;

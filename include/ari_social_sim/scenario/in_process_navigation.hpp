@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 #include "ari_social_sim/scenario/observations.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
 namespace ari_social_sim::scenario {
@@ -32,7 +32,7 @@ struct SentCommand {
 /// base. Holds a reference to the simulation, which must outlive it.
 class InProcessNavigation {
  public:
-  InProcessNavigation(const navigation::NavigationConfig& config, const world::OccupancyGrid& map,
+  InProcessNavigation(const navigation::NavigationConfig& config, const model::OccupancyGrid& map,
                       world::Simulation& simulation);
 
   /// What hri_perception_node published in a frame (/humans/persons/tracked, the bodies' tf

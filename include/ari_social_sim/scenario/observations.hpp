@@ -47,7 +47,7 @@ struct Observations {
   NavigationStatus navigation;
   /// The person id perception reports each simulated human as, for the humans matched so far
   /// (PersonIdentities::person_ids): how approach and join_group name them to navigation.
-  std::map<world::ObjectId, std::string> person_ids;
+  std::map<model::ObjectId, std::string> person_ids;
   std::vector<PerceivedGroup> perceived_groups;
   /// Human utterances of the dialogue that started since the previous observation, as ARI
   /// perceived them (the dialogue's error layer applied).

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
-#include "ari_social_sim/world/types.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::scenario {
@@ -53,11 +53,11 @@ class PersonIdentities {
   void update(const world::WorldSnapshot& world, const std::vector<PersonSighting>& sightings);
 
   /// The person id the human is perceived as; nothing until a sighting has matched it.
-  std::optional<std::string> person_of(world::ObjectId human) const;
+  std::optional<std::string> person_of(model::ObjectId human) const;
   /// The human a person id stands for; nothing for persons matched with no one.
-  std::optional<world::ObjectId> human_of(const std::string& person_id) const;
+  std::optional<model::ObjectId> human_of(const std::string& person_id) const;
   /// Every match, by human.
-  std::map<world::ObjectId, std::string> person_ids() const;
+  std::map<model::ObjectId, std::string> person_ids() const;
 
  private:
   struct Match {
@@ -67,7 +67,7 @@ class PersonIdentities {
 
   void forget_person(const std::string& person_id);
 
-  std::map<world::ObjectId, Match> matches_;
+  std::map<model::ObjectId, Match> matches_;
 };
 
 }  // namespace ari_social_sim::scenario

@@ -15,8 +15,8 @@ namespace ari_social_sim::scenario {
 /// automatic o-space circle, turned by a uniform random angle, facing the centre; each member's
 /// age uniform in [18, 80] years and gender female or male with equal probability.
 struct RandomGroup {
-  world::ObjectId id{world::kNoObject};
-  world::ObjectId first_human_id{world::kNoObject};
+  model::ObjectId id{model::kNoObject};
+  model::ObjectId first_human_id{model::kNoObject};
   unsigned min_size{2};
   unsigned max_size{2};
   Eigen::Vector2d centre_min{Eigen::Vector2d::Zero()};

@@ -78,12 +78,12 @@ struct SetGoalAction {
 
 /// ARI approaches a person (/social_mpc/approach, person target).
 struct ApproachAction {
-  world::ObjectId person{world::kNoObject};
+  model::ObjectId person{model::kNoObject};
 };
 
 /// ARI joins the group the person belongs to (/social_mpc/approach, group-of-person target).
 struct JoinGroupAction {
-  world::ObjectId person{world::kNoObject};
+  model::ObjectId person{model::kNoObject};
 };
 
 /// ARI cancels its navigation goal and stops.
@@ -94,7 +94,7 @@ struct AddHumanAction {
 };
 
 struct RemoveHumanAction {
-  world::ObjectId human{world::kNoObject};
+  model::ObjectId human{model::kNoObject};
 };
 
 struct CreateGroupAction {
@@ -102,12 +102,12 @@ struct CreateGroupAction {
 };
 
 struct AddGroupMembersAction {
-  world::ObjectId group{world::kNoObject};
-  std::vector<world::ObjectId> members;
+  model::ObjectId group{model::kNoObject};
+  std::vector<model::ObjectId> members;
 };
 
 struct SetGroupCentreAction {
-  world::ObjectId group{world::kNoObject};
+  model::ObjectId group{model::kNoObject};
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
 };
 

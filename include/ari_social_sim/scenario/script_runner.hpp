@@ -79,7 +79,7 @@ class ScriptRunner {
   bool run(const std::vector<Action>& actions, const Observations& observations,
            Commands& commands);
   /// ARI approaches a human, or joins its group, through the person perception reports it as.
-  void approach(world::ObjectId human, bool join_group, const Observations& observations,
+  void approach(model::ObjectId human, bool join_group, const Observations& observations,
                 Commands& commands);
   void end(bool success, const std::string& reason);
   /// Labels ARI's new transcript lines with the acts the script gave their texts.

@@ -3,7 +3,8 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "ari_social_sim/world/ari_limits.hpp"
+#include "ari_social_sim/model/ari_footprint.hpp"
+#include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/world/differential_drive.hpp"
 #include "ari_social_sim/world/head_pan_controller.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
@@ -12,23 +13,13 @@
 
 namespace ari_social_sim::world {
 
-/// ARI's footprint in base_footprint (specs/ari.md body height profile): the mobile base spans
-/// x -0.60..+0.16 m, y +-0.27 m; base_footprint sits on the wheel axle at the front.
-struct AriFootprint {
-  double rear_x_m{-0.60};
-  double front_x_m{0.16};
-  double half_width_m{0.27};
-
-  Eigen::Vector2d centre_local() const { return {0.5 * (rear_x_m + front_x_m), 0.0}; }
-};
-
 struct AriSpec {
-  ObjectId id{1};
+  model::ObjectId id{1};
   core::Pose2 pose;  // base_footprint in the map frame
   double head_pan_rad{0.0};
   double words_per_minute{150.0};
-  AriLimits limits;
-  AriFootprint footprint;
+  model::AriLimits limits;
+  model::AriFootprint footprint;
 
   /// Throws core::RequestError naming the first invalid field, its value and the expectation: id
   /// 0, a non-finite pose, a heading beyond +-kMaxHeadingRad, a head pan beyond the joint limit,

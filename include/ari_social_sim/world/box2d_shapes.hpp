@@ -2,7 +2,7 @@
 
 #include <box2d/box2d.h>
 
-#include "ari_social_sim/world/world_description.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 
 namespace ari_social_sim::world {
 
@@ -19,6 +19,6 @@ struct StaticShape {
   }
 };
 
-StaticShape make_static_shape(const StaticObject& object);
+StaticShape make_static_shape(const model::StaticObject& object);
 
 }  // namespace ari_social_sim::world

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ari_social_sim/world/ari_limits.hpp"
+#include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/world/object.hpp"
 
 namespace ari_social_sim::world {
@@ -10,7 +10,7 @@ namespace ari_social_sim::world {
 /// reached within the acceleration limits, and dropped to zero after the command timeout.
 class DifferentialDrive : public Component {
  public:
-  explicit DifferentialDrive(const AriLimits& limits) : limits_(limits) {}
+  explicit DifferentialDrive(const model::AriLimits& limits) : limits_(limits) {}
 
   ComponentPhase phase() const override { return ComponentPhase::kGenerator; }
   void step(Object& owner, const StepContext& context) override;
@@ -22,7 +22,7 @@ class DifferentialDrive : public Component {
   double angular_rps() const { return angular_rps_; }
 
  private:
-  AriLimits limits_;
+  model::AriLimits limits_;
   double commanded_linear_mps_{0.0};
   double commanded_angular_rps_{0.0};
   double command_time_s_{-1e9};

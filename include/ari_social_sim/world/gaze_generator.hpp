@@ -11,7 +11,7 @@ namespace ari_social_sim::world {
 
 /// One potential gaze target and the probability of choosing it at a gaze change.
 struct GazeTarget {
-  ObjectId id{kNoObject};
+  model::ObjectId id{model::kNoObject};
   double probability{0.0};
 };
 
@@ -62,7 +62,7 @@ class GazeGenerator : public Component {
   void set_model(GazeModel model);
   const GazeModel& model() const { return model_; }
 
-  ObjectId target() const { return target_; }
+  model::ObjectId target() const { return target_; }
   /// Gaze direction in the map frame (rad).
   double direction_rad() const { return direction_rad_; }
   /// Sim time (s) the current gaze started.
@@ -73,7 +73,7 @@ class GazeGenerator : public Component {
 
   GazeModel model_;
   core::Rng rng_;
-  ObjectId target_{kNoObject};
+  model::ObjectId target_{model::kNoObject};
   double relative_direction_rad_{0.0};
   double direction_rad_{0.0};
   double since_s_{0.0};

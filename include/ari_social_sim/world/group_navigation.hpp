@@ -16,8 +16,8 @@ constexpr double kMaxOspaceRadiusM = 10.0;
 
 /// A conversational group's parameters (seed 3.4.1).
 struct GroupSpec {
-  ObjectId id{kNoObject};
-  std::vector<ObjectId> members;
+  model::ObjectId id{model::kNoObject};
+  std::vector<model::ObjectId> members;
   /// o: goal position of the o-space centre (m, map frame).
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
   /// s (m); 0 = derived from the member count so that members stand `member_spacing_m` apart
@@ -53,8 +53,8 @@ class GroupNavigation : public Script {
 
   void step(const StepContext& context) override;
 
-  ObjectId id() const { return spec_.id; }
-  const std::vector<ObjectId>& members() const { return spec_.members; }
+  model::ObjectId id() const { return spec_.id; }
+  const std::vector<model::ObjectId>& members() const { return spec_.members; }
   const Eigen::Vector2d& centre() const { return spec_.centre; }
   /// s (m) in use: the configured radius or the one derived from the member count.
   double ospace_radius_m() const;
@@ -64,8 +64,8 @@ class GroupNavigation : public Script {
   /// members' mutual repulsion at even spacing, so that the formation settles on s itself.
   double cohesion_radius_m() const;
 
-  void add_member(ObjectId id) { spec_.members.push_back(id); }
-  void remove_member(ObjectId id);
+  void add_member(model::ObjectId id) { spec_.members.push_back(id); }
+  void remove_member(model::ObjectId id);
   /// Expects a finite centre: requests are checked by Simulation::set_group_centre.
   void set_centre(const Eigen::Vector2d& centre);
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "ari_social_sim/world/types.hpp"
+#include "ari_social_sim/model/object_id.hpp"
 
 namespace ari_social_sim::world {
 
@@ -13,7 +13,7 @@ class GroupNavigation;
 
 /// How well one member stands in its F-formation.
 struct MemberPlacement {
-  ObjectId id{kNoObject};
+  model::ObjectId id{model::kNoObject};
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};
   double orientation_rad{0.0};
   double distance_to_circle_m{0.0};  // | |p - o| - s |
@@ -21,15 +21,15 @@ struct MemberPlacement {
 };
 
 struct MemberDistance {
-  ObjectId a{kNoObject};
-  ObjectId b{kNoObject};
+  model::ObjectId a{model::kNoObject};
+  model::ObjectId b{model::kNoObject};
   double distance_m{0.0};
 };
 
 /// A group's formation measured against its o-space circle: what the formation tests assert and
 /// what world_node prints at the end of a run.
 struct GroupReport {
-  ObjectId id{kNoObject};
+  model::ObjectId id{model::kNoObject};
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
   double ospace_radius_m{0.0};
   std::vector<MemberPlacement> members;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ari_social_sim/world/ari_limits.hpp"
+#include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/world/object.hpp"
 
 namespace ari_social_sim::world {
@@ -9,7 +9,7 @@ namespace ari_social_sim::world {
 /// (what /head_controller/command gives), within the joint and speed limits.
 class HeadPanController : public Component {
  public:
-  HeadPanController(const AriLimits& limits, double initial_pan_rad)
+  HeadPanController(const model::AriLimits& limits, double initial_pan_rad)
       : limits_(limits), pan_rad_(initial_pan_rad) {}
 
   ComponentPhase phase() const override { return ComponentPhase::kGenerator; }
@@ -24,7 +24,7 @@ class HeadPanController : public Component {
   double pan_velocity_rps() const { return velocity_rps_; }
 
  private:
-  AriLimits limits_;
+  model::AriLimits limits_;
   double pan_rad_;
   double velocity_rps_{0.0};
   double commanded_velocity_rps_{0.0};

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/object.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
@@ -35,14 +36,14 @@ struct HumanMotionParams {
 
 /// Everything needed to create a human. Defaults are the documented ones of docs/world.md.
 struct HumanSpec {
-  ObjectId id{kNoObject};
+  model::ObjectId id{model::kNoObject};
   std::string name;
   std::string role;
   core::Pose2 pose;
   double age_years{40.0};
-  Gender gender{Gender::kNonIdentified};
+  model::Gender gender{model::Gender::kNonIdentified};
   bool mask{false};
-  Emotion emotion{Emotion::kNeutral};
+  model::Emotion emotion{model::Emotion::kNeutral};
   HumanMotionParams motion;
   double words_per_minute{150.0};
   std::optional<GazeModel> gaze;
@@ -79,10 +80,10 @@ class Human : public Object {
   /// Stands still.
   void stop();
   /// Hands the movement to a GroupNavigation script (called by the script).
-  void join_group(ObjectId group_id);
+  void join_group(model::ObjectId group_id);
   /// Called by the group script when the human leaves it.
   void leave_group();
-  ObjectId group_id() const { return group_id_; }
+  model::ObjectId group_id() const { return group_id_; }
 
   /// The movement planned for the next step by the navigation component or the group script:
   /// a velocity (m/s, map frame) and a rotation (rad) to apply over the step.
@@ -105,7 +106,7 @@ class Human : public Object {
  private:
   HumanSpec spec_;
   MotionMode mode_{MotionMode::kIdle};
-  ObjectId group_id_{kNoObject};
+  model::ObjectId group_id_{model::kNoObject};
   Eigen::Vector2d direct_velocity_{Eigen::Vector2d::Zero()};
   double direct_angular_velocity_{0.0};
   Eigen::Vector2d planned_velocity_{Eigen::Vector2d::Zero()};

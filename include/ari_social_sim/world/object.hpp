@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
-#include "ari_social_sim/world/types.hpp"
+#include "ari_social_sim/model/object_id.hpp"
 
 class b2Body;
 
@@ -39,12 +39,12 @@ enum class ObjectKind { kStatic, kHuman, kAri };
 /// are cached from the body after each physics step, so readers never touch Box2D.
 class Object {
  public:
-  Object(ObjectId id, ObjectKind kind) : id_(id), kind_(kind) {}
+  Object(model::ObjectId id, ObjectKind kind) : id_(id), kind_(kind) {}
   virtual ~Object() = default;
   Object(const Object&) = delete;
   Object& operator=(const Object&) = delete;
 
-  ObjectId id() const { return id_; }
+  model::ObjectId id() const { return id_; }
   ObjectKind kind() const { return kind_; }
   b2Body* body() const { return body_; }
   void attach_body(b2Body* body) { body_ = body; }
@@ -77,7 +77,7 @@ class Object {
   double angular_velocity_{0.0};
 
  private:
-  ObjectId id_;
+  model::ObjectId id_;
   ObjectKind kind_;
   b2Body* body_{nullptr};
   std::vector<std::unique_ptr<Component>> components_;

@@ -6,7 +6,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
-#include "ari_social_sim/world/world_description.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 
 namespace ari_social_sim::world {
 
@@ -36,10 +36,10 @@ class RequestCheck {
   void heading(const std::string& field, double theta_rad) const;
   /// A point on the world's floor: `field.x` and `field.y` each finite and inside its rectangle.
   void on_floor(const std::string& field, const Eigen::Vector2d& point,
-                const WorldDescription& world) const;
+                const model::WorldDescription& world) const;
   /// A pose on the floor with a valid heading (`field.x`, `field.y`, `field.theta`).
   void pose_on_floor(const std::string& field, const core::Pose2& pose,
-                     const WorldDescription& world) const;
+                     const model::WorldDescription& world) const;
   /// Runs `spec.validate()` and names this request in front of its refusal.
   template <class Spec>
   void valid(const Spec& spec) const {

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/world/ari.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/simulation.hpp"
-#include "ari_social_sim/world/world_description.hpp"
 
 namespace ari_social_sim::world {
 
@@ -25,7 +25,7 @@ constexpr size_t kMaxSceneGroups = kMaxHumans;
 struct Scene {
   std::string path;        // the scene file, for messages
   std::string world_path;  // resolved path of the world file
-  WorldDescription world;
+  model::WorldDescription world;
   uint64_t seed{0};
   std::optional<AriSpec> ari;
   std::vector<HumanSpec> humans;

@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/object_id.hpp"
+#include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/world/human.hpp"
-#include "ari_social_sim/world/types.hpp"
 
 namespace ari_social_sim::world {
 
@@ -26,31 +27,31 @@ struct SpeechSnapshot {
 };
 
 struct GazeSnapshot {
-  ObjectId target{kNoObject};
+  model::ObjectId target{model::kNoObject};
   double direction_rad{0.0};
   double since_s{0.0};
 };
 
 struct HumanSnapshot {
-  ObjectId id{kNoObject};
+  model::ObjectId id{model::kNoObject};
   std::string name;
   std::string role;
   core::Pose2 pose;
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};
   double angular_velocity_rps{0.0};
   double age_years{0.0};
-  Gender gender{Gender::kNonIdentified};
+  model::Gender gender{model::Gender::kNonIdentified};
   bool mask{false};
-  Emotion emotion{Emotion::kNeutral};
+  model::Emotion emotion{model::Emotion::kNeutral};
   MotionMode motion_mode{MotionMode::kIdle};
   std::optional<core::Pose2> goal;
-  ObjectId group_id{kNoObject};
+  model::ObjectId group_id{model::kNoObject};
   GazeSnapshot gaze;
   SpeechSnapshot speech;
 };
 
 struct AriSnapshot {
-  ObjectId id{kNoObject};
+  model::ObjectId id{model::kNoObject};
   core::Pose2 pose;  // base_footprint
   double linear_mps{0.0};
   double angular_rps{0.0};
@@ -60,8 +61,8 @@ struct AriSnapshot {
 };
 
 struct GroupSnapshot {
-  ObjectId id{kNoObject};
-  std::vector<ObjectId> members;
+  model::ObjectId id{model::kNoObject};
+  std::vector<model::ObjectId> members;
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
   double ospace_radius_m{0.0};
 };

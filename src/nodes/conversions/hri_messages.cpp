@@ -65,13 +65,13 @@ SoftBiometrics softbiometrics_msg(const perception::PerceivedFace& face,
   msg.age = static_cast<uint8_t>(std::lround(face.age_years));
   msg.age_confidence = static_cast<float>(face.age_confidence);
   switch (face.gender) {
-    case world::Gender::kFemale:
+    case model::Gender::kFemale:
       msg.gender = SoftBiometrics::FEMALE;
       break;
-    case world::Gender::kMale:
+    case model::Gender::kMale:
       msg.gender = SoftBiometrics::MALE;
       break;
-    case world::Gender::kNonIdentified:
+    case model::Gender::kNonIdentified:
       msg.gender = SoftBiometrics::UNDEFINED;
       break;
   }
@@ -86,16 +86,16 @@ Expression expression_msg(const perception::PerceivedFace& face, const std_msgs:
   // hri_msgs' string constants keep their quotes (`string ANGRY="angry"` is "\"angry\""), and
   // consumers compare with them: send the constant, not the bare word.
   switch (face.emotion) {
-    case world::Emotion::kHappy:
+    case model::Emotion::kHappy:
       msg.expression = Expression::HAPPY;
       break;
-    case world::Emotion::kAngry:
+    case model::Emotion::kAngry:
       msg.expression = Expression::ANGRY;
       break;
-    case world::Emotion::kDisturbed:
+    case model::Emotion::kDisturbed:
       msg.expression = Expression::SCARED;
       break;
-    case world::Emotion::kNeutral:
+    case model::Emotion::kNeutral:
       msg.expression = Expression::NEUTRAL;
       break;
   }

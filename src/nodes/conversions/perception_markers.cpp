@@ -29,8 +29,8 @@ void add_wedge(MarkerBuilder& b, const std::string& ns, const perception::FieldO
   }
 }
 
-const char* gender_text(world::Gender gender) {
-  return gender == world::Gender::kNonIdentified ? "undefined" : world::to_string(gender);
+const char* gender_text(model::Gender gender) {
+  return gender == model::Gender::kNonIdentified ? "undefined" : model::to_string(gender);
 }
 
 }  // namespace

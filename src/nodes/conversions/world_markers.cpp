@@ -16,16 +16,16 @@ std::string utterance(const world::SpeechSnapshot& speech) {
   return speech.act + ": " + speech.content + "  [" + speech.current_word + "]";
 }
 
-void add_static(MarkerBuilder& b, const world::WorldDescription& world) {
+void add_static(MarkerBuilder& b, const model::WorldDescription& world) {
   const std_msgs::ColorRGBA wall = rgba(0.25f, 0.45f, 0.25f);
   const std_msgs::ColorRGBA furniture = rgba(0.35f, 0.75f, 0.35f);
   int id = 0;
-  for (const world::StaticObject& object : world.objects) {
-    const bool is_wall = object.type == world::ShapeType::kWall;
+  for (const model::StaticObject& object : world.objects) {
+    const bool is_wall = object.type == model::ShapeType::kWall;
     const double height = is_wall ? 1.0 : 0.5;
     switch (object.type) {
-      case world::ShapeType::kWall:
-      case world::ShapeType::kBox: {
+      case model::ShapeType::kWall:
+      case model::ShapeType::kBox: {
         Marker& m = b.add("static", id++, Marker::CUBE, is_wall ? wall : furniture);
         m.pose.position = point(object.pose.position.x(), object.pose.position.y(), 0.5 * height);
         m.pose.orientation = yaw_quaternion(object.pose.theta);
@@ -34,14 +34,14 @@ void add_static(MarkerBuilder& b, const world::WorldDescription& world) {
         m.scale.z = height;
         break;
       }
-      case world::ShapeType::kCircle: {
+      case model::ShapeType::kCircle: {
         Marker& m = b.add("static", id++, Marker::CYLINDER, furniture);
         m.pose.position = point(object.pose.position.x(), object.pose.position.y(), 0.5 * height);
         m.scale.x = m.scale.y = 2.0 * object.radius_m;
         m.scale.z = height;
         break;
       }
-      case world::ShapeType::kPolygon: {
+      case model::ShapeType::kPolygon: {
         // A prism drawn as a triangle fan on top of the outline.
         Marker& m = b.add("static", id++, Marker::TRIANGLE_LIST, furniture);
         for (size_t i = 1; i + 1 < object.points.size(); ++i) {
@@ -58,7 +58,7 @@ void add_static(MarkerBuilder& b, const world::WorldDescription& world) {
 }  // namespace
 
 visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapshot,
-                                              const world::WorldDescription& world,
+                                              const model::WorldDescription& world,
                                               const std::string& frame_id) {
   visualization_msgs::MarkerArray array;
   MarkerBuilder b(frame_id, array);
@@ -82,7 +82,7 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
     b.arrow("humans/gaze", id, x, y, 1.65, h.gaze.direction_rad, 0.7, gaze);
     char text[160];
     std::snprintf(text, sizeof text, "%u %s\n%.0f y, %s, %s%s", h.id, h.name.c_str(), h.age_years,
-                  world::to_string(h.gender), world::to_string(h.emotion), h.mask ? ", mask" : "");
+                  model::to_string(h.gender), model::to_string(h.emotion), h.mask ? ", mask" : "");
     b.text("humans/label", id, x, y, 2.1, text, 0.16, label);
     if (h.speech.is_speaking) {
       b.text("humans/speech", id, x, y, 2.5, utterance(h.speech), 0.18, speech);

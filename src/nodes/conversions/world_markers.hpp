@@ -2,7 +2,7 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "ari_social_sim/world/world_description.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::nodes {
@@ -12,7 +12,7 @@ namespace ari_social_sim::nodes {
 /// gender, emotion, mask), ARI's footprint and head direction, groups' o-space circles and the
 /// utterances being spoken. Starts with DELETEALL so removed entities disappear.
 visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapshot,
-                                              const world::WorldDescription& world,
+                                              const model::WorldDescription& world,
                                               const std::string& frame_id);
 
 }  // namespace ari_social_sim::nodes

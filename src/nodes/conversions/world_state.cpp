@@ -104,7 +104,7 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
   return msg;
 }
 
-nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
+nav_msgs::OccupancyGrid to_msg(const model::OccupancyGrid& grid, const std::string& frame_id,
                                double stamp_s) {
   nav_msgs::OccupancyGrid msg;
   msg.header.stamp = ros::Time(stamp_s);
@@ -145,9 +145,9 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
     human.velocity_mps = {h.velocity.linear.x, h.velocity.linear.y};
     human.angular_velocity_rps = h.velocity.angular.z;
     human.age_years = h.age;
-    human.gender = static_cast<world::Gender>(h.gender);
+    human.gender = static_cast<model::Gender>(h.gender);
     human.mask = h.mask;
-    human.emotion = static_cast<world::Emotion>(h.emotion);
+    human.emotion = static_cast<model::Emotion>(h.emotion);
     human.motion_mode = static_cast<world::MotionMode>(h.motion_mode);
     if (h.has_goal) {
       human.goal = from_msg(h.goal);
@@ -163,8 +163,8 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
   return snapshot;
 }
 
-world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg) {
-  world::OccupancyGrid grid;
+model::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg) {
+  model::OccupancyGrid grid;
   grid.origin = {msg.info.origin.position.x, msg.info.origin.position.y};
   grid.resolution_m = msg.info.resolution;
   grid.width = static_cast<int>(msg.info.width);

@@ -8,7 +8,7 @@
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/pose2.hpp"
-#include "ari_social_sim/world/occupancy_grid.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::nodes {
@@ -19,14 +19,14 @@ geometry_msgs::Pose2D to_msg(const core::Pose2& pose);
 /// /sim/world_state from a snapshot; header stamped with the snapshot's sim time in `frame_id`.
 WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id);
 /// /map from the rasterised static geometry.
-nav_msgs::OccupancyGrid to_msg(const world::OccupancyGrid& grid, const std::string& frame_id,
+nav_msgs::OccupancyGrid to_msg(const model::OccupancyGrid& grid, const std::string& frame_id,
                                double stamp_s);
 
 /// The snapshot a /sim/world_state message carries: the inverse of to_msg (the message holds a
 /// speaker's previous act but no longer history).
 world::WorldSnapshot from_msg(const WorldState& msg);
 /// A /map message as a grid (an origin rotation, which the world never writes, is ignored).
-world::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
+model::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
 
 /// What makes a received message unusable, as `field` and `what` ("humans[2].pose.x", "nan, not
 /// a finite number"); nullopt when it is fine. A /sim/world_state needs finite numbers where the

@@ -5,23 +5,23 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/navigation/footprint_model.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
-#include "ari_social_sim/world/world_file.hpp"
 
 namespace ari_social_sim::tools {
 namespace {
 
 using core::kPi;
-using world::ObjectId;
+using model::ObjectId;
 
 constexpr int kMaxDraws = 2000;
 
-world::StaticObject wall(ObjectId id, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
-  world::StaticObject object;
+model::StaticObject wall(ObjectId id, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  model::StaticObject object;
   object.id = id;
-  object.type = world::ShapeType::kWall;
+  object.type = model::ShapeType::kWall;
   object.pose.position = 0.5 * (from + to);
   object.pose.theta = std::atan2(to.y() - from.y(), to.x() - from.x());
   object.size = {(to - from).norm(), 0.1};
@@ -29,8 +29,8 @@ world::StaticObject wall(ObjectId id, const Eigen::Vector2d& from, const Eigen::
 }
 
 // A walled rectangle of `size` with its inner floor from (0, 0).
-world::WorldDescription walled_room(const std::string& name, const Eigen::Vector2d& size) {
-  world::WorldDescription world;
+model::WorldDescription walled_room(const std::string& name, const Eigen::Vector2d& size) {
+  model::WorldDescription world;
   world.name = name;
   world.origin = {-0.2, -0.2};
   world.size = size + Eigen::Vector2d(0.4, 0.4);
@@ -118,14 +118,14 @@ std::vector<ObjectId> place_group(world::Simulation& sim, core::Rng& rng, Object
   return spec.members;
 }
 
-std::unique_ptr<world::Simulation> simulation_of(world::WorldDescription world, uint64_t seed) {
+std::unique_ptr<world::Simulation> simulation_of(model::WorldDescription world, uint64_t seed) {
   world::SimulationConfig config;
   config.seed = seed;
   return std::make_unique<world::Simulation>(std::move(world), config);
 }
 
 // Small round tables at random, away from `keep_clear` points by `clearance`.
-void add_tables(world::WorldDescription& world, core::Rng& rng, int count,
+void add_tables(model::WorldDescription& world, core::Rng& rng, int count,
                 const Eigen::Vector2d& low, const Eigen::Vector2d& high,
                 const std::vector<Eigen::Vector2d>& keep_clear, double clearance) {
   ObjectId id = 2000;
@@ -138,10 +138,10 @@ void add_tables(world::WorldDescription& world, core::Rng& rng, int count,
     if (!clear) {
       continue;
     }
-    world::StaticObject table;
+    model::StaticObject table;
     table.id = id++;
     table.name = "table";
-    table.type = world::ShapeType::kCircle;
+    table.type = model::ShapeType::kCircle;
     table.pose.position = at;
     table.radius_m = rng.uniform(0.3, 0.5);
     world.objects.push_back(table);
@@ -152,7 +152,7 @@ void add_tables(world::WorldDescription& world, core::Rng& rng, int count,
 // True when ARI's footprint circles at `base` keep `margin_m` from walls and furniture.
 bool footprint_clear(const navigation::GridField& sdf, const core::Pose2& base, double margin_m) {
   static const navigation::FootprintModel footprint =
-      navigation::FootprintModel::covering(world::AriFootprint{}, 3);
+      navigation::FootprintModel::covering(model::AriFootprint{}, 3);
   for (double offset : footprint.circle_offsets_x_m) {
     if (sdf.sample(base.position + offset * base.heading()) <
         footprint.circle_radius_m + margin_m) {
@@ -171,7 +171,7 @@ constexpr double kDoorClosingDistance = 1.5;
 // The flat with ARI placed anywhere ARI fits, its static map as a distance field.
 navigation::GridField flat_with_ari(Episode& e, core::Rng& rng, const std::string& worlds_dir,
                                     const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
-  e.simulation = simulation_of(world::load_world_file(worlds_dir + "/two_room_flat.yaml"), e.seed);
+  e.simulation = simulation_of(model::load_world_file(worlds_dir + "/two_room_flat.yaml"), e.seed);
   navigation::GridField sdf =
       navigation::signed_distance_field(world::rasterize_static_map(e.simulation->world(), 0.05));
   place_ari(*e.simulation, rng, low, high,
@@ -299,7 +299,7 @@ Episode crossing_episode(Episode e, core::Rng& rng) {
 
 Episode approach_episode(Episode e, core::Rng& rng) {
   // An 8 x 8 m room with a few tables; ARI approaches one of three standing people.
-  world::WorldDescription world = walled_room("room", {8.0, 8.0});
+  model::WorldDescription world = walled_room("room", {8.0, 8.0});
   const Eigen::Vector2d target_at = uniform_point(rng, {2.0, 2.0}, {6.0, 6.0});
   add_tables(world, rng, 3, {1.0, 1.0}, {7.0, 7.0}, {target_at}, 2.2);
   e.simulation = simulation_of(std::move(world), e.seed);
@@ -329,7 +329,7 @@ Episode approach_episode(Episode e, core::Rng& rng) {
 
 Episode join_episode(Episode e, core::Rng& rng, int size) {
   // A 10 x 10 m room with a few tables, the group to join and another group of 2 or 3.
-  world::WorldDescription world = walled_room("room", {10.0, 10.0});
+  model::WorldDescription world = walled_room("room", {10.0, 10.0});
   const Eigen::Vector2d target_centre = uniform_point(rng, {2.5, 2.5}, {7.5, 7.5});
   Eigen::Vector2d other_centre;
   for (int draw = 0;; ++draw) {
@@ -396,11 +396,11 @@ bool parse_type(const std::string& name, EpisodeType& type) {
   return false;
 }
 
-std::string person_id(world::ObjectId human) {
+std::string person_id(model::ObjectId human) {
   return "human" + std::to_string(human);
 }
 
-std::string group_id(world::ObjectId group) {
+std::string group_id(model::ObjectId group) {
   return "group" + std::to_string(group);
 }
 

@@ -24,7 +24,7 @@ bool parse_type(const std::string& name, EpisodeType& type);
 /// A human starts walking to `goal` at sim time `start_s` (crossing episodes).
 struct ScheduledWalk {
   double start_s{0.0};
-  world::ObjectId human{world::kNoObject};
+  model::ObjectId human{model::kNoObject};
   core::Pose2 goal;
 };
 
@@ -46,7 +46,7 @@ Episode make_episode(EpisodeType type, int index, uint64_t base_seed,
                      const std::string& worlds_dir);
 
 /// The ROS4HRI-style ids the tool gives simulated people and groups, as perception would.
-std::string person_id(world::ObjectId human);
-std::string group_id(world::ObjectId group);
+std::string person_id(model::ObjectId human);
+std::string group_id(model::ObjectId group);
 
 }  // namespace ari_social_sim::tools

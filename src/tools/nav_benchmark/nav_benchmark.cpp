@@ -22,6 +22,7 @@
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
+#include "ari_social_sim/scenario/ari_observation.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "episodes.hpp"
 
@@ -212,7 +213,7 @@ navigation::PerceivedScene perceive(const world::Simulation& sim, double stride_
   }
   for (const auto& group : sim.groups()) {
     std::vector<navigation::PersonEstimate> members;
-    for (world::ObjectId id : group->members()) {
+    for (model::ObjectId id : group->members()) {
       if (const auto* person = scene.find_person(tools::person_id(id))) {
         members.push_back(*person);
       }
@@ -306,8 +307,8 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
   navigation::EpisodeScorer scorer(navigator.footprint(), config.mpc.personal_space,
                                    episode.exempt_people, episode.exempt_group);
   try {
-    navigator.start(episode.target, perceive(sim, stride),
-                    navigation::RobotObservation::of(*sim.ari()), sim.time_s());
+    navigator.start(episode.target, perceive(sim, stride), scenario::observe_ari(*sim.ari()),
+                    sim.time_s());
   } catch (const core::Error& e) {
     record.outcome = "rejected";
     record.reason = e.what();
@@ -335,7 +336,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
     if (sim.time_s() >= next_control_s - 1e-9) {
       next_control_s += control_period;
       const navigation::NavigatorStep step =
-          navigator.update(sim.time_s(), navigation::RobotObservation::of(*sim.ari()), scene);
+          navigator.update(sim.time_s(), scenario::observe_ari(*sim.ari()), scene);
       if (step.replanned) {
         record.solve_times_s.push_back(navigator.plan().solve_cpu_s);
         record.solve_wall_times_s.push_back(navigator.plan().solve_time_s);

@@ -1,4 +1,4 @@
-#include "ari_social_sim/world/world_file.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 
 #include <cmath>
 #include <set>
@@ -7,7 +7,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 namespace {
 
 // Ids given automatically to static objects start here, away from the small ids people give to
@@ -161,4 +161,4 @@ WorldDescription load_world_file(const std::string& path) {
   return parse_world(core::YamlMap::load_file(path));
 }
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

@@ -1,6 +1,6 @@
-#include "ari_social_sim/world/types.hpp"
+#include "ari_social_sim/model/person_attributes.hpp"
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 
 std::optional<Gender> parse_gender(const std::string& text) {
   if (text == "female")
@@ -50,4 +50,4 @@ const char* to_string(Emotion emotion) {
   return "neutral";
 }
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

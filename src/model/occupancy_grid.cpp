@@ -1,9 +1,9 @@
-#include "ari_social_sim/world/occupancy_grid.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 
 bool OccupancyGrid::cell_of(const Eigen::Vector2d& point, int& x, int& y) const {
   x = static_cast<int>(std::floor((point.x() - origin.x()) / resolution_m));
@@ -19,4 +19,4 @@ size_t OccupancyGrid::occupied_count() const {
   return static_cast<size_t>(std::count(cells.begin(), cells.end(), kOccupied));
 }
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

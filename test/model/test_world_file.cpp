@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <fstream>
 
-#include "ari_social_sim/world/world_file.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "expect_config_error.hpp"
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 namespace {
 
 // Writes `text` to a file named after the test and returns its path.
@@ -19,7 +19,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 // Loading `text` fails with a message naming the file and every fragment.
 void expect_rejected(const std::string& text, const std::vector<std::string>& fragments) {
   const std::string path = write_file("world_under_test.yaml", text);
-  test::expect_config_error([&] { load_world_file(path); }, path, fragments);
+  world::test::expect_config_error([&] { load_world_file(path); }, path, fragments);
 }
 
 constexpr const char* kHeader = "name: test\norigin: [0, 0]\nsize: [5, 5]\nobjects:\n";
@@ -114,13 +114,13 @@ TEST(WorldFile, WorldsBeyondTheDocumentedMaximaAreRefused) {
 }
 
 TEST(WorldFile, DirectoriesAndOversizedFilesAreRefusedBeforeReading) {
-  test::expect_config_error([] { load_world_file(::testing::TempDir()); }, ::testing::TempDir(),
-                            {"expected a YAML file, got a directory"});
+  world::test::expect_config_error([] { load_world_file(::testing::TempDir()); },
+                                   ::testing::TempDir(), {"expected a YAML file, got a directory"});
   // 1 MiB + 1 byte of comment: refused by its size, not parsed.
   const std::string path =
       write_file("huge_world.yaml", std::string(kHeader) + "#" + std::string(1024 * 1024, 'x'));
-  test::expect_config_error([&] { load_world_file(path); }, path,
-                            {"at most 1048576 bytes", "got 1048625 bytes"});
+  world::test::expect_config_error([&] { load_world_file(path); }, path,
+                                   {"at most 1048576 bytes", "got 1048625 bytes"});
 }
 
 TEST(WorldFile, ShippedWorldsLoad) {
@@ -133,4 +133,4 @@ TEST(WorldFile, ShippedWorldsLoad) {
 }
 
 }  // namespace
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 
 /// A 2D occupancy grid in the ROS convention: row-major from the lower-left cell at `origin`,
 /// values 0 (free), 100 (occupied), -1 (unknown).
@@ -26,4 +26,4 @@ struct OccupancyGrid {
   size_t occupied_count() const;
 };
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

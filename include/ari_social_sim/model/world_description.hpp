@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
-#include "ari_social_sim/world/types.hpp"
+#include "ari_social_sim/model/object_id.hpp"
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 
 /// Shape of a piece of static geometry. Walls are boxes drawn as walls.
 enum class ShapeType { kWall, kBox, kCircle, kPolygon };
@@ -53,4 +53,4 @@ struct WorldDescription {
   void validate() const;
 };
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

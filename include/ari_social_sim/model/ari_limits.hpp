@@ -1,10 +1,9 @@
 #pragma once
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 
-/// ARI's actuation limits (specs/algorithms.md 2.1 and specs/ari.md, PAL's mobile_base_controller
-/// and head controller). Commands outside them are clamped, as ARI's controllers do, and counted
-/// in StepDiagnostics::clamped_commands.
+/// ARI's actuation limits (ari_robot's mobile_base_controller and head controller configuration,
+/// see docs/references.md). Commands outside them are clamped, as ARI's controllers do.
 struct AriLimits {
   double max_linear_mps{1.0};
   double min_linear_mps{-0.2};
@@ -16,4 +15,4 @@ struct AriLimits {
   double cmd_vel_timeout_s{0.25};  // base stops when commands stop for this long
 };
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model

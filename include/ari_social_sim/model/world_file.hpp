@@ -3,9 +3,9 @@
 #include <string>
 
 #include "ari_social_sim/core/yaml_map.hpp"
-#include "ari_social_sim/world/world_description.hpp"
+#include "ari_social_sim/model/world_description.hpp"
 
-namespace ari_social_sim::world {
+namespace ari_social_sim::model {
 
 /// Reads a world file (format in docs/world.md):
 ///
@@ -24,4 +24,4 @@ WorldDescription load_world_file(const std::string& path);
 /// The same from an already-parsed mapping (tests and inline worlds).
 WorldDescription parse_world(const core::YamlMap& root);
 
-}  // namespace ari_social_sim::world
+}  // namespace ari_social_sim::model
