@@ -42,6 +42,16 @@ constexpr double kGcffMdl = 0.8;
 // ARI's body centre is 0.22 m behind base_footprint (model::AriFootprint).
 constexpr double kBodyCentreBehindBase = 0.22;
 
+// The navigator ends a goal within goal_tolerance (0.15 m) and yaw_tolerance (0.15 rad) of the
+// goal pose (config/social_mpc.yaml), whose heading points at the target. The heading error
+// to the target the action reports may then reach the yaw tolerance plus the bearing of the
+// largest position error seen from the final distance.
+double largest_heading_error(double final_distance_m) {
+  constexpr double kGoalTolerance_m = 0.15;
+  constexpr double kYawTolerance_rad = 0.15;
+  return kYawTolerance_rad + std::atan2(kGoalTolerance_m, final_distance_m);
+}
+
 class SocialNavigation : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -295,7 +305,7 @@ TEST_F(SocialNavigation, ApproachesAnaAndEndsFacingHerAtAComfortableDistance) {
   const ApproachResult& result = *approach_->getResult();
   // 1.1 m from base_footprint to her (goal_finder.approach_distance), within the tolerances.
   EXPECT_NEAR(result.final_distance, 1.1, 0.2);
-  EXPECT_LT(result.final_heading_error, 0.25);
+  EXPECT_LT(result.final_heading_error, largest_heading_error(result.final_distance));
   // Ground truth: ARI stands in front of her, within 35 deg of where she faces.
   WorldState truth;
   {
@@ -328,7 +338,7 @@ TEST_F(SocialNavigation, JoinsTheGroupOfThreeAndGcffPutsAriInIt) {
   // base_footprint stands 0.22 m inside the circle of radius ~0.64 m, facing the centre.
   EXPECT_GT(result.final_distance, 0.2);
   EXPECT_LT(result.final_distance, 0.8);
-  EXPECT_LT(result.final_heading_error, 0.3);
+  EXPECT_LT(result.final_heading_error, largest_heading_error(result.final_distance));
   EXPECT_GT(plan_poses_, 10u);  // the plan was published while driving
   ros::Duration(1.0).sleep();   // perception catches up with the final poses
 
