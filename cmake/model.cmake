@@ -1,5 +1,6 @@
 # model/: the vocabulary every module shares and that needs no simulator: object ids, person
-# attributes, the world description and its file, the occupancy grid, ARI's limits and footprint.
+# attributes, the world description and its file, the occupancy grid, ARI's limits and footprint,
+# perception's tracked persons and where their bodies stand.
 # The navigation core builds on it alone, so it could run on the real robot.
 add_library(ari_model
   src/model/occupancy_grid.cpp
