@@ -12,7 +12,6 @@
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/group_report.hpp"
 #include "ari_social_sim/world/human.hpp"
-#include "ari_social_sim/world/script.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "scene_builders.hpp"
 
@@ -51,13 +50,13 @@ const std::vector<std::string> kSentences = {
 };
 
 // Keeps the crowd busy during the measured steps: whoever is silent starts a new sentence, and a
-// walker that reached its goal gets another one. Runs inside Simulation::step, so the speech and
-// goal updates are part of what is timed.
-class CrowdActivity : public world::Process {
+// walker that reached its goal gets another one. Runs after every Simulation::step, within the
+// timed loop, so the speech and goal updates are part of what is timed.
+class CrowdActivity {
  public:
   CrowdActivity(double side_m, uint64_t seed) : side_m_(side_m), rng_(seed) {}
 
-  void step(const world::Simulation& simulation, const world::StepContext& context) override {
+  void step(const world::Simulation& simulation) {
     const double now_s = simulation.time_s();
     for (const std::unique_ptr<world::Human>& human : simulation.humans()) {
       if (!human->speech().is_speaking()) {
@@ -130,11 +129,22 @@ world::GazeModel gaze_at(const std::vector<ObjectId>& targets) {
   return model;
 }
 
+// The benchmark scene and what keeps it busy; one step of it is one world step and the activity.
+struct Crowd {
+  std::unique_ptr<world::Simulation> simulation;
+  CrowdActivity activity;
+
+  void step() {
+    simulation->step();
+    activity.step(*simulation);
+  }
+};
+
 // The benchmark scene: `count` humans in a square room at kAreaPerHumanM2 each (side
 // sqrt(4 N) + 2 m). Half of them stand in groups of 2-5 (the humans nearest each o-space centre)
 // and look at the other members; the rest walk between random goals and look at three random
 // people. Everyone talks without pause (CrowdActivity). Warmed up by kWarmUpSteps.
-std::unique_ptr<world::Simulation> make_crowd(size_t count, uint64_t seed) {
+Crowd make_crowd(size_t count, uint64_t seed) {
   const double side_m = std::sqrt(static_cast<double>(count) * kAreaPerHumanM2) + 2.0;
   world::SimulationConfig config;
   config.step_s = kStepS;
@@ -172,10 +182,10 @@ std::unique_ptr<world::Simulation> make_crowd(size_t count, uint64_t seed) {
   }
 
   // Walkers: a random goal each and three random other people to look at.
-  auto activity = std::make_unique<CrowdActivity>(side_m, seed + 1);
+  Crowd crowd{std::move(simulation), CrowdActivity(side_m, seed + 1)};
   for (ObjectId id : free_ids) {
-    world::Human& human = *simulation->find_human(id);
-    human.set_goal(activity->random_pose());
+    world::Human& human = *crowd.simulation->find_human(id);
+    human.set_goal(crowd.activity.random_pose());
     std::vector<ObjectId> targets;
     while (targets.size() < kGazeTargetsPerWalker) {
       const ObjectId target = ids[rng.uniform_index(ids.size())];
@@ -185,12 +195,11 @@ std::unique_ptr<world::Simulation> make_crowd(size_t count, uint64_t seed) {
     }
     human.set_gaze_model(gaze_at(targets));
   }
-  simulation->add_process(std::move(activity));
 
   for (int i = 0; i < kWarmUpSteps; ++i) {
-    simulation->step();
+    crowd.step();
   }
-  return simulation;
+  return crowd;
 }
 
 // CPU time (s) of the calling thread.
@@ -210,17 +219,17 @@ double formed_group_share(const world::Simulation& simulation) {
   return static_cast<double>(formed) / static_cast<double>(simulation.groups().size());
 }
 
-// One Simulation::step of 0.05 s: navigation, gaze, speech, physics, group scripts and the
-// CrowdActivity process. The scene is warmed up once and then keeps running (a Simulation cannot
+// One Simulation::step of 0.05 s (navigation, gaze, speech, physics, group scripts) and the
+// CrowdActivity after it. The scene is warmed up once and then keeps running (a Simulation cannot
 // be copied to restore it); after the warm-up it is in a steady state (formed groups, walkers,
 // constant talk), so consecutive steps cost alike. Items = steps.
 void BM_WorldStep(benchmark::State& state) {
   const size_t count = static_cast<size_t>(state.range(0));
-  const std::unique_ptr<world::Simulation> simulation = make_crowd(count, kSeed);
-  const double formed_at_start = formed_group_share(*simulation);
+  Crowd crowd = make_crowd(count, kSeed);
+  const double formed_at_start = formed_group_share(*crowd.simulation);
   const double start_s = thread_cpu_s();
   for (auto _ : state) {
-    simulation->step();
+    crowd.step();
   }
   // The counters come from this thread's CPU time, as Google Benchmark's CPU column does: other
   // work on the core (the machine is shared) does not inflate them. Plain values, not Benchmark

@@ -20,6 +20,7 @@ add_library(ari_navigation
   src/navigation/nlopt_solver.cpp
   src/navigation/obstacle_cost.cpp
   src/navigation/perceived_scene.cpp
+  src/navigation/perception_report.cpp
   src/navigation/scene_tracker.cpp
   src/navigation/personal_space_cost.cpp
   src/navigation/signed_distance_field.cpp
@@ -42,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
       test/navigation/test_goal_request.cpp
       test/navigation/test_navigation_config.cpp
       test/navigation/test_navigator.cpp
+      test/navigation/test_perception_report.cpp
       test/navigation/test_scene_tracker.cpp
       test/navigation/test_episode_scorer.cpp
     LIBRARIES ari_navigation ari_world)

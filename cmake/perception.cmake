@@ -26,6 +26,7 @@ add_library(ari_perception
   src/perception/perception_run_config.cpp
   src/perception/person_registry.cpp
   src/perception/pose_noise.cpp
+  src/perception/rate_gate.cpp
   src/perception/sound_map.cpp
   src/perception/speech_listener.cpp
   src/perception/track_ids.cpp
@@ -92,6 +93,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_perception_run_config.cpp
       test/perception/test_person_registry.cpp
       test/perception/test_pose_noise.cpp
+      test/perception/test_rate_gate.cpp
       test/perception/test_sound_map.cpp
       test/perception/test_speech_listener.cpp
       test/perception/test_track_ids.cpp

@@ -6,7 +6,6 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/navigation/goal_request.hpp"
-#include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/social_spaces.hpp"
 
 namespace ari_social_sim::navigation {
@@ -92,15 +91,15 @@ GoalFinder::GoalFinder(const GoalFinderConfig& config, const FootprintModel& foo
                        const PersonalSpaceParams& spaces)
     : config_(config), footprint_(footprint), spaces_(spaces) {}
 
-Goal GoalFinder::find(const NavigationTarget& target, const PerceivedScene& scene,
-                      const GridField& sdf, const core::Pose2& robot,
-                      const std::optional<Goal>& previous) const {
+GoalSearch GoalFinder::find(const NavigationTarget& target, const PerceivedScene& scene,
+                            const GridField& sdf, const core::Pose2& robot,
+                            const std::optional<Goal>& previous) const {
   if (const auto* pose = std::get_if<PoseTarget>(&target)) {
     return find_pose(*pose, sdf);
   }
   const std::string unknown = unknown_target_reason(target, scene);
   if (!unknown.empty()) {
-    throw UnknownTarget(unknown);
+    return GoalFailure{GoalFailure::Kind::kUnknownTarget, unknown};
   }
   if (const auto* person = std::get_if<PersonTarget>(&target)) {
     return find_person(*scene.find_person(person->person_id), scene, sdf, robot, previous);
@@ -160,25 +159,27 @@ core::Pose2 GoalFinder::base_for_body_centre(const Eigen::Vector2d& body_centre,
   return base;
 }
 
-Goal GoalFinder::find_pose(const PoseTarget& target, const GridField& sdf) const {
+GoalSearch GoalFinder::find_pose(const PoseTarget& target, const GridField& sdf) const {
   int x, y;
   if (!sdf.cell_of(target.pose.position, x, y)) {
-    throw GoalUnreachable("goal " + format_point(target.pose.position) +
-                          " is outside the map, which spans " + MapBounds::of(sdf).describe());
+    return GoalFailure{GoalFailure::Kind::kUnreachable,
+                       "goal " + format_point(target.pose.position) +
+                           " is outside the map, which spans " + MapBounds::of(sdf).describe()};
   }
   const PerceivedScene nobody;
   if (!is_free(target.pose, nobody, sdf, 0.0)) {
-    throw GoalUnreachable("goal " + format_point(target.pose.position) +
-                          ": ARI's footprint there overlaps a wall or furniture");
+    return GoalFailure{GoalFailure::Kind::kUnreachable,
+                       "goal " + format_point(target.pose.position) +
+                           ": ARI's footprint there overlaps a wall or furniture"};
   }
   Goal goal;
   goal.pose = target.pose;
   return goal;
 }
 
-Goal GoalFinder::find_person(const PersonEstimate& person, const PerceivedScene& scene,
-                             const GridField& sdf, const core::Pose2& robot,
-                             const std::optional<Goal>& previous) const {
+GoalSearch GoalFinder::find_person(const PersonEstimate& person, const PerceivedScene& scene,
+                                   const GridField& sdf, const core::Pose2& robot,
+                                   const std::optional<Goal>& previous) const {
   const std::vector<std::string> exempt = {person.id};
   auto place = [&](double offset, double distance) {
     const double direction = person.heading + offset;
@@ -225,13 +226,14 @@ Goal GoalFinder::find_person(const PersonEstimate& person, const PerceivedScene&
       return goal;
     }
   }
-  throw GoalUnreachable("no free place in front of person " + person.id + " at " +
-                        format_point(person.position));
+  return GoalFailure{
+      GoalFailure::Kind::kUnreachable,
+      "no free place in front of person " + person.id + " at " + format_point(person.position)};
 }
 
-Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& scene,
-                            const GridField& sdf, const core::Pose2& robot,
-                            const std::optional<Goal>& previous) const {
+GoalSearch GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& scene,
+                                  const GridField& sdf, const core::Pose2& robot,
+                                  const std::optional<Goal>& previous) const {
   std::vector<const PersonEstimate*> members;
   for (const std::string& id : group.members) {
     if (const PersonEstimate* person = scene.find_person(id)) {
@@ -304,8 +306,9 @@ Goal GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& sc
       }
     }
   }
-  throw GoalUnreachable("group " + group.id + " at " + format_point(centre) +
-                        ": no gap with room for ARI and no free place just outside it");
+  return GoalFailure{GoalFailure::Kind::kUnreachable,
+                     "group " + group.id + " at " + format_point(centre) +
+                         ": no gap with room for ARI and no free place just outside it"};
 }
 
 }  // namespace ari_social_sim::navigation

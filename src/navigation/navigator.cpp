@@ -26,6 +26,14 @@ std::string format_point(const Eigen::Vector2d& p) {
   return text;
 }
 
+// A goal that cannot be started, as the request's error (Navigator::start).
+[[noreturn]] void refuse(const GoalFailure& failure) {
+  if (failure.kind == GoalFailure::Kind::kUnknownTarget) {
+    throw UnknownTarget(failure.reason);
+  }
+  throw GoalUnreachable(failure.reason);
+}
+
 }  // namespace
 
 Navigator::Navigator(const NavigationConfig& config, const model::OccupancyGrid& map)
@@ -39,12 +47,19 @@ Navigator::Navigator(const NavigationConfig& config, const model::OccupancyGrid&
 void Navigator::start(const NavigationTarget& target, const PerceivedScene& scene,
                       const RobotObservation& robot, double time_s) {
   check_target(target);
-  Goal goal = goal_finder_.find(target, scene, sdf_, robot.pose);
+  GoalSearch search = goal_finder_.find(target, scene, sdf_, robot.pose);
+  if (const auto* failure = std::get_if<GoalFailure>(&search)) {
+    refuse(*failure);
+  }
+  Goal& goal = std::get<Goal>(search);
   std::vector<CostDisc> discs = cost_discs(scene, goal);
-  std::unique_ptr<GeodesicField> field = field_to(goal, robot.pose, discs);
+  FieldSearch field = field_to(goal, robot.pose, discs);
+  if (const auto* failure = std::get_if<GoalFailure>(&field)) {
+    refuse(*failure);
+  }
   field_discs_ = std::move(discs);
   goal_ = std::move(goal);
-  geodesic_ = std::move(field);
+  geodesic_ = std::move(std::get<std::unique_ptr<GeodesicField>>(field));
   target_ = target;
   target_members_.clear();
   follow_relabelled_group(scene);
@@ -137,28 +152,34 @@ bool Navigator::discs_changed(const std::vector<CostDisc>& discs) const {
   return false;
 }
 
-std::unique_ptr<GeodesicField> Navigator::field_to(const Goal& goal, const core::Pose2& robot,
-                                                   const std::vector<CostDisc>& discs) const {
+Navigator::FieldSearch Navigator::field_to(const Goal& goal, const core::Pose2& robot,
+                                           const std::vector<CostDisc>& discs) const {
   auto field =
       std::make_unique<GeodesicField>(sdf_, goal.pose.position, config_.navigator.geodesic, discs);
   if (!field->reachable(goal.pose.position)) {
-    throw GoalUnreachable("goal " + format_point(goal.pose.position) +
-                          " is too close to walls or furniture for ARI to reach");
+    return GoalFailure{GoalFailure::Kind::kUnreachable,
+                       "goal " + format_point(goal.pose.position) +
+                           " is too close to walls or furniture for ARI to reach"};
   }
   if (!field->reachable(robot.position)) {
-    throw GoalUnreachable("no collision-free path from ARI at " + format_point(robot.position) +
-                          " to the goal " + format_point(goal.pose.position));
+    return GoalFailure{GoalFailure::Kind::kUnreachable,
+                       "no collision-free path from ARI at " + format_point(robot.position) +
+                           " to the goal " + format_point(goal.pose.position)};
   }
   return field;
 }
 
-void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
-                           const PerceivedScene& scene) {
+std::optional<GoalFailure> Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
+                                                 const PerceivedScene& scene) {
   std::vector<CostDisc> discs = cost_discs(scene, goal);
   if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m ||
       discs_changed(discs)) {
     const double distance_before = geodesic_->cost(robot.position);
-    geodesic_ = field_to(goal, robot, discs);
+    FieldSearch field = field_to(goal, robot, discs);
+    if (auto* failure = std::get_if<GoalFailure>(&field)) {
+      return std::move(*failure);
+    }
+    geodesic_ = std::move(std::get<std::unique_ptr<GeodesicField>>(field));
     field_discs_ = std::move(discs);
     // The progress watchdog's best distance moves with the field, by as much as ARI's own
     // distance just did: a goal that moved away (to another gap, with a group perception now
@@ -168,6 +189,32 @@ void Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
     best_distance_m_ += geodesic_->cost(robot.position) - distance_before;
   }
   goal_ = goal;
+  return std::nullopt;
+}
+
+std::optional<GoalFailure> Navigator::follow_target(double time_s, const core::Pose2& robot,
+                                                    const PerceivedScene& scene) {
+  GoalSearch search = goal_finder_.find(*target_, scene, sdf_, robot, goal_);
+  if (auto* failure = std::get_if<GoalFailure>(&search)) {
+    return std::move(*failure);
+  }
+  const Goal& found = std::get<Goal>(search);
+  target_seen_s_ = time_s;
+  // A goal that jumps (another gap, another side of the person) must hold for a while before
+  // ARI follows it: perception's noise can make a group look different for a frame or two.
+  const bool jumped = (found.pose.position - goal_->pose.position).norm() >
+                      config_.navigator.goal_switch_distance_m;
+  if (!jumped) {
+    jump_since_s_.reset();
+    return adopt_goal(found, robot, scene);
+  }
+  if (!jump_since_s_) {
+    jump_since_s_ = time_s;
+  } else if (time_s - *jump_since_s_ >= config_.navigator.goal_switch_time_s) {
+    jump_since_s_.reset();
+    return adopt_goal(found, robot, scene);
+  }
+  return std::nullopt;
 }
 
 NavigatorStep Navigator::finish(NavigationState state, const std::string& reason) {
@@ -192,38 +239,22 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
 
   // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
   follow_relabelled_group(scene);
-  bool target_visible = true;
-  try {
-    const Goal found = goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_);
-    target_seen_s_ = time_s;
-    // A goal that jumps (another gap, another side of the person) must hold for a while before
-    // ARI follows it: perception's noise can make a group look different for a frame or two.
-    const bool jumped = (found.pose.position - goal_->pose.position).norm() >
-                        config_.navigator.goal_switch_distance_m;
-    if (!jumped) {
-      jump_since_s_.reset();
-      adopt_goal(found, robot.pose, scene);
-    } else if (!jump_since_s_) {
-      jump_since_s_ = time_s;
-    } else if (time_s - *jump_since_s_ >= config_.navigator.goal_switch_time_s) {
-      jump_since_s_.reset();
-      adopt_goal(found, robot.pose, scene);
-    }
-  } catch (const UnknownTarget& e) {
-    target_visible = false;
-    if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
+  const std::optional<GoalFailure> failure = follow_target(time_s, robot.pose, scene);
+  const bool target_visible = !failure;
+  if (failure) {
+    const double unseen_s = time_s - target_seen_s_;
+    const bool lost = unseen_s > config_.navigator.target_lost_timeout_s;
+    if (failure->kind == GoalFailure::Kind::kUnknownTarget && lost) {
       return finish(NavigationState::kAborted, describe(*target_) + " lost for " +
-                                                   format_seconds(time_s - target_seen_s_) + " (" +
-                                                   e.what() + ")");
+                                                   format_seconds(unseen_s) + " (" +
+                                                   failure->reason + ")");
     }
-  } catch (const GoalUnreachable& e) {
     // A pose stays unreachable; a person or group may make room again (or perception may have
     // misjudged them for a moment): keep the last goal up to the lost-target timeout.
-    if (std::holds_alternative<PoseTarget>(*target_) ||
-        time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
-      return finish(NavigationState::kAborted, e.what());
+    if (failure->kind == GoalFailure::Kind::kUnreachable &&
+        (std::holds_alternative<PoseTarget>(*target_) || lost)) {
+      return finish(NavigationState::kAborted, failure->reason);
     }
-    target_visible = false;
   }
 
   // Arrival, judged on base_footprint against the goal pose.

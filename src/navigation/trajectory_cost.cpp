@@ -77,12 +77,4 @@ std::vector<TermCost> TrajectoryCost::breakdown(const Eigen::VectorXd& controls)
   return costs;
 }
 
-std::vector<std::string> TrajectoryCost::term_names() const {
-  std::vector<std::string> names;
-  for (const auto& term : terms_) {
-    names.emplace_back(term->name());
-  }
-  return names;
-}
-
 }  // namespace ari_social_sim::navigation

@@ -5,25 +5,21 @@
 
 #include <ros/package.h>
 #include <ros/ros.h>
-#include <std_msgs/String.h>
-#include <tf2/utils.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "ari_social_sim/Group.h"
-#include "ari_social_sim/IdsList.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/model/tracked_person.hpp"
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "conversions/group_markers.hpp"
 #include "conversions/hri_messages.hpp"
-#include "hri_ids.hpp"
-#include "per_id_handle.hpp"
+#include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
@@ -42,49 +38,26 @@ class GroupDetectionNode {
  public:
   GroupDetectionNode(const perception::GroupDetectionRunConfig& run,
                      const perception::GroupConfig& config)
-      : run_(run), groups_(config) {
+      : run_(run), groups_(config), persons_(nh_, kForgetPersonAfter_s) {
     groups_pub_ = nh_.advertise<Group>("/humans/interactions/groups", 20);
     markers_ = private_nh_.advertise<visualization_msgs::MarkerArray>("markers", 1);
-    tracked_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &GroupDetectionNode::on_tracked,
-                                 this, ros::TransportHints().tcpNoDelay());
     timer_ = nh_.createTimer(ros::Duration(1.0 / run_.rate_hz), &GroupDetectionNode::detect, this);
   }
 
  private:
-  struct Person {
-    ros::Subscriber body_id_sub;
-    std::string body_id;  // Empty until the latched body_id arrives, or while no body is matched.
-    double last_tracked_s{0.0};
-  };
-
-  // The persons tracked now. A person manager may send the list only when it changes
-  // (hri_person_manager does), so detection runs on the timer with the latest list.
-  void on_tracked(const IdsList::ConstPtr& msg) {
-    // An unstamped list has no time of its own: its arrival time stands in for it.
-    const double time_s =
-        (msg->header.stamp.isZero() ? ros::Time::now() : msg->header.stamp).toSec();
-    if (last_list_s_ && time_s < *last_list_s_) {
+  // Detection runs on the timer with the latest tracked list: a person manager may send the list
+  // only when it changes (hri_person_manager does).
+  void detect(const ros::TimerEvent&) {
+    tf_.renew_if_stale();
+    const std::optional<double> list_s = persons_.list_time_s();
+    if (!list_s) {
+      return;  // nobody has said who is tracked yet
+    }
+    if (last_list_s_ && *list_s < *last_list_s_) {
       // Time went backwards (a world reset, a bag looping): who stood with whom before is void.
       groups_.clear();
     }
-    last_list_s_ = time_s;
-    tracked_.clear();
-    for (const std::string& id : msg->ids) {
-      if (is_valid_hri_id(id)) {
-        tracked_.push_back(id);
-      } else {
-        ROS_WARN_THROTTLE(5.0, "/humans/persons/tracked: left out the id '%s', no ROS name",
-                          id.c_str());
-      }
-    }
-    follow(tracked_, time_s);
-  }
-
-  void detect(const ros::TimerEvent&) {
-    tf_.renew_if_stale();
-    if (!last_list_s_) {
-      return;  // nobody has said who is tracked yet
-    }
+    last_list_s_ = list_s;
     const ros::Time now = ros::Time::now();
     // A timer that fell behind (a busy machine) fires twice at the same sim time: the world has
     // not moved in between, and a second report with the same stamp would only repeat the first.
@@ -93,59 +66,29 @@ class GroupDetectionNode {
       return;
     }
     last_detection_ = now;
-    groups_.update(candidates(tracked_, now), detected_);
+    groups_.update(candidates(now), detected_);
     publish(now);
   }
 
-  // Subscribes to the latched body id of each person that appears; drops those gone for
-  // kForgetPersonAfter_s (or seen "later" than now, after time went backwards).
-  void follow(const std::vector<std::string>& tracked, double now_s) {
-    for (const std::string& id : tracked) {
-      auto [it, is_new] = persons_.try_emplace(id);
-      if (is_new) {
-        it->second.body_id_sub = per_id_handle(nh_).subscribe<std_msgs::String>(
-            "/humans/persons/" + id + "/body_id", 1,
-            [this, id](const std_msgs::String::ConstPtr& body) {
-              const auto person = persons_.find(id);
-              if (person != persons_.end()) {
-                person->second.body_id = body->data;
-              }
-            });
+  // Each tracked person at their body frame in the reference frame, in the list's order
+  // (model::place_at_bodies: GCFF needs the body's facing, which a face or voice frame does not
+  // give). Also left out: a person whose body frame tf cannot place yet (its first transform still
+  // on the way), and one whose body frame has not moved on for kStaleBodyFrame_s (static frames,
+  // stamped 0, never go stale).
+  std::vector<perception::GcffPerson> candidates(const ros::Time& now) const {
+    const auto locate_body = [&](const std::string& body_id) {
+      std::optional<model::BodyPlacement> body =
+          body_placement(tf_.buffer(), run_.reference_frame, body_id);
+      if (body && body->stamp_s != 0.0 && now.toSec() - body->stamp_s > kStaleBodyFrame_s) {
+        body.reset();
       }
-      it->second.last_tracked_s = now_s;
-    }
-    for (auto it = persons_.begin(); it != persons_.end();) {
-      const double since_s = now_s - it->second.last_tracked_s;
-      it = since_s > kForgetPersonAfter_s || since_s < 0.0 ? persons_.erase(it) : std::next(it);
-    }
-  }
-
-  // Each tracked person at their body frame in the reference frame, in the list's order: the
-  // translation, and the yaw of the frame's x axis, which REP-155 points where the body faces.
-  // Left out: a person without a body (only a face or a voice is tracked, or the body is not
-  // matched yet), since GCFF needs the body's facing and a face or voice frame gives none; one
-  // whose body frame tf cannot place yet (its first transform still on the way); and one whose
-  // body frame has not moved on for kStaleBodyFrame_s (static frames, stamped 0, never go stale).
-  std::vector<perception::GcffPerson> candidates(const std::vector<std::string>& tracked,
-                                                 const ros::Time& now) const {
+      return body;
+    };
     std::vector<perception::GcffPerson> people;
-    for (const std::string& id : tracked) {
-      const auto person = persons_.find(id);
-      if (person == persons_.end() || person->second.body_id.empty()) {
-        continue;
-      }
-      geometry_msgs::TransformStamped t;
-      try {
-        t = tf_.buffer().lookupTransform(run_.reference_frame, body_frame(person->second.body_id),
-                                         ros::Time(0));
-      } catch (const tf2::TransformException&) {
-        continue;
-      }
-      if (!t.header.stamp.isZero() && (now - t.header.stamp).toSec() > kStaleBodyFrame_s) {
-        continue;
-      }
-      people.push_back({id, t.transform.translation.x, t.transform.translation.y,
-                        tf2::getYaw(t.transform.rotation)});
+    for (const model::PlacedPerson& person :
+         model::place_at_bodies(persons_.tracked(), locate_body)) {
+      people.push_back({person.person_id, person.pose.position.x(), person.pose.position.y(),
+                        person.pose.theta});
     }
     return people;
   }
@@ -162,19 +105,16 @@ class GroupDetectionNode {
     }
   }
 
+  ros::NodeHandle nh_;
+  ros::NodeHandle private_nh_{"~"};
   perception::GroupDetectionRunConfig run_;
   perception::GroupPerception groups_;
   std::vector<perception::PerceivedGroup> detected_;
-  std::vector<std::string> tracked_;
-  std::optional<double> last_list_s_;
+  std::optional<double> last_list_s_;  // of the list the last detection ran on
   ros::Time last_detection_;
-  std::map<std::string, Person> persons_;
-
-  ros::NodeHandle nh_;
-  ros::NodeHandle private_nh_{"~"};
+  PerceivedPersons persons_;
   RenewingTfBuffer tf_;
   ros::Publisher groups_pub_, markers_;
-  ros::Subscriber tracked_sub_;
   ros::Timer timer_;
 };
 

@@ -23,6 +23,7 @@
 #include "ari_social_sim/perception/per_id_store.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
 #include "ari_social_sim/perception/perception_run_config.hpp"
+#include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
 #include "conversions/hri_messages.hpp"
 #include "conversions/perception_markers.hpp"
@@ -97,6 +98,7 @@ class HriPerceptionNode {
                     std::optional<model::OccupancyGrid> sound_map)
       : run_(run),
         pipeline_(config),
+        rate_gate_(run.max_rate_hz),
         matcher_(pipeline_.config().matchers,
                  core::Rng::for_stream(pipeline_.config().seed, kMatcherStream)),
         bodies_([this](const std::string& id) { return advertise_body(id); }),
@@ -198,13 +200,9 @@ class HriPerceptionNode {
       ROS_WARN_THROTTLE(5.0, "hri_perception_node: waiting for /map before perceiving");
       return;
     }
-    const double time_s = msg->header.stamp.toSec();
-    // A small tolerance, so that a world stepping at exactly max_rate is not thinned out.
-    const double period_s = 1.0 / run_.max_rate_hz;
-    if (last_time_s_ && time_s >= *last_time_s_ && time_s - *last_time_s_ < 0.999 * period_s) {
+    if (!rate_gate_.take(msg->header.stamp.toSec())) {
       return;
     }
-    last_time_s_ = time_s;
     const perception::PerceptionFrame& frame = pipeline_.update(from_msg(*msg));
     publish(frame, msg->header.stamp);
   }
@@ -314,9 +312,9 @@ class HriPerceptionNode {
 
   perception::PerceptionRunConfig run_;
   perception::PerceptionPipeline pipeline_;
+  perception::RateGate rate_gate_;
   perception::CandidateMatcher matcher_;  ///< Detectors mode only.
   bool has_map_{false};
-  std::optional<double> last_time_s_;
   ros::WallTime last_markers_;
 
   ros::NodeHandle nh_;

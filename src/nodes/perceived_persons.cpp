@@ -3,8 +3,6 @@
 #include <std_msgs/String.h>
 #include <tf2/utils.h>
 
-#include <optional>
-
 #include "conversions/hri_messages.hpp"
 #include "frames.hpp"
 #include "hri_ids.hpp"
@@ -13,52 +11,72 @@
 namespace ari_social_sim::nodes {
 namespace {
 
-// The latest transform map -> `frame`, or nothing when tf does not have it.
-std::optional<geometry_msgs::TransformStamped> latest_in_map(const tf2_ros::Buffer& tf,
-                                                             const std::string& frame) {
+// The latest transform `target` -> `frame`, or nothing when tf does not have it.
+std::optional<geometry_msgs::TransformStamped> latest(const tf2_ros::Buffer& tf,
+                                                      const std::string& target,
+                                                      const std::string& frame) {
   try {
-    return tf.lookupTransform(kMapFrame, frame, ros::Time(0));
+    return tf.lookupTransform(target, frame, ros::Time(0));
   } catch (const tf2::TransformException&) {
     return std::nullopt;
   }
 }
 
+core::Pose2 planar_pose(const geometry_msgs::TransformStamped& t) {
+  return {{t.transform.translation.x, t.transform.translation.y},
+          tf2::getYaw(t.transform.rotation)};
+}
+
 }  // namespace
+
+std::optional<model::BodyPlacement> body_placement(const tf2_ros::Buffer& tf,
+                                                   const std::string& frame,
+                                                   const std::string& body_id) {
+  const std::optional<geometry_msgs::TransformStamped> t = latest(tf, frame, body_frame(body_id));
+  if (!t) {
+    return std::nullopt;
+  }
+  return model::BodyPlacement{t->header.stamp.toSec(), planar_pose(*t)};
+}
 
 PerceivedPersons::PerceivedPersons(const ros::NodeHandle& nh, double forget_after_s)
     : nh_(nh), forget_after_s_(forget_after_s) {
-  tracked_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &PerceivedPersons::on_tracked, this);
+  tracked_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &PerceivedPersons::on_tracked, this,
+                               ros::TransportHints().tcpNoDelay());
 }
 
-std::vector<PerceivedPersons::Placed> PerceivedPersons::place(const tf2_ros::Buffer& tf,
-                                                              bool or_person_frame) const {
-  std::vector<Placed> placed;
+std::vector<model::TrackedPerson> PerceivedPersons::tracked() const {
+  std::vector<model::TrackedPerson> persons;
+  persons.reserve(tracked_.size());
   for (const std::string& id : tracked_) {
     const auto followed = followed_.find(id);
-    const bool has_body = followed != followed_.end() && !followed->second.body_id.empty();
-    bool from_body = true;
+    persons.push_back({id, followed == followed_.end() ? "" : followed->second.body_id});
+  }
+  return persons;
+}
+
+std::vector<PerceivedPersons::Placed> PerceivedPersons::place(const tf2_ros::Buffer& tf) const {
+  std::vector<Placed> placed;
+  for (const model::TrackedPerson& person : tracked()) {
     std::optional<geometry_msgs::TransformStamped> t;
-    if (has_body) {
-      t = latest_in_map(tf, body_frame(followed->second.body_id));
+    if (!person.body_id.empty()) {
+      t = latest(tf, kMapFrame, body_frame(person.body_id));
     }
-    if (!t && or_person_frame) {
-      t = latest_in_map(tf, person_frame(id));
-      from_body = false;
-    }
+    const bool from_body = t.has_value();
     if (!t) {
-      continue;
+      t = latest(tf, kMapFrame, person_frame(person.person_id));
     }
-    placed.push_back({id,
-                      t->header.stamp.toSec(),
-                      {{t->transform.translation.x, t->transform.translation.y},
-                       tf2::getYaw(t->transform.rotation)},
-                      from_body});
+    if (t) {
+      placed.push_back({person.person_id, t->header.stamp.toSec(), planar_pose(*t), from_body});
+    }
   }
   return placed;
 }
 
 void PerceivedPersons::on_tracked(const IdsList& msg) {
-  const ros::Time now = ros::Time::now();
+  // An unstamped list has no time of its own: its arrival time stands in for it.
+  const double now_s = (msg.header.stamp.isZero() ? ros::Time::now() : msg.header.stamp).toSec();
+  list_time_s_ = now_s;
   tracked_.clear();
   for (const std::string& id : msg.ids) {
     if (is_valid_hri_id(id)) {
@@ -69,10 +87,9 @@ void PerceivedPersons::on_tracked(const IdsList& msg) {
     }
   }
   for (const std::string& id : tracked_) {
-    Followed& followed = followed_[id];
-    followed.last_tracked = now;
-    if (!followed.body_id_sub) {
-      followed.body_id_sub = per_id_handle(nh_).subscribe<std_msgs::String>(
+    auto [followed, is_new] = followed_.try_emplace(id);
+    if (is_new) {
+      followed->second.body_id_sub = per_id_handle(nh_).subscribe<std_msgs::String>(
           "/humans/persons/" + id + "/body_id", 1, [this, id](const std_msgs::String::ConstPtr& b) {
             const auto person = followed_.find(id);
             if (person != followed_.end()) {
@@ -80,9 +97,11 @@ void PerceivedPersons::on_tracked(const IdsList& msg) {
             }
           });
     }
+    followed->second.last_tracked_s = now_s;
   }
   for (auto person = followed_.begin(); person != followed_.end();) {
-    const bool gone = (now - person->second.last_tracked).toSec() > forget_after_s_;
+    const double since_s = now_s - person->second.last_tracked_s;
+    const bool gone = since_s > forget_after_s_ || since_s < 0.0;
     person = gone ? followed_.erase(person) : std::next(person);
   }
 }

@@ -4,20 +4,29 @@
 #include <tf2_ros/buffer.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ari_social_sim/IdsList.h"
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/tracked_person.hpp"
 
 namespace ari_social_sim::nodes {
 
-/// Who ROS4HRI perception tracks and where, for the nodes that act on perceived people
-/// (social_mpc_node, scenario_node): follows /humans/persons/tracked and each tracked person's
-/// latched /humans/persons/<id>/body_id, and places persons with tf. A person who has been out of
-/// the tracked list for `forget_after_s` of ROS time is dropped with its subscription, so that
-/// memory grows with who is around, not with everyone ever seen; one who comes back is followed
-/// again (body_id is latched). Captures `this` in callbacks: not copyable or movable.
+/// Where tf last placed body_<body_id> in `frame`, or nothing when it cannot place it (yet).
+std::optional<model::BodyPlacement> body_placement(const tf2_ros::Buffer& tf,
+                                                   const std::string& frame,
+                                                   const std::string& body_id);
+
+/// Who ROS4HRI perception tracks, for the nodes that act on perceived people (social_mpc_node,
+/// group_detection_node, scenario_node): follows /humans/persons/tracked and each tracked person's
+/// latched /humans/persons/<id>/body_id. A person who has been out of the tracked list for
+/// `forget_after_s` of the lists' time (their stamps; an unstamped list's arrival time) is dropped
+/// with its subscription, and so is one last listed "later" than a new list (time went
+/// backwards: a world reset, a bag looping), so that memory grows with who is around, not with
+/// everyone ever seen; one who comes back is followed again (body_id is latched). Captures `this`
+/// in callbacks: not copyable or movable.
 class PerceivedPersons {
  public:
   /// A tracked person placed in the map frame.
@@ -32,16 +41,22 @@ class PerceivedPersons {
   PerceivedPersons(const PerceivedPersons&) = delete;
   PerceivedPersons& operator=(const PerceivedPersons&) = delete;
 
-  /// Each tracked person at the latest transform map -> body_<body id>; with `or_person_frame`,
-  /// one without a body, or whose body frame tf does not have, at map -> person_<id>. Persons tf
-  /// cannot place are left out.
-  std::vector<Placed> place(const tf2_ros::Buffer& tf, bool or_person_frame) const;
+  /// The last /humans/persons/tracked, in its order, each with their latest body id ("" while
+  /// none has arrived or none is matched).
+  std::vector<model::TrackedPerson> tracked() const;
+  /// The time of the last /humans/persons/tracked; nothing before the first.
+  const std::optional<double>& list_time_s() const { return list_time_s_; }
+  /// Each tracked person at the latest transform map -> body_<body id>, or, for one without a
+  /// body or whose body frame tf does not have, at map -> person_<id>. Persons tf cannot place
+  /// are left out. (Social navigation and group detection need the body's facing:
+  /// model::place_at_bodies.)
+  std::vector<Placed> place(const tf2_ros::Buffer& tf) const;
 
  private:
   struct Followed {
     ros::Subscriber body_id_sub;
     std::string body_id;  // empty while the person has no body
-    ros::Time last_tracked;
+    double last_tracked_s{0.0};
   };
 
   void on_tracked(const IdsList& msg);
@@ -50,6 +65,7 @@ class PerceivedPersons {
   double forget_after_s_;
   ros::Subscriber tracked_sub_;
   std::vector<std::string> tracked_;  // the last /humans/persons/tracked
+  std::optional<double> list_time_s_;
   std::map<std::string, Followed> followed_;
 };
 

@@ -453,8 +453,7 @@ class ScenarioNode {
   // Where perception's tracked persons are now: at their body, else at their person frame.
   std::vector<scenario::PersonSighting> sightings() const {
     std::vector<scenario::PersonSighting> sightings;
-    for (const PerceivedPersons::Placed& person :
-         persons_->place(tf_->buffer(), /*or_person_frame=*/true)) {
+    for (const PerceivedPersons::Placed& person : persons_->place(tf_->buffer())) {
       sightings.push_back({person.person_id, person.X_map_frame.position, person.from_body});
     }
     return sightings;

@@ -29,6 +29,7 @@
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
+#include "ari_social_sim/navigation/perception_report.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
 #include "conversions/navigation_msgs.hpp"
 #include "conversions/world_state.hpp"
@@ -135,19 +136,22 @@ class SocialMpcNode {
     }
   }
 
+  // Kept for the next cycle, which observes them with the persons (observe_perception).
   void on_group(const Group& msg) {
-    tracker_.observe_group(msg.group_id, msg.header.stamp.toSec(), msg.members);
+    received_groups_.push_back({msg.group_id, msg.header.stamp.toSec(), msg.members});
   }
 
-  // Each tracked person's pose in the map from their body frame (x = the body's facing). A person
-  // without a body (heard, or not yet matched) is left out: the person frame has a position but
-  // no meaningful orientation (REP-155), and the planner needs both.
-  void observe_people() {
-    for (const PerceivedPersons::Placed& person :
-         persons_.place(tf_.buffer(), /*or_person_frame=*/false)) {
-      tracker_.observe_person(person.person_id, person.stamp_s, person.X_map_frame.position,
-                              person.X_map_frame.theta);
-    }
+  // What perception reported since the last call into the tracker (navigation::observe): the
+  // persons tracked now, each at their body frame in the map from tf, and the groups received.
+  void observe_perception() {
+    navigation::PerceptionReport report{persons_.tracked(), std::move(received_groups_)};
+    received_groups_.clear();
+    navigation::observe(
+        tracker_, report,
+        [this](const std::string& body_id) {
+          return body_placement(tf_.buffer(), kMapFrame, body_id);
+        },
+        ros::Time::now().toSec());
   }
 
   std::optional<navigation::RobotObservation> observe_robot() const {
@@ -178,7 +182,7 @@ class SocialMpcNode {
       throw core::RequestError(std::string("no transform from ") + kMapFrame + " to " + kBaseFrame +
                                " yet");
     }
-    observe_people();
+    observe_perception();
     const double now = ros::Time::now().toSec();
     navigator_->start(target, tracker_.scene(now), *robot, now);
   }
@@ -310,7 +314,7 @@ class SocialMpcNode {
       reject(waiting_->handle, "preempted by a new goal before its target was perceived");
     }
     waiting_ = WaitingApproach{handle, *target, ros::Time::now().toSec() + kTargetWait_s};
-    observe_people();
+    observe_perception();
     start_waiting_approach();
   }
 
@@ -411,8 +415,7 @@ class SocialMpcNode {
     tf_.renew_if_stale();
     // People are followed all the time, so that a goal naming someone finds them known already;
     // those perception stopped reporting are let go.
-    observe_people();
-    tracker_.forget(ros::Time::now().toSec());
+    observe_perception();
     if (waiting_) {
       start_waiting_approach();
     }
@@ -507,6 +510,7 @@ class SocialMpcNode {
     double until_s{0.0};
   };
   std::optional<WaitingApproach> waiting_;
+  std::vector<navigation::ReportedGroup> received_groups_;  // since the last observe_perception
   double linear_mps_{0.0}, angular_rps_{0.0}, pan_rad_{0.0}, pan_rps_{0.0};
   std::string last_status_;
 

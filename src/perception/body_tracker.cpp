@@ -38,7 +38,6 @@ void BodyTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     body.body_id = *body_id;
     body.distance_m = camera.distance_to(human.pose.position);
     body.X_map_body = perturb_pose(config_.body_errors.pose, human.pose, body.distance_m, rng_);
-    body.velocity_mps = human.velocity_mps;
     body.visible_fraction = visible;
     body.roi = fisheye_region(camera, camera_config.z_m, body.X_map_body.position,
                               config_.occlusion.person_radius_m,

@@ -126,6 +126,7 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
       seed_(seed),
       config_(config),
       perception_(seeded(config.perception, seed)),
+      perception_gate_(config.perception_max_rate_hz),
       group_detection_(perception_.config().groups),
       dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
       runner_(scenario, seed, config.dialogue.get()) {
@@ -165,17 +166,14 @@ void Episode::step() {
   metrics_.observe(observations_);
 }
 
-// As hri_perception_node: every world state unless closer than its maximum rate to the last one;
-// then as group_detection_node on the persons hri_perception_node tracked in that frame (the
-// live node runs on each /humans/persons/tracked, at most at the same rate).
+// As hri_perception_node: the world states its ~max_rate gate (RateGate) takes; then as
+// group_detection_node on the persons hri_perception_node tracked in that frame (the live node runs
+// on each /humans/persons/tracked, at most at the same rate).
 void Episode::perceive() {
   perceived_ = nullptr;
-  const double time_s = observations_.world.time_s;
-  const double period_s = 1.0 / config_.perception_max_rate_hz;
-  if (last_perceived_s_ && time_s - *last_perceived_s_ < 0.999 * period_s) {
+  if (!perception_gate_.take(observations_.world.time_s)) {
     return;
   }
-  last_perceived_s_ = time_s;
   perceived_ = &perception_.update(observations_.world);
   group_detection_.update(perception::group_candidates_of(*perceived_), groups_);
   identify();

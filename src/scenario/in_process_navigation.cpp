@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/navigation/perception_report.hpp"
 #include "ari_social_sim/scenario/ari_observation.hpp"
 
 namespace ari_social_sim::scenario {
@@ -14,24 +15,28 @@ InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& con
 
 void InProcessNavigation::observe(const perception::PerceptionFrame& frame,
                                   const std::vector<perception::PerceivedGroup>& groups) {
-  // As social_mpc_node: a tracked person is placed at their body's frame; one without a body
-  // (heard, or not yet matched) is left out, as the planner needs a facing direction.
+  // As social_mpc_node, with the frame in place of /humans/persons/tracked, the persons' body_id
+  // and the body_<id> frames, and the groups group detection found in it.
+  navigation::PerceptionReport report;
   for (const perception::PersonReport& person : frame.persons) {
-    if (!person.tracked || person.body_id.empty()) {
-      continue;
-    }
-    const auto body = std::find_if(
-        frame.bodies.begin(), frame.bodies.end(),
-        [&](const perception::PerceivedBody& b) { return b.body_id == person.body_id; });
-    if (body != frame.bodies.end()) {
-      tracker_.observe_person(person.person_id, frame.time_s, body->X_map_body.position,
-                              body->X_map_body.theta);
+    if (person.tracked) {
+      report.persons.push_back({person.person_id, person.body_id});
     }
   }
   for (const perception::PerceivedGroup& group : groups) {
-    tracker_.observe_group(group.group_id, frame.time_s, group.members);
+    report.groups.push_back({group.group_id, frame.time_s, group.members});
   }
-  tracker_.forget(frame.time_s);
+  const auto locate_body = [&frame](const std::string& body_id) {
+    std::optional<model::BodyPlacement> placement;
+    const auto body =
+        std::find_if(frame.bodies.begin(), frame.bodies.end(),
+                     [&](const perception::PerceivedBody& b) { return b.body_id == body_id; });
+    if (body != frame.bodies.end()) {
+      placement = model::BodyPlacement{frame.time_s, body->X_map_body};
+    }
+    return placement;
+  };
+  navigation::observe(tracker_, report, locate_body, frame.time_s);
 }
 
 void InProcessNavigation::start(const navigation::NavigationTarget& target) {

@@ -472,10 +472,6 @@ void Simulation::set_pose(model::ObjectId id, const core::Pose2& pose) {
   }
 }
 
-void Simulation::add_process(std::unique_ptr<Process> process) {
-  processes_.push_back(std::move(process));
-}
-
 void Simulation::command_ari_twist(double linear_mps, double angular_rps) {
   if (!ari_) {
     throw core::RequestError("the world has no ARI");
@@ -603,14 +599,11 @@ void Simulation::step() {
     ari_->step_components(ComponentPhase::kSensor, context);
   }
 
-  // 4. Scripts, then processes.
+  // 4. Scripts.
   for (const std::unique_ptr<GroupNavigation>& group : groups_) {
     group->step(context);
   }
   ++step_count_;
-  for (const std::unique_ptr<Process>& process : processes_) {
-    process->step(*this, context);
-  }
 }
 
 }  // namespace ari_social_sim::world

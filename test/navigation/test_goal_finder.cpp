@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "ari_social_sim/navigation/goal_finder.hpp"
-#include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "navigation_fixtures.hpp"
 
 namespace ari_social_sim::navigation {
@@ -38,9 +37,25 @@ class GoalFinderTest : public ::testing::Test {
     scene_.groups.push_back(group);
   }
 
+  // The goal found; a failure fails the test (and gives a default goal).
   Goal find(const NavigationTarget& target, const core::Pose2& robot = test::pose(1, 1, 0),
             const std::optional<Goal>& previous = std::nullopt) {
-    return finder_.find(target, scene_, sdf_, robot, previous);
+    GoalSearch search = finder_.find(target, scene_, sdf_, robot, previous);
+    if (const auto* failure = std::get_if<GoalFailure>(&search)) {
+      ADD_FAILURE() << "no goal for " << describe(target) << ": " << failure->reason;
+      return {};
+    }
+    return std::get<Goal>(std::move(search));
+  }
+
+  // Why there is no goal; a goal fails the test (and gives an empty failure).
+  GoalFailure failure(const NavigationTarget& target) {
+    const GoalSearch search = finder_.find(target, scene_, sdf_, test::pose(1, 1, 0));
+    if (const auto* failure = std::get_if<GoalFailure>(&search)) {
+      return *failure;
+    }
+    ADD_FAILURE() << "found a goal for " << describe(target);
+    return {};
   }
 
   GridField sdf_;
@@ -55,22 +70,16 @@ TEST_F(GoalFinderTest, PoseGoalIsThePoseUnlessTheFootprintHitsSomething) {
   EXPECT_FALSE(goal.look_at);
   // Facing the west wall (inner face x = 0.05) from 0.2 m: the front is clear, but the body
   // behind base_footprint reaches x = 0.8... facing east from x = 0.3 puts the rear in the wall.
-  try {
-    find(PoseTarget{test::pose(0.3, 4.0, 0.0)});
-    FAIL() << "accepted a goal whose footprint is in the wall";
-  } catch (const GoalUnreachable& e) {
-    EXPECT_NE(std::string(e.what()).find("overlaps a wall or furniture"), std::string::npos);
-  }
-  try {
-    find(PoseTarget{test::pose(20.0, 4.0, 0.0)});
-    FAIL() << "accepted a goal off the map";
-  } catch (const GoalUnreachable& e) {
-    // room_map(8.0): the 8 m room's walls and margin, from -0.2 to 8.2 m.
-    EXPECT_NE(std::string(e.what()).find("(20.00, 4.00) is outside the map, which spans x [-0.20, "
-                                         "8.20] and y [-0.20, 8.20]"),
-              std::string::npos)
-        << e.what();
-  }
+  const GoalFailure in_wall = failure(PoseTarget{test::pose(0.3, 4.0, 0.0)});
+  EXPECT_EQ(in_wall.kind, GoalFailure::Kind::kUnreachable);
+  EXPECT_NE(in_wall.reason.find("overlaps a wall or furniture"), std::string::npos);
+  const GoalFailure off_map = failure(PoseTarget{test::pose(20.0, 4.0, 0.0)});
+  EXPECT_EQ(off_map.kind, GoalFailure::Kind::kUnreachable);
+  // room_map(8.0): the 8 m room's walls and margin, from -0.2 to 8.2 m.
+  EXPECT_NE(off_map.reason.find("(20.00, 4.00) is outside the map, which spans x [-0.20, "
+                                "8.20] and y [-0.20, 8.20]"),
+            std::string::npos)
+      << off_map.reason;
 }
 
 TEST_F(GoalFinderTest, PersonIsApproachedFromTheFrontAtTheComfortableDistance) {
@@ -176,16 +185,11 @@ TEST_F(GoalFinderTest, UnknownIdsAndCrowdedPlacesAreRefusedWithAReason) {
   add_group("g1", {4.0, 4.0}, 0.64, {90, 180, 270}, 10);
   scene_.people.push_back(test::person("human20", 6.5, 6.5, 0.0));
   auto expect = [&](const NavigationTarget& target, const std::string& text, bool unknown) {
-    try {
-      find(target);
-      FAIL() << "found a goal for " << describe(target);
-    } catch (const UnknownTarget& e) {
-      EXPECT_TRUE(unknown) << e.what();
-      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-    } catch (const GoalUnreachable& e) {
-      EXPECT_FALSE(unknown) << e.what();
-      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-    }
+    const GoalFailure refused = failure(target);
+    EXPECT_EQ(refused.kind,
+              unknown ? GoalFailure::Kind::kUnknownTarget : GoalFailure::Kind::kUnreachable)
+        << refused.reason;
+    EXPECT_NE(refused.reason.find(text), std::string::npos) << refused.reason;
   };
   expect(PersonTarget{"human99"}, "person human99 is not tracked", true);
   expect(GroupTarget{"g7"}, "group g7 is not reported", true);

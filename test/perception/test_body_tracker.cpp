@@ -28,7 +28,6 @@ TEST_F(BodyTrackerTest, WithoutErrorsBodiesAreTheGroundTruth) {
   make(test::config_without_errors());
   world::WorldSnapshot snapshot = snapshot_with_ari();
   snapshot.humans = {human_at(10, 3.0, 1.0, 2.0), human_at(11, 0.5, -4.0, -1.0)};
-  snapshot.humans[0].velocity_mps = {0.3, -0.1};
   const std::vector<PerceivedBody> bodies = perceive(snapshot);
   ASSERT_EQ(bodies.size(), 2u);
   for (size_t i = 0; i < 2; ++i) {
@@ -36,7 +35,6 @@ TEST_F(BodyTrackerTest, WithoutErrorsBodiesAreTheGroundTruth) {
     EXPECT_EQ(bodies[i].person_id, "");  // the person manager links bodies to persons
     EXPECT_EQ(bodies[i].X_map_body.position, snapshot.humans[i].pose.position);
     EXPECT_EQ(bodies[i].X_map_body.theta, snapshot.humans[i].pose.theta);
-    EXPECT_EQ(bodies[i].velocity_mps, snapshot.humans[i].velocity_mps);
     EXPECT_DOUBLE_EQ(bodies[i].visible_fraction, 1.0);
   }
   EXPECT_NE(bodies[0].body_id, bodies[1].body_id);

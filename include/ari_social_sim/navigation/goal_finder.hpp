@@ -56,6 +56,20 @@ struct Goal {
   }
 };
 
+/// Why a target has no goal now; a result rather than an exception, since in the control loop
+/// it is a frequent, expected outcome (a person hidden for a moment, a group with no room yet).
+struct GoalFailure {
+  enum class Kind {
+    kUnknownTarget,  ///< the target's id is not in the scene (unknown_target_reason)
+    kUnreachable,    ///< no free place for ARI, or none ARI can reach
+  };
+  Kind kind{Kind::kUnreachable};
+  std::string reason;
+};
+
+/// A goal for a target, or why there is none.
+using GoalSearch = std::variant<Goal, GoalFailure>;
+
 /// Turns a target into a goal pose (specs/algorithms.md 2.4):
 /// - pose: the pose itself, if ARI's footprint fits there;
 /// - person: base_footprint `approach_distance` in front of the person, within
@@ -73,21 +87,24 @@ class GoalFinder {
   GoalFinder(const GoalFinderConfig& config, const FootprintModel& footprint,
              const PersonalSpaceParams& spaces);
 
-  /// Throws UnknownTarget if the target's id is not in `scene`, GoalUnreachable if no free place
-  /// exists. `sdf` is the map's signed distance field, `robot` ARI's base pose.
-  Goal find(const NavigationTarget& target, const PerceivedScene& scene, const GridField& sdf,
-            const core::Pose2& robot, const std::optional<Goal>& previous = std::nullopt) const;
+  /// The goal, or a failure: kUnknownTarget if the target's id is not in `scene`, kUnreachable
+  /// if no free place exists. `sdf` is the map's signed distance field, `robot` ARI's base pose.
+  GoalSearch find(const NavigationTarget& target, const PerceivedScene& scene, const GridField& sdf,
+                  const core::Pose2& robot,
+                  const std::optional<Goal>& previous = std::nullopt) const;
 
   /// True when ARI's footprint at `base` keeps `margin_m` from walls, furniture and every body.
   bool is_free(const core::Pose2& base, const PerceivedScene& scene, const GridField& sdf,
                double margin_m) const;
 
  private:
-  Goal find_pose(const PoseTarget& target, const GridField& sdf) const;
-  Goal find_person(const PersonEstimate& person, const PerceivedScene& scene, const GridField& sdf,
-                   const core::Pose2& robot, const std::optional<Goal>& previous) const;
-  Goal find_group(const GroupEstimate& group, const PerceivedScene& scene, const GridField& sdf,
-                  const core::Pose2& robot, const std::optional<Goal>& previous) const;
+  GoalSearch find_pose(const PoseTarget& target, const GridField& sdf) const;
+  GoalSearch find_person(const PersonEstimate& person, const PerceivedScene& scene,
+                         const GridField& sdf, const core::Pose2& robot,
+                         const std::optional<Goal>& previous) const;
+  GoalSearch find_group(const GroupEstimate& group, const PerceivedScene& scene,
+                        const GridField& sdf, const core::Pose2& robot,
+                        const std::optional<Goal>& previous) const;
   /// Free and outside every o-space but `group_id`'s and every personal space but `exempt`'s.
   bool is_polite(const core::Pose2& base, const PerceivedScene& scene, const std::string& group_id,
                  const std::vector<std::string>& exempt) const;

@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
@@ -59,7 +60,8 @@ class Navigator {
              const RobotObservation& robot, double time_s);
   /// Stops pursuing the goal (state back to idle).
   void cancel();
-  /// One control cycle at sim time `time_s`.
+  /// One control cycle at sim time `time_s`. Never throws: a target lost or out of reach is an
+  /// outcome of the cycle (kept pursuing for a while, or aborted with the reason).
   NavigatorStep update(double time_s, const RobotObservation& robot, const PerceivedScene& scene);
 
   NavigationState state() const { return state_; }
@@ -78,12 +80,19 @@ class Navigator {
   /// The areas the geodesic field routes around: standing people, groups not joined.
   std::vector<CostDisc> cost_discs(const PerceivedScene& scene, const Goal& goal) const;
   bool discs_changed(const std::vector<CostDisc>& discs) const;
-  /// The geodesic field to `goal`; throws GoalUnreachable when the goal or ARI cannot reach it.
-  std::unique_ptr<GeodesicField> field_to(const Goal& goal, const core::Pose2& robot,
-                                          const std::vector<CostDisc>& discs) const;
-  /// Sets goal_, rebuilding the geodesic field when the goal or the people moved; throws
-  /// GoalUnreachable.
-  void adopt_goal(const Goal& goal, const core::Pose2& robot, const PerceivedScene& scene);
+  /// A geodesic field to a goal, or why ARI cannot reach the goal.
+  using FieldSearch = std::variant<std::unique_ptr<GeodesicField>, GoalFailure>;
+  /// The geodesic field to `goal`, or a kUnreachable failure when the goal or ARI cannot reach it.
+  FieldSearch field_to(const Goal& goal, const core::Pose2& robot,
+                       const std::vector<CostDisc>& discs) const;
+  /// Sets goal_, rebuilding the geodesic field when the goal or the people moved; a failure
+  /// (kUnreachable) leaves the goal and its field as they were.
+  std::optional<GoalFailure> adopt_goal(const Goal& goal, const core::Pose2& robot,
+                                        const PerceivedScene& scene);
+  /// Resolves the target into a goal at `time_s` and adopts it, unless it jumped away less than
+  /// goal_switch_time ago; a failure (target unknown or unreachable) keeps the last goal.
+  std::optional<GoalFailure> follow_target(double time_s, const core::Pose2& robot,
+                                           const PerceivedScene& scene);
   NavigatorStep finish(NavigationState state, const std::string& reason);
   /// A group target whose id perception no longer reports continues as the group that shares
   /// the most of its last members (at least two): group detection gives a group a new id when

@@ -2,7 +2,6 @@
 
 #include <Eigen/Core>
 #include <memory>
-#include <string>
 #include <vector>
 
 #include "ari_social_sim/navigation/cost_term.hpp"
@@ -35,8 +34,6 @@ class TrajectoryCost {
   const UnicycleModel& model() const { return model_; }
   int evaluations() const { return evaluations_; }
   void reset_evaluations() { evaluations_ = 0; }
-  /// Names of the enabled terms, in evaluation order.
-  std::vector<std::string> term_names() const;
 
  private:
   const UnicycleModel& model_;

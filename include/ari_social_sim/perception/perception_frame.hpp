@@ -47,7 +47,6 @@ struct PerceivedBody {
   std::string body_id;
   std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_body;  ///< Mid-hips; theta = body orientation. Noisy.
-  Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};
   double distance_m{0.0};  ///< From the fisheye.
   double visible_fraction{1.0};
   ImageRegion roi;  ///< In the fisheye image.

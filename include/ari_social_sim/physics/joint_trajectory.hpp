@@ -47,7 +47,6 @@ class JointTrajectory {
   double end_time_s() const { return end_time_s_; }
   /// The last waypoint's positions.
   const std::vector<double>& final_positions() const { return final_.positions; }
-  size_t joint_count() const { return final_.positions.size(); }
 
  private:
   struct Segment {

@@ -51,7 +51,6 @@ struct RobotJoint {
   double max_effort_nm{0.0};
 
   bool is_movable() const { return type != JointType::kFixed; }
-  bool has_position_limits() const { return type == JointType::kRevolute; }
 };
 
 /// A robot's kinematic tree read from URDF with urdfdom: links, joints, limits, mass properties and

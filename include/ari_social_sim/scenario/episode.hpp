@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
+#include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/in_process_navigation.hpp"
 #include "ari_social_sim/scenario/person_identities.hpp"
@@ -108,7 +108,7 @@ class Episode {
   model::OccupancyGrid map_;
   perception::PerceptionPipeline perception_;
   perception::GroupPerception group_detection_;
-  std::optional<double> last_perceived_s_;
+  perception::RateGate perception_gate_;
   const perception::PerceptionFrame* perceived_{nullptr};
   std::vector<perception::PerceivedGroup> groups_;
   PersonIdentities identities_;

@@ -3,7 +3,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "ari_social_sim/world/script.hpp"
+#include "ari_social_sim/model/object_id.hpp"
+#include "ari_social_sim/world/object.hpp"
 
 namespace ari_social_sim::world {
 
@@ -46,12 +47,13 @@ struct GroupSpec {
 };
 
 /// Seed 3.4.1 GroupNavigation script: moves its members with repulsion, equality and cohesion
-/// forces (eq. 3.9-3.18) into a circular F-formation around the o-space centre.
-class GroupNavigation : public Script {
+/// forces (eq. 3.9-3.18) into a circular F-formation around the o-space centre. The simulation
+/// steps each group after the sensors (D6.4's scripts).
+class GroupNavigation {
  public:
   explicit GroupNavigation(const GroupSpec& spec);
 
-  void step(const StepContext& context) override;
+  void step(const StepContext& context);
 
   model::ObjectId id() const { return spec_.id; }
   const std::vector<model::ObjectId>& members() const { return spec_.members; }

@@ -10,7 +10,6 @@
 #include "ari_social_sim/world/ari.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
-#include "ari_social_sim/world/script.hpp"
 
 class b2World;
 class b2Shape;
@@ -34,10 +33,10 @@ struct StepDiagnostics {
   uint64_t clamped_commands{0};  // ARI twist or pan commands beyond ARI's limits
 };
 
-/// The 2D multi-party world (seed 3.2): Objects with Components, Scripts and Processes on a Box2D
+/// The 2D multi-party world (seed 3.2): Objects with Components, and group scripts, on a Box2D
 /// world. Each step runs, in the seed's order: the objects' generator components (navigation,
 /// gaze, speech, ARI's drive) and their planned motion, the physics step, the sensor components,
-/// then the scripts (group navigation) and the processes.
+/// then the scripts (group navigation).
 ///
 /// Requests (add, remove, commands) validate their input and throw core::RequestError; step()
 /// never throws. Every number a request brings is checked before anything changes, so a refused
@@ -92,7 +91,6 @@ class Simulation {
   /// Places a human or ARI directly (/sim/set_pose); a human leaves its group. Throws for an
   /// unknown id, a pose off the floor or with a non-finite heading, or one that overlaps anything.
   void set_pose(model::ObjectId id, const core::Pose2& pose);
-  void add_process(std::unique_ptr<Process> process);
   /// ARI's base twist (seed 3.5.5), held for ARI's command timeout. Finite out-of-limit values
   /// are clamped as ARI's controller does and counted in diagnostics(). Throws without ARI or for
   /// a non-finite value (the command is then ignored).
@@ -148,7 +146,6 @@ class Simulation {
   std::vector<std::unique_ptr<Human>> humans_;
   std::unique_ptr<Ari> ari_;
   std::vector<std::unique_ptr<GroupNavigation>> groups_;
-  std::vector<std::unique_ptr<Process>> processes_;
   std::unordered_map<model::ObjectId, Object*> objects_by_id_;
   uint64_t step_count_{0};
   StepDiagnostics diagnostics_;

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/pose2.hpp"
+
+namespace ari_social_sim::model {
+
+/// A person ROS4HRI perception tracks (/humans/persons/tracked) and the body matched to them
+/// (/humans/persons/<id>/body_id), which is empty while there is none: the person is only heard,
+/// only their face is seen, or the match is still pending.
+struct TrackedPerson {
+  std::string person_id;
+  std::string body_id;
+};
+
+/// Where perception last placed a body (its body_<id> frame) and when. The pose is in the frame
+/// the caller asked for; theta is the frame's x axis, which REP-155 points where the body faces.
+struct BodyPlacement {
+  double stamp_s{0.0};
+  core::Pose2 pose;
+};
+
+/// A tracked person at their body's placement.
+struct PlacedPerson {
+  std::string person_id;
+  double stamp_s{0.0};
+  core::Pose2 pose;
+};
+
+/// Where a body stands, or nothing when it cannot be placed: live, tf has no (recent) transform
+/// of its frame; in process, the perception frame holds no such body.
+using BodyLocator = std::function<std::optional<BodyPlacement>(const std::string& body_id)>;
+
+/// The tracked persons that the consumers needing a facing direction act on (social navigation,
+/// group detection), in the order given, each at their body's placement. Left out: a person
+/// without a body, since a person frame has a position but no meaningful orientation (REP-155),
+/// and one whose body `locate_body` cannot place.
+std::vector<PlacedPerson> place_at_bodies(const std::vector<TrackedPerson>& persons,
+                                          const BodyLocator& locate_body);
+
+}  // namespace ari_social_sim::model
