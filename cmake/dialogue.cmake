@@ -1,6 +1,10 @@
 # dialogue/: the Conversational Content Generator (multi-party user simulation), its tools, tests
-# and benchmark. The MPGT corpus sits beside the repository (CI clones shared/ next to it).
-set(ARI_MPGT_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/dialogue/mpgt")
+# and benchmark. The MPGT corpus (docs/references.md#mpgt) is not part of the repository:
+# ARI_MPGT_DIR is the folder of its convo*.txt files, the default of the tools, nodes and tests
+# (set it with -DARI_MPGT_DIR=DIR; the environment variable ARI_MPGT_DIR overrides it at run
+# time). Its default is where CI provides the corpus, beside the checkout.
+set(ARI_MPGT_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/dialogue/mpgt"
+    CACHE PATH "Folder of the MPGT corpus's convo*.txt files")
 set(ARI_DIALOGUE_CONFIG_DIR "${CMAKE_CURRENT_SOURCE_DIR}/config/dialogue")
 
 add_library(ari_dialogue

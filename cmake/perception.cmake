@@ -64,7 +64,8 @@ target_link_libraries(group_detection_node ari_perceived_persons)
 install(TARGETS group_detection_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  # The development sets live in shared/ beside the repository (specs/algorithms.md 1.7).
+  # The F-formation data sets as CSV (docs/perception_gcff.md) are not part of the repository:
+  # by default the tests read them where CI provides them, beside the checkout.
   set(ari_fformation_dir ${CMAKE_CURRENT_SOURCE_DIR}/../shared/fformation)
   ari_add_gtest(test_perception
     SOURCES

@@ -1,4 +1,4 @@
-# world/: the 2D multi-party world on Box2D (seed section 3), and world_node.
+# world/: the 2D multi-party world on Box2D (D6.4 §3), and world_node.
 add_library(ari_world
   src/world/agent_grid.cpp
   src/world/ari.cpp

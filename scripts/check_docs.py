@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Fails when README.md or docs/*.md point at something the repository does not have.
+"""Fails when README.md or docs/*.md point at something the repository does not have, or when any
+document or tracked source file cites the private material the project was written from.
 
 A reader only has the repository. So every relative Markdown link (inline or a reference
 definition) must reach a file or folder in it, and its #anchor a heading of that file by GitHub's
@@ -8,9 +9,18 @@ slug rules; every path the text names under one of the repository's top-level fo
 output) and every Markdown file named alone (`world.md`) must exist; a citation such as
 [Helbing 1995], an entry of docs/references.md, needs its link definition in the same file; and no
 document may send the reader to material beside the repository (`../shared`, `shared/...`,
-`specs/...`) or cite the specification the project was written from as "seed 3.x" /
-"seed section ..." (in the docs "seed" is the random seed only). Files a document shows how to
-create are declared in it, `<!-- check_docs: new PATH... -->`.
+`specs/...`, DESIGN.md, the private specifications ari.md, ros4hri.md, algorithms.md and
+wire_types.md) or cite the specification the project was written from as "seed 3.x", "seed
+section ...", "the seed's ...", "(seed: ...)" ("seed" is the random seed only: cite D6.4 or
+another entry of docs/references.md). Files a document shows how to create are declared in it,
+`<!-- check_docs: new PATH... -->`.
+
+The same citation rules hold for every tracked source, config, message, launch, URDF, build and
+test file (SOURCE_SUFFIXES; `git ls-files`, or every file outside NOT_ROOTS without git), this
+script excepted, as it spells the patterns out. The one exemption is the CMake line that sets the
+build-time default of a data folder the repository does not ship (DATA_FOLDER_DEFAULT): CI
+provides the data beside the checkout, and users point the build elsewhere (docs/dialogue.md,
+docs/perception_gcff.md).
 
 Each problem is printed as `FILE:LINE: <target> does not exist` (or names the forbidden mention),
 then a one-line count summary. Exit status 1 on any problem, 0 otherwise. Standard library only.
@@ -22,6 +32,7 @@ import argparse
 import fnmatch
 import os
 import re
+import subprocess
 import sys
 import tempfile
 
@@ -38,11 +49,26 @@ FORBIDDEN = (
     (re.compile(r"\.\./shared"), "'../shared' (a folder outside the repository)"),
     (re.compile(r"(?<![\w./-])shared/"), "'shared/' (a folder outside the repository)"),
     (re.compile(r"(?<![\w.-])specs/"), "'specs/' (a specification outside the repository)"),
-    (re.compile(r"\bseed \d+\.\d"), "'seed N.N' (cite docs/references.md instead)"),
-    (re.compile(r"\bseed (?:section|sections|document|eq\.|equations?|figure|module|symbol)\b",
-                re.IGNORECASE),
+    (re.compile(r"(?<![\w./-])(?:DESIGN|ari|ros4hri|algorithms|wire_types)\.md\b"),
+     "a private specification (cite docs/references.md instead)"),
+    (re.compile(r"\bspecs \d"), "'specs N' (cite docs/references.md instead)"),
+    (re.compile(r"\bseed \d+\.\d", re.IGNORECASE), "'seed N.N' (cite docs/references.md instead)"),
+    (re.compile(r"\bseed (?:§|(?:section|sections|document|eq|eqs|equations?|fig|figure|table|"
+                r"module|symbol)\b)", re.IGNORECASE),
      "'seed section' (cite docs/references.md instead)"),
+    (re.compile(r"\bthe seed's\b", re.IGNORECASE),
+     "'the seed's' (cite docs/references.md instead)"),
+    (re.compile(r"\(seed:", re.IGNORECASE), "'(seed: ...)' (cite docs/references.md instead)"),
 )
+
+# The files whose comments and text the citation rules cover besides the documents.
+SOURCE_SUFFIXES = (".cpp", ".hpp", ".h", ".py", ".yaml", ".msg", ".srv", ".action", ".launch",
+                   ".test", ".cmake", ".txt", ".sh", ".xml", ".urdf", ".rviz")
+SOURCE_NAMES = ("CMakeLists.txt", ".ci/run")
+THIS_SCRIPT = "scripts/check_docs.py"
+# The build-time default of a data folder the repository does not ship (the MPGT corpus, the
+# F-formation data sets): where CI provides it, beside the checkout.
+DATA_FOLDER_DEFAULT = re.compile(r"^\s*set\((?:ARI_MPGT_DIR|ari_fformation_dir)\s")
 
 FENCE = re.compile(r"^\s*(```|~~~)\s*([\w+-]*)")
 # Fenced blocks without a language (or marked text) hold program output, which may quote files of
@@ -269,6 +295,37 @@ class Checker:
                                 "references.md#%s` at the end of the file)"
                                 % (label, label, github_slug(label)))
 
+    # ---- source files ---------------------------------------------------------------------------
+    def source_files(self):
+        """The repository's files the citation rules cover, relative to it: the tracked ones when
+        it is a git work tree, else every file outside NOT_ROOTS."""
+        try:
+            listed = subprocess.run(["git", "-C", self.repo, "ls-files", "-z"], check=True,
+                                    stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout
+            names = [n for n in listed.decode("utf-8").split("\0") if n]
+        except (OSError, subprocess.CalledProcessError):
+            names = []
+            for root, folders, files in os.walk(self.repo):
+                folders[:] = sorted(f for f in folders if f not in NOT_ROOTS)
+                names += [os.path.relpath(os.path.join(root, f), self.repo) for f in files]
+        return sorted(n for n in names
+                      if n != THIS_SCRIPT and (n.endswith(SOURCE_SUFFIXES) or n in SOURCE_NAMES))
+
+    def check_source(self, name):
+        try:
+            with open(os.path.join(self.repo, name), encoding="utf-8") as f:
+                lines = f.read().split("\n")
+        except (OSError, UnicodeDecodeError):
+            return  # deleted but still listed, or not text
+        for number, line in enumerate(lines, 1):
+            if name.endswith(".cmake") and DATA_FOLDER_DEFAULT.match(line):
+                continue
+            for pattern, what in FORBIDDEN:
+                if pattern.search(line):
+                    problem = "%s:%d: mentions %s" % (name, number, what)
+                    if problem not in self.problems:
+                        self.problems.append(problem)
+
     def run(self):
         files = [os.path.join(self.repo, "README.md")]
         docs = os.path.join(self.repo, "docs")
@@ -277,18 +334,22 @@ class Checker:
         files = [f for f in files if os.path.isfile(f)]
         for path in files:
             self.check(path)
-        return files
+        sources = self.source_files()
+        for name in sources:
+            self.check_source(name)
+        return files, sources
 
 
 def check_repository(repo, quiet=False):
     checker = Checker(repo)
-    files = checker.run()
+    files, sources = checker.run()
     if not quiet:
         for problem in checker.problems:
             print(problem)
-        print("check_docs: %d files, %d relative links (%d with anchors), %d repository paths: "
-              "%d problems" % (len(files), checker.links, checker.anchors, checker.paths,
-                               len(checker.problems)))
+        print("check_docs: %d files, %d relative links (%d with anchors), %d repository paths, "
+              "%d source files: %d problems" % (len(files), checker.links, checker.anchors,
+                                                checker.paths, len(sources),
+                                                len(checker.problems)))
     return checker
 
 
@@ -301,11 +362,28 @@ def write(root, relative, text):
 
 def self_test():
     """A small tree with one broken link, one broken anchor, one missing path and one `../shared`
-    mention beside correct ones: each of the four must be reported, and nothing else."""
+    mention in the documents, and private citations in a document, a source file, a message, a
+    CMake file and a test, beside correct ones (the random seed, a public citation, the data
+    folder's default, this script's own patterns, a build folder): each problem must be reported,
+    and nothing else."""
     with tempfile.TemporaryDirectory() as root:
-        write(root, "src/core/rng.cpp", "")
+        write(root, "src/core/rng.cpp", "\n".join([
+            "// Walkers (D6.4 §3.3.1); Rng rng(seed); run --seed 3 (seed 7); \"seed: 1\"",
+            "// Gaze as in seed 3.3.2.",
+            "/// Controllers (specs/ari.md §2).",
+            "",
+        ]))
+        write(root, "msg/State.msg", "# Colours as in the seed's GUI\n"
+              "string act  # (seed: previous_speech_act)\n")
+        write(root, "cmake/data.cmake",
+              'set(ARI_MPGT_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/mpgt" CACHE PATH "MPGT")\n'
+              "# CI clones shared/ beside the checkout\n")
+        write(root, "test/test_groups.py", "# the protocol of algorithms.md 1.4\n")
+        write(root, THIS_SCRIPT, "PATTERN = 'shared/ and seed 3.3'\n")
+        write(root, "_build/generated.cpp", "// seed section 3\n")
         write(root, "docs/guide.md",
-              "# Guide\n\n## Real heading, with `code`\n\nSee [the README](../README.md).\n")
+              "# Guide\n\n## Real heading, with `code`\n\nSee [the README](../README.md).\n"
+              "As in the seed's figure 3.5.\n")
         write(root, "docs/references.md", "# References\n\n### Helbing 1995\n\nA paper.\n")
         write(root, "README.md", "\n".join([
             "# Project",
@@ -328,6 +406,14 @@ def self_test():
         "README.md:4: docs/guide.md#no-such-heading does not exist",
         "README.md:5: src/core/random.cpp does not exist",
         "README.md:6: mentions '../shared' (a folder outside the repository)",
+        "docs/guide.md:6: mentions 'the seed's' (cite docs/references.md instead)",
+        "src/core/rng.cpp:2: mentions 'seed N.N' (cite docs/references.md instead)",
+        "src/core/rng.cpp:3: mentions 'specs/' (a specification outside the repository)",
+        "msg/State.msg:1: mentions 'the seed's' (cite docs/references.md instead)",
+        "msg/State.msg:2: mentions '(seed: ...)' (cite docs/references.md instead)",
+        "cmake/data.cmake:2: mentions 'shared/' (a folder outside the repository)",
+        "test/test_groups.py:1: mentions a private specification (cite docs/references.md "
+        "instead)",
     ]
     ok = True
     for line in expected:
@@ -347,8 +433,9 @@ def main():
     parser.add_argument("--repo", default=os.path.dirname(os.path.dirname(os.path.abspath(
         __file__))), help="repository root (default: this script's repository)")
     parser.add_argument("--self-test", action="store_true",
-                        help="check that a broken link, anchor, path and ../shared mention in a "
-                             "temporary tree are each reported, instead of checking the docs")
+                        help="check that a broken link, anchor, path, ../shared mention and "
+                             "private citations (documents and source files) in a temporary tree "
+                             "are each reported, instead of checking the repository")
     args = parser.parse_args()
     if args.self_test:
         return 0 if self_test() else 1

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the two main scenarios headless:
-# 1. the seed's figure 3.5 (world only): three people walk from the middle of the left room of the
+# 1. D6.4's figure 3.5 (world only): three people walk from the middle of the left room of the
 #    two-room flat to a group centre and form an F-formation; prints their final positions,
 #    headings and mutual distances;
-# 2. group_discussion (seed section 3.7) with the whole suite: ARI joins Paul and Irene, answers
+# 2. group_discussion (D6.4 §3.7) with the whole suite: ARI joins Paul and Irene, answers
 #    Irene's question and goes back; prints the transcript and the outcome.
 # With a display (DISPLAY set) rviz shows the second. Extra arguments go to its roslaunch
 # (e.g. seed:=3 real_time_factor:=2 record:=true).

@@ -12,9 +12,11 @@ cmake --build _build --target tests -j"$(nproc)"
 # the self-test shows the check catches a removed entry (libnlopt-dev, ...). Fails the run.
 /usr/bin/python3 scripts/check_deps.py --build _build --self-test
 # README.md and docs/ name only what the repository has: relative links and their #anchors, paths
-# under its folders, citations defined in docs/references.md. The self-test first shows that a
-# broken link, anchor, path and a pointer outside the repository are each caught. Two commands,
-# not `a && b`: set -e does not stop the script when the left side of && fails.
+# under its folders, citations defined in docs/references.md; neither they nor any tracked source,
+# config, message, launch or test file cites the private material the project was written from.
+# The self-test first shows that a broken link, anchor, path, a pointer outside the repository and
+# private citations in documents and source files are each caught. Two commands, not `a && b`:
+# set -e does not stop the script when the left side of && fails.
 /usr/bin/python3 scripts/check_docs.py --self-test
 /usr/bin/python3 scripts/check_docs.py
 # run_tests keeps going past failures; the summary below decides.

@@ -1,6 +1,7 @@
 #include "ari_social_sim/dialogue/mpgt_corpus.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -9,7 +10,7 @@
 #include "ari_social_sim/dialogue/text.hpp"
 
 #ifndef ARI_MPGT_DIR
-#define ARI_MPGT_DIR "../shared/dialogue/mpgt"
+#error "ARI_MPGT_DIR: the build gives the MPGT corpus's folder (cmake/dialogue.cmake)"
 #endif
 
 namespace ari_social_sim::dialogue {
@@ -46,7 +47,18 @@ size_t MpgtCorpus::utterance_count() const {
 }
 
 std::string default_mpgt_dir() {
+  const char* from_environment = std::getenv("ARI_MPGT_DIR");
+  if (from_environment != nullptr && *from_environment != '\0') {
+    return from_environment;
+  }
   return ARI_MPGT_DIR;
+}
+
+std::string mpgt_corpus_help() {
+  return "  MPGT corpus: the folder of the convo*.txt files of the public MPGT corpus,\n"
+         "    https://github.com/AddleseeHQ/mpgt-eval (MIT licence; docs/dialogue.md), which is\n"
+         "    not part of this repository. Given no folder, the tool reads $ARI_MPGT_DIR, else\n"
+         "    the folder set at build time (cmake -DARI_MPGT_DIR=DIR).\n";
 }
 
 CorpusDialogue parse_mpgt_dialogue(const std::string& text, const std::string& name) {

@@ -42,7 +42,7 @@ TrajectoryCost::TrajectoryCost(const MpcConfig& config, const UnicycleModel& mod
   }
   terms_.push_back(std::make_unique<ControlCost>(w, config.limits, dt));
   if (w.view > 0.0 || w.pan_limit > 0.0) {
-    // Aim 0.05 rad inside head_1_joint's limit, as ARI's soft limits do (specs/ari.md 1).
+    // Aim 0.05 rad inside head_1_joint's limit, as ARI's soft limits do (ari_robot's URDF).
     terms_.push_back(std::make_unique<ViewCost>(w.view, w.pan_limit, footprint,
                                                 config.limits.head_pan_limit_rad - 0.05));
   }

@@ -42,12 +42,13 @@ namespace {
 // The torso RGB-D camera is a D435i; its IMU topic is realsense2_camera's unified one
 // (docs/physics.md: ARI's own launch files name no IMU topic).
 constexpr char kImuTopic[] = "/torso_front_camera/imu";
-// JointTrajectoryController's action_monitor_rate (specs/ari.md §2).
+// JointTrajectoryController's action_monitor_rate (ari_robot's controller configuration).
 constexpr double kActionMonitorRateHz = 20.0;
 // PAL's head_action: success_angle_threshold (rad) and its default pointing frame.
 constexpr double kPointingThresholdRad = 0.01;
 constexpr char kDefaultPointingFrame[] = "head_front_camera_color_optical_frame";
-// Covariance diagonal of mobile_base_controller's pose and twist (specs/ari.md §2).
+// Covariance diagonal of mobile_base_controller's pose and twist (ari_robot's controller
+// configuration).
 constexpr double kOdomCovariance[6] = {0.001, 0.001, 1e6, 1e6, 1e6, 1000.0};
 
 geometry_msgs::Quaternion quaternion_msg(const Eigen::Quaterniond& q) {

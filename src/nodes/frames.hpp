@@ -2,7 +2,8 @@
 
 namespace ari_social_sim::nodes {
 
-// The frames every node names (specs/ari.md §4): the map, the odometry frame and ARI's base.
+// The frames every node names: the map and the odometry frame (REP-105) and ARI's base
+// (ari_robot's URDF).
 inline constexpr char kMapFrame[] = "map";
 inline constexpr char kOdomFrame[] = "odom";
 inline constexpr char kBaseFrame[] = "base_footprint";

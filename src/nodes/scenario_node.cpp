@@ -1,4 +1,4 @@
-// scenario_node: plays a scenario's script (seed 3.7) against a running suite through its public
+// scenario_node: plays a scenario's script (D6.4 §3.7) against a running suite through its public
 // interfaces only: /sim/world_state and the /sim/... services of world_node, /tts (dialogue_node),
 // move_base and /social_mpc/approach (social_mpc_node), /humans/persons/..., tf and
 // /humans/interactions/groups (perception, whose persons are matched with the script's humans by

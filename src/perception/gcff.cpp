@@ -10,8 +10,8 @@
 namespace ari_social_sim::perception {
 namespace {
 
-// algorithms.md 1.1.4: a person i stands "behind" j, seen from the o-space centre, when the
-// directions to both differ by less than acos(0.75) ~ 41 degrees.
+// GCFF's visibility term (Setti 2015): a person i stands "behind" j, seen from the o-space
+// centre, when the directions to both differ by less than acos(0.75) ~ 41 degrees.
 constexpr double kBehindCosine = 0.75;
 // The penalty is 100^x; computed as exp(x ln 100) so that the cap can be tested on the exponent.
 const double kLogPenaltyBase = std::log(100.0);

@@ -1,5 +1,5 @@
 // detect_groups: runs the GCFF F-formation detector over a recorded data set (CSV), and optionally
-// scores it against ground truth with the protocol of specs/algorithms.md 1.4.
+// scores it against ground truth with the protocol of GCFF's evaluation code (Setti 2015).
 
 #include <cstdio>
 #include <iostream>

@@ -5,7 +5,8 @@
 //                   [--nlg template|retrieval] [--compare] [--report FILE.md] [--overwrite]
 //
 // --config defaults to <source>/config/dialogue/simulation.yaml; --corpus (the MPGT corpus used by
-// retrieval NLG and --compare) to <source>/../shared/dialogue/mpgt. --compare prints the
+// retrieval NLG and --compare) to the config's corpus_dir, else $ARI_MPGT_DIR, else the build-time
+// folder (docs/dialogue.md). --compare prints the
 // comparison with MPGT (intent JS divergence, human-to-human share, lengths, complete and success
 // rates) as Markdown, also to --report when given. Outputs are checked before the first dialogue
 // (an existing one needs --overwrite) and appear under their names only when complete. Exit code
@@ -52,7 +53,8 @@ void print_usage() {
             << "  N in " << kDialogues.range() << ", S in " << kSeed.range() << "\n"
             << "  --out and --report must not exist yet unless --overwrite\n"
             << "  --config defaults to " << default_dialogue_config_dir() << "/simulation.yaml\n"
-            << "  --corpus defaults to " << default_mpgt_dir() << "\n";
+            << "  --corpus DIR: the MPGT corpus (below); default: corpus_dir in --config if set\n"
+            << mpgt_corpus_help();
 }
 
 Options parse_options(int argc, char** argv) {

@@ -4,7 +4,8 @@
 //   fit_dialogue_model [--corpus DIR] [--out FILE [--overwrite]] [--min-row-count N]
 //                      [--prior-weight W]
 //
-// --corpus defaults to the build-time ARI_MPGT_DIR, <source>/../shared/dialogue/mpgt.
+// --corpus is the MPGT corpus's folder, by default $ARI_MPGT_DIR, else the build-time one
+// (docs/dialogue.md).
 // Without --out the model goes to stdout; an existing --out is replaced only with --overwrite,
 // and only once the model is complete. Exit code 2 on bad input, with the reason on stderr; 1
 // when writing fails.
@@ -31,7 +32,8 @@ void print_usage() {
                "[--min-row-count N] [--prior-weight W]\n"
             << "  N in " << kMinRowCount.range() << " (default 10), W in "
             << kPriorWeight.bounds.describe() << " (default 5)\n"
-            << "  --corpus defaults to " << dialogue::default_mpgt_dir() << "\n";
+            << "  --corpus DIR: the MPGT corpus (below)\n"
+            << dialogue::mpgt_corpus_help();
 }
 
 }  // namespace

@@ -18,7 +18,7 @@ namespace {
 // Box2D solver iterations: the manual's recommended values; agents are few and slow.
 constexpr int32 kVelocityIterations = 8;
 constexpr int32 kPositionIterations = 3;
-// ARI's mass (kg, specs/ari.md: base_link 43.4 kg plus wheels and head) and a person's.
+// ARI's mass (kg, ari_robot's URDF: base_link 43.4 kg plus wheels and head) and a person's.
 constexpr float kAriMassKg = 50.0f;
 constexpr float kHumanMassKg = 70.0f;
 // The first id handed out by next_free_id for humans spawned without one.

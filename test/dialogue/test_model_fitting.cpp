@@ -41,7 +41,7 @@ TEST(ModelFitting, MpgtFitMatchesSpecsSection22) {
   FitOptions options;
   options.min_row_count = 1;
   const UserModel model = fit_user_model(corpus, options);
-  // specs 2.2: after ARI's greet (n 25), the next human intent is request 60 %; the two roles'
+  // In MPGT: after ARI's greet (n 25), the next human intent is request 60 %; the two roles'
   // rows pooled give it back.
   const auto& c = model.roles.at("companion").after_robot.row("greet");
   const auto& p = model.roles.at("patient").after_robot.row("greet");

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 
@@ -35,9 +36,9 @@ TEST(MpgtCorpus, BadSpeakerNamesTheLine) {
   }
 }
 
-TEST(MpgtCorpus, LoadsTheCountsOfSpecsSection21) {
+TEST(MpgtCorpus, LoadsTheCorpusCounts) {
   const MpgtCorpus corpus = load_mpgt_corpus(ARI_MPGT_DIR);
-  // specs/dialogue.md 2.1: 29 conversations, 768 utterances, ARI 279, 6..82 per conversation.
+  // MPGT: 29 conversations, 768 utterances, ARI 279, 6..82 per conversation.
   ASSERT_EQ(corpus.dialogues.size(), 29u);
   EXPECT_EQ(corpus.utterance_count(), 768u);
   std::map<std::string, int> by_speaker;
@@ -67,6 +68,20 @@ TEST(MpgtCorpus, LoadsTheCountsOfSpecsSection21) {
   EXPECT_EQ(intents["thank"], 84);
   EXPECT_EQ(intents["cant-help"], 57);
   EXPECT_GT(corpus.act_repairs, 0);
+}
+
+TEST(MpgtCorpus, EnvironmentReplacesTheBuildTimeFolder) {
+  const char* before = std::getenv("ARI_MPGT_DIR");
+  const std::string saved = before != nullptr ? before : "";
+  ASSERT_EQ(setenv("ARI_MPGT_DIR", "/data/mpgt", 1), 0);
+  EXPECT_EQ(default_mpgt_dir(), "/data/mpgt");
+  ASSERT_EQ(setenv("ARI_MPGT_DIR", "", 1), 0);  // set but empty: not a folder
+  EXPECT_EQ(default_mpgt_dir(), ARI_MPGT_DIR);
+  ASSERT_EQ(unsetenv("ARI_MPGT_DIR"), 0);
+  EXPECT_EQ(default_mpgt_dir(), ARI_MPGT_DIR);
+  if (before != nullptr) {
+    setenv("ARI_MPGT_DIR", saved.c_str(), 1);
+  }
 }
 
 TEST(MpgtCorpus, MissingDirectoryIsAConfigError) {

@@ -18,7 +18,7 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 from ari_social_sim.msg import (FollowJointTrajectoryAction, FollowJointTrajectoryGoal,
                                 FollowJointTrajectoryResult, PointHeadAction, PointHeadGoal)
 
-# specs/ari.md §2: controllers, joints and goal tolerances (rad).
+# ari_robot's controller configuration: controllers, joints and goal tolerances (rad).
 CONTROLLERS = {
     "head_controller": (["head_1_joint", "head_2_joint"], 0.5, [0.6, 0.3]),
     "arm_left_controller": (["arm_left_%d_joint" % i for i in range(1, 5)], 0.02,
@@ -29,7 +29,7 @@ CONTROLLERS = {
     "hand_right_controller": (["hand_right_fingers_joint"], 0.02, [0.7]),
 }
 WALL_FACE_X = 5.95       # room_6x6's east wall (x = 6, 0.1 m thick)
-BASE_FRONT_M = 0.16      # the base's front ahead of base_footprint (specs/ari.md 1.3)
+BASE_FRONT_M = 0.16      # the base's front ahead of base_footprint (ari_robot's URDF)
 
 
 class Latest:

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """rostest, must-show 1 of issue 3: a subscriber that knows nothing of ari_social_sim, declaring
-the upstream type hri_msgs/IdsList with its upstream MD5 (specs/ros4hri.md 2), receives
+the upstream type hri_msgs/IdsList with its upstream MD5 (hri_msgs 0.9.0), receives
 /humans/bodies/tracked from hri_perception_node. Run with the argument `wrong-md5`, the same
 subscriber declaring another MD5 must receive nothing (the negative control; in its own process,
 since rospy shares one connection among a node's subscribers to a topic)."""

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""rostest: in 3D mode the 2D world's ARI is the physics' ARI (DESIGN.md, 3D mode)."""
+"""rostest: in 3D mode the 2D world's ARI is the physics' ARI (3D mode, docs/physics.md)."""
 import math
 import time
 import unittest

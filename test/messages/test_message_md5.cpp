@@ -2,9 +2,9 @@
 //
 // ROS 1 peers accept a connection when the two sides' MD5 sums are equal (docs/messages.md), so
 // each copy in msg/, srv/ and action/ must hash exactly like the upstream type it mirrors. The
-// expected sums are the tables of shared/specs/ros4hri.md §2 (hri_msgs 0.9.0) and
-// shared/specs/wire_types.md §2 (control_msgs 1.5.x, pal_interaction_msgs 0.16.0,
-// play_motion_msgs 0.4.x), copied verbatim. Only roscpp's header-only traits are used.
+// expected sums are those of the upstream definitions (hri_msgs 0.9.0; control_msgs 1.5.x,
+// pal_interaction_msgs 0.16.0, play_motion_msgs 0.4.x: Upstream messages in docs/references.md)
+// as genmsg computes them. Only roscpp's header-only traits are used.
 
 #include <gtest/gtest.h>
 #include <ros/message_traits.h>
@@ -53,7 +53,7 @@
 
 namespace {
 
-// One row of the spec tables: the upstream type, its published MD5, and the MD5 of our copy.
+// One row of the tables below: the upstream type, its published MD5, and the MD5 of our copy.
 struct WireType {
   std::string upstream;
   std::string expected_md5;
@@ -77,7 +77,7 @@ std::string service_md5() {
 
 namespace a = ari_social_sim;
 
-// shared/specs/ros4hri.md §2, column "0.9.0 = master".
+// hri_msgs 0.9.0 (= master).
 const std::vector<WireType> kHriMsgs = {
     {"hri_msgs/AudioFeatures", "1942f4cd8b6bb147f1ccb9aded9b6535", message_md5<a::AudioFeatures>()},
     {"hri_msgs/BodyPosture", "52f95070a71954a985e0ab92dd4d4eb9", message_md5<a::BodyPosture>()},
@@ -105,7 +105,7 @@ const std::vector<WireType> kHriMsgs = {
      message_md5<a::SoftBiometrics>()},
 };
 
-// shared/specs/wire_types.md §2, "control_msgs (1.5.x)".
+// control_msgs 1.5.x.
 const std::vector<WireType> kControlMsgs = {
     {"control_msgs/FollowJointTrajectoryAction", "bc4f9b743838566551c0390c65f1a248",
      message_md5<a::FollowJointTrajectoryAction>()},
@@ -147,7 +147,7 @@ const std::vector<WireType> kControlMsgs = {
      message_md5<a::QueryTrajectoryStateResponse>()},
 };
 
-// shared/specs/wire_types.md §2, "pal_interaction_msgs (0.16.0, with visemes)".
+// pal_interaction_msgs 0.16.0 (Tts with visemes).
 const std::vector<WireType> kPalInteractionMsgs = {
     {"pal_interaction_msgs/TtsAction", "973ac2281b44b7ee789af997a9ce140c",
      message_md5<a::TtsAction>()},
@@ -170,7 +170,7 @@ const std::vector<WireType> kPalInteractionMsgs = {
     {"pal_interaction_msgs/TtsMark", "10ae9a83cac56ac1660df7e26eabeac9", message_md5<a::TtsMark>()},
 };
 
-// shared/specs/wire_types.md §2, "play_motion_msgs (0.4.x)".
+// play_motion_msgs 0.4.x.
 const std::vector<WireType> kPlayMotionMsgs = {
     {"play_motion_msgs/PlayMotionAction", "b18530db1ae596c4c0ca2ede0819fc9e",
      message_md5<a::PlayMotionAction>()},
@@ -188,7 +188,7 @@ const std::vector<WireType> kPlayMotionMsgs = {
      message_md5<a::PlayMotionFeedback>()},
 };
 
-// shared/specs/wire_types.md §2, "Dependencies Debian does package": the Debian types our copies
+// The dependencies Debian does package: the Debian types our copies
 // embed. If one of them drifted from the sums upstream was computed against, every copy that
 // nests it would stop connecting even with correct field lists.
 const std::vector<WireType> kDebianDependencies = {
@@ -242,7 +242,7 @@ TEST(WireMd5Tables, CoverEverySpecRow) {
   EXPECT_EQ(kDebianDependencies.size(), 8u);
 }
 
-// The method itself: the same traits reproduce the spec's known-good sum for a Debian type.
+// The method itself: the same traits reproduce the known-good sum of a Debian type.
 TEST(WireMd5Method, ReproducesStdMsgsHeader) {
   EXPECT_EQ(message_md5<std_msgs::Header>(), "2176decaecbce78abc3b96ef049fabed");
 }
@@ -257,9 +257,10 @@ TEST(WireTypeName, IsOurPackageNotUpstream) {
                "ari_social_sim/QueryTrajectoryState");
 }
 
-// ROS 1 genmsg keeps the double quotes of a string constant as part of its value (ros4hri.md
-// §2.1), so the constant is 7 characters for "happy"; ROS 2 strips them. Pinned so a consumer
-// comparing against Expression::HAPPY sees the same value as with upstream hri_msgs.
+// ROS 1 genmsg keeps the double quotes of a string constant as part of its value (ROS 1 wire
+// protocol in docs/references.md), so the constant is 7 characters for "happy"; ROS 2 strips
+// them. Pinned so a consumer comparing against Expression::HAPPY sees the same value as with
+// upstream hri_msgs.
 TEST(ExpressionConstants, KeepTheirQuotesAsInRos1) {
   EXPECT_EQ(a::Expression::HAPPY, "\"happy\"");
   EXPECT_EQ(a::Expression::HAPPY.size(), 7u);  // 5 letters + 2 quotes

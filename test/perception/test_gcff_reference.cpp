@@ -1,5 +1,5 @@
-// Reproduces the reference scores of GCFF on the development sets in shared/fformation
-// (README.md there; specs/algorithms.md 1.7): positions in cm, the parameters published with
+// Reproduces the reference scores of GCFF on the F-formation data sets (Cristani 2011, as CSV:
+// docs/perception_gcff.md): positions in cm, the parameters published with
 // the data, per-frame means of precision and recall.
 
 #include <gtest/gtest.h>
@@ -27,8 +27,8 @@ struct ReferenceSet {
   double stride_cm;
   double mdl_cm2;
   size_t frames;
-  Scores two_thirds;  ///< T = 2/3, shared/fformation/README.md
-  Scores all;         ///< T = 1, specs/algorithms.md 1.7
+  Scores two_thirds;  ///< T = 2/3, docs/perception_gcff.md
+  Scores all;         ///< T = 1, docs/perception_gcff.md
 };
 
 const ReferenceSet kSynth{"Synth", 30.0, 6000.0, 100, {0.967, 0.980, 0.973}, {0.908, 0.910, 0.909}};

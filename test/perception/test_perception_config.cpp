@@ -21,8 +21,8 @@ PerceptionConfig parse(const std::string& text) {
 TEST(PerceptionConfig, DefaultsAreAriAndValidate) {
   const PerceptionConfig config;
   EXPECT_NO_THROW(config.validate());
-  EXPECT_DOUBLE_EQ(config.body_camera.field_of_view_deg, 180.0);  // seed 3.5.2
-  EXPECT_DOUBLE_EQ(config.face_camera.field_of_view_deg, 62.0);   // seed 3.5.3
+  EXPECT_DOUBLE_EQ(config.body_camera.field_of_view_deg, 180.0);  // D6.4 §3.5.2
+  EXPECT_DOUBLE_EQ(config.face_camera.field_of_view_deg, 62.0);   // D6.4 §3.5.3
   EXPECT_DOUBLE_EQ(config.persons.location_decay_s, 10.0);        // hri_person_manager
   EXPECT_DOUBLE_EQ(config.persons.forget_after_s, 60.0);
   EXPECT_TRUE(config.errors_enabled);

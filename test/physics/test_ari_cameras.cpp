@@ -28,7 +28,7 @@ Eigen::Vector3d optical_axis(const CameraSpec& spec, double pan, double tilt) {
 TEST(AriCameras, HeadCameraAtZeroPoseMatchesTheSpec) {
   const CameraSpec head = spec_named(ari_camera_specs(), "head_front_camera");
   const Eigen::Isometry3d X = X_footprint_optical(head, 0.0, 0.0);
-  // ari.md 1.2: head_front_camera at (-0.120, 0, 1.591) facing +x; REP-103 axes.
+  // ari_robot's URDF: head_front_camera at (-0.120, 0, 1.591) facing +x; REP-103 axes.
   EXPECT_LT((X.translation() - Eigen::Vector3d(-0.1196, 0.0, 1.5915)).norm(), 1e-4);
   EXPECT_LT((X.linear().col(2) - Eigen::Vector3d::UnitX()).norm(), 1e-12);  // z forward
   EXPECT_LT((X.linear().col(0) + Eigen::Vector3d::UnitY()).norm(), 1e-12);  // x right

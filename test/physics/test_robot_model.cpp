@@ -1,4 +1,4 @@
-// RobotModel: urdf/ari.urdf read with urdfdom, checked against specs/ari.md's numbers.
+// RobotModel: urdf/ari.urdf read with urdfdom, checked against ari_robot's numbers.
 
 #include <gtest/gtest.h>
 
@@ -42,11 +42,11 @@ TEST(RobotModel, HasAriV1Joints) {
   EXPECT_NEAR(ari().joint("hand_right_fingers_joint").upper_rad, 75.0 * M_PI / 180.0, 1e-6);
   EXPECT_DOUBLE_EQ(ari().joint("arm_right_3_joint").max_effort_nm, 5.0);
   EXPECT_EQ(ari().joint("wheel_left_joint").type, JointType::kContinuous);
-  EXPECT_EQ(ari().link_index("torso_link"), -1);  // ARI has none (specs/ari.md caveat 3)
+  EXPECT_EQ(ari().link_index("torso_link"), -1);  // ARI has none (ari_robot's URDF)
 }
 
 TEST(RobotModel, MassesAddUpToAri) {
-  // specs/ari.md 1.3: the summed URDF mass is about 54.9 kg.
+  // ari_robot: the summed URDF mass is about 54.9 kg.
   double total = 0.0;
   for (const RobotLink& link : ari().links()) {
     total += link.inertia.mass_kg;
@@ -63,7 +63,7 @@ struct FramePosition {
 
 class ZeroPose : public ::testing::TestWithParam<FramePosition> {};
 
-// specs/ari.md 1.2: frame positions in base_footprint at the zero pose, given to the millimetre.
+// ari_robot's URDF: frame positions in base_footprint at the zero pose, given to the millimetre.
 TEST_P(ZeroPose, FrameSitsWhereAriHasIt) {
   const FramePosition& expected = GetParam();
   const Eigen::Vector3d p = ari().link_pose(expected.frame, {}).translation();
@@ -106,7 +106,7 @@ TEST(RobotModel, OpticalFrameFollowsRep103) {
 }
 
 TEST(RobotModel, PositiveHeadAnglesLookLeftAndDown) {
-  // specs/ari.md 1.1: head_1 positive turns left, head_2 positive tilts down.
+  // ari_robot's URDF: head_1 positive turns left, head_2 positive tilts down.
   const Eigen::Vector3d left =
       ari().link_pose("head_front_camera_link", {{"head_1_joint", 0.5}}).linear().col(0);
   EXPECT_NEAR(std::atan2(left.y(), left.x()), 0.5, 1e-9);

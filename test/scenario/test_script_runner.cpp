@@ -104,7 +104,7 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   EXPECT_EQ(runner.state(), "grouping");
   EXPECT_EQ(commands.log, std::vector<std::string>{"join " + kIrenePerson});
 
-  // 1.6 m from Irene: still grouping; 1.4 m: ARI asks (seed: closer than 1.5 m).
+  // 1.6 m from Irene: still grouping; 1.4 m: ARI asks (D6.4 §3.7: closer than 1.5 m).
   stage.obs.world.ari->pose.position = {4.0, 3.6};
   stage.tick(runner, commands);
   EXPECT_EQ(runner.state(), "grouping");
@@ -265,7 +265,7 @@ TEST_F(GroupDiscussionRunner, JoiningAHumanNotPerceivedAsAnyPersonFailsTheNaviga
   EXPECT_FALSE(runner.finished());
 }
 
-// A scenario from inline text, for the conditions the seed's script does not use.
+// A scenario from inline text, for the conditions D6.4's script does not use.
 Scenario inline_scenario(const std::string& script) {
   const std::string text = "world: " + kSource + "/worlds/room_6x6.yaml\nseed: 2\n" +
                            "ari: {position: [1, 5]}\n"

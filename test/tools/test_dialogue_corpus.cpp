@@ -62,6 +62,15 @@ TEST(DialogueCorpus, BadOptionsExitWithTwoBeforeWritingAnything) {
   EXPECT_EQ(fs::directory_iterator(dir), fs::directory_iterator());  // nothing written
 }
 
+// --help says where the MPGT corpus comes from, naming no folder outside the repository.
+TEST(DialogueCorpus, HelpSaysWhereTheCorpusComesFrom) {
+  const ProgramRun help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.err.find("https://github.com/AddleseeHQ/mpgt-eval"), std::string::npos);
+  EXPECT_NE(help.err.find("corpus_dir in --config"), std::string::npos) << help.err;
+  EXPECT_EQ(help.err.find("../"), std::string::npos) << help.err;
+}
+
 TEST(DialogueCorpus, AnExistingOutputIsReplacedOnlyWithOverwrite) {
   const std::string dir = scratch("existing");
   const std::string args = "--seed 1 --out " + dir + "c.jsonl";

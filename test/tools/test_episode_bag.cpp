@@ -16,7 +16,7 @@ namespace {
 
 const std::string kSource = ARI_SOURCE_DIR;
 
-// A randomised group of 2-5 chatting in the seed's room, and nobody else: what changes with the
+// A randomised group of 2-5 chatting in D6.4's 6 x 6 m room, and nobody else: what changes with the
 // seed is the group's size, place and turn, and its members' gaze.
 scenario::Scenario random_group_scenario() {
   const std::string text =

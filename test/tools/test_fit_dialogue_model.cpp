@@ -40,6 +40,22 @@ TEST(FitDialogueModel, BadOptionsExitWithTwo) {
   EXPECT_EQ(fs::directory_iterator(dir), fs::directory_iterator());
 }
 
+// --help says where the corpus comes from and how to point at it, naming no folder outside the
+// repository; ARI_MPGT_DIR in the environment replaces the build-time folder.
+TEST(FitDialogueModel, HelpAndEnvironmentPointAtTheCorpus) {
+  const ProgramRun help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  for (const std::string fragment :
+       {"https://github.com/AddleseeHQ/mpgt-eval", "$ARI_MPGT_DIR", "-DARI_MPGT_DIR=DIR"}) {
+    EXPECT_NE(help.err.find(fragment), std::string::npos) << help.err;
+  }
+  EXPECT_EQ(help.err.find("../"), std::string::npos) << help.err;
+  const std::string missing = ::testing::TempDir() + "fit_dialogue_model_no_corpus";
+  fs::remove_all(missing);
+  expect_refused(run_program("ARI_MPGT_DIR=" + missing + " " + ARI_FIT_DIALOGUE_MODEL_BIN, ""),
+                 "--corpus: " + missing);
+}
+
 TEST(FitDialogueModel, ReproducesTheShippedModelAndKeepsAnExistingOne) {
   const std::string dir = ::testing::TempDir() + "fit_dialogue_model_out/";
   fs::remove_all(dir);

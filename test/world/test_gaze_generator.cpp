@@ -19,7 +19,7 @@ HumanSpec person(model::ObjectId id, double x, double y) {
   return spec;
 }
 
-// Seed 3.3.2: over 10,000 s each target's share of time matches its probability and the mean
+// D6.4 §3.3.2: over 10,000 s each target's share of time matches its probability and the mean
 // dwell matches mean_duration. The share's standard deviation is sqrt(mean (2p - p^2) / T): with a
 // 0.5 s mean it is at most 0.006, so the 0.02 band is over 3 sigma for every target; a 0.02 s step
 // keeps the exponential's short dwells resolved.

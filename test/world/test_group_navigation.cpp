@@ -65,7 +65,7 @@ TEST(GroupNavigation, Eq3_9To3_12OneStepOfIsolatedMembers) {
   EXPECT_NEAR(human.pose().theta, 0.5 + 0.2 * (M_PI - 0.5), 1e-6);
 }
 
-// Seed 3.4: groups of 2 to 5 started at random places in a 6 x 6 m room form a circular
+// D6.4 §3.4: groups of 2 to 5 started at random places in a 6 x 6 m room form a circular
 // F-formation within 30 s, never touching a wall.
 TEST(GroupNavigation, GroupsOf2To5FormCircularFformationsFromRandomStarts) {
   constexpr double kSide = 6.0;

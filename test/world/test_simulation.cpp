@@ -129,7 +129,7 @@ TEST(Simulation, RepulsionKeepsWalkersApartWhenCrossing) {
     simulation.step();
     closest = std::min(closest, (a.pose().position - b.pose().position).norm());
   }
-  // Head on, the seed's repulsion has no sideways part: the walkers meet, and the contact (bodies
+  // Head on, D6.4's repulsion has no sideways part: the walkers meet, and the contact (bodies
   // of radius 0.2 m, Box2D slop 5 mm) slides them past each other without passing through; both
   // arrive.
   EXPECT_GT(closest, 0.4 - 0.015);

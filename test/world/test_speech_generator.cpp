@@ -8,7 +8,7 @@
 namespace ari_social_sim::world {
 namespace {
 
-// Seed 3.3.3: a 10-word utterance at 120 wpm lasts 10 x 0.5 s = 5.0 s, played word by word.
+// D6.4 §3.3.3: a 10-word utterance at 120 wpm lasts 10 x 0.5 s = 5.0 s, played word by word.
 TEST(SpeechGenerator, TenWordsAt120WpmLastFiveSecondsWordByWord) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{0.05, 1, 0.05});
   HumanSpec spec;

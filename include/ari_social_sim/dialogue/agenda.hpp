@@ -28,7 +28,7 @@ struct TrackedGoal {
 };
 
 /// The goals of one dialogue: one agenda per human (goals it owns alone, in order) plus the shared
-/// pool of joint goals either owner may raise (specs/dialogue.md section 6).
+/// pool of joint goals either owner may raise (the project's own model, docs/dialogue.md).
 class Agenda {
  public:
   Agenda() = default;

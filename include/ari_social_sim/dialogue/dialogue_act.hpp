@@ -5,7 +5,7 @@
 
 namespace ari_social_sim::dialogue {
 
-/// One dialogue act in the MPGT intent-slot notation (specs/dialogue.md section 2.1):
+/// One dialogue act in the MPGT intent-slot notation (MPGT):
 /// an intent, a nested slot path (outermost first) and an optional value, the innermost argument
 /// of a path with at least two levels. Examples:
 ///   `request(location(toilet))`             -> intent request, slots [location], value toilet
@@ -28,7 +28,7 @@ struct DialogueAct {
   bool operator!=(const DialogueAct& other) const { return !(*this == other); }
 };
 
-/// The 24 intents annotated in MPGT (specs/dialogue.md section 2.1), in that order.
+/// The 24 intents annotated in MPGT, in that order.
 const std::vector<std::string>& mpgt_intents();
 /// True when `intent` is one of mpgt_intents().
 bool is_known_intent(const std::string& intent);

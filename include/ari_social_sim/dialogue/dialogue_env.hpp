@@ -49,7 +49,7 @@ struct StepResult {
 /// ARI (a live robot that walked up to the humans and spoke first).
 enum class Opening { kDrawn, kRobot };
 
-/// The RL environment (Gymnasium-style, specs/dialogue.md section 4): reset(seed) / step(robot
+/// The RL environment (Gymnasium-style, docs/dialogue.md): reset(seed) / step(robot
 /// action). One seed reproduces an episode exactly. Holds a reference to the setup, which must
 /// outlive it.
 class DialogueEnv {

@@ -10,8 +10,8 @@ namespace ari_social_sim::dialogue {
 
 /// The addressee heuristic for MPGT, which does not label addressees: a human utterance is
 /// addressed to the other human when the next utterance is by another human (neither ARI nor the
-/// same speaker) and its text does not name ARI. On MPGT it labels 174 of 768 utterances (22.7 %,
-/// close to the ~22 % reported for SPRING recordings, specs/dialogue.md section 6).
+/// same speaker) and its text does not name ARI. On MPGT it labels 174 of 768 utterances (22.7 %;
+/// docs/dialogue.md).
 bool is_human_to_human(const CorpusDialogue& dialogue, size_t index);
 
 /// Normalised counts; keys in name order.

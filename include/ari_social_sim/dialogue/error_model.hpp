@@ -10,8 +10,8 @@
 
 namespace ari_social_sim::dialogue {
 
-/// Rates of the error layer shared by every mode (specs/dialogue.md section 4, "Error
-/// simulation"). Defaults: a mild setting between PyDial's 0 % and 15 % semantic error rates.
+/// Rates of the error layer shared by every mode (docs/dialogue.md). Defaults: a mild setting
+/// between PyDial's 0 % and 15 % semantic error rates.
 struct ErrorModelConfig {
   double semantic_error_rate{0.05};   ///< P(one act of an utterance is confused)
   double intent_share{0.2};           ///< of confusions: the intent is replaced (PyDial 0.2)

@@ -6,7 +6,7 @@
 namespace ari_social_sim::dialogue {
 
 /// How fit_user_model pools sparse data, so that the tables carry the general behaviour of the
-/// 29 conversations rather than their quirks (specs/dialogue.md section 6).
+/// 29 conversations rather than their quirks (the project's own choice).
 struct FitOptions {
   unsigned min_row_count{10};  ///< contexts seen fewer times use the `*` row (the role's marginal)
   double prior_weight{5.0};    ///< pseudo-counts pulling P(to other | intent) to the role's mean

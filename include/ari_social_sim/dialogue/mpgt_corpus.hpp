@@ -38,8 +38,13 @@ struct MpgtCorpus {
   size_t utterance_count() const;
 };
 
-/// Default location of the corpus, `<source>/../shared/dialogue/mpgt` (ARI_MPGT_DIR at build time).
+/// The folder of the MPGT corpus's convo*.txt files when none is given: the environment variable
+/// ARI_MPGT_DIR when set and not empty, else the folder given at build time (the CMake cache
+/// variable ARI_MPGT_DIR). The corpus is not part of the repository (docs/dialogue.md).
 std::string default_mpgt_dir();
+
+/// For the tools' --help: where the MPGT corpus comes from and how a tool finds it.
+std::string mpgt_corpus_help();
 
 /// Parses one conversation's text; `name` is used in messages. Throws core::ConfigError naming the
 /// line when a line has no `Speaker:` prefix or an unknown speaker code.

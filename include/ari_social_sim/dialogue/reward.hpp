@@ -5,7 +5,7 @@
 
 namespace ari_social_sim::dialogue {
 
-/// Episode reward (specs/dialogue.md 1.1 and 1.4: +2 x cap on success, -cap on failure, -1 a turn)
+/// Episode reward (the project's own choice: +2 x cap on success, -cap on failure, -1 a turn)
 /// and the turn cap, counted in robot turns (RL steps).
 struct RewardConfig {
   unsigned max_turns{40};        ///< robot turns before the episode is truncated

@@ -7,8 +7,8 @@
 
 namespace ari_social_sim::dialogue {
 
-/// Turn-taking times (specs/algorithms.md section 4): the next speaker starts after a gap
-/// ~ N(200 ms, 200 ms) clipped at 0 (Stivers et al. 2009), and speaks at 150 wpm, 0.4 s a word.
+/// Turn-taking times: the next speaker starts after a gap ~ N(200 ms, 200 ms) clipped at 0
+/// (Stivers 2009), and speaks at 150 wpm, 0.4 s a word.
 struct TurnTimingConfig {
   double gap_mean_s{0.2};
   double gap_sd_s{0.2};

@@ -4,7 +4,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// Control effort and smoothness (specs/algorithms.md 2.3, w_u |u|^2 + w_d |u_t - u_{t-1}|^2), plus
+/// Control effort and smoothness (docs/navigation.md, w_u |u|^2 + w_d |u_t - u_{t-1}|^2), plus
 /// ARI's acceleration limits (1 m/s^2, 2.094 rad/s^2) as a stiff penalty on each step's change
 /// beyond a_max dt, and a penalty on driving backwards (ARI has no rear sensors). The first step's
 /// change is taken from the measured velocities.

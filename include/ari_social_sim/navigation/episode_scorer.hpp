@@ -20,7 +20,7 @@ struct ScoredTick {
   double static_penetration_m{0.0};    // how deep ARI's body reaches into walls or furniture
 };
 
-/// Social-navigation metrics of one episode (specs/algorithms.md 5 suggests the set).
+/// Social-navigation metrics of one episode (the project's own set, docs/navigation.md).
 struct EpisodeScore {
   double duration_s{0.0};
   double path_length_m{0.0};          // base_footprint path

@@ -16,7 +16,7 @@ struct FootprintModel {
   model::AriFootprint rectangle;
   std::vector<double> circle_offsets_x_m;  // circle centres on the body axis
   double circle_radius_m{0.0};             // covers the rectangle's corners
-  double head_offset_x_m{-0.2255};         // head_1_joint axis (specs/ari.md 1.1)
+  double head_offset_x_m{-0.2255};         // head_1_joint axis (ari_robot's URDF)
 
   /// `circle_count` circles, each covering an equal slice of the rectangle's length.
   static FootprintModel covering(const model::AriFootprint& rectangle, int circle_count);

@@ -7,7 +7,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// How the travel-distance field weighs the map (specs/algorithms.md 2.3, "G").
+/// How the travel-distance field weighs the map ("G" of docs/navigation.md).
 struct GeodesicParams {
   /// m: base_footprint closer than this to a wall or furniture cannot pass (ARI's half width).
   double inscribed_radius_m{0.28};

@@ -4,7 +4,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// Progress toward the goal along the geodesic field G (specs/algorithms.md 2.3):
+/// Progress toward the goal along the geodesic field G (docs/navigation.md):
 ///   sum_t w_goal rho(G(p_t)) + w_terminal rho(G(p_N)),
 /// rho the Huber function of width h (G^2 / 2h below h, G - h/2 above), so the pull is constant far
 /// away and fades smoothly at the goal instead of overshooting. p_t is base_footprint.

@@ -70,7 +70,7 @@ struct GoalFailure {
 /// A goal for a target, or why there is none.
 using GoalSearch = std::variant<Goal, GoalFailure>;
 
-/// Turns a target into a goal pose (specs/algorithms.md 2.4):
+/// Turns a target into a goal pose (the project's own rules, docs/navigation.md):
 /// - pose: the pose itself, if ARI's footprint fits there;
 /// - person: base_footprint `approach_distance` in front of the person, within
 ///   `approach_max_angle` of their facing direction, facing them; the first free place in order

@@ -4,7 +4,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// O-spaces of the groups ARI is not joining (specs/algorithms.md 2.5): for every such group,
+/// O-spaces of the groups ARI is not joining (docs/navigation.md): for every such group,
 /// footprint circle and step, a soft isotropic Gaussian w_g exp(-|q - c|^2 / (2 R^2)) (q the circle
 /// point nearest the centre c, R the members' radius) plus a stiff edge
 /// w_e max(0, r_o + margin - (|c_i - c| - r))^2 that keeps the footprint out of the o-space disc of

@@ -41,7 +41,7 @@ struct CostWeights {
   void read(const core::YamlMap& map);
 };
 
-/// The model predictive controller (specs/algorithms.md 2.3).
+/// The model predictive controller (docs/navigation.md).
 struct MpcConfig {
   int horizon_steps{20};        // N
   double step_s{0.15};          // dt; N dt = 3 s look-ahead
@@ -74,7 +74,7 @@ struct MpcConfig {
   void read(const core::YamlMap& map);
 };
 
-/// Turns "approach a person" and "join a group" into a pose (specs/algorithms.md 2.4).
+/// Turns "approach a person" and "join a group" into a pose (docs/navigation.md).
 struct GoalFinderConfig {
   double approach_distance_m{1.1};   // base_footprint to the person's centre (Hall: personal edge)
   double approach_max_angle{0.52};   // rad, at most this far off the person's facing direction

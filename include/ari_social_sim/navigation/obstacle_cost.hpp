@@ -4,7 +4,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// Clearance from walls and furniture (specs/algorithms.md 2.3, "O"): for every footprint circle
+/// Clearance from walls and furniture (docs/navigation.md): for every footprint circle
 /// (radius r) at every step, w max(0, r + margin - d(c))^2 with d the signed distance field, so the
 /// whole footprint, not only base_footprint, keeps off obstacles.
 class ObstacleCost : public CostTerm {

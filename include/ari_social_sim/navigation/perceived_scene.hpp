@@ -25,7 +25,7 @@ struct GroupEstimate {
   double radius_m{0.0};  // mean distance of the members from the centre (where they stand)
 };
 
-/// O-space of a group (specs/algorithms.md 2.4): centre = mean of the members' candidate centres
+/// O-space of a group (docs/navigation.md): centre = mean of the members' candidate centres
 /// p_i + stride (cos theta_i, sin theta_i), as GCFF fits it; radius = mean distance of the members
 /// from that centre. Needs at least one member.
 GroupEstimate estimate_group(const std::string& id, const std::vector<PersonEstimate>& members,

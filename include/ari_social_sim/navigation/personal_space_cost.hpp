@@ -4,7 +4,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// Personal spaces (specs/algorithms.md 2.5): for every person j, footprint circle and step,
+/// Personal spaces (Kirby 2010; docs/navigation.md): for every person j, footprint circle and step,
 ///   s_j (w f_j(q) + w_e max(0, ln(f_j(q) / f_e))^2),
 /// f_j the asymmetric Gaussian of PersonalSpaceParams around the person predicted at constant
 /// velocity, q the point of the circle nearest to the person (ARI's body edge, not its axis), s_j

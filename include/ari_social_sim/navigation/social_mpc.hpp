@@ -27,7 +27,7 @@ struct MpcSolution {
   double pan_target() const { return states.size() > 1 ? states[1].pan : 0.0; }
 };
 
-/// SocialMPC (seed 3.5.5; specs/algorithms.md 2.3): minimises the sum of the cost terms over a
+/// SocialMPC (D6.4 §3.5.5; docs/navigation.md): minimises the sum of the cost terms over a
 /// horizon of N steps of the unicycle-plus-pan model within ARI's limits, warm-started from the
 /// previous solution shifted by one step. Several start points are scored (the shifted previous
 /// solution, a geodesic follower going straight and swerving either way, standing still) and the

@@ -8,7 +8,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// Asymmetric Gaussian personal space (Kirby 2010; specs/algorithms.md 2.5), in the person's frame
+/// Asymmetric Gaussian personal space (Kirby 2010), in the person's frame
 /// (x along their heading): f = exp(-(x^2 / (2 s_x^2) + y^2 / (2 s_side^2))), s_x = front sigma
 /// ahead of the person and rear sigma behind. The front sigma grows with walking speed, as people
 /// claim more room ahead when they walk. The space's edge is the contour at `boundary_sigmas`.

@@ -7,7 +7,7 @@
 
 namespace ari_social_sim::navigation {
 
-/// ARI's state as the MPC predicts it (specs/algorithms.md 2.3): base_footprint pose in the map
+/// ARI's state as the MPC predicts it (docs/navigation.md): base_footprint pose in the map
 /// frame and the head pan (head_1_joint, rad, positive to the left).
 struct RobotState {
   Eigen::Vector2d position{Eigen::Vector2d::Zero()};

@@ -4,10 +4,10 @@
 
 namespace ari_social_sim::navigation {
 
-/// Keeps the target in the head camera's view (specs/algorithms.md 2.3, w_p (pan + theta -
-/// bearing)^2, here in the bounded form w (1 - cos e)), e the angle between the camera axis
-/// (theta + pan) and the bearing from the head pan axis to the target. Without a target the head
-/// looks ahead (e = pan). Pan beyond head_1_joint's +-75 deg costs w_limit per rad^2.
+/// Keeps the target in the head camera's view (the project's own term, docs/navigation.md:
+/// w_p (pan + theta - bearing)^2 in the bounded form w (1 - cos e)), e the angle between the
+/// camera axis (theta + pan) and the bearing from the head pan axis to the target. Without a target
+/// the head looks ahead (e = pan). Pan beyond head_1_joint's +-75 deg costs w_limit per rad^2.
 class ViewCost : public CostTerm {
  public:
   ViewCost(double weight, double limit_weight, const FootprintModel& footprint, double pan_limit)

@@ -12,7 +12,7 @@
 
 namespace ari_social_sim::perception {
 
-/// Seed 3.5.2 HumanTrackingSensor: bodies as the torso fisheye tracks them. A human is tracked
+/// D6.4 §3.5.2 HumanTrackingSensor: bodies as the torso fisheye tracks them. A human is tracked
 /// when inside the fisheye's wedge and range, at least min_visible_fraction of them is visible
 /// past walls, furniture and other people, and no miss is drawn (body_errors); tracks keep their
 /// id as TrackIds decides; poses carry PoseNoise.

@@ -16,7 +16,7 @@ namespace ari_social_sim::perception {
 /// at most `head_turn_limit_rad` (the 2D world has gaze but no head).
 double head_direction(const world::HumanSnapshot& human, double head_turn_limit_rad);
 
-/// Seed 3.5.3 FaceTracker, SoftBioMetrics, FaceMask, Emotion and Gaze sensors: faces as the head
+/// D6.4 §3.5.3 FaceTracker, SoftBioMetrics, FaceMask, Emotion and Gaze sensors: faces as the head
 /// camera sees them. A face is seen when the human is inside the head camera's wedge and range,
 /// at least its min_visible_fraction is visible, the face points at the camera within
 /// max_face_angle, and no miss is drawn (face_errors). A face turned away counts as occluded for

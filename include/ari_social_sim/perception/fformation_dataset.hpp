@@ -7,7 +7,7 @@
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/perception/grouping.hpp"
 
-// Readers of the F-formation data sets converted to CSV (shared/fformation/README.md). Each file
+// Readers of the F-formation data sets converted to CSV (docs/perception_gcff.md). Each file
 // starts with its exact header line; fields are separated by commas, without quoting; spaces
 // around a field and a trailing '\r' are ignored; blank lines are skipped. Anything else throws
 // core::ConfigError naming the file, the line, the column (1-based character position of the

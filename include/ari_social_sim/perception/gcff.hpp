@@ -6,7 +6,7 @@
 #include <vector>
 
 // GCFF: Graph-Cuts for F-Formation (Setti, Russell, Bassetti, Cristani, PLOS ONE 2015), as
-// specified in specs/algorithms.md 1.1-1.2. Every length here is in the unit of the input
+// the paper and its authors' code define it. Every length here is in the unit of the input
 // positions: metres in the simulator, centimetres for the F-formation data sets (MDL then scales by
 // 10^4).
 
@@ -61,10 +61,10 @@ struct GcffResult {
 /// Ceiling of the visibility penalty V(i,k): 100^x overflows to inf for x > 154.
 constexpr double kGcffMaxVisibilityPenalty = 1e12;
 
-/// Candidate o-space centre of one person (algorithms.md 1.1.1): p + stride (cos theta, sin theta).
+/// Candidate o-space centre of one person (Setti 2015): p + stride (cos theta, sin theta).
 Eigen::Vector2d gcff_candidate_centre(const GcffPerson& person, double stride);
 
-/// Unary costs u(i,k) = |mu_i - c_k|^2 + V(i,k) (algorithms.md 1.1.3-4) of every person against
+/// Unary costs u(i,k) = |mu_i - c_k|^2 + V(i,k) (Setti 2015) of every person against
 /// every hypothesis centre, written row-major into `costs` (N rows, K columns; resized).
 /// `positions` and `candidate_centres` hold p_i and mu_i for the N persons, `hypotheses` the c_k.
 /// V(i,k) sums 100^(cos(d_i, d_j) |d_i| / |d_j|) over the people j that person i stands behind
@@ -76,7 +76,7 @@ void gcff_unary_costs(const std::vector<Eigen::Vector2d>& positions,
                       const std::vector<Eigen::Vector2d>& hypotheses, double mdl,
                       std::vector<double>& costs);
 
-/// Finds F-formations in one frame (algorithms.md 1.2): starting from one hypothesis per person,
+/// Finds F-formations in one frame (Setti 2015): starting from one hypothesis per person,
 /// alternates alpha-expansion with label costs (closed-form moves, no graph-cut library) and a
 /// refit of each hypothesis to the mean of its members' candidate centres, until the labelling
 /// stops changing or after kMaxOuterIterations. Deterministic.

@@ -5,7 +5,7 @@
 
 #include "ari_social_sim/perception/grouping.hpp"
 
-// The F-formation evaluation protocol of GCFF's `ff_evalgroups` (specs/algorithms.md 1.4).
+// The F-formation evaluation protocol of GCFF's `ff_evalgroups` (Setti 2015).
 
 namespace ari_social_sim::perception {
 

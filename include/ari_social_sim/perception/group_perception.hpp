@@ -18,7 +18,7 @@ struct PerceivedGroup {
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};  ///< O-space centre (the people's frame).
 };
 
-/// Seed 3.5.2 GroupDetectionSensor, as ROS4HRI's separate group detection: GCFF on whichever
+/// D6.4 §3.5.2 GroupDetectionSensor, as ROS4HRI's separate group detection: GCFF on whichever
 /// people are given each frame (ROS4HRI person ids, positions and body facings in one fixed
 /// frame, metres and rad), membership steadied over GroupConfig::membership_window_frames frames
 /// (MembershipFilter), group ids kept by GroupTracker while membership persists (and for

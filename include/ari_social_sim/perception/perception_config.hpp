@@ -11,7 +11,7 @@
 #include "ari_social_sim/perception/gcff.hpp"
 
 // Parameters of ARI's simulated perception (docs/perception.md). Defaults are ARI's sensors
-// (specs/ari.md section 3) and moderate error levels; config/perception.yaml spells them out.
+// (ari_robot's URDF, D6.4 §3.5) and moderate error levels; config/perception.yaml spells them out.
 // Every struct lists its fields once in `visit`, which drives reading, writing and bound checks:
 // v.field(name, member, bounds) for values, v.section(name, member) for nested structs. Angles
 // are in degrees where the name says `_deg`, lengths in metres, rates are probabilities per event
@@ -19,9 +19,9 @@
 
 namespace ari_social_sim::perception {
 
-/// The torso front fisheye that tracks bodies (seed 3.5.2; ELP IMX179, 180 degrees).
+/// The torso front fisheye that tracks bodies (D6.4 §3.5.2; ELP IMX179, 180 degrees).
 struct BodyCameraConfig {
-  double x_m{-0.142};  ///< Mount in base_footprint (specs/ari.md: front fisheye at x -0.142).
+  double x_m{-0.142};  ///< Mount in base_footprint (ari_robot's URDF: front fisheye at x -0.142).
   double y_m{0.0};
   double z_m{1.321};                 ///< Height, for image regions only.
   double field_of_view_deg{180.0};   ///< Horizontal.
@@ -39,15 +39,15 @@ struct BodyCameraConfig {
   }
 };
 
-/// The head camera that sees faces (seed 3.5.3: 62 degrees), turning with the head pan.
+/// The head camera that sees faces (D6.4 §3.5.3: 62 degrees), turning with the head pan.
 struct FaceCameraConfig {
-  double pan_axis_x_m{-0.2255};  ///< head_1_joint in base_footprint (specs/ari.md 1.1).
+  double pan_axis_x_m{-0.2255};  ///< head_1_joint in base_footprint (ari_robot's URDF).
   double pan_axis_y_m{0.0};
   double x_m{0.1055};  ///< Camera ahead of the pan axis (head_front_camera at x -0.120 at pan 0).
   double y_m{0.0};
   double z_m{1.591};
   double field_of_view_deg{62.0};
-  double range_m{2.0};               ///< ARI's face detection reaches about 2 m (specs/ari.md 5).
+  double range_m{2.0};               ///< ARI's face detection: about 2 m (ARI documentation).
   double min_visible_fraction{0.5};  ///< A face needs most of the head in view.
   double max_face_angle_deg{60.0};   ///< Face seen when turned toward the camera within this.
 
@@ -65,12 +65,12 @@ struct FaceCameraConfig {
   }
 };
 
-/// The ReSpeaker array in the torso (seed 3.5.4): hears speakers within a distance, not through
+/// The ReSpeaker array in the torso (D6.4 §3.5.4): hears speakers within a distance, not through
 /// walls.
 struct MicrophoneConfig {
   double x_m{-0.122};  ///< torso_mic_front_link in base_footprint.
   double y_m{0.0};
-  double max_distance_m{5.0};   ///< Seed: max listening distance d.
+  double max_distance_m{5.0};   ///< D6.4 §3.5.4: max listening distance d.
   double voice_timeout_s{2.0};  ///< A voice stays tracked this long after its last word.
   std::string language{"en-GB"};
 

@@ -29,7 +29,7 @@ struct PipelineMemory {
   uint64_t ids_issued{0};        ///< Face, body and voice ids issued so far (a count, not memory).
 };
 
-/// ARI's perception of the people around it (seed 3.5.2-3.5.4), one frame per world snapshot:
+/// ARI's perception of the people around it (D6.4 §3.5.2-3.5.4), one frame per world snapshot:
 /// bodies (torso fisheye), faces (head camera), voices and speech (microphones), persons with
 /// engagement and gaze relations, with the configured error models. Seeded: the same
 /// configuration and snapshots give the same frames. Groups are not part of it: as in ROS4HRI,

@@ -15,7 +15,7 @@
 
 namespace ari_social_sim::perception {
 
-/// Seed 3.5.4 SpeechSensor: voices and speech as ARI's microphone array and ASR report them.
+/// D6.4 §3.5.4 SpeechSensor: voices and speech as ARI's microphone array and ASR report them.
 ///
 /// A human is audible when within the microphone's max_distance and the straight line to them
 /// crosses no blocking cell of the sound map (walls: a person in another room is not heard).

@@ -13,7 +13,7 @@
 
 namespace ari_social_sim::perception {
 
-/// Gives each simulated human a track id while a tracker sees them (seed 3.5.2: the simulator's
+/// Gives each simulated human a track id while a tracker sees them (D6.4 §3.5.2: the simulator's
 /// own ids keep tracks consistent through occlusions and exits from the view), with the
 /// re-identification errors of DetectionErrors:
 ///  - re-found after a gap whose worst cause was an occlusion: a new id with

@@ -8,7 +8,7 @@
 
 namespace ari_social_sim::perception {
 
-/// Face, body and voice ids as the ROS4HRI reference detectors make them (specs/ros4hri.md 1.9):
+/// Face, body and voice ids as the ROS4HRI reference detectors make them (ROS4HRI nodes):
 /// five lowercase letters that look random (seeded), so a new id always means a new track.
 ///
 /// Guarantee: a new id repeats none of the last kRepeatWindow (26^5 - 1 = 11 881 375) ids issued,

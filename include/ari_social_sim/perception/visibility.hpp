@@ -17,7 +17,7 @@ struct SightObstacles {
   double person_radius_m{0.2};
 };
 
-/// Seed 3.5.2 raycasting: the share of `ray_count` rays from the sensor, spread evenly over the
+/// D6.4 §3.5.2 raycasting: the share of `ray_count` rays from the sensor, spread evenly over the
 /// angular width of person `target` (index into obstacles.people), that reach that person's circle
 /// without entering a blocking grid cell or another person's circle first, and that lie inside
 /// the sensor's wedge. 1 when the sensor stands inside the circle. Range is not checked here.

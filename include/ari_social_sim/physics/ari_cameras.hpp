@@ -15,7 +15,7 @@ enum class CameraKind {
 };
 
 /// One of ARI's cameras: where it is mounted, what it produces and under which names. Defaults
-/// come from ../shared/specs/ari.md section 3 (see docs/cameras.md for the choices made).
+/// come from ari_robot and ari_simulation (see docs/cameras.md for the choices made).
 struct CameraSpec {
   std::string name;  // ROS namespace without the leading slash, e.g. "head_front_camera"
   CameraKind kind{CameraKind::kColour};
@@ -43,7 +43,7 @@ struct CameraSpec {
 /// spring_cameras).
 std::vector<CameraSpec> ari_camera_specs();
 
-/// Pose of head_2_link in base_footprint at the given head joint angles (ari.md 1.1: pan about z,
+/// Pose of head_2_link in base_footprint at the given head joint angles (ari_robot: pan about z,
 /// positive to the left; tilt positive looking down).
 Eigen::Isometry3d X_footprint_head_2(double head_1_rad, double head_2_rad);
 

@@ -7,7 +7,7 @@
 
 namespace ari_social_sim::physics {
 
-/// ARI v1's joint trajectory controllers as PAL spawns them (specs/ari.md §2): head (goal tolerance
+/// ARI v1's joint trajectory controllers as PAL spawns them (ari_robot): head (goal tolerance
 /// 0.5 rad, goal_time 2.0 s), arm_left/arm_right (joints 1-4, 0.02 rad, 0.6 s) and hand_left/
 /// hand_right (the actuated fingers joint, 0.02 rad, 0.6 s); stopped_velocity_tolerance 5.0.
 std::vector<ControllerSpec> ari_controller_specs();

@@ -11,7 +11,7 @@ struct DriveGeometry {
   double wheel_separation_m{0.44};
 };
 
-/// ARI's mobile_base_controller (diff_drive_controller, specs/ari.md §2) turning a twist command
+/// ARI's mobile_base_controller (diff_drive_controller, ari_robot) turning a twist command
 /// into wheel velocities: velocity limits with preserve_turning_radius (both components scaled by
 /// the same factor so the path's curvature is kept), then acceleration limits per component, and
 /// a stop (within the acceleration limits) when no command arrived for cmd_vel_timeout.

@@ -13,7 +13,7 @@
 
 namespace ari_social_sim::physics {
 
-/// Parameters of the mapping mode (seed 3.5.1: ARI maps with its torso RGB-D camera).
+/// Parameters of the mapping mode (D6.4 §3.5.1: ARI maps with its torso RGB-D camera).
 struct MappingConfig {
   double resolution_m{0.05};  // voxel edge, also the 2D map's cell size
   double max_range_m{4.0};    // rays beyond are cleared up to here and leave no obstacle

@@ -9,7 +9,7 @@
 namespace ari_social_sim::physics {
 
 /// Everything AriPhysics needs besides the robot model and the world. Defaults are ARI's
-/// (specs/ari.md) or, where the spec is silent, chosen and explained in docs/physics.md.
+/// (ari_robot) or, where it is silent, the project's own, explained in docs/physics.md.
 struct PhysicsConfig {
   double step_s{0.001};  // s; PAL's Gazebo runs physics and ros_control at 1 kHz
   double gravity_mps2{9.81};

@@ -37,7 +37,7 @@ struct JointBounds {
   double max_velocity_rps{0.0};
 };
 
-/// One joint trajectory controller as PAL configures it (specs/ari.md §2): the joints it owns and
+/// One joint trajectory controller as PAL configures it (ari_robot): the joints it owns and
 /// the default constraints of position_controllers/JointTrajectoryController.
 struct ControllerSpec {
   std::string name;                 // e.g. "head_controller"

@@ -8,7 +8,7 @@
 
 namespace ari_social_sim::scenario {
 
-/// A scripted interaction (seed 3.7): a scene (world file, seed, ARI, humans, groups; read by the
+/// A scripted interaction (D6.4 §3.7): a scene (world file, seed, ARI, humans, groups; read by the
 /// world's scene loader) plus a script, the state machine that drives the run. Read from
 /// scenarios/*.yaml; the format is in docs/scenario.md.
 struct Scenario {

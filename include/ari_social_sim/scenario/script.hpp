@@ -27,7 +27,7 @@ struct DistanceCondition {
 };
 
 /// An utterance of `speaker` whose act matches `act` finished after the current state was entered
-/// (the seed's `previous_speech_act == act`). `act` is exact, or a prefix ending in `*`; `*` alone
+/// (D6.4's `previous_speech_act == act`). `act` is exact, or a prefix ending in `*`; `*` alone
 /// matches any act.
 struct SpeechFinishedCondition {
   AgentRef speaker;
@@ -116,7 +116,7 @@ struct SetGroupCentreAction {
 /// script leaves the state.
 struct ConverseAction {};
 
-/// Ends the run with an outcome (the seed's `simulation.stop()`).
+/// Ends the run with an outcome (D6.4's `simulation.stop()`).
 struct StopAction {
   bool success{true};
   std::string reason;
@@ -155,7 +155,7 @@ struct ScriptInterfaces {
   bool dialogue{false};          // ARI converses or a condition waits for the dialogue's end
 };
 
-/// The scripted part of a scenario (the seed's Script, 3.7, as data).
+/// The scripted part of a scenario (D6.4's Script, §3.7, as data).
 struct Script {
   double time_limit_s{0.0};  // sim time after which the run ends as a failure
   std::vector<RandomGroup> random_groups;

@@ -28,7 +28,7 @@ struct StateVisit {
   double enter_s{0.0};  // sim time since the script started
 };
 
-/// Plays a scenario's script (the seed's Script.step, 3.7, as a state machine) against any run
+/// Plays a scenario's script (D6.4's Script.step, §3.7, as a state machine) against any run
 /// that provides Observations and Commands: scenario_node over ROS, the batch tool in-process.
 /// Each tick it records what was said, ends the run at the time limit, and fires at most one
 /// transition of the current state (the first whose conditions all hold): its actions, then the

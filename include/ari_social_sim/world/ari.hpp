@@ -28,7 +28,7 @@ struct AriSpec {
   void validate() const;
 };
 
-/// ARI's 2D body (seed 3.5): base_footprint pose, body orientation and head pan, driven by twist
+/// ARI's 2D body (D6.4 §3.5): base_footprint pose, body orientation and head pan, driven by twist
 /// and pan commands within ARI's limits; speaks with the same SpeechGenerator as humans.
 class Ari : public Object {
  public:

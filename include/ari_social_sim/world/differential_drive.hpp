@@ -5,7 +5,7 @@
 
 namespace ari_social_sim::world {
 
-/// ARI's base as PAL's diff_drive_controller drives it (seed 3.5.5: linear velocity along the body
+/// ARI's base as PAL's diff_drive_controller drives it (D6.4 §3.5.5: linear velocity along the body
 /// heading, angular velocity of the body): the commanded twist is clamped to the velocity limits,
 /// reached within the acceleration limits, and dropped to zero after the command timeout.
 class DifferentialDrive : public Component {

@@ -30,9 +30,9 @@ constexpr size_t kMaxGazeTargets = 50;
 /// Longest mean dwell (s) of a gaze model: a day, far beyond any run.
 constexpr double kMaxGazeMeanDurationS = 86400.0;
 
-/// Seed 3.3.2: either targets with probabilities summing to 1, or a distribution of directions.
+/// D6.4 §3.3.2: either targets with probabilities summing to 1, or a distribution of directions.
 /// Gaze changes follow a Poisson process: dwell times are exponential with mean `mean_duration_s`.
-/// (The seed calls the parameter a rate lambda yet says the mean is lambda seconds; the mean is
+/// (D6.4 calls the parameter a rate lambda yet says the mean is lambda seconds; the mean is
 /// what is configured here, in seconds.)
 struct GazeModel {
   std::vector<GazeTarget> targets;
@@ -46,7 +46,7 @@ struct GazeModel {
   void validate() const;
 };
 
-/// Seed 3.3.2 GazeGenerator: samples a new target (or direction) at each change of an exponential
+/// D6.4 §3.3.2 GazeGenerator: samples a new target (or direction) at each change of an exponential
 /// clock and keeps the gaze direction on the target as both move. A change may pick the same
 /// target again (each change is one gaze event), so each target's share of time equals its
 /// probability and every event's dwell has the configured mean. A target that leaves the world is

@@ -15,7 +15,7 @@ constexpr size_t kMaxGroupMembers = 50;
 /// Largest o-space radius and member spacing (m) a group may be given.
 constexpr double kMaxOspaceRadiusM = 10.0;
 
-/// A conversational group's parameters (seed 3.4.1).
+/// A conversational group's parameters (D6.4 §3.4.1).
 struct GroupSpec {
   model::ObjectId id{model::kNoObject};
   std::vector<model::ObjectId> members;
@@ -33,7 +33,7 @@ struct GroupSpec {
   /// with a spring that does not vanish at the even spacing. The outward push at even spacing is
   /// (Delta_p - chord)^2 whichever members are in range, and cohesion_radius_m() balances it.
   double spacing_factor{1.5};
-  /// eta / step (m/s per unit force): the group's own step length (seed 3.4.1 lists it among the
+  /// eta / step (m/s per unit force): the group's own step length (D6.4 §3.4.1 lists it among the
   /// script's properties). Faster than walking alone, so members settle within ~30 s; each step is
   /// still capped at the member's max_speed.
   double step_speed_mps{2.0};
@@ -46,7 +46,7 @@ struct GroupSpec {
   void validate() const;
 };
 
-/// Seed 3.4.1 GroupNavigation script: moves its members with repulsion, equality and cohesion
+/// D6.4 §3.4.1 GroupNavigation script: moves its members with repulsion, equality and cohesion
 /// forces (eq. 3.9-3.18) into a circular F-formation around the o-space centre. The simulation
 /// steps each group after the sensors (D6.4's scripts).
 class GroupNavigation {

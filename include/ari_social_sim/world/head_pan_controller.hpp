@@ -5,8 +5,8 @@
 
 namespace ari_social_sim::world {
 
-/// ARI's head pan (head_1_joint): driven by a pan velocity (seed 3.5.5) or toward a position target
-/// (what /head_controller/command gives), within the joint and speed limits.
+/// ARI's head pan (head_1_joint): driven by a pan velocity (D6.4 §3.5.5) or toward a position
+/// target (what /head_controller/command gives), within the joint and speed limits.
 class HeadPanController : public Component {
  public:
   HeadPanController(const model::AriLimits& limits, double initial_pan_rad)

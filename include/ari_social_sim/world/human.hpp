@@ -16,9 +16,9 @@ constexpr double kMaxAgeYears = 130.0;
 /// above a person turning on the spot (about half a turn per second).
 constexpr double kMaxHumanTurnRateRps = 6.283185307179586;
 
-/// Parameters of a human's movement (seed 3.3: step length, goal distance, personal distance).
+/// Parameters of a human's movement (D6.4 §3.3: step length, goal distance, personal distance).
 struct HumanMotionParams {
-  /// m/s under a unit force. The seed's step length is eta = walking_speed * step, so that motion
+  /// m/s under a unit force. D6.4's step length is eta = walking_speed * step, so that motion
   /// does not depend on the step size; a goal force of magnitude 1 walks at this speed.
   double walking_speed_mps{1.0};
   /// m/s; a longer step eta * |f| is shortened to this speed (people do not run to their group).
@@ -57,12 +57,12 @@ struct HumanSpec {
   void validate() const;
 };
 
-/// How a human's movement is driven (seed 3.3.1).
+/// How a human's movement is driven (D6.4 §3.3.1).
 enum class MotionMode : uint8_t { kIdle = 0, kDirect = 1, kNavigation = 2, kGroup = 3 };
 
 class HumanNavigation;
 
-/// A simulated person (seed 3.3). Position comes from its Box2D circle; orientation is kept here
+/// A simulated person (D6.4 §3.3). Position comes from its Box2D circle; orientation is kept here
 /// (the body does not rotate) and changed only by the movement model.
 class Human : public Object {
  public:

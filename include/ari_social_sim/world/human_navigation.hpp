@@ -8,7 +8,7 @@
 
 namespace ari_social_sim::world {
 
-/// Seed 3.3.1 HumanNavigation: walks the owner toward a goal pose with a goal force (eq. 3.5) plus
+/// D6.4 §3.3.1 HumanNavigation: walks the owner toward a goal pose with a goal force (eq. 3.5) plus
 /// repulsion from agents in its personal area (eq. 3.6-3.7), p += eta f (eq. 3.3), turning toward
 /// the movement direction, then to the goal orientation within Delta_G (eq. 3.2, 3.4).
 class HumanNavigation : public Component {

@@ -24,7 +24,7 @@ void check_map_size(const model::WorldDescription& world, double resolution_m);
 model::OccupancyGrid rasterize_static_map(const model::WorldDescription& world,
                                           double resolution_m);
 
-/// Seed 3.5.1 MapSensor: ARI's occupancy map of the environment, replicating its mapping from the
+/// D6.4 §3.5.1 MapSensor: ARI's occupancy map of the environment, replicating its mapping from the
 /// static objects of the simulation. Static geometry never changes during a run, so the map is
 /// built on the first sensor step and kept.
 class MapSensor : public Component {

@@ -21,11 +21,11 @@ struct StepContext {
   double dt_s;    // step length
 };
 
-/// When a component runs within Simulation::step (seed 3.2): generators before the physics,
+/// When a component runs within Simulation::step (D6.4 §3.2): generators before the physics,
 /// sensors after it.
 enum class ComponentPhase { kGenerator, kSensor };
 
-/// A modular behaviour or sense attached to an Object (seed 3.2): navigation, gaze, speech, maps.
+/// A modular behaviour or sense attached to an Object (D6.4 §3.2): navigation, gaze, speech, maps.
 class Component {
  public:
   virtual ~Component() = default;
@@ -35,7 +35,7 @@ class Component {
 
 enum class ObjectKind { kStatic, kHuman, kAri };
 
-/// A physical entity with a Box2D body and a list of components (seed 3.2). Poses and velocities
+/// A physical entity with a Box2D body and a list of components (D6.4 §3.2). Poses and velocities
 /// are cached from the body after each physics step, so readers never touch Box2D.
 class Object {
  public:

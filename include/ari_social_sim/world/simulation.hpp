@@ -33,8 +33,8 @@ struct StepDiagnostics {
   uint64_t clamped_commands{0};  // ARI twist or pan commands beyond ARI's limits
 };
 
-/// The 2D multi-party world (seed 3.2): Objects with Components, and group scripts, on a Box2D
-/// world. Each step runs, in the seed's order: the objects' generator components (navigation,
+/// The 2D multi-party world (D6.4 §3.2): Objects with Components, and group scripts, on a Box2D
+/// world. Each step runs, in D6.4's order: the objects' generator components (navigation,
 /// gaze, speech, ARI's drive) and their planned motion, the physics step, the sensor components,
 /// then the scripts (group navigation).
 ///
@@ -91,7 +91,7 @@ class Simulation {
   /// Places a human or ARI directly (/sim/set_pose); a human leaves its group. Throws for an
   /// unknown id, a pose off the floor or with a non-finite heading, or one that overlaps anything.
   void set_pose(model::ObjectId id, const core::Pose2& pose);
-  /// ARI's base twist (seed 3.5.5), held for ARI's command timeout. Finite out-of-limit values
+  /// ARI's base twist (D6.4 §3.5.5), held for ARI's command timeout. Finite out-of-limit values
   /// are clamped as ARI's controller does and counted in diagnostics(). Throws without ARI or for
   /// a non-finite value (the command is then ignored).
   void command_ari_twist(double linear_mps, double angular_rps);

@@ -3,9 +3,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-/// The force model of seed sections 3.3.1 and 3.4.1 as plain functions of positions, so each
+/// The force model of D6.4 §3.3.1 and §3.4.1 as plain functions of positions, so each
 /// equation can be checked against hand-computed values. Positions are in the map frame (m).
-/// Where the seed's typesetting is garbled, the evident meaning is implemented (docs/world.md).
+/// Where D6.4's typesetting is garbled, the evident meaning is implemented (docs/world.md).
 namespace ari_social_sim::world::social_forces {
 
 using Vector2 = Eigen::Vector2d;

@@ -17,7 +17,7 @@ struct SpeechRecord {
   bool interrupted{false};
 };
 
-/// Seed 3.3.3: plays an utterance word by word at a words-per-minute rate and keeps the history of
+/// D6.4 §3.3.3: plays an utterance word by word at a words-per-minute rate and keeps the history of
 /// acts with their start and end times: the last kHistoryLength of them, so that a speaker who
 /// talks for hours does not grow without bound (only the previous act is published). Word i is
 /// current during [start + i * 60 / wpm, start + (i + 1) * 60 / wpm); the act ends at the first
@@ -50,7 +50,7 @@ class SpeechGenerator : public Component {
   const std::string& current_word() const;
   size_t word_index() const { return word_index_; }
   double start_s() const { return start_s_; }
-  /// The most recent act that finished (seed: previous_speech_act); empty before the first.
+  /// The most recent act that finished (D6.4's previous_speech_act); empty before the first.
   const SpeechRecord* previous() const { return history_.empty() ? nullptr : &history_.back(); }
   /// The last kHistoryLength finished acts, oldest first.
   const std::deque<SpeechRecord>& history() const { return history_; }

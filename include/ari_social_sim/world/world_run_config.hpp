@@ -8,7 +8,7 @@
 namespace ari_social_sim::world {
 
 /// Who moves ARI's base: world_node itself from cmd_vel (2D mode), or ari_physics_node, whose
-/// ground truth world_node follows (3D mode, DESIGN.md).
+/// ground truth world_node follows (3D mode, docs/physics.md).
 enum class AriSource { kInternal, kPhysics };
 
 /// How world_node runs a scene: its private parameters (~scene, ~step, ...), read and checked in

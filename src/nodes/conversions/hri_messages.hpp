@@ -20,7 +20,7 @@
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
 
-// The ROS4HRI messages (hri_msgs 0.9.0 layouts, specs/ros4hri.md) of a perception frame.
+// The ROS4HRI messages (hri_msgs 0.9.0 layouts, REP-155 topics) of a perception frame.
 
 namespace ari_social_sim::nodes {
 
@@ -40,7 +40,7 @@ Group group_msg(const perception::PerceivedGroup& group, const std_msgs::Header&
 Gaze gaze_msg(const perception::GazeRelation& gaze, const std_msgs::Header& header);
 IdsMatch match_msg(const perception::CandidateMatch& match);
 
-/// Frame names of specs/ros4hri.md 1.8.
+/// Frame names of REP-155.
 std::string body_frame(const std::string& body_id);
 std::string head_frame(const std::string& body_id);
 std::string face_frame(const std::string& face_id);

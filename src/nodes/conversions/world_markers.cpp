@@ -65,7 +65,7 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
   b.delete_all();
   add_static(b, world);
 
-  // Colours: static geometry green as in the seed's GUI, agents red, ARI white, gaze yellow.
+  // Colours: static geometry green as in D6.4's GUI, agents red, ARI white, gaze yellow.
   const std_msgs::ColorRGBA body = rgba(0.85f, 0.2f, 0.2f);
   const std_msgs::ColorRGBA heading = rgba(0.5f, 0.05f, 0.05f);
   const std_msgs::ColorRGBA gaze = rgba(1.0f, 0.85f, 0.1f);

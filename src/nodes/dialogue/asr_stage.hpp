@@ -12,7 +12,7 @@
 namespace ari_social_sim::nodes {
 
 /// Mode 3: the simulated humans heard the way a real conversational system hears people, through
-/// ROS4HRI (specs/ros4hri.md): per voice `/humans/voices/<voice>/speech` (hri_msgs/LiveSpeech:
+/// ROS4HRI (REP-155): per voice `/humans/voices/<voice>/speech` (hri_msgs/LiveSpeech:
 /// incremental hypotheses word by word, then the final text with its confidence and language) and
 /// `is_speaking`; `/humans/voices/tracked` and `/humans/persons/tracked` (10 Hz, latched);
 /// latched `/humans/persons/<person>/voice_id` and `anonymous`. What is published is what ARI
