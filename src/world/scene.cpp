@@ -85,14 +85,14 @@ HumanSpec parse_human(const core::YamlMap& entry) {
   if (const auto parsed = model::parse_gender(gender)) {
     spec.gender = *parsed;
   } else {
-    entry.fail("gender", "female, male or non-identified", "'" + gender + "'");
+    entry.fail("gender", model::kGenderChoices, "'" + gender + "'");
   }
   spec.mask = entry.optional<bool>("mask", false);
   const std::string emotion = entry.optional<std::string>("emotion", "neutral");
   if (const auto parsed = model::parse_emotion(emotion)) {
     spec.emotion = *parsed;
   } else {
-    entry.fail("emotion", "neutral, happy, angry or disturbed", "'" + emotion + "'");
+    entry.fail("emotion", model::kEmotionChoices, "'" + emotion + "'");
   }
   spec.words_per_minute =
       entry.optional<double>("words_per_minute", spec.words_per_minute, core::positive());
