@@ -52,21 +52,23 @@ const std::vector<std::string> kSentences = {
 
 // Keeps the crowd busy during the measured steps: whoever is silent starts a new sentence, and a
 // walker that reached its goal gets another one. Runs inside Simulation::step, so the speech and
-// goal updates are part of what is timed.
+// goal updates are part of what is timed. It changes the world through its requests, as any client
+// of the world does, hence the simulation it is given besides the one its step reads.
 class CrowdActivity : public world::Process {
  public:
-  CrowdActivity(double side_m, uint64_t seed) : side_m_(side_m), rng_(seed) {}
+  CrowdActivity(world::Simulation& simulation, double side_m, uint64_t seed)
+      : simulation_(simulation), side_m_(side_m), rng_(seed) {}
 
   void step(const world::Simulation& simulation, const world::StepContext& context) override {
-    const double now_s = simulation.time_s();
-    for (const std::unique_ptr<world::Human>& human : simulation.humans()) {
+    for (const world::Human* human : simulation.humans()) {
       if (!human->speech().is_speaking()) {
-        human->speech().say("STATEMENT", kSentences[rng_.uniform_index(kSentences.size())], now_s);
+        simulation_.say(human->id(), "STATEMENT",
+                        kSentences[rng_.uniform_index(kSentences.size())]);
       }
       if (human->motion_mode() == world::MotionMode::kNavigation && human->goal() &&
           (human->goal()->position - human->pose().position).norm() <
               human->spec().motion.goal_distance_m) {
-        human->set_goal(random_pose());
+        simulation_.set_human_goal(human->id(), random_pose());
       }
     }
   }
@@ -80,6 +82,7 @@ class CrowdActivity : public world::Process {
   }
 
  private:
+  world::Simulation& simulation_;
   double side_m_;
   core::Rng rng_;
 };
@@ -166,16 +169,15 @@ std::unique_ptr<world::Simulation> make_crowd(size_t count, uint64_t seed) {
       std::vector<ObjectId> others;
       std::copy_if(spec.members.begin(), spec.members.end(), std::back_inserter(others),
                    [member](ObjectId id) { return id != member; });
-      simulation->find_human(member)->set_gaze_model(gaze_at(others));
+      simulation->set_human_gaze(member, gaze_at(others));
     }
     simulation->add_group(spec);
   }
 
   // Walkers: a random goal each and three random other people to look at.
-  auto activity = std::make_unique<CrowdActivity>(side_m, seed + 1);
+  auto activity = std::make_unique<CrowdActivity>(*simulation, side_m, seed + 1);
   for (ObjectId id : free_ids) {
-    world::Human& human = *simulation->find_human(id);
-    human.set_goal(activity->random_pose());
+    simulation->set_human_goal(id, activity->random_pose());
     std::vector<ObjectId> targets;
     while (targets.size() < kGazeTargetsPerWalker) {
       const ObjectId target = ids[rng.uniform_index(ids.size())];
@@ -183,7 +185,7 @@ std::unique_ptr<world::Simulation> make_crowd(size_t count, uint64_t seed) {
         targets.push_back(target);
       }
     }
-    human.set_gaze_model(gaze_at(targets));
+    simulation->set_human_gaze(id, gaze_at(targets));
   }
   simulation->add_process(std::move(activity));
 
@@ -202,7 +204,7 @@ double thread_cpu_s() {
 
 double formed_group_share(const world::Simulation& simulation) {
   size_t formed = 0;
-  for (const std::unique_ptr<world::GroupNavigation>& group : simulation.groups()) {
+  for (const world::GroupNavigation* group : simulation.groups()) {
     if (world::GroupReport::of(simulation, *group).max_distance_to_circle_m() < kFormedToleranceM) {
       ++formed;
     }

@@ -14,6 +14,7 @@ add_library(ari_world
   src/world/object.cpp
   src/world/request_check.cpp
   src/world/scene.cpp
+  src/world/service_requests.cpp
   src/world/simulation.cpp
   src/world/social_forces.cpp
   src/world/speech_generator.cpp
