@@ -35,6 +35,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp
       test/world/test_speech_generator.cpp
+      test/world/test_world_requests.cpp
       test/world/test_world_run_config.cpp
     LIBRARIES ari_world)
   target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
