@@ -51,21 +51,22 @@ const std::vector<std::string> kSentences = {
 
 // Keeps the crowd busy during the measured steps: whoever is silent starts a new sentence, and a
 // walker that reached its goal gets another one. Runs after every Simulation::step, within the
-// timed loop, so the speech and goal updates are part of what is timed.
+// timed loop, so the speech and goal updates are part of what is timed. It changes the world
+// through its requests, as any client of the world does.
 class CrowdActivity {
  public:
   CrowdActivity(double side_m, uint64_t seed) : side_m_(side_m), rng_(seed) {}
 
-  void step(const world::Simulation& simulation) {
-    const double now_s = simulation.time_s();
-    for (const std::unique_ptr<world::Human>& human : simulation.humans()) {
+  void step(world::Simulation& simulation) {
+    for (const world::Human* human : simulation.humans()) {
       if (!human->speech().is_speaking()) {
-        human->speech().say("STATEMENT", kSentences[rng_.uniform_index(kSentences.size())], now_s);
+        simulation.say(human->id(), "STATEMENT",
+                        kSentences[rng_.uniform_index(kSentences.size())]);
       }
       if (human->motion_mode() == world::MotionMode::kNavigation && human->goal() &&
           (human->goal()->position - human->pose().position).norm() <
               human->spec().motion.goal_distance_m) {
-        human->set_goal(random_pose());
+        simulation.set_human_goal(human->id(), random_pose());
       }
     }
   }
@@ -176,7 +177,7 @@ Crowd make_crowd(size_t count, uint64_t seed) {
       std::vector<ObjectId> others;
       std::copy_if(spec.members.begin(), spec.members.end(), std::back_inserter(others),
                    [member](ObjectId id) { return id != member; });
-      simulation->find_human(member)->set_gaze_model(gaze_at(others));
+      simulation->set_human_gaze(member, gaze_at(others));
     }
     simulation->add_group(spec);
   }
@@ -184,8 +185,7 @@ Crowd make_crowd(size_t count, uint64_t seed) {
   // Walkers: a random goal each and three random other people to look at.
   Crowd crowd{std::move(simulation), CrowdActivity(side_m, seed + 1)};
   for (ObjectId id : free_ids) {
-    world::Human& human = *crowd.simulation->find_human(id);
-    human.set_goal(crowd.activity.random_pose());
+    crowd.simulation->set_human_goal(id, crowd.activity.random_pose());
     std::vector<ObjectId> targets;
     while (targets.size() < kGazeTargetsPerWalker) {
       const ObjectId target = ids[rng.uniform_index(ids.size())];
@@ -193,7 +193,7 @@ Crowd make_crowd(size_t count, uint64_t seed) {
         targets.push_back(target);
       }
     }
-    human.set_gaze_model(gaze_at(targets));
+    crowd.simulation->set_human_gaze(id, gaze_at(targets));
   }
 
   for (int i = 0; i < kWarmUpSteps; ++i) {
@@ -211,7 +211,7 @@ double thread_cpu_s() {
 
 double formed_group_share(const world::Simulation& simulation) {
   size_t formed = 0;
-  for (const std::unique_ptr<world::GroupNavigation>& group : simulation.groups()) {
+  for (const world::GroupNavigation* group : simulation.groups()) {
     if (world::GroupReport::of(simulation, *group).max_distance_to_circle_m() < kFormedToleranceM) {
       ++formed;
     }

@@ -220,12 +220,12 @@ class Crowd {
             gaze.targets.push_back({other, 1.0 / static_cast<double>(size - 1)});
           }
         }
-        simulation_->find_human(member)->set_gaze_model(gaze);
+        simulation_->set_human_gaze(member, gaze);
       }
       grouped += size;
     }
     for (ObjectId walker : free) {
-      start_walking(*simulation_->find_human(walker));
+      start_walking(walker);
     }
   }
 
@@ -235,14 +235,15 @@ class Crowd {
   // walker leaves and a newcomer walks in.
   void step(double churn_s) {
     const double now_s = simulation_->time_s();
-    for (const auto& human : simulation_->humans()) {
+    for (const world::Human* human : simulation_->humans()) {
       if (!human->speech().is_speaking() && rng_.bernoulli(0.01)) {
-        human->speech().say("STATEMENT", kSentences[rng_.uniform_index(kSentences.size())], now_s);
+        simulation_->say(human->id(), "STATEMENT",
+                         kSentences[rng_.uniform_index(kSentences.size())]);
       }
       if (human->motion_mode() == world::MotionMode::kNavigation && human->goal() &&
           (human->goal()->position - human->pose().position).norm() <
               human->spec().motion.goal_distance_m) {
-        human->set_goal(random_pose());
+        simulation_->set_human_goal(human->id(), random_pose());
       }
     }
     if (now_s >= next_churn_s_) {
@@ -269,7 +270,7 @@ class Crowd {
   }
 
   // A new person at a free random place away from ARI, under the next unused id.
-  world::Human& spawn() {
+  ObjectId spawn() {
     const Eigen::Vector2d centre(0.5 * side_m_, 0.5 * side_m_);
     while (true) {
       world::HumanSpec spec;
@@ -279,9 +280,9 @@ class Crowd {
         continue;
       }
       try {
-        world::Human& human = simulation_->add_human(spec);
+        simulation_->add_human(spec);
         next_id_ = spec.id + 1;
-        return human;
+        return spec.id;
       } catch (const core::RequestError&) {
         // Overlaps someone: draw another place.
       }
@@ -289,20 +290,25 @@ class Crowd {
   }
 
   // Walks between random goals, looking at ARI and at two random people.
-  void start_walking(world::Human& human) {
-    human.set_goal(random_pose());
+  void start_walking(ObjectId walker) {
+    simulation_->set_human_goal(walker, random_pose());
+    const auto humans = simulation_->humans();
+    std::vector<ObjectId> people;
+    for (int k = 0; k < 2; ++k) {
+      const ObjectId drawn = humans[rng_.uniform_index(humans.size())]->id();
+      // Nobody looks at themselves (the world refuses it), nor at one person as two targets.
+      if (drawn != walker && std::find(people.begin(), people.end(), drawn) == people.end()) {
+        people.push_back(drawn);
+      }
+    }
     world::GazeModel gaze;
     gaze.mean_duration_s = 2.0;
-    gaze.targets.push_back({kAriId, 1.0 / 3.0});
-    const auto& humans = simulation_->humans();
-    for (int k = 0; k < 2; ++k) {
-      gaze.targets.push_back({humans[rng_.uniform_index(humans.size())]->id(), 1.0 / 3.0});
+    const double share = 1.0 / static_cast<double>(people.size() + 1);
+    gaze.targets.push_back({kAriId, share});
+    for (ObjectId person : people) {
+      gaze.targets.push_back({person, share});
     }
-    if (gaze.targets[1].id == gaze.targets[2].id) {
-      gaze.targets.pop_back();
-      gaze.targets[0].probability = gaze.targets[1].probability = 0.5;
-    }
-    human.set_gaze_model(gaze);
+    simulation_->set_human_gaze(walker, gaze);
   }
 
   // Walkers push ARI about (it is a body among theirs); left alone it ends in a corner facing the

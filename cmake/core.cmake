@@ -11,7 +11,8 @@ target_link_libraries(ari_core PUBLIC Eigen3::Eigen yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_core
-    SOURCES test/core/test_command_line.cpp test/core/test_output_file.cpp test/core/test_pose2.cpp
+    SOURCES test/core/test_command_line.cpp test/core/test_const_pointer_view.cpp
+      test/core/test_output_file.cpp test/core/test_pose2.cpp
       test/core/test_rng.cpp test/core/test_text_file.cpp test/core/test_yaml_map.cpp
     LIBRARIES ari_core)
 endif()

@@ -14,6 +14,7 @@ add_library(ari_world
   src/world/object.cpp
   src/world/request_check.cpp
   src/world/scene.cpp
+  src/world/service_requests.cpp
   src/world/simulation.cpp
   src/world/social_forces.cpp
   src/world/speech_generator.cpp
@@ -34,6 +35,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp
       test/world/test_speech_generator.cpp
+      test/world/test_world_requests.cpp
       test/world/test_world_run_config.cpp
     LIBRARIES ari_world)
   target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -38,6 +38,7 @@
 #include "ari_social_sim/world/group_report.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/scene.hpp"
+#include "ari_social_sim/world/service_requests.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 #include "conversions/ari_base.hpp"
@@ -354,34 +355,9 @@ class WorldNode {
 
   bool spawn_human(SpawnHuman::Request& req, SpawnHuman::Response& res) {
     return answer(res, [&] {
-      world::HumanSpec spec;
-      spec.id = req.id == 0 ? simulation_->next_free_id(10) : req.id;
-      spec.name = req.name;
-      spec.role = req.role;
-      spec.pose = from_msg(req.pose);
-      if (req.age != 0.0f) {
-        spec.age_years = req.age;
-      }
-      if (!req.gender.empty()) {
-        const auto gender = model::parse_gender(req.gender);
-        if (!gender) {
-          throw core::RequestError(
-              "spawn_human: gender: expected female, male or non-identified, got '" + req.gender +
-              "'");
-        }
-        spec.gender = *gender;
-      }
-      spec.mask = req.mask;
-      if (!req.emotion.empty()) {
-        const auto emotion = model::parse_emotion(req.emotion);
-        if (!emotion) {
-          throw core::RequestError(
-              "spawn_human: emotion: expected neutral, happy, angry or disturbed, got '" +
-              req.emotion + "'");
-        }
-        spec.emotion = *emotion;
-      }
-      res.id = simulation_->add_human(spec).id();
+      const world::SpawnHumanRequest request{req.id,  req.name,   req.role,      from_msg(req.pose),
+                                             req.age, req.gender, req.mask != 0, req.emotion};
+      res.id = simulation_->add_human(request.spec()).id();
     });
   }
 
@@ -410,9 +386,6 @@ class WorldNode {
     return answer(res, [&] {
       world::GroupSpec spec;
       spec.id = req.id;
-      if (spec.id == 0) {
-        spec.id = simulation_->groups().empty() ? 1 : simulation_->groups().back()->id() + 1;
-      }
       spec.members = req.members;
       spec.centre = {req.centre.x, req.centre.y};
       spec.ospace_radius_m = req.ospace_radius;
@@ -431,26 +404,14 @@ class WorldNode {
   }
 
   bool say(Say::Request& req, Say::Response& res) {
-    return answer(res, [&] {
-      world::SpeechGenerator& speech = simulation_->speech_of(req.speaker_id);
-      speech.say(req.act, req.content, simulation_->time_s());
-      res.duration = speech.duration_s(req.content);
-    });
+    return answer(res,
+                  [&] { res.duration = simulation_->say(req.speaker_id, req.act, req.content); });
   }
 
   bool set_gaze_targets(SetGazeTargets::Request& req, SetGazeTargets::Response& res) {
     return answer(res, [&] {
-      if (req.targets.size() != req.probabilities.size()) {
-        throw core::RequestError("set_gaze_targets: probabilities: expected one per target (" +
-                                 std::to_string(req.targets.size()) + "), got " +
-                                 std::to_string(req.probabilities.size()));
-      }
-      world::GazeModel model;
-      for (size_t i = 0; i < req.targets.size(); ++i) {
-        model.targets.push_back({req.targets[i], req.probabilities[i]});
-      }
-      model.mean_duration_s = req.mean_duration;
-      simulation_->set_human_gaze(req.id, model);
+      const world::GazeTargetsRequest request{req.targets, req.probabilities, req.mean_duration};
+      simulation_->set_human_gaze(req.id, request.model());
     });
   }
 

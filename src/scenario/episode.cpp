@@ -21,7 +21,7 @@ class Episode::InProcessCommands : public Commands {
       }
       return;
     }
-    world_.speech_of(speaker.human_id).say(act, text, world_.time_s());
+    world_.say(speaker.human_id, act, text);
   }
 
   void set_human_goal(model::ObjectId human, const core::Pose2& goal) override {
@@ -52,12 +52,12 @@ class Episode::InProcessCommands : public Commands {
     world::HumanSpec spawned = spec;
     spawned.goal.reset();
     spawned.gaze.reset();
-    world_.add_human(spawned);
+    const model::ObjectId id = world_.add_human(spawned).id();
     if (spec.goal) {
-      set_human_goal(spec.id, *spec.goal);
+      world_.set_human_goal(id, *spec.goal);
     }
     if (spec.gaze) {
-      world_.find_human(spec.id)->set_gaze_model(*spec.gaze);
+      world_.set_human_gaze(id, *spec.gaze);
     }
   }
 

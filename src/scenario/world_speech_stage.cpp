@@ -36,7 +36,7 @@ void WorldSpeechStage::follow(const world::WorldSnapshot& snapshot) {
 bool WorldSpeechStage::play(uint32_t speaker_id, const std::string& act,
                             const std::string& content) {
   try {
-    simulation_.speech_of(speaker_id).say(act, content, simulation_.time_s());
+    simulation_.say(speaker_id, act, content);
   } catch (const core::RequestError&) {
     return false;  // as /sim/say refusing
   }

@@ -106,7 +106,7 @@ void GroupNavigation::step(const StepContext& context) {
   const double cohesion_radius = cohesion_radius_m();
 
   for (size_t i = 0; i < spec_.members.size(); ++i) {
-    Human& human = *simulation.find_human(spec_.members[i]);
+    Human& human = *simulation.mutable_human(spec_.members[i]);
     const HumanMotionParams& params = human.spec().motion;
     const Eigen::Vector2d& p = member_positions_[i];
 

@@ -12,6 +12,11 @@ void RequestCheck::fail(const std::string& field, const std::string& expectation
   throw core::RequestError(prefix() + field + ": expected " + expectation + ", got " + got);
 }
 
+void RequestCheck::unknown_id(const std::string& field, const std::string& kind,
+                              model::ObjectId id) const {
+  throw core::RequestError(prefix() + field + ": no " + kind + " with id " + std::to_string(id));
+}
+
 void RequestCheck::finite(const std::string& field, double value) const {
   if (!std::isfinite(value)) {
     fail(field, "a finite number", core::number_text(value));

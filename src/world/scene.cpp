@@ -4,6 +4,7 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/model/world_file.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -85,14 +86,14 @@ HumanSpec parse_human(const core::YamlMap& entry) {
   if (const auto parsed = model::parse_gender(gender)) {
     spec.gender = *parsed;
   } else {
-    entry.fail("gender", "female, male or non-identified", "'" + gender + "'");
+    entry.fail("gender", model::kGenderChoices, "'" + gender + "'");
   }
   spec.mask = entry.optional<bool>("mask", false);
   const std::string emotion = entry.optional<std::string>("emotion", "neutral");
   if (const auto parsed = model::parse_emotion(emotion)) {
     spec.emotion = *parsed;
   } else {
-    entry.fail("emotion", "neutral, happy, angry or disturbed", "'" + emotion + "'");
+    entry.fail("emotion", model::kEmotionChoices, "'" + emotion + "'");
   }
   spec.words_per_minute =
       entry.optional<double>("words_per_minute", spec.words_per_minute, core::positive());
@@ -215,9 +216,13 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, SimulationConfi
   } catch (const core::RequestError& e) {
     throw core::ConfigError(scene.path + ": ari: " + e.what());
   }
+  // Gaze models are installed once everyone stands in the world: a human may look at people
+  // listed after them.
   for (size_t i = 0; i < scene.humans.size(); ++i) {
+    HumanSpec arriving = scene.humans[i];
+    arriving.gaze.reset();
     try {
-      simulation->add_human(scene.humans[i]);
+      simulation->add_human(arriving);
     } catch (const core::RequestError& e) {
       throw core::ConfigError(scene.human_fields[i] + ": " + e.what());
     }
@@ -229,18 +234,18 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, SimulationConfi
       throw core::ConfigError(scene.group_fields[i] + ": " + e.what());
     }
   }
-  // Gaze targets must name objects of this scene.
   for (size_t i = 0; i < scene.humans.size(); ++i) {
-    if (!scene.humans[i].gaze) {
+    const std::optional<GazeModel>& gaze = scene.humans[i].gaze;
+    if (!gaze) {
       continue;
     }
-    for (const GazeTarget& target : scene.humans[i].gaze->targets) {
-      if (simulation->find_object(target.id) == nullptr || target.id == scene.humans[i].id) {
-        throw core::ConfigError(scene.human_fields[i] +
-                                ".gaze.targets: expected ids of other "
-                                "objects in the scene, got " +
-                                std::to_string(target.id));
-      }
+    try {
+      // Checked first on its own, to word a refusal as the entry's field:
+      // humans[0].gaze.targets[1].
+      simulation->check_gaze_targets(RequestCheck(), scene.humans[i].id, *gaze);
+      simulation->set_human_gaze(scene.humans[i].id, *gaze);
+    } catch (const core::RequestError& e) {
+      throw core::ConfigError(scene.human_fields[i] + ".gaze." + e.what());
     }
   }
   return simulation;

@@ -21,8 +21,8 @@ constexpr int32 kPositionIterations = 3;
 // ARI's mass (kg, ari_robot's URDF: base_link 43.4 kg plus wheels and head) and a person's.
 constexpr float kAriMassKg = 50.0f;
 constexpr float kHumanMassKg = 70.0f;
-// The first id handed out by next_free_id for humans spawned without one.
-constexpr model::ObjectId kFirstAutomaticAgentId = 10;
+// The id of the first group created without one.
+constexpr model::ObjectId kFirstAutomaticGroupId = 1;
 // About one personal distance: a neighbour query then visits a 3 x 3 block of cells.
 constexpr double kAgentGridCellM = 1.0;
 
@@ -132,23 +132,36 @@ void Simulation::register_object(Object& object) {
 }
 
 model::ObjectId Simulation::next_free_id(model::ObjectId from) const {
-  model::ObjectId id = std::max<model::ObjectId>(from, kFirstAutomaticAgentId);
+  model::ObjectId id = std::max<model::ObjectId>(from, kFirstAutomaticHumanId);
   while (objects_by_id_.count(id) > 0) {
     ++id;
   }
   return id;
 }
 
-Object* Simulation::find_object(model::ObjectId id) const {
+const Object* Simulation::find_object(model::ObjectId id) const {
   const auto it = objects_by_id_.find(id);
   return it == objects_by_id_.end() ? nullptr : it->second;
 }
 
-Human* Simulation::find_human(model::ObjectId id) const {
+const Human* Simulation::find_human(model::ObjectId id) const {
   return find_sorted(humans_, id);
 }
 
-GroupNavigation* Simulation::find_group(model::ObjectId id) const {
+const GroupNavigation* Simulation::find_group(model::ObjectId id) const {
+  return find_sorted(groups_, id);
+}
+
+Object* Simulation::mutable_object(model::ObjectId id) {
+  const auto it = objects_by_id_.find(id);
+  return it == objects_by_id_.end() ? nullptr : it->second;
+}
+
+Human* Simulation::mutable_human(model::ObjectId id) {
+  return find_sorted(humans_, id);
+}
+
+GroupNavigation* Simulation::mutable_group(model::ObjectId id) {
   return find_sorted(groups_, id);
 }
 
@@ -194,21 +207,27 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
   }
 }
 
-Human& Simulation::add_human(const HumanSpec& spec) {
+const Human& Simulation::add_human(HumanSpec spec) {
+  if (spec.id == model::kNoObject) {
+    spec.id = next_free_id(kFirstAutomaticHumanId);
+  }
   const RequestCheck check("spawn_human");
   check.on_floor("pose", spec.pose.position, world_);
   if (spec.goal) {
     check.on_floor("goal", spec.goal->position, world_);
   }
   check.valid(spec);
-  const std::string what = "human " + std::to_string(spec.id);
   if (find_object(spec.id) != nullptr) {
-    throw core::RequestError(what + ": id is already used");
+    check.fail("id", "an id no other object uses", std::to_string(spec.id));
   }
   if (humans_.size() >= kMaxHumans) {
     throw core::RequestError("spawn_human: the world already holds " +
                              std::to_string(humans_.size()) + " humans, the most it may hold");
   }
+  if (spec.gaze) {
+    check_gaze_targets(check, spec.id, *spec.gaze);
+  }
+  const std::string what = "human " + std::to_string(spec.id);
   b2CircleShape circle;
   circle.m_radius = static_cast<float>(spec.motion.body_radius_m);
   check_placement(circle, spec.pose, nullptr,
@@ -234,19 +253,16 @@ Human& Simulation::add_human(const HumanSpec& spec) {
 }
 
 void Simulation::remove_human(model::ObjectId id) {
-  Human* human = find_human(id);
-  if (human == nullptr) {
-    throw core::RequestError("no human with id " + std::to_string(id));
-  }
-  release_from_group(id);
-  physics_->DestroyBody(human->body());
+  Human& human = existing_human(RequestCheck("remove_human"), id);
+  release_from_group(human);
+  physics_->DestroyBody(human.body());
   objects_by_id_.erase(id);
   agents_changed();
   humans_.erase(std::find_if(humans_.begin(), humans_.end(),
                              [id](const std::unique_ptr<Human>& h) { return h->id() == id; }));
 }
 
-Ari& Simulation::add_ari(const AriSpec& spec) {
+const Ari& Simulation::add_ari(const AriSpec& spec) {
   spec.validate();
   RequestCheck().on_floor("pose", spec.pose.position, world_);
   if (ari_) {
@@ -277,31 +293,25 @@ Ari& Simulation::add_ari(const AriSpec& spec) {
   return *ari_;
 }
 
-GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
+const GroupNavigation& Simulation::add_group(GroupSpec spec) {
+  if (spec.id == model::kNoObject) {
+    spec.id = groups_.empty() ? kFirstAutomaticGroupId : groups_.back()->id() + 1;
+  }
   const RequestCheck check("create_group");
   check.valid(spec);
   check.on_floor("centre", spec.centre, world_);
   if (find_group(spec.id) != nullptr) {
-    throw core::RequestError("group id " + std::to_string(spec.id) + " is already used");
+    check.fail("id", "an id no other group uses", std::to_string(spec.id));
   }
+  check_members(check, spec.members);
   for (model::ObjectId member : spec.members) {
-    if (find_human(member) == nullptr) {
-      throw core::RequestError("group " + std::to_string(spec.id) + ": no human with id " +
-                               std::to_string(member));
-    }
-  }
-  for (model::ObjectId member : spec.members) {
-    Human& human = *find_human(member);
-    if (GroupNavigation* previous = find_group(human.group_id())) {
+    Human& human = *mutable_human(member);
+    if (GroupNavigation* previous = mutable_group(human.group_id())) {
       previous->remove_member(member);
     }
     human.join_group(spec.id);
   }
-  // Groups emptied by the move are dropped.
-  groups_.erase(std::remove_if(
-                    groups_.begin(), groups_.end(),
-                    [](const std::unique_ptr<GroupNavigation>& g) { return g->members().empty(); }),
-                groups_.end());
+  drop_empty_groups();
   auto group = std::make_unique<GroupNavigation>(spec);
   GroupNavigation& ref = *group;
   insert_sorted(groups_, std::move(group));
@@ -310,72 +320,67 @@ GroupNavigation& Simulation::add_group(const GroupSpec& spec) {
 
 void Simulation::add_group_members(model::ObjectId group_id,
                                    const std::vector<model::ObjectId>& members) {
-  GroupNavigation* group = find_group(group_id);
-  if (group == nullptr) {
-    throw core::RequestError("no group with id " + std::to_string(group_id));
-  }
   const RequestCheck check("add_group_members");
+  GroupNavigation& group = existing_group(check, group_id);
   // A longer list cannot fit, and is refused before the quadratic search for repeats below.
   if (members.size() > kMaxGroupMembers) {
     check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans",
                std::to_string(members.size()));
   }
+  check_members(check, members);
   size_t joining = 0;
   for (size_t i = 0; i < members.size(); ++i) {
-    const Human* human = find_human(members[i]);
-    if (human == nullptr) {
-      throw core::RequestError("group " + std::to_string(group_id) + ": no human with id " +
-                               std::to_string(members[i]));
-    }
     const bool repeated =
         std::find(members.begin(), members.begin() + i, members[i]) != members.begin() + i;
-    joining += human->group_id() != group_id && !repeated ? 1 : 0;
+    joining += find_human(members[i])->group_id() != group_id && !repeated ? 1 : 0;
   }
-  if (group->members().size() + joining > kMaxGroupMembers) {
+  if (group.members().size() + joining > kMaxGroupMembers) {
     check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans in a group",
-               std::to_string(group->members().size()) + " members and " + std::to_string(joining) +
+               std::to_string(group.members().size()) + " members and " + std::to_string(joining) +
                    " joining");
   }
   for (model::ObjectId member : members) {
-    Human& human = *find_human(member);
+    Human& human = *mutable_human(member);
     if (human.group_id() == group_id) {
       continue;
     }
-    if (GroupNavigation* previous = find_group(human.group_id())) {
+    if (GroupNavigation* previous = mutable_group(human.group_id())) {
       previous->remove_member(member);
-      if (previous->members().empty()) {
-        remove_group(previous->id());
-      }
     }
     human.join_group(group_id);
-    group->add_member(member);
+    group.add_member(member);
+  }
+  drop_empty_groups();
+}
+
+void Simulation::check_members(const RequestCheck& check,
+                               const std::vector<model::ObjectId>& members) const {
+  for (size_t i = 0; i < members.size(); ++i) {
+    if (find_human(members[i]) == nullptr) {
+      check.unknown_id("members[" + std::to_string(i) + "]", "human", members[i]);
+    }
   }
 }
 
-void Simulation::remove_group(model::ObjectId group_id) {
-  GroupNavigation* group = find_group(group_id);
-  if (group == nullptr) {
-    throw core::RequestError("no group with id " + std::to_string(group_id));
-  }
-  for (model::ObjectId member : group->members()) {
-    find_human(member)->leave_group();
-  }
-  groups_.erase(std::find_if(
-      groups_.begin(), groups_.end(),
-      [group_id](const std::unique_ptr<GroupNavigation>& g) { return g->id() == group_id; }));
+void Simulation::drop_empty_groups() {
+  groups_.erase(std::remove_if(
+                    groups_.begin(), groups_.end(),
+                    [](const std::unique_ptr<GroupNavigation>& g) { return g->members().empty(); }),
+                groups_.end());
 }
 
 void Simulation::set_human_goal(model::ObjectId human_id, const core::Pose2& goal) {
-  Human& human = existing_human(human_id);
-  RequestCheck("set_goal").pose_on_floor("goal", goal, world_);
-  release_from_group(human_id);
+  const RequestCheck check("set_goal");
+  Human& human = existing_human(check, human_id);
+  check.pose_on_floor("goal", goal, world_);
+  release_from_group(human);
   human.set_goal(goal);
 }
 
 void Simulation::set_human_velocity(model::ObjectId human_id, const Eigen::Vector2d& velocity_mps,
                                     double angular_velocity_rps) {
-  Human& human = existing_human(human_id);
   const RequestCheck check("set_velocity");
+  Human& human = existing_human(check, human_id);
   check.finite("vx", velocity_mps.x());
   check.finite("vy", velocity_mps.y());
   // hypot: the norm of (1e300, 0) must not overflow to infinity on the way.
@@ -389,14 +394,20 @@ void Simulation::set_human_velocity(model::ObjectId human_id, const Eigen::Vecto
   }
   check.in_range("omega", angular_velocity_rps,
                  core::between(-kMaxHumanTurnRateRps, kMaxHumanTurnRateRps), "rad/s");
-  release_from_group(human_id);
+  release_from_group(human);
   human.set_velocity(velocity_mps, angular_velocity_rps);
 }
 
 void Simulation::set_human_gaze(model::ObjectId human_id, const GazeModel& model) {
-  Human& human = existing_human(human_id);
   const RequestCheck check("set_gaze_targets");
+  Human& human = existing_human(check, human_id);
   check.valid(model);
+  check_gaze_targets(check, human_id, model);
+  human.set_gaze_model(model);
+}
+
+void Simulation::check_gaze_targets(const RequestCheck& check, model::ObjectId human_id,
+                                    const GazeModel& model) const {
   for (size_t i = 0; i < model.targets.size(); ++i) {
     const model::ObjectId target = model.targets[i].id;
     if (find_object(target) == nullptr || target == human_id) {
@@ -404,64 +415,67 @@ void Simulation::set_human_gaze(model::ObjectId human_id, const GazeModel& model
                  std::to_string(target));
     }
   }
-  human.set_gaze_model(model);
 }
 
 void Simulation::set_group_centre(model::ObjectId group_id, const Eigen::Vector2d& centre) {
-  GroupNavigation* group = find_group(group_id);
-  if (group == nullptr) {
-    throw core::RequestError("no group with id " + std::to_string(group_id));
-  }
-  RequestCheck("set_group_centre").on_floor("centre", centre, world_);
-  group->set_centre(centre);
+  const RequestCheck check("set_group_centre");
+  GroupNavigation& group = existing_group(check, group_id);
+  check.on_floor("centre", centre, world_);
+  group.set_centre(centre);
 }
 
-Human& Simulation::existing_human(model::ObjectId human_id) const {
-  Human* human = find_human(human_id);
+Human& Simulation::existing_human(const RequestCheck& check, model::ObjectId human_id) {
+  Human* human = mutable_human(human_id);
   if (human == nullptr) {
-    throw core::RequestError("no human with id " + std::to_string(human_id));
+    check.unknown_id("id", "human", human_id);
   }
   return *human;
 }
 
-SpeechGenerator& Simulation::speech_of(model::ObjectId speaker_id) {
-  if (ari_ && ari_->id() == speaker_id) {
-    return ari_->speech();
+GroupNavigation& Simulation::existing_group(const RequestCheck& check, model::ObjectId group_id) {
+  GroupNavigation* group = mutable_group(group_id);
+  if (group == nullptr) {
+    check.unknown_id("group_id", "group", group_id);
   }
-  Human* human = find_human(speaker_id);
-  if (human == nullptr) {
-    throw core::RequestError("no human or ARI with id " + std::to_string(speaker_id));
-  }
-  return human->speech();
+  return *group;
 }
 
-void Simulation::release_from_group(model::ObjectId human_id) {
-  Human* human = find_human(human_id);
-  if (human == nullptr) {
-    throw core::RequestError("no human with id " + std::to_string(human_id));
+Object& Simulation::existing_agent(const RequestCheck& check, const std::string& field,
+                                   model::ObjectId id) {
+  Object* object = mutable_object(id);
+  if (object == nullptr || object->kind() == ObjectKind::kStatic) {
+    check.unknown_id(field, "human or ARI", id);
   }
-  GroupNavigation* group = find_group(human->group_id());
-  if (group == nullptr) {
-    return;
-  }
-  group->remove_member(human_id);
-  human->leave_group();
-  if (group->members().empty()) {
-    remove_group(group->id());
+  return *object;
+}
+
+double Simulation::say(model::ObjectId speaker_id, const std::string& act,
+                       const std::string& content) {
+  Object& speaker = existing_agent(RequestCheck("say"), "speaker_id", speaker_id);
+  SpeechGenerator& speech = speaker.kind() == ObjectKind::kAri
+                                ? static_cast<Ari&>(speaker).speech()
+                                : static_cast<Human&>(speaker).speech();
+  speech.say(act, content, time_s());
+  return speech.duration_s(content);
+}
+
+void Simulation::release_from_group(Human& human) {
+  if (GroupNavigation* group = mutable_group(human.group_id())) {
+    group->remove_member(human.id());
+    human.leave_group();
+    drop_empty_groups();
   }
 }
 
 void Simulation::set_pose(model::ObjectId id, const core::Pose2& pose) {
-  Object* object = find_object(id);
-  if (object == nullptr || object->kind() == ObjectKind::kStatic) {
-    throw core::RequestError("no human or ARI with id " + std::to_string(id));
-  }
-  RequestCheck("set_pose").pose_on_floor("pose", pose, world_);
+  const RequestCheck check("set_pose");
+  Object* object = &existing_agent(check, "id", id);
+  check.pose_on_floor("pose", pose, world_);
   b2Body* body = object->body();
   check_placement(*body->GetFixtureList()->GetShape(), pose, object,
                   "object " + std::to_string(id));
   if (object->kind() == ObjectKind::kHuman) {
-    release_from_group(id);
+    release_from_group(static_cast<Human&>(*object));
   }
   body->SetTransform(to_b2(pose.position), static_cast<float>(pose.theta));
   body->SetLinearVelocity(b2Vec2(0, 0));

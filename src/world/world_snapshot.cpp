@@ -35,7 +35,7 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     snapshot.ari = a;
   }
   snapshot.humans.reserve(simulation.humans().size());
-  for (const std::unique_ptr<Human>& human : simulation.humans()) {
+  for (const Human* human : simulation.humans()) {
     HumanSnapshot h;
     const HumanSpec& spec = human->spec();
     h.id = human->id();
@@ -59,7 +59,7 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     h.speech = snapshot_of(human->speech());
     snapshot.humans.push_back(std::move(h));
   }
-  for (const std::unique_ptr<GroupNavigation>& group : simulation.groups()) {
+  for (const GroupNavigation* group : simulation.groups()) {
     snapshot.groups.push_back(
         {group->id(), group->members(), group->centre(), group->ospace_radius_m()});
   }

@@ -16,7 +16,7 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
   const world::Scene scene =
       world::load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/waiting_room.yaml");
   auto simulation = world::build_simulation(scene, world::SimulationConfig{});
-  simulation->find_human(20)->speech().say("INFORM", "over there by the window", 0.0);
+  simulation->say(20, "INFORM", "over there by the window");
   for (int i = 0; i < 30; ++i) {
     simulation->step();
   }

@@ -16,7 +16,7 @@ std::vector<std::vector<uint8_t>> run(uint64_t seed, int steps) {
       world::load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/waiting_room.yaml");
   scene.seed = seed;
   auto simulation = world::build_simulation(scene, world::SimulationConfig{});
-  simulation->ari()->speech().say("GREETING", "Hello I am ARI how can I help", 0.0);
+  simulation->say(simulation->ari()->id(), "GREETING", "Hello I am ARI how can I help");
   std::vector<std::vector<uint8_t>> messages;
   for (int i = 0; i < steps; ++i) {
     simulation->step();

@@ -15,13 +15,12 @@ TEST(Transcript, FollowsTheWorldsSpeechWithStartAndEndTimes) {
   auto simulation = world::build_simulation(scene, world::SimulationConfig{});
   Transcript transcript;
   // 4 words at 150 words per minute: 1.6 s, ending at the first step at or after it.
-  simulation->ari()->speech().say("QUESTION:HELP", "Can I help you?", simulation->time_s());
+  simulation->say(simulation->ari()->id(), "QUESTION:HELP", "Can I help you?");
   std::vector<size_t> finished_at;
   for (int step = 0; step < 80; ++step) {
     simulation->step();
     if (step == 10) {
-      simulation->find_human(11)->speech().say("QUESTION:TIME", "What is the time?",
-                                               simulation->time_s());
+      simulation->say(11, "QUESTION:TIME", "What is the time?");
     }
     for (size_t line : transcript.observe(world::WorldSnapshot::of(*simulation))) {
       finished_at.push_back(line);

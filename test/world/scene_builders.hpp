@@ -59,4 +59,29 @@ inline std::vector<model::ObjectId> add_random_humans(Simulation& simulation, in
   return ids;
 }
 
+/// A small world every kind of request can act on: square_room(6) (floor [-0.2, 6.2] on both
+/// axes), humans 10 at (2, 2) and 11 at (4, 2) in group 1 around (3, 2), 12 standing at (3, 4),
+/// ARI (id 1) at (1, 5).
+inline std::unique_ptr<Simulation> request_world() {
+  auto simulation = std::make_unique<Simulation>(square_room(6.0), SimulationConfig{});
+  auto add_human = [&](model::ObjectId id, double x, double y) {
+    HumanSpec spec;
+    spec.id = id;
+    spec.pose.position = {x, y};
+    simulation->add_human(spec);
+  };
+  add_human(10, 2.0, 2.0);
+  add_human(11, 4.0, 2.0);
+  add_human(12, 3.0, 4.0);
+  AriSpec ari;
+  ari.pose = {{1.0, 5.0}, 0.0};
+  simulation->add_ari(ari);
+  GroupSpec group;
+  group.id = 1;
+  group.members = {10, 11};
+  group.centre = {3.0, 2.0};
+  simulation->add_group(group);
+  return simulation;
+}
+
 }  // namespace ari_social_sim::world::test

@@ -51,7 +51,7 @@ size_t expect_queries_match_brute_force(const Simulation& simulation, double sid
   for (int query = 0; query < 400; ++query) {
     const Eigen::Vector2d point{rng.uniform(-1.0, side_m + 1.0), rng.uniform(-1.0, side_m + 1.0)};
     const double radius = rng.uniform(0.1, 3.0);
-    const Object* exclude = simulation.humans()[query % simulation.humans().size()].get();
+    const Object* exclude = simulation.humans()[query % simulation.humans().size()];
     const auto expected = brute_force(simulation, point, radius, exclude);
     EXPECT_EQ(from_grid(simulation, point, radius, exclude), expected)
         << "query at (" << point.x() << ", " << point.y() << "), radius " << radius;
@@ -68,8 +68,9 @@ TEST(AgentGrid, NeighbourQueriesEqualABruteForceScanWhilePeopleMove) {
   simulation.add_ari(ari);
   core::Rng rng(11);
   const std::vector<model::ObjectId> ids = test::add_random_humans(simulation, 40, kSide, 0.4, rng);
+  // Up to 0.9 m/s along each axis: at most 1.27 m/s, within a human's default max_speed.
   for (model::ObjectId id : ids) {
-    simulation.find_human(id)->set_velocity({rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)}, 0.0);
+    simulation.set_human_velocity(id, {rng.uniform(-0.9, 0.9), rng.uniform(-0.9, 0.9)}, 0.0);
   }
   size_t neighbours = expect_queries_match_brute_force(simulation, kSide, rng);
   for (int step = 0; step < 40; ++step) {

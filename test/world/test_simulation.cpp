@@ -52,14 +52,14 @@ std::unique_ptr<Simulation> crowd(uint64_t seed) {
     GazeModel gaze;
     gaze.targets = {{ids[(id + 1) % ids.size()], 0.6}, {ids[(id + 2) % ids.size()], 0.4}};
     gaze.mean_duration_s = 1.0;
-    simulation->find_human(id)->set_gaze_model(gaze);
+    simulation->set_human_gaze(id, gaze);
   }
   GroupSpec group;
   group.id = 1;
   group.members = {ids[0], ids[1], ids[2]};
   group.centre = {4.0, 4.0};
   simulation->add_group(group);
-  simulation->find_human(ids[5])->set_goal({{1.0, 7.0}, 0.0});
+  simulation->set_human_goal(ids[5], {{1.0, 7.0}, 0.0});
   return simulation;
 }
 
@@ -79,8 +79,10 @@ TEST(Simulation, SameSeedSameRunOtherSeedOtherRun) {
 
 TEST(Simulation, WallsStopHumansWalkingIntoThem) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{});
-  Human& human = simulation.add_human(person(10, 3.0, 3.0));
-  human.set_velocity({1.5, 0.0}, 0.0);
+  HumanSpec runner = person(10, 3.0, 3.0);
+  runner.motion.max_speed_mps = 1.5;
+  const Human& human = simulation.add_human(runner);
+  simulation.set_human_velocity(10, {1.5, 0.0}, 0.0);
   for (int i = 0; i < 100; ++i) {
     simulation.step();
     ASSERT_LT(simulation.static_penetration_m(human), 0.005);
@@ -109,8 +111,8 @@ TEST(Simulation, NobodyLeavesTheFloorThroughAnOpening) {
 
 TEST(Simulation, HumanNavigationReachesItsGoalPose) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{});
-  Human& human = simulation.add_human(person(10, 1.0, 1.0));
-  human.set_goal({{4.0, 5.0}, M_PI / 2});
+  const Human& human = simulation.add_human(person(10, 1.0, 1.0));
+  simulation.set_human_goal(10, {{4.0, 5.0}, M_PI / 2});
   for (int i = 0; i < 200; ++i) {  // 10 s for a 5 m walk at 1 m/s
     simulation.step();
   }
@@ -120,10 +122,10 @@ TEST(Simulation, HumanNavigationReachesItsGoalPose) {
 
 TEST(Simulation, RepulsionKeepsWalkersApartWhenCrossing) {
   Simulation simulation(test::square_room(8.0), SimulationConfig{});
-  Human& a = simulation.add_human(person(10, 1.0, 4.0));
-  Human& b = simulation.add_human(person(11, 7.0, 4.05));
-  a.set_goal({{7.0, 4.0}, 0.0});
-  b.set_goal({{1.0, 4.0}, M_PI});
+  const Human& a = simulation.add_human(person(10, 1.0, 4.0));
+  const Human& b = simulation.add_human(person(11, 7.0, 4.05));
+  simulation.set_human_goal(10, {{7.0, 4.0}, 0.0});
+  simulation.set_human_goal(11, {{1.0, 4.0}, M_PI});
   double closest = 10.0;
   for (int i = 0; i < 400; ++i) {
     simulation.step();
@@ -207,7 +209,7 @@ TEST(Simulation, SpawnRequestsAreCheckedAgainstWallsPeopleAndIds) {
   EXPECT_EQ(simulation.next_free_id(10), 11u);
 }
 
-TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeechIsFoundById) {
+TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeakersAreFoundById) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{});
   simulation.add_human(person(10, 2.0, 3.0));
   simulation.add_human(person(11, 4.0, 3.0));
@@ -224,29 +226,20 @@ TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeechIsFoundById) {
   EXPECT_EQ(simulation.find_human(10)->motion_mode(), MotionMode::kNavigation);
   EXPECT_EQ(simulation.find_group(1)->members(), std::vector<model::ObjectId>{11});
   EXPECT_THROW(simulation.set_human_goal(12, {{1.0, 5.0}, 0.0}), core::RequestError);
-  EXPECT_EQ(&simulation.speech_of(1), &simulation.ari()->speech());
-  EXPECT_EQ(&simulation.speech_of(11), &simulation.find_human(11)->speech());
-  EXPECT_THROW(simulation.speech_of(1002), core::RequestError);  // a wall says nothing
+  // Two words at the default 150 words per minute: 0.8 s.
+  EXPECT_DOUBLE_EQ(simulation.say(1, "GREETING", "hello there"), 0.8);
+  EXPECT_EQ(simulation.ari()->speech().content(), "hello there");
+  EXPECT_DOUBLE_EQ(simulation.say(11, "INFORM", "one two three"), 1.2);
+  EXPECT_EQ(simulation.find_human(11)->speech().act(), "INFORM");
+  EXPECT_THROW(simulation.say(1002, "INFORM", "hello"), core::RequestError);  // a wall is mute
 }
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A small world every kind of request can act on: three humans (10 and 11 in group 1, 12 gazing
-// at 10), ARI, in square_room(6) whose floor spans [-0.2, 6.2] on both axes.
+// test::request_world, with 12 gazing at 10.
 std::unique_ptr<Simulation> request_world() {
-  auto simulation = std::make_unique<Simulation>(test::square_room(6.0), SimulationConfig{});
-  simulation->add_human(person(10, 2.0, 2.0));
-  simulation->add_human(person(11, 4.0, 2.0));
-  simulation->add_human(person(12, 3.0, 4.0));
-  AriSpec ari;
-  ari.pose = {{1.0, 5.0}, 0.0};
-  simulation->add_ari(ari);
-  GroupSpec group;
-  group.id = 1;
-  group.members = {10, 11};
-  group.centre = {3.0, 2.0};
-  simulation->add_group(group);
+  auto simulation = test::request_world();
   GazeModel gaze;
   gaze.targets = {{10, 1.0}};
   simulation->set_human_gaze(12, gaze);
@@ -496,10 +489,14 @@ TEST(Simulation, DebugBuildsCatchANanWhereItIsMade) {
   GTEST_SKIP() << "ARI_DCHECK is compiled out of release builds";
 #else
   // Past the checked entry points (Simulation's requests), the core's own setters assert.
-  auto simulation = request_world();
-  EXPECT_DEATH(simulation->find_human(10)->set_velocity({kNan, 0.0}, 0.0), "ARI_CHECK");
-  EXPECT_DEATH(simulation->find_human(12)->plan_motion({0.0, kInf}, 0.0), "ARI_CHECK");
-  EXPECT_DEATH(simulation->find_group(1)->set_centre({kNan, 1.0}), "ARI_CHECK");
+  Human human(person(10, 2.0, 2.0), core::Rng(1));
+  EXPECT_DEATH(human.set_velocity({kNan, 0.0}, 0.0), "ARI_CHECK");
+  EXPECT_DEATH(human.plan_motion({0.0, kInf}, 0.0), "ARI_CHECK");
+  GroupSpec spec;
+  spec.id = 1;
+  spec.members = {10};
+  GroupNavigation group(spec);
+  EXPECT_DEATH(group.set_centre({kNan, 1.0}), "ARI_CHECK");
 #endif
 }
 

@@ -15,12 +15,11 @@ TEST(SpeechGenerator, TenWordsAt120WpmLastFiveSecondsWordByWord) {
   spec.id = 10;
   spec.pose.position = {3.0, 3.0};
   spec.words_per_minute = 120.0;
-  Human& human = simulation.add_human(spec);
+  const Human& human = simulation.add_human(spec);
   simulation.step();  // start at t = 0.05 s, off the origin on purpose
   const double start = simulation.time_s();
-  human.speech().say("INFORM:TEST", "one two three four five six seven eight nine ten", start);
-  EXPECT_DOUBLE_EQ(human.speech().duration_s("one two three four five six seven eight nine ten"),
-                   5.0);
+  EXPECT_DOUBLE_EQ(
+      simulation.say(10, "INFORM:TEST", "one two three four five six seven eight nine ten"), 5.0);
 
   std::vector<std::string> heard;
   while (human.speech().is_speaking()) {

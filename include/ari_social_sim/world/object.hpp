@@ -46,7 +46,8 @@ class Object {
 
   model::ObjectId id() const { return id_; }
   ObjectKind kind() const { return kind_; }
-  b2Body* body() const { return body_; }
+  b2Body* body() { return body_; }
+  const b2Body* body() const { return body_; }
   void attach_body(b2Body* body) { body_ = body; }
 
   /// Pose of the object's reference point in the map frame (base_footprint for ARI).

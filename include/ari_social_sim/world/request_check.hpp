@@ -18,7 +18,8 @@ constexpr double kMaxHeadingRad = 1e6;
 /// Checks the numbers of one request against a running simulation before anything changes, so a
 /// refused request leaves the world as it was. Every failed check throws core::RequestError
 ///   `<request>: <field>: expected <expectation>, got <value>`,
-/// e.g. `set_goal: goal.x: expected a finite number inside the world [-0.2, 12.2], got nan`.
+/// e.g. `set_goal: goal.x: expected a finite number inside the world [-0.2, 12.2], got nan`, or
+/// for an id that names nothing of its kind `<request>: <field>: no <kind> with id <id>`.
 /// Requests are named after world_node's services (spawn_human, set_goal, ...), which the
 /// in-process engine mirrors; a check without a request name (a spec's own validate()) leaves the
 /// prefix out, and `valid(spec)` adds it.
@@ -52,6 +53,9 @@ class RequestCheck {
   /// Throws the refusal for `field`.
   [[noreturn]] void fail(const std::string& field, const std::string& expectation,
                          const std::string& got) const;
+  /// Throws the refusal for `field` naming no `kind` of the world (`human`, `group`, ...).
+  [[noreturn]] void unknown_id(const std::string& field, const std::string& kind,
+                               model::ObjectId id) const;
 
  private:
   std::string prefix() const { return request_.empty() ? "" : request_ + ": "; }

@@ -2,14 +2,17 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "ari_social_sim/core/const_pointer_view.hpp"
 #include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/world/agent_grid.hpp"
 #include "ari_social_sim/world/ari.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/request_check.hpp"
 
 class b2World;
 class b2Shape;
@@ -18,6 +21,9 @@ namespace ari_social_sim::world {
 
 /// Most humans one world may hold (spawn requests beyond it are refused; scene files likewise).
 constexpr size_t kMaxHumans = 1000;
+/// The smallest id a human spawned without one gets: smaller ones are left to ARI (1) and to the
+/// people of hand-written scenes.
+constexpr model::ObjectId kFirstAutomaticHumanId = 10;
 
 struct SimulationConfig {
   double step_s{0.05};  // s of sim time per step
@@ -38,13 +44,18 @@ struct StepDiagnostics {
 /// gaze, speech, ARI's drive) and their planned motion, the physics step, the sensor components,
 /// then the scripts (group navigation).
 ///
-/// Requests (add, remove, commands) validate their input and throw core::RequestError; step()
-/// never throws. Every number a request brings is checked before anything changes, so a refused
-/// request leaves the world as it was: positions and centres finite and on the floor, headings
-/// finite (within +-kMaxHeadingRad), speeds, radii, durations and probabilities finite and in
-/// their documented ranges. Refusals name the request (world_node's service), the field, the value
-/// and the expectation, e.g.
+/// Its public methods that change the world are the world's whole request API: world_node's
+/// services and topics, the in-process engine's commands (scenario::Episode) and scene files all
+/// go through them, and every rule of a request lives in them. Readers get const objects only
+/// (find_human, humans(), ...). Requests throw core::RequestError; step() never throws. Every
+/// number a request brings is checked before anything changes, so a refused request leaves the
+/// world as it was: positions and centres finite and on the floor, headings finite (within
+/// +-kMaxHeadingRad), speeds, radii, durations and probabilities finite and in their documented
+/// ranges. Refusals name the request (world_node's service), the field, the value and the
+/// expectation, e.g.
 ///   `set_goal: goal.x: expected a finite number inside the world [-0.2, 12.2], got nan`.
+/// Requests in the shape the services carry them (text, parallel lists) become the core's types
+/// through service_requests.hpp.
 class Simulation {
  public:
   /// Throws core::ConfigError for an invalid config or world (model::WorldDescription::validate),
@@ -54,24 +65,25 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  /// Adds a human (world_node's /sim/spawn_human). Throws if the spec is invalid
-  /// (HumanSpec::validate), its position or goal is off the floor, the id is taken, the world
-  /// already holds kMaxHumans humans, or the body would stand outside the floor or overlap a wall,
-  /// furniture, ARI or another human.
-  Human& add_human(const HumanSpec& spec);
+  /// Adds a human (world_node's /sim/spawn_human). A spec without an id (kNoObject) gets the
+  /// smallest free id from kFirstAutomaticHumanId on. Throws if the spec is invalid
+  /// (HumanSpec::validate), its position or goal is off the floor, a gaze target is not another
+  /// object of the world, the id is taken, the world already holds kMaxHumans humans, or the body
+  /// would stand outside the floor or overlap a wall, furniture, ARI or another human.
+  const Human& add_human(HumanSpec spec);
+  /// Takes a human out of the world, and out of its group (/sim/remove_human). Throws for an
+  /// unknown id.
   void remove_human(model::ObjectId id);
   /// Adds ARI (at most one). Same checks as add_human.
-  Ari& add_ari(const AriSpec& spec);
-  /// Creates a group of existing humans, each leaving any previous group (/sim/create_group).
+  const Ari& add_ari(const AriSpec& spec);
+  /// Creates a group of existing humans, each leaving any previous group (/sim/create_group). A
+  /// spec without an id (kNoObject) gets one past the highest group id (1 for the first group).
   /// Throws if the spec is invalid (GroupSpec::validate), its centre is off the floor, the id is
   /// taken or a member does not exist.
-  GroupNavigation& add_group(const GroupSpec& spec);
+  const GroupNavigation& add_group(GroupSpec spec);
   /// Moves existing humans into a group (/sim/add_group_members). Throws for an unknown group or
   /// human, or when the group would have more than kMaxGroupMembers members.
   void add_group_members(model::ObjectId group_id, const std::vector<model::ObjectId>& members);
-  void remove_group(model::ObjectId group_id);
-  /// Takes a human out of its group (if any) so a goal, velocity or pose command can drive it.
-  void release_from_group(model::ObjectId human_id);
   /// Sends a human walking to a goal with HumanNavigation, out of its group (world_node's
   /// /sim/set_goal). Throws for an unknown id or a goal off the floor or with a non-finite heading.
   void set_human_goal(model::ObjectId human_id, const core::Pose2& goal);
@@ -86,8 +98,10 @@ class Simulation {
   /// Moves a group's o-space centre (/sim/set_group_centre). Throws for an unknown group or a
   /// centre off the floor.
   void set_group_centre(model::ObjectId group_id, const Eigen::Vector2d& centre);
-  /// The speech generator of ARI or of a human, by id; throws for any other id.
-  SpeechGenerator& speech_of(model::ObjectId speaker_id);
+  /// ARI or a human starts saying `content` as speech act `act`, cutting off what it was saying
+  /// (/sim/say). Returns the seconds it will take. Throws for an id that is neither ARI nor a
+  /// human, or content or act SpeechGenerator::say refuses.
+  double say(model::ObjectId speaker_id, const std::string& act, const std::string& content);
   /// Places a human or ARI directly (/sim/set_pose); a human leaves its group. Throws for an
   /// unknown id, a pose off the floor or with a non-finite heading, or one that overlaps anything.
   void set_pose(model::ObjectId id, const core::Pose2& pose);
@@ -101,7 +115,13 @@ class Simulation {
   /// 3D mode: ARI's base follows this pose and twist from the 3D simulation (Ari::follow).
   /// Throws without ARI or for a non-finite value.
   void follow_ari(const core::Pose2& pose, double linear_mps, double angular_rps);
-  /// Smallest id >= `from` that no object uses.
+  /// set_human_gaze's rule on its own, for a caller that words the refusal itself (a scene file
+  /// names the entry): throws `targets[i]: expected another object of the world, got 7` (after
+  /// `check`'s request) unless every target of `model` is an object of the world other than
+  /// `human_id`.
+  void check_gaze_targets(const RequestCheck& check, model::ObjectId human_id,
+                          const GazeModel& model) const;
+  /// Smallest id >= `from` (and >= kFirstAutomaticHumanId) that no object uses.
   model::ObjectId next_free_id(model::ObjectId from) const;
 
   void step();
@@ -112,14 +132,17 @@ class Simulation {
   const model::WorldDescription& world() const { return world_; }
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
 
-  Object* find_object(model::ObjectId id) const;
-  Human* find_human(model::ObjectId id) const;
-  GroupNavigation* find_group(model::ObjectId id) const;
-  Ari* ari() const { return ari_.get(); }
+  /// Null when there is no such object (human, ARI, wall or furniture), human or group.
+  const Object* find_object(model::ObjectId id) const;
+  const Human* find_human(model::ObjectId id) const;
+  const GroupNavigation* find_group(model::ObjectId id) const;
+  const Ari* ari() const { return ari_.get(); }
   /// Humans ordered by id.
-  const std::vector<std::unique_ptr<Human>>& humans() const { return humans_; }
+  core::ConstPointerView<Human> humans() const { return core::ConstPointerView<Human>(humans_); }
   /// Groups ordered by id.
-  const std::vector<std::unique_ptr<GroupNavigation>>& groups() const { return groups_; }
+  core::ConstPointerView<GroupNavigation> groups() const {
+    return core::ConstPointerView<GroupNavigation>(groups_);
+  }
 
   /// Fills `out` with the centres of agents (humans and ARI) closer than `radius_m` to `point`,
   /// except `exclude` and members of group `exclude_group`, in a deterministic order.
@@ -130,12 +153,28 @@ class Simulation {
   double static_penetration_m(const Object& agent) const;
 
  private:
+  // The group script moves its members each step (D6.4 §3.4.1): the one writer from outside.
+  friend class GroupNavigation;
+
+  // The objects behind the const lookups, for the requests and the group script to change.
+  Object* mutable_object(model::ObjectId id);
+  Human* mutable_human(model::ObjectId id);
+  GroupNavigation* mutable_group(model::ObjectId id);
+  // The object a request names, or its refusal `<request>: <field>: no human with id 99` (field
+  // `id`, `group_id`, or as given).
+  Human& existing_human(const RequestCheck& check, model::ObjectId human_id);
+  GroupNavigation& existing_group(const RequestCheck& check, model::ObjectId group_id);
+  Object& existing_agent(const RequestCheck& check, const std::string& field, model::ObjectId id);
+  /// Throws unless every member is a human of the world.
+  void check_members(const RequestCheck& check, const std::vector<model::ObjectId>& members) const;
+  /// Takes a human out of its group (if any) so a goal, velocity or pose command can drive it.
+  void release_from_group(Human& human);
+  /// A group has members: one left without any is dropped.
+  void drop_empty_groups();
   void check_placement(const b2Shape& shape, const core::Pose2& pose, const Object* ignore,
                        const std::string& what) const;
   void add_floor_fence();
   void register_object(Object& object);
-  /// The human with this id; throws core::RequestError if there is none.
-  Human& existing_human(model::ObjectId human_id) const;
   /// Marks the neighbour grid out of date: call whenever an agent moves, appears or disappears.
   void agents_changed() { agent_grid_stale_ = true; }
 

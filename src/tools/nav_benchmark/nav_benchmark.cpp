@@ -329,7 +329,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
   record.outcome = "timeout";
   while (sim.time_s() < episode.time_limit_s) {
     while (next_walk < episode.walks.size() && episode.walks[next_walk].start_s <= sim.time_s()) {
-      sim.find_human(episode.walks[next_walk].human)->set_goal(episode.walks[next_walk].goal);
+      sim.set_human_goal(episode.walks[next_walk].human, episode.walks[next_walk].goal);
       ++next_walk;
     }
     const navigation::PerceivedScene scene = perceive(sim, stride);

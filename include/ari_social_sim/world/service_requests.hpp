@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/world/gaze_generator.hpp"
+#include "ari_social_sim/world/human.hpp"
+
+namespace ari_social_sim::world {
+
+/// /sim/spawn_human's fields as the service carries them (srv/SpawnHuman.srv): zero and empty
+/// values stand for "automatic" or "the default", gender and emotion are text. A client of the
+/// world copies its request into this and hands spec() to Simulation::add_human.
+struct SpawnHumanRequest {
+  model::ObjectId id{model::kNoObject};  // kNoObject: the next free id (Simulation::add_human)
+  std::string name;
+  std::string role;
+  core::Pose2 pose;
+  double age_years{0.0};  // 0: HumanSpec's default age
+  std::string gender;     // model::kGenderChoices; empty: HumanSpec's default
+  bool mask{false};
+  std::string emotion;  // model::kEmotionChoices; empty: HumanSpec's default
+
+  /// The human asked for. Throws core::RequestError for a gender or emotion text it does not
+  /// know, e.g. `spawn_human: gender: expected female, male or non-identified, got 'robot'`.
+  HumanSpec spec() const;
+};
+
+/// /sim/set_gaze_targets's fields as the service carries them (srv/SetGazeTargets.srv): the
+/// targets and their probabilities as two parallel lists.
+struct GazeTargetsRequest {
+  std::vector<model::ObjectId> targets;
+  std::vector<double> probabilities;
+  double mean_duration_s{0.0};
+
+  /// The gaze model asked for, for Simulation::set_human_gaze. Throws core::RequestError unless
+  /// there is one probability per target, e.g.
+  /// `set_gaze_targets: probabilities: expected one per target (2), got 1`.
+  GazeModel model() const;
+};
+
+}  // namespace ari_social_sim::world

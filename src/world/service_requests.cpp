@@ -1,0 +1,59 @@
+#include "ari_social_sim/world/service_requests.hpp"
+
+#include <optional>
+
+#include "ari_social_sim/world/request_check.hpp"
+
+namespace ari_social_sim::world {
+
+namespace {
+
+// An optional text field: empty keeps `value`, anything else must be one `parse` knows.
+template <class Value>
+void read_choice(const RequestCheck& check, const std::string& field, const std::string& text,
+                 std::optional<Value> (*parse)(const std::string&), const char* choices,
+                 Value& value) {
+  if (text.empty()) {
+    return;
+  }
+  const std::optional<Value> parsed = parse(text);
+  if (!parsed) {
+    check.fail(field, choices, "'" + text + "'");
+  }
+  value = *parsed;
+}
+
+}  // namespace
+
+HumanSpec SpawnHumanRequest::spec() const {
+  const RequestCheck check("spawn_human");
+  HumanSpec spec;
+  spec.id = id;
+  spec.name = name;
+  spec.role = role;
+  spec.pose = pose;
+  if (age_years != 0.0) {
+    spec.age_years = age_years;
+  }
+  read_choice(check, "gender", gender, model::parse_gender, model::kGenderChoices, spec.gender);
+  spec.mask = mask;
+  read_choice(check, "emotion", emotion, model::parse_emotion, model::kEmotionChoices,
+              spec.emotion);
+  return spec;
+}
+
+GazeModel GazeTargetsRequest::model() const {
+  if (probabilities.size() != targets.size()) {
+    RequestCheck("set_gaze_targets")
+        .fail("probabilities", "one per target (" + std::to_string(targets.size()) + ")",
+              std::to_string(probabilities.size()));
+  }
+  GazeModel model;
+  for (size_t i = 0; i < targets.size(); ++i) {
+    model.targets.push_back({targets[i], probabilities[i]});
+  }
+  model.mean_duration_s = mean_duration_s;
+  return model;
+}
+
+}  // namespace ari_social_sim::world

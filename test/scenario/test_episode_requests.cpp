@@ -1,0 +1,128 @@
+// The batch engine's world requests (Episode's in-process commands) are the world core's request
+// API: a script's spawn, group, goal, gaze and speech requests leave the world exactly as the same
+// requests sent to a twin world through Simulation, as world_node's services send them.
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/scenario/episode.hpp"
+#include "ari_social_sim/world/scene.hpp"
+#include "ari_social_sim/world/world_snapshot.hpp"
+
+namespace ari_social_sim::scenario {
+namespace {
+
+const std::string kSource = ARI_SOURCE_DIR;
+constexpr uint64_t kSeed = 5;
+constexpr int kSteps = 200;  // 10 s
+
+// room_6x6 with ARI, Ana (10) and Luc (11) in group 1; on entering its only state the script
+// spawns Zoe (12, walking, looking at Ana) and Max (13), moves Max and Luc into a new group 2,
+// sends Ana walking (which drops group 1), lets her speak, and spawns and removes Eve (14).
+Scenario requests_scenario() {
+  const std::string text =
+      "world: " + kSource +
+      "/worlds/room_6x6.yaml\nseed: 1\n"
+      "ari: {position: [1, 5], orientation: -1.57}\n"
+      "humans:\n"
+      "  - {id: 10, name: Ana, position: [3, 3]}\n"
+      "  - {id: 11, name: Luc, position: [4, 3]}\n"
+      "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3]}\n"
+      "script:\n"
+      "  time_limit: 60\n"
+      "  start: s\n"
+      "  states:\n"
+      "    - name: s\n"
+      "      enter:\n"
+      "        - {type: add_human, human: {id: 12, position: [1, 1], goal: {position: [5, 1]}, "
+      "gaze: {mean_duration: 2, targets: [{id: 10, probability: 1.0}]}}}\n"
+      "        - {type: add_human, human: {id: 13, position: [5, 5]}}\n"
+      "        - {type: create_group, group: {id: 2, members: [13], centre: [4.5, 4.5]}}\n"
+      "        - {type: add_group_members, group: 2, members: [11]}\n"
+      "        - {type: set_group_centre, group: 2, centre: [4, 4.5]}\n"
+      "        - {type: set_goal, who: 10, position: [2, 4.5]}\n"
+      "        - {type: say, speaker: 10, act: INFORM, text: over there by the window}\n"
+      "        - {type: add_human, human: {id: 14, position: [1, 3]}}\n"
+      "        - {type: remove_human, human: 14}\n";
+  return parse_scenario(core::YamlMap::parse(text, "inline.yaml"), kSource, "requests");
+}
+
+// The same requests through the world's API, in the order scenario_node sends them to
+// world_node's services (a spawn's goal and gaze follow as set_goal and set_gaze_targets).
+void send_requests(world::Simulation& world) {
+  world::HumanSpec zoe;
+  zoe.id = 12;
+  zoe.pose.position = {1.0, 1.0};
+  world.add_human(zoe);
+  world.set_human_goal(12, {{5.0, 1.0}, 0.0});
+  world::GazeModel gaze;
+  gaze.targets = {{10, 1.0}};
+  gaze.mean_duration_s = 2.0;
+  world.set_human_gaze(12, gaze);
+  world::HumanSpec max;
+  max.id = 13;
+  max.pose.position = {5.0, 5.0};
+  world.add_human(max);
+  world::GroupSpec group;
+  group.id = 2;
+  group.members = {13};
+  group.centre = {4.5, 4.5};
+  world.add_group(group);
+  world.add_group_members(2, {11});
+  world.set_group_centre(2, {4.0, 4.5});
+  world.set_human_goal(10, {{2.0, 4.5}, 0.0});
+  world.say(10, "INFORM", "over there by the window");
+  world::HumanSpec eve;
+  eve.id = 14;
+  eve.pose.position = {1.0, 3.0};
+  world.add_human(eve);
+  world.remove_human(14);
+}
+
+TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
+  const Scenario scenario = requests_scenario();
+  static const EpisodeConfig config = EpisodeConfig::load(kSource + "/config");
+  Episode episode(scenario, kSeed, config);
+
+  world::Scene scene = scenario.scene;
+  scene.seed = kSeed;
+  auto twin = world::build_simulation(scene, config.simulation);
+  // The script enters its first state after the first step.
+  twin->step();
+  episode.step();
+  send_requests(*twin);
+  for (int i = 1; i < kSteps; ++i) {
+    twin->step();
+    episode.step();
+  }
+
+  const world::WorldSnapshot in_process = world::WorldSnapshot::of(episode.simulation());
+  const world::WorldSnapshot direct = world::WorldSnapshot::of(*twin);
+  EXPECT_DOUBLE_EQ(in_process.time_s, 10.0);
+  ASSERT_EQ(in_process.humans.size(), 4u);  // 10-13: Eve came and went
+  ASSERT_EQ(direct.humans.size(), 4u);
+  for (size_t i = 0; i < direct.humans.size(); ++i) {
+    const world::HumanSnapshot& a = in_process.humans[i];
+    const world::HumanSnapshot& b = direct.humans[i];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(a.pose.position.x(), b.pose.position.x()) << "human " << b.id;
+    EXPECT_EQ(a.pose.position.y(), b.pose.position.y()) << "human " << b.id;
+    EXPECT_EQ(a.pose.theta, b.pose.theta) << "human " << b.id;
+    EXPECT_EQ(a.motion_mode, b.motion_mode) << "human " << b.id;
+    EXPECT_EQ(a.group_id, b.group_id) << "human " << b.id;
+    EXPECT_EQ(a.gaze.target, b.gaze.target) << "human " << b.id;
+    EXPECT_EQ(a.speech.previous_act, b.speech.previous_act) << "human " << b.id;
+  }
+  // Zoe walked her 4 m east and looks at Ana; Ana walked north out of group 1, which was dropped;
+  // group 2 is Max and Luc.
+  EXPECT_NEAR(direct.humans[2].pose.position.x(), 5.0, 0.1);
+  EXPECT_EQ(direct.humans[2].gaze.target, 10u);
+  EXPECT_NEAR(direct.humans[0].pose.position.y(), 4.5, 0.1);
+  EXPECT_EQ(direct.humans[0].speech.previous_act, "INFORM");
+  ASSERT_EQ(in_process.groups.size(), 1u);
+  EXPECT_EQ(in_process.groups[0].id, 2u);
+  EXPECT_EQ(in_process.groups[0].members, (std::vector<model::ObjectId>{13, 11}));
+  EXPECT_DOUBLE_EQ(in_process.groups[0].centre.x(), 4.0);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::scenario
