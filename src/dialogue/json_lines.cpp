@@ -2,13 +2,13 @@
 
 #include <cstdio>
 
+#include "ari_social_sim/core/format_text.hpp"
+
 namespace ari_social_sim::dialogue {
 namespace {
 
 std::string fixed3(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.3f", value);
-  return text;
+  return core::format_text("%.3f", value);
 }
 
 std::string string_list(const std::vector<std::string>& items) {

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/dialogue/dialogue_act.hpp"
 
 namespace ari_social_sim::dialogue {
@@ -153,9 +154,7 @@ void write_table(std::ostream& out, const std::string& key, const ConditionalTab
 }
 
 std::string fixed6(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.6f", value);
-  return text;
+  return core::format_text("%.6f", value);
 }
 
 }  // namespace

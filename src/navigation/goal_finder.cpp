@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/social_spaces.hpp"
 
@@ -16,9 +16,7 @@ constexpr double kTwoPi = 2.0 * core::kPi;
 constexpr double kOutlineSpacing = 0.1;
 
 std::string format_point(const Eigen::Vector2d& p) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "(%.2f, %.2f)", p.x(), p.y());
-  return text;
+  return core::format_text("(%.2f, %.2f)", p.x(), p.y());
 }
 
 Eigen::Vector2d unit(double angle) {

@@ -4,14 +4,13 @@
 #include <cmath>
 
 #include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
 
 std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.4g", value);
-  return text;
+  return core::format_text("%.4g", value);
 }
 
 bool all_finite(const std::vector<double>& values) {

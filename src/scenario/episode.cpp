@@ -126,8 +126,8 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
       seed_(seed),
       config_(config),
       perception_(seeded(config.perception, seed)),
-      perception_gate_(config.perception_max_rate_hz),
       group_detection_(perception_.config().groups),
+      perception_gate_(config.perception_max_rate_hz),
       dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
       runner_(scenario, seed, config.dialogue.get()) {
   if (!config.dialogue || !config.nlu) {

@@ -19,6 +19,7 @@
 
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/dialogue/dialogue_runner.hpp"
 #include "ari_social_sim/dialogue/dialogue_stats.hpp"
@@ -117,15 +118,11 @@ Options parse_options(int argc, char** argv) {
 }
 
 std::string percent(double share) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * share);
-  return text;
+  return core::format_text("%.1f %%", 100.0 * share);
 }
 
 std::string number(double value, int decimals = 3) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-  return text;
+  return core::format_text("%.*f", decimals, value);
 }
 
 std::string lengths_text(const DialogueStats& s) {

@@ -16,12 +16,7 @@ namespace ari_social_sim::world {
 
 void AriSpec::validate() const {
   const RequestCheck check;
-  if (id == model::kNoObject) {
-    check.fail("id", "a positive integer", "0");
-  }
-  check.finite("pose.x", pose.position.x());
-  check.finite("pose.y", pose.position.y());
-  check.heading("pose.theta", pose.theta);
+  check.agent(id, pose);
   check.in_range("words_per_minute", words_per_minute, core::positive(), "1/min");
   for (const auto& [field, value] :
        {std::pair<const char*, double>{"max_linear", limits.max_linear_mps},

@@ -13,12 +13,7 @@
 namespace ari_social_sim::world {
 void HumanSpec::validate() const {
   const RequestCheck check;
-  if (id == model::kNoObject) {
-    check.fail("id", "a positive integer", "0");
-  }
-  check.finite("pose.x", pose.position.x());
-  check.finite("pose.y", pose.position.y());
-  check.heading("pose.theta", pose.theta);
+  check.agent(id, pose);
   check.in_range("age", age_years, core::between(0.0, kMaxAgeYears), "years");
   check.in_range("motion.walking_speed", motion.walking_speed_mps, core::positive(), "m/s");
   check.in_range("motion.max_speed", motion.max_speed_mps, core::positive(), "m/s");

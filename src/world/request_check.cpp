@@ -36,6 +36,15 @@ void RequestCheck::heading(const std::string& field, double theta_rad) const {
   in_range(field, theta_rad, core::between(-kMaxHeadingRad, kMaxHeadingRad), "rad");
 }
 
+void RequestCheck::agent(model::ObjectId id, const core::Pose2& pose) const {
+  if (id == model::kNoObject) {
+    fail("id", "a positive integer", "0");
+  }
+  finite("pose.x", pose.position.x());
+  finite("pose.y", pose.position.y());
+  heading("pose.theta", pose.theta);
+}
+
 void RequestCheck::on_floor(const std::string& field, const Eigen::Vector2d& point,
                             const model::WorldDescription& world) const {
   for (int axis = 0; axis < 2; ++axis) {

@@ -35,6 +35,9 @@ class RequestCheck {
                 const std::string& unit = "") const;
   /// A finite heading within +-kMaxHeadingRad.
   void heading(const std::string& field, double theta_rad) const;
+  /// An agent's identity and placement as its spec gives them, before the world is consulted: a
+  /// positive `id`, a finite `pose.x` and `pose.y` and a valid `pose.theta`.
+  void agent(model::ObjectId id, const core::Pose2& pose) const;
   /// A point on the world's floor: `field.x` and `field.y` each finite and inside its rectangle.
   void on_floor(const std::string& field, const Eigen::Vector2d& point,
                 const model::WorldDescription& world) const;
