@@ -47,5 +47,19 @@ TEST(GroupDetectionRunConfig, BadOrUnknownParametersAreNamed) {
   }
 }
 
+TEST(GroupDetectionRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  GroupDetectionRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.reference_frame = "/map";
+  try {
+    config.validate();
+    ADD_FAILURE() << "accepted reference_frame /map";
+  } catch (const core::ConfigError& e) {
+    EXPECT_STREQ(e.what(),
+                 "GroupDetectionRunConfig: reference_frame: expected a tf frame name without a "
+                 "leading slash or spaces, e.g. map, got '/map'");
+  }
+}
+
 }  // namespace
 }  // namespace ari_social_sim::perception

@@ -63,5 +63,18 @@ TEST(PerceptionRunConfig, BadOrUnknownParametersAreNamed) {
   }
 }
 
+TEST(PerceptionRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  PerceptionRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.person_ids = "numbered";
+  try {
+    config.validate();
+    ADD_FAILURE() << "accepted person_ids numbered";
+  } catch (const core::ConfigError& e) {
+    EXPECT_STREQ(e.what(),
+                 "PerceptionRunConfig: person_ids: expected human or random, got 'numbered'");
+  }
+}
+
 }  // namespace
 }  // namespace ari_social_sim::perception
