@@ -53,7 +53,7 @@ struct CameraRigConfig {
              "0 where there is none",
              kDepthEncodings);
     Cameras each{cameras};
-    v.section("cameras", each, "one entry per camera, named as config_key_of names it");
+    v.section("cameras", each, "one entry per camera, under its name with / written _");
   }
 
   /// Throws core::ConfigError naming the field outside what visit allows.
