@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/text_file.hpp"
 
 namespace ari_social_sim::core {
@@ -15,30 +14,6 @@ bool is_scalar(const YAML::Node& node) {
 }
 
 }  // namespace
-
-bool Bounds::contains(double value) const {
-  if (std::isnan(value)) {
-    return false;
-  }
-  const bool above_min = min_exclusive ? value > min : value >= min;
-  return above_min && value <= max;
-}
-
-std::string Bounds::describe() const {
-  const bool has_min = std::isfinite(min);
-  const bool has_max = std::isfinite(max);
-  if (has_min && has_max) {
-    return std::string(min_exclusive ? "(" : "[") + number_text(min) + ", " + number_text(max) +
-           "]";
-  }
-  if (has_min) {
-    return std::string(min_exclusive ? "> " : ">= ") + number_text(min);
-  }
-  if (has_max) {
-    return "<= " + number_text(max);
-  }
-  return "";
-}
 
 YamlMap::YamlMap(YAML::Node node, std::string source, std::string path)
     : node_(std::move(node)), source_(std::move(source)), path_(std::move(path)) {

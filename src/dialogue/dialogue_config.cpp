@@ -2,7 +2,8 @@
 
 #include <filesystem>
 
-#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/config_reader.hpp"
 
 #ifndef ARI_DIALOGUE_CONFIG_DIR
 #define ARI_DIALOGUE_CONFIG_DIR "config/dialogue"
@@ -18,6 +19,15 @@ std::string resolve(const std::string& base_dir, const std::string& path) {
   return (std::filesystem::path(base_dir) / path).string();
 }
 
+// `config` with its relative file paths taken relative to `base_dir`.
+DialogueConfig with_paths_in(const std::string& base_dir, DialogueConfig config) {
+  for (std::string* path :
+       {&config.domain_file, &config.model_file, &config.templates_file, &config.corpus_dir}) {
+    *path = resolve(base_dir, *path);
+  }
+  return config;
+}
+
 }  // namespace
 
 std::string default_dialogue_config_dir() {
@@ -25,46 +35,21 @@ std::string default_dialogue_config_dir() {
 }
 
 DialogueConfig DialogueConfig::defaults(const std::string& config_dir) {
-  DialogueConfig config;
-  config.domain_file = resolve(config_dir, config.domain_file);
-  config.model_file = resolve(config_dir, config.model_file);
-  config.templates_file = resolve(config_dir, config.templates_file);
-  return config;
+  return with_paths_in(config_dir, DialogueConfig{});
+}
+
+void DialogueConfig::validate() const {
+  core::check_fields(*this, "DialogueConfig");
 }
 
 DialogueConfig DialogueConfig::load(const std::string& file_path) {
-  const core::YamlMap map = core::YamlMap::load_file(file_path);
-  const std::string dir = std::filesystem::path(file_path).parent_path().string();
-  DialogueConfig config;
-  config.domain_file = resolve(dir, map.optional<std::string>("domain_file", config.domain_file));
-  config.model_file = resolve(dir, map.optional<std::string>("model_file", config.model_file));
-  config.templates_file =
-      resolve(dir, map.optional<std::string>("templates_file", config.templates_file));
-  config.corpus_dir = resolve(dir, map.optional<std::string>("corpus_dir", ""));
-  config.nlg = parse_nlg_mode(map.optional<std::string>("nlg", "retrieval"), map.field_name("nlg"));
-  if (map.has("users")) {
-    config.users = UserSimulationConfig::from_yaml(map.map("users"));
-  }
-  if (map.has("errors")) {
-    config.errors = ErrorModelConfig::from_yaml(map.map("errors"));
-  }
-  if (map.has("timing")) {
-    config.timing = TurnTimingConfig::from_yaml(map.map("timing"));
-  }
-  if (map.has("reward")) {
-    config.reward = RewardConfig::from_yaml(map.map("reward"));
-  }
-  map.finish();
-  return config;
+  return with_paths_in(std::filesystem::path(file_path).parent_path().string(),
+                       core::read_fields<DialogueConfig>(core::YamlMap::load_file(file_path)));
 }
 
 std::unique_ptr<DialogueSetup> DialogueSetup::create(const DialogueConfig& config) {
   auto setup = std::make_unique<DialogueSetup>();
-  setup->config = config;
-  setup->config.users.validate();
-  setup->config.errors.validate();
-  setup->config.timing.validate();
-  setup->config.reward.validate();
+  setup->config = core::validated(config);
   setup->domain = Domain::load(config.domain_file);
   setup->model = UserModel::load(config.model_file);
   for (const std::string& role : config.users.roles) {

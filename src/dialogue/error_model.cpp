@@ -2,8 +2,7 @@
 
 #include <algorithm>
 
-#include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/dialogue/config_fields.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::dialogue {
@@ -16,15 +15,7 @@ const std::string& pick(const std::vector<std::string>& names, core::Rng& rng) {
 }  // namespace
 
 void ErrorModelConfig::validate() const {
-  check_bounds(*this, "ErrorModelConfig");
-  if (intent_share + slot_share > 1.0) {
-    throw core::ConfigError("ErrorModelConfig: intent_share + slot_share: expected <= 1, got " +
-                            std::to_string(intent_share + slot_share));
-  }
-}
-
-ErrorModelConfig ErrorModelConfig::from_yaml(const core::YamlMap& map) {
-  return read_config<ErrorModelConfig>(map);
+  core::check_fields(*this, "ErrorModelConfig");
 }
 
 ErrorModel::ErrorModel(ErrorModelConfig config, const Domain& domain,

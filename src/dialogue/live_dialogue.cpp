@@ -1,11 +1,11 @@
 #include "ari_social_sim/dialogue/live_dialogue.hpp"
 
-#include "ari_social_sim/dialogue/config_fields.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 
 namespace ari_social_sim::dialogue {
 
 void LiveDialogueConfig::validate() const {
-  check_bounds(*this, "LiveDialogueConfig");
+  core::check_fields(*this, "LiveDialogueConfig");
 }
 
 LiveDialogue::LiveDialogue(const DialogueSetup& setup, const RobotNlu& nlu,

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/dialogue/dialogue_stats.hpp"
 
 namespace ari_social_sim::dialogue {
@@ -59,13 +59,7 @@ ConditionalTable to_table(const TableCounts& counts, unsigned min_row_count) {
 }  // namespace
 
 void FitOptions::validate() const {
-  if (min_row_count == 0) {
-    throw core::ConfigError("FitOptions: min_row_count: expected an integer >= 1, got 0");
-  }
-  if (!(prior_weight >= 0.0)) {
-    throw core::ConfigError("FitOptions: prior_weight: expected a number >= 0, got " +
-                            std::to_string(prior_weight));
-  }
+  core::check_fields(*this, "FitOptions");
 }
 
 UserModel fit_user_model(const MpgtCorpus& corpus, const FitOptions& options) {

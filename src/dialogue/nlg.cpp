@@ -42,13 +42,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> keys_of(const Dial
 }  // namespace
 
 NlgMode parse_nlg_mode(const std::string& text, const std::string& field) {
-  if (text == "template") {
-    return NlgMode::kTemplate;
-  }
-  if (text == "retrieval") {
-    return NlgMode::kRetrieval;
-  }
-  throw core::ConfigError(field + ": expected template or retrieval, got '" + text + "'");
+  return core::parse_choice(text, kNlgModes, field);
 }
 
 NlgTemplates NlgTemplates::load(const std::string& file_path) {

@@ -1,15 +1,11 @@
 #include "ari_social_sim/dialogue/reward.hpp"
 
-#include "ari_social_sim/dialogue/config_fields.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 
 namespace ari_social_sim::dialogue {
 
 void RewardConfig::validate() const {
-  check_bounds(*this, "RewardConfig");
-}
-
-RewardConfig RewardConfig::from_yaml(const core::YamlMap& map) {
-  return read_config<RewardConfig>(map);
+  core::check_fields(*this, "RewardConfig");
 }
 
 DialogueOutcome judge(const Agenda& agenda, bool truncated) {

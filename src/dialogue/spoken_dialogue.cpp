@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/dialogue/dialogue_runner.hpp"
 #include "ari_social_sim/dialogue/text.hpp"
 
@@ -10,7 +11,7 @@ namespace ari_social_sim::dialogue {
 
 SpokenDialogue::SpokenDialogue(const DialogueSetup& setup, const RobotNlu& nlu,
                                const DialogueRunConfig& run, SpeechStage& stage)
-    : setup_(setup), run_(run), stage_(stage), live_(setup, nlu, run.live) {
+    : setup_(setup), run_(core::validated(run)), stage_(stage), live_(setup, nlu, run.live) {
   next_start_s_ = run.humans ? 0.0 : -1.0;
 }
 

@@ -2,17 +2,13 @@
 
 #include <algorithm>
 
-#include "ari_social_sim/dialogue/config_fields.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::dialogue {
 
 void TurnTimingConfig::validate() const {
-  check_bounds(*this, "TurnTimingConfig");
-}
-
-TurnTimingConfig TurnTimingConfig::from_yaml(const core::YamlMap& map) {
-  return read_config<TurnTimingConfig>(map);
+  core::check_fields(*this, "TurnTimingConfig");
 }
 
 TurnTiming::TurnTiming(TurnTimingConfig config) : config_(config) {

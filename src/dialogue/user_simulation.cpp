@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -28,51 +28,21 @@ std::vector<std::string> last_robot_path(const std::vector<DialogueAct>& acts) {
 
 }  // namespace
 
-void UserSimulationConfig::validate() const {
-  const std::string where = "UserSimulationConfig: ";
+std::string UserSimulationConfig::bad_role() const {
   if (roles.empty()) {
-    throw core::ConfigError(where + "roles: expected at least one role, got []");
+    return "[]";
   }
   std::set<std::string> seen;
   for (const std::string& role : roles) {
     if (role.empty() || role == kRobot || !seen.insert(role).second) {
-      throw core::ConfigError(where + "roles: expected distinct role names other than ARI, got '" +
-                              role + "'");
+      return "'" + role + "'";
     }
   }
-  if (min_patience < 1 || min_patience > max_patience) {
-    throw core::ConfigError(where + "min_patience, max_patience: expected 1 <= min <= max, got " +
-                            std::to_string(min_patience) + ", " + std::to_string(max_patience));
-  }
-  if (max_asks < 1 || max_human_run < 1) {
-    throw core::ConfigError(where + "max_asks, max_human_run: expected integers >= 1");
-  }
-  for (double p : {reask_probability, farewell_probability}) {
-    if (!(p >= 0.0 && p <= 1.0)) {
-      throw core::ConfigError(
-          where + "reask_probability, farewell_probability: expected numbers in [0, 1]");
-    }
-  }
+  return "";
 }
 
-UserSimulationConfig UserSimulationConfig::from_yaml(const core::YamlMap& map) {
-  UserSimulationConfig c;
-  c.roles = map.optional<std::vector<std::string>>("roles", c.roles);
-  c.min_patience = map.optional<unsigned>("min_patience", c.min_patience, core::positive());
-  c.max_patience = map.optional<unsigned>("max_patience", c.max_patience, core::positive());
-  if (c.min_patience > c.max_patience) {
-    map.fail("max_patience", "an integer >= min_patience (" + std::to_string(c.min_patience) + ")",
-             std::to_string(c.max_patience));
-  }
-  c.max_asks = map.optional<unsigned>("max_asks", c.max_asks, core::positive());
-  c.max_human_run = map.optional<unsigned>("max_human_run", c.max_human_run, core::positive());
-  c.reask_probability =
-      map.optional<double>("reask_probability", c.reask_probability, core::between(0, 1));
-  c.farewell_probability =
-      map.optional<double>("farewell_probability", c.farewell_probability, core::between(0, 1));
-  map.finish();
-  c.validate();
-  return c;
+void UserSimulationConfig::validate() const {
+  core::check_fields(*this, "UserSimulationConfig");
 }
 
 UserSimulation::UserSimulation(UserSimulationConfig config, const Domain& domain,

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
@@ -37,7 +38,7 @@ std::string format_point(const Eigen::Vector2d& p) {
 }  // namespace
 
 Navigator::Navigator(const NavigationConfig& config, const model::OccupancyGrid& map)
-    : config_(config),
+    : config_(core::validated(config)),
       footprint_(FootprintModel::covering(model::AriFootprint{}, config.mpc.footprint_circles)),
       sdf_(signed_distance_field(map)),
       goal_finder_(config.goal_finder, footprint_, config.mpc.personal_space),

@@ -4,18 +4,6 @@
 
 namespace ari_social_sim::navigation {
 
-void SceneTrackerConfig::read(const core::YamlMap& map) {
-  position_noise_m = map.optional<double>("position_noise", position_noise_m, core::positive());
-  acceleration_noise_mps2 =
-      map.optional<double>("acceleration_noise", acceleration_noise_mps2, core::positive());
-  heading_time_constant_s =
-      map.optional<double>("heading_time_constant", heading_time_constant_s, core::positive());
-  person_timeout_s = map.optional<double>("person_timeout", person_timeout_s, core::positive());
-  group_timeout_s = map.optional<double>("group_timeout", group_timeout_s, core::positive());
-  group_stride_m = map.optional<double>("group_stride", group_stride_m, core::between(0.0, 2.0));
-  map.finish();
-}
-
 void SceneTracker::observe_person(const std::string& id, double time_s,
                                   const Eigen::Vector2d& position, double heading) {
   const double r = config_.position_noise_m * config_.position_noise_m;

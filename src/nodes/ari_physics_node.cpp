@@ -681,7 +681,7 @@ int main(int argc, char** argv) {
     } else {
       world_description = model::load_world_file(
           config.world.empty() ? package + "/worlds/room_6x6.yaml" : config.world);
-      start = config.initial_pose.value_or(
+      start = config.start_pose().value_or(
           core::Pose2{world_description.origin + 0.5 * world_description.size, 0.0});
     }
     simulation =

@@ -90,7 +90,7 @@ class WorldNode {
   WorldNode(const world::WorldRunConfig& config, world::Scene scene)
       : config_(config), scene_(std::move(scene)) {
     rebuild();
-    map_ = world::rasterize_static_map(scene_.world, config_.map_resolution_m);
+    map_ = world::rasterize_static_map(scene_.world, config_.simulation.map_resolution_m);
     paused_ = config_.start_paused;
 
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
@@ -210,10 +210,7 @@ class WorldNode {
   }
 
   void rebuild() {
-    world::SimulationConfig sim_config;
-    sim_config.step_s = config_.step_s;
-    sim_config.map_resolution_m = config_.map_resolution_m;
-    simulation_ = world::build_simulation(scene_, sim_config);
+    simulation_ = world::build_simulation(scene_, config_.simulation);
     reported_clamps_ = 0;
   }
 
@@ -489,17 +486,14 @@ int main(int argc, char** argv) {
       scene.seed = static_cast<uint64_t>(config.seed);
     }
     // Build once here so a scene that cannot be placed stops the node before it advertises.
-    world::SimulationConfig check;
-    check.step_s = config.step_s;
-    check.map_resolution_m = config.map_resolution_m;
-    world::build_simulation(scene, check);
+    world::build_simulation(scene, config.simulation);
   } catch (const core::Error& e) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
   ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s, ARI %s",
            scene.path.c_str(), scene.world.name.c_str(), static_cast<unsigned long>(scene.seed),
-           config.step_s,
+           config.simulation.step_s,
            config.real_time_factor > 0 ? std::to_string(config.real_time_factor).c_str()
                                        : "as fast as possible",
            config.ari_source == world::AriSource::kInternal ? "driven here (2D mode)"

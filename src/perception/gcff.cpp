@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "ari_social_sim/core/check.hpp"
-#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
@@ -16,14 +15,6 @@ constexpr double kBehindCosine = 0.75;
 // The penalty is 100^x; computed as exp(x ln 100) so that the cap can be tested on the exponent.
 const double kLogPenaltyBase = std::log(100.0);
 const double kLogMaxPenalty = std::log(kGcffMaxVisibilityPenalty);
-
-void require_positive(const char* field, double value) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    std::ostringstream message;
-    message << "GcffParams." << field << ": expected a finite number > 0, got " << value;
-    throw core::ConfigError(message.str());
-  }
-}
 
 // gcff_unary_costs with caller-owned scratch: `neighbours` receives M_k, `norms` |d_j| for M_k.
 void fill_unary_costs(const std::vector<Eigen::Vector2d>& positions,
@@ -75,8 +66,7 @@ void fill_unary_costs(const std::vector<Eigen::Vector2d>& positions,
 }  // namespace
 
 void GcffParams::validate() const {
-  require_positive("stride", stride);
-  require_positive("mdl", mdl);
+  core::check_fields(*this, "GcffParams");
 }
 
 Eigen::Vector2d gcff_candidate_centre(const GcffPerson& person, double stride) {

@@ -1,21 +1,21 @@
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 
+#include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/config_reader.hpp"
+
 namespace ari_social_sim::perception {
 
+bool GroupDetectionRunConfig::is_frame_name(const std::string& frame) {
+  return !frame.empty() && frame.front() != '/' &&
+         frame.find_first_of(" \t\n") == std::string::npos;
+}
+
+void GroupDetectionRunConfig::validate() const {
+  core::check_fields(*this, "GroupDetectionRunConfig");
+}
+
 GroupDetectionRunConfig GroupDetectionRunConfig::from_yaml(const core::YamlMap& map) {
-  GroupDetectionRunConfig config;
-  config.config = map.optional<std::string>("config", config.config);
-  config.reference_frame = map.optional<std::string>("reference_frame", config.reference_frame);
-  // tf2 refuses frame ids with a leading slash, and an empty one names no frame: either would
-  // make every lookup fail and the node publish nothing, without saying why.
-  if (config.reference_frame.empty() || config.reference_frame.front() == '/' ||
-      config.reference_frame.find_first_of(" \t\n") != std::string::npos) {
-    map.fail("reference_frame", "a tf frame name without a leading slash or spaces, e.g. map",
-             "'" + config.reference_frame + "'");
-  }
-  config.rate_hz = map.optional<double>("rate", config.rate_hz, {0.0, 1000.0, true});
-  map.finish();
-  return config;
+  return core::read_fields<GroupDetectionRunConfig>(map);
 }
 
 }  // namespace ari_social_sim::perception

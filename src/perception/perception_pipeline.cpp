@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "ari_social_sim/core/config_check.hpp"
+
 namespace ari_social_sim::perception {
 namespace {
 
@@ -23,15 +25,10 @@ void link_to_persons(std::vector<Observation>& observations, const PersonRegistr
   }
 }
 
-const PerceptionConfig& validated(const PerceptionConfig& config) {
-  config.validate();
-  return config;
-}
-
 }  // namespace
 
 PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
-    : config_(validated(config).effective()),
+    : config_(core::validated(config).effective()),
       ids_(core::Rng::for_stream(config.seed, kIdStream)),
       bodies_(config_, ids_, core::Rng::for_stream(config.seed, kBodyStream)),
       faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),

@@ -97,7 +97,7 @@ struct AriPhysics::Engine {
   };
   struct Person {
     PersonState reported;  // the 2D world's last report
-    double reported_at_s;  // physics time it arrived
+    double reported_at_s{0.0};  // physics time it arrived
     PersonState state;     // where the body is now
     std::unique_ptr<btDefaultMotionState> motion;
     std::unique_ptr<btRigidBody> body;

@@ -3,10 +3,13 @@
 #include <cmath>
 #include <utility>
 
+#include "ari_social_sim/core/config_check.hpp"
+
 namespace ari_social_sim::physics {
 
 CameraRig::CameraRig(const CameraRigConfig& config)
-    : depth_encoding_(config.depth_encoding), renderer_(std::make_unique<Renderer>()) {
+    : depth_encoding_(core::validated(config).depth_encoding),
+      renderer_(std::make_unique<Renderer>()) {
   for (const CameraSpec& spec : config.cameras) {
     if (!spec.enabled) {
       continue;

@@ -4,23 +4,10 @@
 #include <cstdint>
 #include <limits>
 
-#include "ari_social_sim/core/error.hpp"
-
 namespace ari_social_sim::physics {
 
 const char* encoding_name(DepthEncoding encoding) {
-  return encoding == DepthEncoding::kMetres32F ? "32FC1" : "16UC1";
-}
-
-DepthEncoding parse_depth_encoding(const std::string& text, const std::string& field) {
-  if (text == "32FC1") {
-    return DepthEncoding::kMetres32F;
-  }
-  if (text == "16UC1") {
-    return DepthEncoding::kMillimetres16U;
-  }
-  throw core::ConfigError(field + ": expected 32FC1 (metres) or 16UC1 (millimetres), got '" + text +
-                          "'");
+  return core::choice_name(encoding, kDepthEncodings);
 }
 
 void clip_depth_range(cv::Mat& depth_m, double min_m, double max_m) {

@@ -3,30 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/config_reader.hpp"
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::physics {
 
+void MappingConfig::validate() const {
+  core::check_fields(*this, "MappingConfig");
+}
+
 MappingConfig MappingConfig::from_yaml(const core::YamlMap& map) {
-  MappingConfig config;
-  config.resolution_m =
-      map.optional<double>("resolution_m", config.resolution_m, core::between(0.01, 1.0));
-  config.max_range_m = map.optional<double>("max_range_m", config.max_range_m, core::positive());
-  config.pixel_stride =
-      map.optional<int>("pixel_stride", config.pixel_stride, core::between(1, 64));
-  config.min_height_m = map.optional<double>("min_height_m", config.min_height_m);
-  config.max_height_m = map.optional<double>("max_height_m", config.max_height_m);
-  if (config.min_height_m >= config.max_height_m) {
-    map.fail("max_height_m",
-             "a height above min_height_m (" + std::to_string(config.min_height_m) + ")",
-             std::to_string(config.max_height_m));
-  }
-  map.finish();
-  return config;
+  return core::read_fields<MappingConfig>(map);
 }
 
 OctomapMapper::OctomapMapper(const MappingConfig& config)
-    : config_(config), tree_(config.resolution_m) {}
+    : config_(core::validated(config)), tree_(config.resolution_m) {}
 
 void OctomapMapper::insert_depth(const cv::Mat& depth_m, const PinholeModel& model,
                                  const Eigen::Isometry3d& X_map_optical) {

@@ -37,22 +37,6 @@ RenderPrimitive solid(PrimitiveShape shape, const Eigen::Isometry3d& X_world_sha
 
 }  // namespace
 
-SceneStyle SceneStyle::from_yaml(const core::YamlMap& map) {
-  SceneStyle style;
-  style.wall_height_m =
-      map.optional<double>("wall_height_m", style.wall_height_m, core::positive());
-  style.furniture_height_m =
-      map.optional<double>("furniture_height_m", style.furniture_height_m, core::positive());
-  const double default_top = style.person.head_centre_height_m + 0.5 * style.person.head_diameter_m;
-  const double top = map.optional<double>("person_height_m", default_top, core::between(1.0, 2.2));
-  // A taller or shorter person is the default one scaled in height.
-  const double scale = top / default_top;
-  style.person.body_height_m *= scale;
-  style.person.head_centre_height_m *= scale;
-  map.finish();
-  return style;
-}
-
 std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
                                                   const SceneStyle& style) {
   std::vector<RenderPrimitive> out;

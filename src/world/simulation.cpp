@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
@@ -73,13 +74,7 @@ b2Body* make_agent_body(b2World& physics, const core::Pose2& pose, Object& owner
 }  // namespace
 
 void SimulationConfig::validate() const {
-  if (!(step_s > 0.0 && step_s <= 1.0)) {
-    throw core::ConfigError("step: expected a number in (0, 1] s, got " + std::to_string(step_s));
-  }
-  if (!(map_resolution_m >= 0.01 && map_resolution_m <= 1.0)) {
-    throw core::ConfigError("map_resolution: expected a number in [0.01, 1] m, got " +
-                            std::to_string(map_resolution_m));
-  }
+  core::check_fields(*this, "SimulationConfig");
 }
 
 Simulation::Simulation(model::WorldDescription world, SimulationConfig config)

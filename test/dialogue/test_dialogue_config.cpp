@@ -49,5 +49,32 @@ TEST(DialogueConfig, UserSettingsAreValidated) {
                       {"users.yaml: users.max_patience", "min_patience (6)", "4"});
 }
 
+TEST(DialogueConfig, ValidateRefusesABadValueBuiltInCode) {
+  DialogueConfig config = DialogueConfig::defaults(ARI_DIALOGUE_CONFIG_DIR);
+  EXPECT_NO_THROW(config.validate());
+  config.users.min_patience = 6;
+  config.users.max_patience = 4;
+  // The setup checks the settings it is given before it loads any file.
+  expect_config_error([&] { DialogueSetup::create(config); },
+                      {"DialogueConfig: users.max_patience", ">= min_patience (6)", "got 4"});
+  config = DialogueConfig::defaults(ARI_DIALOGUE_CONFIG_DIR);
+  config.users.roles = {"patient", "ARI"};
+  expect_config_error([&] { config.validate(); }, {"DialogueConfig: users.roles", "'ARI'"});
+  config.users.roles = {"patient"};
+  config.timing.gap_sd_s = -0.1;
+  expect_config_error([&] { config.validate(); },
+                      {"DialogueConfig: timing.gap_sd_s", ">= 0", "got -0.1"});
+}
+
+TEST(UserSimulationConfig, ValidateRefusesABadValueBuiltInCode) {
+  UserSimulationConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.roles = {"patient", "patient"};
+  expect_config_error([&] { config.validate(); },
+                      {"UserSimulationConfig: roles", "distinct", "'patient'"});
+  config.roles.clear();
+  expect_config_error([&] { config.validate(); }, {"UserSimulationConfig: roles", "got []"});
+}
+
 }  // namespace
 }  // namespace ari_social_sim::dialogue

@@ -58,5 +58,17 @@ TEST(DialogueRunConfig, HumanIdsNeedOneDistinctIdPerRole) {
       {"human_ids"});
 }
 
+TEST(DialogueRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  DialogueRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.language = "";
+  expect_config_error([&] { config.validate(); },
+                      {"DialogueRunConfig: language", "an IETF language tag", "got ''"});
+  config = DialogueRunConfig{};
+  config.live.robot_silence_s = 0.0;
+  expect_config_error([&] { config.validate(); },
+                      {"DialogueRunConfig: robot_silence", "> 0", "got 0"});
+}
+
 }  // namespace
 }  // namespace ari_social_sim::dialogue

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/core/config_reader.hpp"
 #include "ari_social_sim/dialogue/error_model.hpp"
 #include "test_helpers.hpp"
 
@@ -72,12 +73,18 @@ TEST(ErrorModel, ConfigValidation) {
   EXPECT_NO_THROW(ErrorModelConfig{}.validate());
   ErrorModelConfig bad;
   bad.drop_rate = 1.5;
-  expect_config_error([&] { bad.validate(); }, {"drop_rate", "[0, 1]"});
+  expect_config_error([&] { bad.validate(); }, {"ErrorModelConfig: drop_rate", "[0, 1]"});
+  bad = ErrorModelConfig{};
+  bad.intent_share = 0.8;
+  expect_config_error([&] { bad.validate(); },
+                      {"ErrorModelConfig: slot_share", "intent_share + slot_share <= 1", "1.1"});
   expect_config_error(
-      [] { ErrorModelConfig::from_yaml(core::YamlMap::parse("word_eror_rate: 0.1", "e.yaml")); },
+      [] {
+        core::read_fields<ErrorModelConfig>(core::YamlMap::parse("word_eror_rate: 0.1", "e.yaml"));
+      },
       {"e.yaml", "word_eror_rate"});
   const auto read =
-      ErrorModelConfig::from_yaml(core::YamlMap::parse("word_error_rate: 0.25", "e.yaml"));
+      core::read_fields<ErrorModelConfig>(core::YamlMap::parse("word_error_rate: 0.25", "e.yaml"));
   EXPECT_DOUBLE_EQ(read.word_error_rate, 0.25);
 }
 

@@ -155,7 +155,7 @@ TEST_F(ShortLiveDialogueTest, EndsAtTheTurnCapOnceEverythingIsPlayed) {
 TEST(LiveDialogueConfigTest, SilenceMustBePositive) {
   LiveDialogueConfig config;
   config.robot_silence_s = 0.0;
-  testing::expect_config_error([&] { config.validate(); }, {"robot_silence_s", "> 0"});
+  testing::expect_config_error([&] { config.validate(); }, {"robot_silence", "> 0"});
 }
 
 }  // namespace

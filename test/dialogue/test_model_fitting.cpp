@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/model_fitting.hpp"
+#include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -56,7 +56,8 @@ TEST(ModelFitting, MpgtFitMatchesSpecsSection22) {
 TEST(ModelFitting, RejectsBadOptions) {
   FitOptions options;
   options.min_row_count = 0;
-  EXPECT_THROW(options.validate(), core::ConfigError);
+  testing::expect_config_error([&] { options.validate(); },
+                               {"FitOptions: min_row_count", "> 0", "got 0"});
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/reward.hpp"
+#include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -28,7 +28,8 @@ TEST(Reward, StepRewardArithmetic) {
   EXPECT_DOUBLE_EQ(step_reward(config, true, {true, false}), -41.0);  // -1 - 40
   RewardConfig bad;
   bad.max_turns = 0;
-  EXPECT_THROW(bad.validate(), core::ConfigError);
+  testing::expect_config_error([&] { bad.validate(); },
+                               {"RewardConfig: max_turns", "> 0", "got 0"});
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/turn_timing.hpp"
+#include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -33,7 +33,8 @@ TEST(TurnTiming, GapsAreClippedNormal) {
 TEST(TurnTiming, RejectsZeroSpeechRate) {
   TurnTimingConfig config;
   config.seconds_per_word = 0.0;
-  EXPECT_THROW(TurnTiming{config}, core::ConfigError);
+  testing::expect_config_error([&] { TurnTiming{config}; },
+                               {"TurnTimingConfig: seconds_per_word", "> 0", "got 0"});
 }
 
 }  // namespace

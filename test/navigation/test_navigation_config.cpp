@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/navigator.hpp"
 #include "expect_config_error.hpp"
+#include "navigation_fixtures.hpp"
 
 namespace ari_social_sim::navigation {
 namespace {
@@ -60,7 +62,7 @@ TEST(NavigationConfig, EachBadFieldIsNamedWithItsExpectation) {
   expect_config_error([] { parse("mpc: {min_linear_speed: -0.5}"); }, "social_mpc.yaml",
                       {"mpc.min_linear_speed", "[-0.2, 0]"});
   expect_config_error([] { parse("mpc: {solver: newton}"); }, "social_mpc.yaml",
-                      {"mpc.solver", "lbfgs, slsqp, mppi", "newton"});
+                      {"mpc.solver", "lbfgs, slsqp or mppi", "newton"});
   expect_config_error([] { parse("weights: {goal: 0}"); }, "social_mpc.yaml",
                       {"weights.goal", "> 0"});
   expect_config_error([] { parse("weights: {personal_spce: 1}"); }, "social_mpc.yaml",
@@ -77,6 +79,20 @@ TEST(NavigationConfig, EachBadFieldIsNamedWithItsExpectation) {
                       {"perception_input.group_timeout", "> 0"});
   expect_config_error([] { parse("navigation: {}"); }, "social_mpc.yaml",
                       {"top level", "unknown field(s) navigation"});
+}
+
+TEST(NavigationConfig, ValidateRefusesABadValueBuiltInCode) {
+  NavigationConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.mpc.horizon_steps = 2;
+  expect_config_error([&] { config.validate(); }, "NavigationConfig: mpc.horizon_steps",
+                      {"[5, 100]", "got 2"});
+  // The navigator checks the config it is given, before it builds anything from it.
+  config = NavigationConfig{};
+  config.navigator.geodesic.preferred_clearance_m = 0.1;
+  expect_config_error([&] { Navigator(config, test::room_map(6.0)); },
+                      "NavigationConfig: geodesic.preferred_clearance",
+                      {">= inscribed_radius (0.28)", "got 0.1"});
 }
 
 }  // namespace

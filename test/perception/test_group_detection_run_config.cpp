@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "../world/expect_config_error.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 
@@ -45,6 +46,15 @@ TEST(GroupDetectionRunConfig, BadOrUnknownParametersAreNamed) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   }
+}
+
+TEST(GroupDetectionRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  GroupDetectionRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.reference_frame = "/map";
+  world::test::expect_config_error([&] { config.validate(); },
+                                   "GroupDetectionRunConfig: reference_frame",
+                                   {"expected a tf frame name", "got '/map'"});
 }
 
 }  // namespace

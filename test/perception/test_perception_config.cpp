@@ -2,7 +2,9 @@
 
 #include "../world/expect_config_error.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
+#include "ari_social_sim/perception/perception_pipeline.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
@@ -108,9 +110,36 @@ TEST(PerceptionConfig, PersonIdStyleIsHumanOrRandom) {
 TEST(PerceptionConfig, PersonsForgottenNoSoonerThanTheirConfidenceFades) {
   EXPECT_DOUBLE_EQ(parse("persons: {forget_after: 10}").persons.forget_after_s, 10.0);
   expect_config_error([] { parse("persons: {location_decay: 10, forget_after: 9.5}"); },
-                      {"persons.forget_after", "at least location_decay (10.0", "got 9.5"});
+                      {"persons.forget_after", "at least location_decay (10)", "got 9.5"});
   expect_config_error([] { parse("persons: {forget_after: 0}"); },
                       {"p.yaml: persons.forget_after", "> 0", "0"});
+}
+
+TEST(PerceptionConfig, ValidateRefusesABadValueBuiltInCode) {
+  PerceptionConfig config;
+  config.body_errors.detection.miss_rate = 1.5;
+  expect_config_error([&] { config.validate(); }, {"body_errors.miss_rate", "[0, 1]", "got 1.5"},
+                      "PerceptionConfig");
+  // The pipeline checks the config it is given.
+  expect_config_error([&] { PerceptionPipeline{config}; }, {"body_errors.miss_rate"},
+                      "PerceptionConfig");
+  config = PerceptionConfig{};
+  config.face_errors.emotion_confusion.happy = {0.5, 0.5, 0.5, 0.0};
+  expect_config_error([&] { config.validate(); },
+                      {"face_errors.emotion_confusion.happy", "summing to 1", "a sum of 1.5"},
+                      "PerceptionConfig");
+}
+
+TEST(GroupConfig, ValidateRefusesABadValueBuiltInCode) {
+  GroupConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.membership_window_frames = 0;
+  expect_config_error([&] { GroupPerception{config}; },
+                      {"GroupConfig: membership_window_frames", "[1, 10000]", "got 0"},
+                      "GroupConfig");
+  config = GroupConfig{};
+  config.gcff.mdl = -1.0;
+  expect_config_error([&] { config.validate(); }, {"mdl", "> 0", "got -1"}, "GroupConfig");
 }
 
 TEST(PerceptionConfig, EyesAboveHips) {

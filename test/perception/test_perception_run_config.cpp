@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "../world/expect_config_error.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/perception_run_config.hpp"
 
@@ -61,6 +62,14 @@ TEST(PerceptionRunConfig, BadOrUnknownParametersAreNamed) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   }
+}
+
+TEST(PerceptionRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  PerceptionRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.person_ids = "numbered";
+  world::test::expect_config_error([&] { config.validate(); }, "PerceptionRunConfig: person_ids",
+                                   {"expected human or random, got 'numbered'"});
 }
 
 }  // namespace

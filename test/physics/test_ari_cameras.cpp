@@ -119,5 +119,19 @@ TEST(CameraRigConfig, OverridesAndRejectsBadFields) {
             std::string::npos);
 }
 
+TEST(CameraRigConfig, ValidateRefusesABadValueBuiltInCode) {
+  CameraRigConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.cameras.front().width = 8;
+  try {
+    config.validate();
+    ADD_FAILURE() << "accepted a width of 8";
+  } catch (const core::ConfigError& e) {
+    EXPECT_STREQ(e.what(), ("CameraRigConfig: cameras." + config_key_of(config.cameras.front()) +
+                            ".width: expected an integer [16, 8192], got 8")
+                               .c_str());
+  }
+}
+
 }  // namespace
 }  // namespace ari_social_sim::physics

@@ -28,8 +28,8 @@ TEST(DepthImage, ClipsToRangeAndConvertsToMillimetres) {
 TEST(DepthImage, EncodingNames) {
   EXPECT_STREQ(encoding_name(DepthEncoding::kMetres32F), "32FC1");
   EXPECT_STREQ(encoding_name(DepthEncoding::kMillimetres16U), "16UC1");
-  EXPECT_EQ(parse_depth_encoding("16UC1", "x"), DepthEncoding::kMillimetres16U);
-  EXPECT_THROW(parse_depth_encoding("mono16", "x"), core::ConfigError);
+  EXPECT_EQ(core::parse_choice("16UC1", kDepthEncodings, "x"), DepthEncoding::kMillimetres16U);
+  EXPECT_THROW(core::parse_choice("mono16", kDepthEncodings, "x"), core::ConfigError);
 }
 
 }  // namespace

@@ -95,6 +95,20 @@ TEST(MappingConfig, RejectsBadFields) {
                core::ConfigError);
 }
 
+TEST(MappingConfig, ValidateRefusesABadValueBuiltInCode) {
+  MappingConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.min_height_m = 2.5;
+  // The mapper checks the config it is given.
+  try {
+    OctomapMapper mapper(config);
+    ADD_FAILURE() << "accepted min_height_m above max_height_m";
+  } catch (const core::ConfigError& e) {
+    EXPECT_STREQ(e.what(),
+                 "MappingConfig: max_height_m: expected a height above min_height_m (2.5), got 2");
+  }
+}
+
 // ARI's route through the waiting room: waypoints of base_footprint, with a full turn on the spot
 // at each one so that the torso camera (pitched 42.5 deg down, seeing 0.5 to 2.8 m ahead) sweeps
 // around.

@@ -40,7 +40,7 @@ TEST(PhysicsConfig, ReadsEveryParameter) {
       "publish_rate: 100, ground_truth_rate: 50, step: 0.002, seed: 4, imu_rate: 200, "
       "imu_gyro_noise: 0.01, imu_accel_noise: 0.1, imu_gyro_bias: 0.001, imu_accel_bias: 0.01}");
   EXPECT_EQ(config.clock, ClockSource::kWorld);
-  EXPECT_DOUBLE_EQ(config.initial_pose->theta, 0.5);
+  EXPECT_DOUBLE_EQ(config.start_pose()->theta, 0.5);
   EXPECT_DOUBLE_EQ(config.physics.step_s, 0.002);
   EXPECT_EQ(config.physics.seed, 4u);
   EXPECT_DOUBLE_EQ(config.physics.imu_noise.accel_bias_std_mps2, 0.01);
@@ -55,6 +55,42 @@ TEST(PhysicsConfig, NamesEachBadField) {
   expect_rejected("{imu_rate: 5000}", {"imu_rate", "1/step"});
   expect_rejected("{imu_gyro_noise: -1}", {"imu_gyro_noise"});
   expect_rejected("{publsh_rate: 50}", {"publsh_rate"});
+}
+
+// Expects `check` to throw core::ConfigError with exactly `message`.
+template <class Check>
+void expect_message(Check check, const std::string& message) {
+  try {
+    check();
+    ADD_FAILURE() << "accepted; expected " << message;
+  } catch (const core::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), message);
+  }
+}
+
+TEST(PhysicsConfig, ValidateRefusesABadValueBuiltInCode) {
+  PhysicsConfig config;
+  config.person.head_centre_height_m = 1.0;
+  expect_message([&] { config.validate(); },
+                 "PhysicsConfig: person.head_centre_height: expected a height above "
+                 "shoulder_height (1.45), got 1");
+  config = PhysicsConfig{};
+  config.imu_rate_hz = 2000.0;
+  expect_message([&] { config.validate(); },
+                 "PhysicsConfig: imu_rate: expected a rate at most 1/step (1000 Hz), got 2000");
+}
+
+TEST(PhysicsRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  PhysicsRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.initial_pose = std::vector<double>{1.0, 2.0};
+  expect_message([&] { config.validate(); },
+                 "PhysicsRunConfig: initial_pose: expected [x, y, theta] (m, m, rad), got 2 "
+                 "numbers");
+  config.initial_pose.reset();
+  config.physics.step_s = 0.1;
+  expect_message([&] { config.validate(); },
+                 "PhysicsRunConfig: step: expected a number (0, 0.01], got 0.1");
 }
 
 }  // namespace

@@ -49,5 +49,16 @@ TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
                                    {"unknown field(s) group_timout"});
 }
 
+TEST(ScenarioRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  ScenarioRunConfig config;
+  world::test::expect_config_error([&] { config.validate(); }, "ScenarioRunConfig: scenario",
+                                   {"required", "got ''"});
+  config.scenario = "a.yaml";
+  EXPECT_NO_THROW(config.validate());
+  config.wall_time_limit_s = -1.0;
+  world::test::expect_config_error([&] { config.validate(); }, "ScenarioRunConfig: wall_time_limit",
+                                   {">= 0", "got -1"});
+}
+
 }  // namespace
 }  // namespace ari_social_sim::scenario

@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
+#include "expect_config_error.hpp"
+#include "scene_builders.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -23,11 +26,11 @@ void expect_rejected(const std::string& text, const std::vector<std::string>& fr
 
 TEST(WorldRunConfig, DefaultsAreValidAndFieldsAreRead) {
   const WorldRunConfig defaults = parse("{}");
-  EXPECT_DOUBLE_EQ(defaults.step_s, 0.05);
+  EXPECT_DOUBLE_EQ(defaults.simulation.step_s, 0.05);
   EXPECT_DOUBLE_EQ(defaults.real_time_factor, 1.0);
   EXPECT_EQ(defaults.seed, -1);
   const WorldRunConfig config = parse("{step: 0.02, real_time_factor: 0, seed: 4, duration: 40}");
-  EXPECT_DOUBLE_EQ(config.step_s, 0.02);
+  EXPECT_DOUBLE_EQ(config.simulation.step_s, 0.02);
   EXPECT_DOUBLE_EQ(config.real_time_factor, 0.0);
   EXPECT_EQ(config.seed, 4);
   EXPECT_DOUBLE_EQ(config.duration_s, 40.0);
@@ -42,6 +45,29 @@ TEST(WorldRunConfig, EachBadParameterIsNamed) {
   expect_rejected("{real_time_factor: -2}", {"real_time_factor", ">= 0"});
   expect_rejected("{stepp: 0.1}", {"unknown field", "stepp"});
   expect_rejected("{ari_source: gazebo}", {"ari_source", "internal or physics", "gazebo"});
+}
+
+TEST(WorldRunConfig, ValidateRefusesABadValueBuiltInCode) {
+  WorldRunConfig config;
+  EXPECT_NO_THROW(config.validate());
+  config.marker_rate_hz = 0.0;
+  test::expect_config_error([&] { config.validate(); }, "WorldRunConfig: marker_rate",
+                            {"(0, 30]", "got 0"});
+}
+
+TEST(SimulationConfig, ValidateRefusesABadValueBuiltInCode) {
+  EXPECT_NO_THROW(SimulationConfig{}.validate());
+  test::expect_config_error(
+      [] {
+        SimulationConfig{0.05, 1, 2.0}.validate();
+      },
+      "SimulationConfig: map_resolution", {"[0.01, 1]", "got 2"});
+  // The simulation checks the config it is given before building anything.
+  test::expect_config_error(
+      [] {
+        Simulation(test::square_room(6.0), SimulationConfig{1.5, 1, 0.05});
+      },
+      "SimulationConfig: step", {"(0, 1]", "got 1.5"});
 }
 
 }  // namespace

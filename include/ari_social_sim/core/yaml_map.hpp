@@ -4,11 +4,12 @@
 
 #include <Eigen/Core>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "ari_social_sim/core/bounds.hpp"
 
 namespace ari_social_sim::core {
 
@@ -16,26 +17,6 @@ namespace ari_social_sim::core {
 /// and scenarios are under 6 KB; yaml-cpp holds a document as nodes hundreds of times larger than
 /// its text (a 50 MB scene took 3.5 GB), so a bigger file is refused before it is read.
 constexpr std::uintmax_t kMaxYamlFileBytes = 1024 * 1024;
-
-/// Allowed interval for a number read from a user's file; part of the error message on violation.
-struct Bounds {
-  double min{-std::numeric_limits<double>::infinity()};
-  double max{std::numeric_limits<double>::infinity()};
-  bool min_exclusive{false};
-
-  bool contains(double value) const;
-  std::string describe() const;
-};
-
-inline Bounds positive() {
-  return {0.0, std::numeric_limits<double>::infinity(), true};
-}
-inline Bounds non_negative() {
-  return {0.0, std::numeric_limits<double>::infinity(), false};
-}
-inline Bounds between(double min, double max) {
-  return {min, max, false};
-}
 
 /// Strict reader of one YAML mapping from a user's file or the parameter server.
 ///

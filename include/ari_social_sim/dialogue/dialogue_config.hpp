@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/dialogue/domain.hpp"
 #include "ari_social_sim/dialogue/error_model.hpp"
 #include "ari_social_sim/dialogue/mpgt_corpus.hpp"
@@ -28,6 +28,25 @@ struct DialogueConfig {
   TurnTimingConfig timing;
   RewardConfig reward;
 
+  template <class V>
+  void visit(V& v) {
+    v.field("domain_file", domain_file,
+            "the domain: what the humans ask about, what ARI can tell them");
+    v.field("model_file", model_file, "the user model fitted to MPGT (fit_dialogue_model)");
+    v.field("templates_file", templates_file, "the NLG templates and slot words");
+    v.field("corpus_dir", corpus_dir, "the MPGT corpus; empty: default_mpgt_dir()");
+    v.choice("nlg", nlg,
+             "template: templates per act; retrieval: a real MPGT utterance with the same acts, "
+             "templates when the corpus has none",
+             kNlgModes);
+    v.section("users", users, "the simulated humans' behaviour beyond the corpus");
+    v.section("errors", errors, "the error layer between the humans and ARI");
+    v.section("timing", timing, "turn-taking times");
+    v.section("reward", reward, "episode reward and turn cap, in robot turns");
+  }
+
+  /// Throws core::ConfigError naming the field outside what visit allows.
+  void validate() const;
   /// Reads a settings file (every field optional, unknown ones are errors) and resolves paths.
   /// Throws core::ConfigError naming the file and field.
   static DialogueConfig load(const std::string& file_path);

@@ -3,8 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/rng.hpp"
-#include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/dialogue/domain.hpp"
 #include "ari_social_sim/dialogue/utterance.hpp"
 
@@ -13,31 +14,38 @@ namespace ari_social_sim::dialogue {
 /// Rates of the error layer shared by every mode (docs/dialogue.md). Defaults: a mild setting
 /// between PyDial's 0 % and 15 % semantic error rates.
 struct ErrorModelConfig {
-  double semantic_error_rate{0.05};   ///< P(one act of an utterance is confused)
-  double intent_share{0.2};           ///< of confusions: the intent is replaced (PyDial 0.2)
-  double slot_share{0.3};             ///< ... a slot is replaced (PyDial 0.3); rest: the value
-  double word_error_rate{0.10};       ///< target WER: (S + D + I) / words
-  double drop_rate{0.02};             ///< P(utterance not perceived at all)
-  double misattribution_rate{0.03};   ///< P(attributed to another human)
-  double wrong_addressee_rate{0.05};  ///< P(addressee perceived wrongly: ARI <-> the others)
-  double confidence_noise{0.05};      ///< sd of the confidence around 1 - observed WER
+  double semantic_error_rate{0.05};
+  double intent_share{0.2};  // PyDial 0.2
+  double slot_share{0.3};    // PyDial 0.3
+  double word_error_rate{0.10};
+  double drop_rate{0.02};
+  double misattribution_rate{0.03};
+  double wrong_addressee_rate{0.05};
+  double confidence_noise{0.05};
 
   template <class V>
   void visit(V& v) {
-    v("semantic_error_rate", semantic_error_rate, core::between(0.0, 1.0));
-    v("intent_share", intent_share, core::between(0.0, 1.0));
-    v("slot_share", slot_share, core::between(0.0, 1.0));
-    v("word_error_rate", word_error_rate, core::between(0.0, 1.0));
-    v("drop_rate", drop_rate, core::between(0.0, 1.0));
-    v("misattribution_rate", misattribution_rate, core::between(0.0, 1.0));
-    v("wrong_addressee_rate", wrong_addressee_rate, core::between(0.0, 1.0));
-    v("confidence_noise", confidence_noise, core::between(0.0, 1.0));
+    const core::Bounds probability = core::between(0.0, 1.0);
+    v.field("semantic_error_rate", semantic_error_rate, "P(one act of an utterance is confused)",
+            probability);
+    v.field("intent_share", intent_share, "of confusions: the intent is replaced", probability);
+    v.field("slot_share", slot_share, "of confusions: a slot is replaced; the rest: the value",
+            probability);
+    v.rule("slot_share", intent_share + slot_share <= 1.0, "intent_share + slot_share <= 1",
+           core::number_text(intent_share + slot_share));
+    v.field("word_error_rate", word_error_rate, "target WER: (S + D + I) / words", probability);
+    v.field("drop_rate", drop_rate, "P(an utterance is not perceived at all)", probability);
+    v.field("misattribution_rate", misattribution_rate, "P(attributed to another human)",
+            probability);
+    v.field("wrong_addressee_rate", wrong_addressee_rate,
+            "P(addressee perceived wrongly: ARI <-> the others)", probability);
+    v.field("confidence_noise", confidence_noise,
+            "standard deviation of the confidence around 1 - observed WER", probability);
   }
+
   /// Throws core::ConfigError naming the field when a rate is outside [0, 1] or
   /// intent_share + slot_share > 1.
   void validate() const;
-  /// Reads the fields present in `map` (all optional), then validates.
-  static ErrorModelConfig from_yaml(const core::YamlMap& map);
 };
 
 /// Turns a true human utterance into what ARI perceives. Seeded by the caller's generator; never

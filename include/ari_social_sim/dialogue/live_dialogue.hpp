@@ -4,7 +4,7 @@
 #include <deque>
 #include <string>
 
-#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/dialogue/dialogue_env.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 
@@ -12,12 +12,14 @@ namespace ari_social_sim::dialogue {
 
 /// Timing of a dialogue with a live robot.
 struct LiveDialogueConfig {
-  double robot_silence_s{3.0};  ///< s the humans wait for ARI after their turn before going on
+  double robot_silence_s{3.0};
 
   template <class V>
   void visit(V& v) {
-    v("robot_silence_s", robot_silence_s, core::positive());
+    v.field("robot_silence", robot_silence_s,
+            "s the humans wait for ARI after their turn before they go on", core::positive());
   }
+
   /// Throws core::ConfigError naming the field when robot_silence_s <= 0.
   void validate() const;
 };

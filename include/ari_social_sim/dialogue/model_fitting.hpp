@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/dialogue/mpgt_corpus.hpp"
 #include "ari_social_sim/dialogue/user_model.hpp"
 
@@ -8,8 +9,16 @@ namespace ari_social_sim::dialogue {
 /// How fit_user_model pools sparse data, so that the tables carry the general behaviour of the
 /// 29 conversations rather than their quirks (the project's own choice).
 struct FitOptions {
-  unsigned min_row_count{10};  ///< contexts seen fewer times use the `*` row (the role's marginal)
-  double prior_weight{5.0};    ///< pseudo-counts pulling P(to other | intent) to the role's mean
+  unsigned min_row_count{10};
+  double prior_weight{5.0};
+
+  template <class V>
+  void visit(V& v) {
+    v.field("min_row_count", min_row_count,
+            "contexts seen fewer times use the `*` row (the role's marginal)", core::positive());
+    v.field("prior_weight", prior_weight,
+            "pseudo-counts pulling P(to other | intent) to the role's mean", core::non_negative());
+  }
 
   /// Throws core::ConfigError when min_row_count is 0 or prior_weight is negative.
   void validate() const;

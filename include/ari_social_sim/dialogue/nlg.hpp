@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/dialogue/dialogue_act.hpp"
@@ -14,6 +15,9 @@ namespace ari_social_sim::dialogue {
 /// How acts become text: templates per act (config/dialogue/nlg_templates.yaml), or retrieval of
 /// a real MPGT utterance with the same acts, falling back to templates when the corpus has none.
 enum class NlgMode { kTemplate, kRetrieval };
+
+inline constexpr core::Choice<NlgMode> kNlgModes[] = {{NlgMode::kTemplate, "template"},
+                                                      {NlgMode::kRetrieval, "retrieval"}};
 
 /// `template` or `retrieval`; throws core::ConfigError naming `field` otherwise.
 NlgMode parse_nlg_mode(const std::string& text, const std::string& field);

@@ -57,6 +57,7 @@ struct SpokenDialogueEvents {
 /// which must outlive it.
 class SpokenDialogue {
  public:
+  /// Throws core::ConfigError for an invalid run config (DialogueRunConfig::validate).
   SpokenDialogue(const DialogueSetup& setup, const RobotNlu& nlu, const DialogueRunConfig& run,
                  SpeechStage& stage);
 

@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/rng.hpp"
-#include "ari_social_sim/core/yaml_map.hpp"
 
 namespace ari_social_sim::dialogue {
 
@@ -13,19 +13,22 @@ struct TurnTimingConfig {
   double gap_mean_s{0.2};
   double gap_sd_s{0.2};
   double seconds_per_word{0.4};
-  double min_duration_s{0.4};  ///< even "Ok." takes a moment
+  double min_duration_s{0.4};
 
   template <class V>
   void visit(V& v) {
-    v("gap_mean_s", gap_mean_s, core::non_negative());
-    v("gap_sd_s", gap_sd_s, core::non_negative());
-    v("seconds_per_word", seconds_per_word, core::positive());
-    v("min_duration_s", min_duration_s, core::non_negative());
+    v.field("gap_mean_s", gap_mean_s, "mean gap (s) before the next speaker starts",
+            core::non_negative());
+    v.field("gap_sd_s", gap_sd_s, "its standard deviation (s); gaps are clipped at 0",
+            core::non_negative());
+    v.field("seconds_per_word", seconds_per_word, "speech rate (0.4 s: 150 words a minute)",
+            core::positive());
+    v.field("min_duration_s", min_duration_s, "shortest utterance (s): even \"Ok.\" takes a moment",
+            core::non_negative());
   }
 
   /// Throws core::ConfigError naming the field when a value is negative or seconds_per_word is 0.
   void validate() const;
-  static TurnTimingConfig from_yaml(const core::YamlMap& map);
 };
 
 /// Places utterances on the dialogue's clock.

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/rng.hpp"
-#include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/dialogue/agenda.hpp"
 #include "ari_social_sim/dialogue/domain.hpp"
 #include "ari_social_sim/dialogue/error_model.hpp"
@@ -17,17 +17,41 @@ namespace ari_social_sim::dialogue {
 
 /// Behaviour knobs of the simulated humans that the corpus does not pin down.
 struct UserSimulationConfig {
-  std::vector<std::string> roles{"patient", "companion"};  ///< one simulated human per role
-  unsigned min_patience{3};  ///< bad robot answers tolerated (PyDial benchmark: 4-6 turns)
+  std::vector<std::string> roles{"patient", "companion"};
+  unsigned min_patience{3};  // PyDial's benchmark: 4-6 turns
   unsigned max_patience{5};
-  unsigned max_asks{3};              ///< statements of one goal to ARI before it counts as failed
-  unsigned max_human_run{6};         ///< human utterances in a row before ARI gets the floor
-  double reask_probability{0.7};     ///< P(re-asking an unanswered goal rather than moving on)
-  double farewell_probability{0.5};  ///< P(a human answers ARI's bye)
+  unsigned max_asks{3};
+  unsigned max_human_run{6};
+  double reask_probability{0.7};
+  double farewell_probability{0.5};
+
+  template <class V>
+  void visit(V& v) {
+    v.field("roles", roles, "one simulated human per role, each with its user model table");
+    v.rule("roles", bad_role().empty(), "at least one role, each named, distinct and not ARI",
+           bad_role());
+    v.field("min_patience", min_patience, "bad robot answers a human tolerates, at least",
+            core::positive());
+    v.field("max_patience", max_patience, "... and at most (drawn per dialogue)", core::positive());
+    v.rule("max_patience", min_patience <= max_patience,
+           "an integer >= min_patience (" + std::to_string(min_patience) + ")",
+           std::to_string(max_patience));
+    v.field("max_asks", max_asks, "statements of one goal to ARI before it counts as failed",
+            core::positive());
+    v.field("max_human_run", max_human_run, "human utterances in a row before ARI gets the floor",
+            core::positive());
+    v.field("reask_probability", reask_probability,
+            "P(re-asking an unanswered goal rather than moving on)", core::between(0.0, 1.0));
+    v.field("farewell_probability", farewell_probability, "P(a human answers ARI's bye)",
+            core::between(0.0, 1.0));
+  }
 
   /// Throws core::ConfigError naming the field (no roles, a role twice, min > max patience, ...).
   void validate() const;
-  static UserSimulationConfig from_yaml(const core::YamlMap& map);
+
+ private:
+  /// "[]" without roles; else the first role that is empty, ARI's name or a repeat, quoted; "".
+  std::string bad_role() const;
 };
 
 /// One simulated human.

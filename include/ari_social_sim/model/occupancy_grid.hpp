@@ -4,7 +4,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "ari_social_sim/core/bounds.hpp"
+
 namespace ari_social_sim::model {
+
+/// Cell sizes (m) the suite's occupancy maps take: world_node's /map and ARI's map sensor, and the
+/// voxels of the 3D mapping, whose 2D projection is /map too.
+inline const core::Bounds kMapResolutionBounds = core::between(0.01, 1.0);
 
 /// A 2D occupancy grid in the ROS convention: row-major from the lower-left cell at `origin`,
 /// values 0 (free), 100 (occupied), -1 (unknown).

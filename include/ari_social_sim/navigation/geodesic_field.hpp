@@ -3,30 +3,60 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/navigation/grid_field.hpp"
 
 namespace ari_social_sim::navigation {
 
 /// How the travel-distance field weighs the map ("G" of docs/navigation.md).
 struct GeodesicParams {
-  /// m: base_footprint closer than this to a wall or furniture cannot pass (ARI's half width).
-  double inscribed_radius_m{0.28};
-  /// m: below this clearance a cell costs more, so paths keep to the middle of doors and corridors.
+  double inscribed_radius_m{0.28};  // ARI's half width
   double preferred_clearance_m{0.7};
-  /// Extra cost per metre at zero spare clearance (1 = twice the free-space cost).
   double clearance_penalty{1.5};
-  /// Cost per metre of cells ARI cannot pass (closer than the inscribed radius, or occupied), so
-  /// the field stays finite and its gradient leads back into free space.
   double blocked_cost{25.0};
-  /// m: a start or goal this close to a passable cell counts as on it (ARI's base_footprint sits
-  /// at the front of the body and may stand nearer to a wall than the inscribed radius).
   double snap_radius_m{0.35};
-  /// m: people standing (slower than 0.3 m/s) raise the cost within their body radius + ARI's
-  /// inscribed radius + this, so the way leads around them...
   double person_clearance_m{0.3};
-  double person_cost{6.0};  // ... by this much per metre (0 = ignore people)
-  /// Extra cost per metre inside the o-space of groups ARI is not joining (0 = ignore groups).
+  double person_cost{6.0};
   double group_cost{6.0};
+
+  template <class V>
+  void visit(V& v) {
+    v.field("inscribed_radius", inscribed_radius_m,
+            "m: base_footprint closer than this to a wall or furniture cannot pass",
+            core::Bounds{0.0, 2.0, true});
+    v.field("preferred_clearance", preferred_clearance_m,
+            "m: below this clearance a cell costs more, so paths keep to the middle of doors and "
+            "corridors",
+            core::Bounds{0.0, 5.0, true});
+    v.rule("preferred_clearance", preferred_clearance_m >= inscribed_radius_m,
+           "a value >= inscribed_radius (" + core::number_text(inscribed_radius_m) + ")",
+           core::number_text(preferred_clearance_m));
+    v.field("clearance_penalty", clearance_penalty,
+            "extra cost per metre at zero spare clearance (1 = twice the free-space cost)",
+            core::non_negative());
+    // Finite, so that the field's gradient still leads back into free space.
+    v.field("blocked_cost", blocked_cost,
+            "cost per metre of cells ARI cannot pass (closer than the inscribed radius, or "
+            "occupied)",
+            core::between(1.0, 1e6));
+    // ARI's base_footprint sits at the front of the body and may stand nearer to a wall than the
+    // inscribed radius.
+    v.field("snap_radius", snap_radius_m,
+            "m: a start or goal this close to a passable cell counts as on it",
+            core::between(0.0, 2.0));
+    v.field("person_clearance", person_clearance_m,
+            "m: people standing (slower than 0.3 m/s) raise the cost within their body radius + "
+            "the inscribed radius + this, so the way leads around them",
+            core::between(0.0, 2.0));
+    v.field("person_cost", person_cost,
+            "extra cost per metre near a standing person (0 = ignore people)",
+            core::non_negative());
+    v.field("group_cost", group_cost,
+            "extra cost per metre inside the o-space of groups ARI is not joining (0 = ignore "
+            "groups)",
+            core::non_negative());
+  }
 };
 
 /// A disc of the map where travel costs `extra_cost` more per metre (people, groups): it bends the

@@ -49,6 +49,7 @@ struct NavigatorStep {
 /// timeout, or ARI makes no progress. Holds the static map's signed distance field.
 class Navigator {
  public:
+  /// Throws core::ConfigError for an invalid config (NavigationConfig::validate).
   Navigator(const NavigationConfig& config, const model::OccupancyGrid& map);
   Navigator(const Navigator&) = delete;
   Navigator& operator=(const Navigator&) = delete;

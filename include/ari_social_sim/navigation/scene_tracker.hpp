@@ -5,21 +5,36 @@
 #include <string>
 #include <vector>
 
-#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/navigation/perceived_scene.hpp"
 
 namespace ari_social_sim::navigation {
 
 /// How perception reports become a PerceivedScene (social_mpc_node).
 struct SceneTrackerConfig {
-  double position_noise_m{0.1};         // std. dev. of a reported position (perception's noise)
-  double acceleration_noise_mps2{1.0};  // how fast people change velocity (filter's process)
-  double heading_time_constant_s{0.3};  // smoothing of reported headings
-  double person_timeout_s{2.0};         // a person not reported for this long is dropped
-  double group_timeout_s{2.0};          // a group, or a member of it, not reported for this long
-  double group_stride_m{0.5};           // GCFF stride that places a group's o-space centre
+  double position_noise_m{0.1};
+  double acceleration_noise_mps2{1.0};
+  double heading_time_constant_s{0.3};
+  double person_timeout_s{2.0};
+  double group_timeout_s{2.0};
+  double group_stride_m{0.5};
 
-  void read(const core::YamlMap& map);
+  template <class V>
+  void visit(V& v) {
+    v.field("position_noise", position_noise_m,
+            "m, standard deviation of a reported position (perception's noise)", core::positive());
+    v.field("acceleration_noise", acceleration_noise_mps2,
+            "m/s^2, how fast people change velocity (the filter's process noise)",
+            core::positive());
+    v.field("heading_time_constant", heading_time_constant_s, "s, smoothing of reported headings",
+            core::positive());
+    v.field("person_timeout", person_timeout_s,
+            "s a person not reported (hidden, out of view) is kept", core::positive());
+    v.field("group_timeout", group_timeout_s, "s a group, or a member of it, not reported is kept",
+            core::positive());
+    v.field("group_stride", group_stride_m, "m, GCFF stride that places a group's o-space centre",
+            core::between(0.0, 2.0));
+  }
 };
 
 /// Keeps what perception last said about each person and group, and turns it into the scene the

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/navigation/perceived_scene.hpp"
 
@@ -13,15 +14,28 @@ namespace ari_social_sim::navigation {
 /// ahead of the person and rear sigma behind. The front sigma grows with walking speed, as people
 /// claim more room ahead when they walk. The space's edge is the contour at `boundary_sigmas`.
 struct PersonalSpaceParams {
-  double sigma_front_m{0.6};      // standing person: edge 1.2 m ahead at 2 sigma
-  double sigma_side_m{0.4};       // edge 0.8 m to the side
-  double sigma_rear_m{0.3};       // edge 0.6 m behind
-  double front_per_speed_s{0.3};  // m of front sigma per m/s of walking speed
-  double boundary_sigmas{2.0};    // where "inside the personal space" ends
-  double person_radius_m{0.2};    // body radius, for clearance and the o-space edge
+  double sigma_front_m{0.6};  // standing person: edge 1.2 m ahead at 2 sigma
+  double sigma_side_m{0.4};
+  double sigma_rear_m{0.3};
+  double front_per_speed_s{0.3};
+  double boundary_sigmas{2.0};
+  double person_radius_m{0.2};
 
   /// Value at which the edge lies: exp(-boundary_sigmas^2 / 2).
   double boundary_value() const;
+
+  template <class V>
+  void visit(V& v) {
+    v.field("sigma_front", sigma_front_m, "m ahead of a standing person", core::positive());
+    v.field("sigma_side", sigma_side_m, "m to the side", core::positive());
+    v.field("sigma_rear", sigma_rear_m, "m behind", core::positive());
+    v.field("front_per_speed", front_per_speed_s, "m of front sigma per m/s of walking speed",
+            core::non_negative());
+    v.field("boundary_sigmas", boundary_sigmas, "where the personal space's edge lies",
+            core::Bounds{0.0, 5.0, true});
+    v.field("person_radius", person_radius_m, "m, body radius, for clearance and the o-space edge",
+            core::Bounds{0.0, 1.0, true});
+  }
 };
 
 /// f at `point` (map frame) for a person standing or walking as estimated; with `gradient`, also

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+
 // GCFF: Graph-Cuts for F-Formation (Setti, Russell, Bassetti, Cristani, PLOS ONE 2015), as
 // the paper and its authors' code define it. Every length here is in the unit of the input
 // positions: metres in the simulator, centimetres for the F-formation data sets (MDL then scales by
@@ -14,19 +16,21 @@ namespace ari_social_sim::perception {
 
 /// Parameters of GCFF. Lengths are in the positions' unit (m in the simulator).
 struct GcffParams {
-  /// Distance from a person to their candidate o-space centre, straight ahead (unit). Typical
-  /// 0.5-0.7 m; the data sets use 20-50 cm.
   double stride{0.5};
-  /// Label cost (unit^2): the price of opening one more group; sqrt(mdl) is roughly the distance
-  /// at which starting a new group beats joining one. Typical 0.8-3 m^2; the data sets use
-  /// 6000-8000 cm^2. Also bounds the neighbourhood of the visibility term.
   double mdl{0.8};
 
-  /// Calls visitor(name, field) for each field, for loaders driven by field names.
+  // The F-formation data sets, in cm, use strides of 20-50 and an mdl of 6000-8000.
   template <class V>
-  void visit(V& visitor) {
-    visitor("stride", stride);
-    visitor("mdl", mdl);
+  void visit(V& v) {
+    v.field("stride", stride,
+            "distance from a person to their candidate o-space centre, straight ahead (typical "
+            "0.5-0.7 m)",
+            core::positive());
+    // Also bounds the neighbourhood of the visibility term.
+    v.field("mdl", mdl,
+            "label cost (unit^2), the price of one more group: sqrt(mdl) is about the distance at "
+            "which a new group beats joining one (typical 0.8-3 m^2)",
+            core::positive());
   }
 
   /// Throws core::ConfigError naming the field unless both are finite and > 0.

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/perception/group_tracker.hpp"
 #include "ari_social_sim/perception/membership_filter.hpp"
@@ -26,9 +27,9 @@ struct PerceivedGroup {
 /// (group_candidates_of), group_detection_node the tracked persons' body frames from tf.
 class GroupPerception {
  public:
-  /// Throws core::ConfigError for invalid GCFF parameters.
+  /// Throws core::ConfigError for an invalid config (GroupConfig::validate).
   explicit GroupPerception(const GroupConfig& config)
-      : detector_(config.gcff),
+      : detector_(core::validated(config).gcff),
         stride_(config.gcff.stride),
         membership_(config.membership_window_frames),
         tracker_(config.id_memory_frames) {}

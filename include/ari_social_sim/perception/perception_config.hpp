@@ -1,152 +1,177 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 
 // Parameters of ARI's simulated perception (docs/perception.md). Defaults are ARI's sensors
-// (ari_robot's URDF, D6.4 §3.5) and moderate error levels; config/perception.yaml spells them out.
-// Every struct lists its fields once in `visit`, which drives reading, writing and bound checks:
-// v.field(name, member, bounds) for values, v.section(name, member) for nested structs. Angles
-// are in degrees where the name says `_deg`, lengths in metres, rates are probabilities per event
-// unless the name gives a unit.
+// (ari_robot's URDF, D6.4 §3.5) and moderate error levels; config/perception.yaml spells them out. Each
+// struct lists its fields once in `visit` (core/config_fields.hpp), which reads, checks, writes and
+// documents them. Angles are in degrees where the name says `_deg`, lengths in metres, rates are
+// probabilities per event unless the name gives a unit.
 
 namespace ari_social_sim::perception {
 
 /// The torso front fisheye that tracks bodies (D6.4 §3.5.2; ELP IMX179, 180 degrees).
 struct BodyCameraConfig {
-  double x_m{-0.142};  ///< Mount in base_footprint (ari_robot's URDF: front fisheye at x -0.142).
+  double x_m{-0.142};  // ari_robot's URDF: front fisheye at x -0.142
   double y_m{0.0};
-  double z_m{1.321};                 ///< Height, for image regions only.
-  double field_of_view_deg{180.0};   ///< Horizontal.
-  double range_m{10.0};              ///< Bodies farther away are not tracked.
-  double min_visible_fraction{0.2};  ///< Below this share of unblocked rays a body is occluded.
+  double z_m{1.321};
+  double field_of_view_deg{180.0};
+  double range_m{10.0};
+  double min_visible_fraction{0.2};
 
   template <class V>
   void visit(V& v) {
-    v.field("x", x_m);
-    v.field("y", y_m);
-    v.field("z", z_m, core::non_negative());
-    v.field("field_of_view_deg", field_of_view_deg, {0.0, 360.0, true});
-    v.field("range", range_m, core::positive());
-    v.field("min_visible_fraction", min_visible_fraction, {0.0, 1.0, true});
+    v.field("x", x_m, "m, mount in base_footprint");
+    v.field("y", y_m, "m, mount in base_footprint");
+    v.field("z", z_m, "m, height, for image regions only", core::non_negative());
+    v.field("field_of_view_deg", field_of_view_deg, "horizontal", core::Bounds{0.0, 360.0, true});
+    v.field("range", range_m, "m; bodies farther away are not tracked", core::positive());
+    v.field("min_visible_fraction", min_visible_fraction,
+            "share of rays that must reach a body past obstacles; below it the body is occluded",
+            core::Bounds{0.0, 1.0, true});
   }
 };
 
 /// The head camera that sees faces (D6.4 §3.5.3: 62 degrees), turning with the head pan.
 struct FaceCameraConfig {
-  double pan_axis_x_m{-0.2255};  ///< head_1_joint in base_footprint (ari_robot's URDF).
+  double pan_axis_x_m{-0.2255};  // head_1_joint (ari_robot's URDF)
   double pan_axis_y_m{0.0};
-  double x_m{0.1055};  ///< Camera ahead of the pan axis (head_front_camera at x -0.120 at pan 0).
+  double x_m{0.1055};  // head_front_camera at x -0.120 at pan 0
   double y_m{0.0};
   double z_m{1.591};
   double field_of_view_deg{62.0};
-  double range_m{2.0};               ///< ARI's face detection: about 2 m (ARI documentation).
-  double min_visible_fraction{0.5};  ///< A face needs most of the head in view.
-  double max_face_angle_deg{60.0};   ///< Face seen when turned toward the camera within this.
+  double range_m{2.0};  // about 2 m (ARI documentation)
+  double min_visible_fraction{0.5};
+  double max_face_angle_deg{60.0};
 
   template <class V>
   void visit(V& v) {
-    v.field("pan_axis_x", pan_axis_x_m);
-    v.field("pan_axis_y", pan_axis_y_m);
-    v.field("x", x_m);
-    v.field("y", y_m);
-    v.field("z", z_m, core::non_negative());
-    v.field("field_of_view_deg", field_of_view_deg, {0.0, 360.0, true});
-    v.field("range", range_m, core::positive());
-    v.field("min_visible_fraction", min_visible_fraction, {0.0, 1.0, true});
-    v.field("max_face_angle_deg", max_face_angle_deg, core::between(0.0, 180.0));
+    v.field("pan_axis_x", pan_axis_x_m, "m, head_1_joint in base_footprint");
+    v.field("pan_axis_y", pan_axis_y_m, "m, head_1_joint in base_footprint");
+    v.field("x", x_m, "m, camera ahead of the pan axis");
+    v.field("y", y_m, "m, camera beside the pan axis");
+    v.field("z", z_m, "m, height", core::non_negative());
+    v.field("field_of_view_deg", field_of_view_deg, "horizontal", core::Bounds{0.0, 360.0, true});
+    v.field("range", range_m, "m; ARI's face detection reaches about 2 m", core::positive());
+    v.field("min_visible_fraction", min_visible_fraction,
+            "share of rays that must reach the head: a face needs most of it in view",
+            core::Bounds{0.0, 1.0, true});
+    v.field("max_face_angle_deg", max_face_angle_deg,
+            "a face is seen when turned toward the camera within this", core::between(0.0, 180.0));
   }
 };
 
 /// The ReSpeaker array in the torso (D6.4 §3.5.4): hears speakers within a distance, not through
 /// walls.
 struct MicrophoneConfig {
-  double x_m{-0.122};  ///< torso_mic_front_link in base_footprint.
+  double x_m{-0.122};
   double y_m{0.0};
-  double max_distance_m{5.0};   ///< D6.4 §3.5.4: max listening distance d.
-  double voice_timeout_s{2.0};  ///< A voice stays tracked this long after its last word.
+  double max_distance_m{5.0};
+  double voice_timeout_s{2.0};
   std::string language{"en-GB"};
 
   template <class V>
   void visit(V& v) {
-    v.field("x", x_m);
-    v.field("y", y_m);
-    v.field("max_distance", max_distance_m, core::positive());
-    v.field("voice_timeout", voice_timeout_s, core::non_negative());
-    v.field("language", language);
+    v.field("x", x_m, "m, torso_mic_front_link in base_footprint");
+    v.field("y", y_m, "m, torso_mic_front_link in base_footprint");
+    v.field("max_distance", max_distance_m, "m, farthest speaker heard", core::positive());
+    v.field("voice_timeout", voice_timeout_s, "s a voice stays tracked after its last word",
+            core::non_negative());
+    v.field("language", language, "LiveSpeech.language");
   }
 };
 
 /// How sight is blocked: rays against the occupancy grid and against people as circles.
 struct OcclusionConfig {
-  int rays_per_person{9};       ///< Rays spread over a person's width; visible fraction = share.
-  double person_radius_m{0.2};  ///< Matches the world's body radius.
-  int occupied_threshold{50};   ///< Grid cells at or above this value block sight.
+  int rays_per_person{9};
+  double person_radius_m{0.2};  // the world's body radius
+  int occupied_threshold{50};
 
   template <class V>
   void visit(V& v) {
-    v.field("rays_per_person", rays_per_person, core::between(1.0, 101.0));
-    v.field("person_radius", person_radius_m, core::positive());
-    v.field("occupied_threshold", occupied_threshold, core::between(1.0, 100.0));
+    v.field("rays_per_person", rays_per_person,
+            "rays spread over a person's width; visible fraction = share reaching them",
+            core::between(1.0, 101.0));
+    v.field("person_radius", person_radius_m, "m; people block sight as circles of this radius",
+            core::positive());
+    v.field("occupied_threshold", occupied_threshold,
+            "/map cells at or above this value block sight (and sound)", core::between(1.0, 100.0));
   }
 };
 
 /// The 2D world has no heights or heads; these place the 3D frames and turn the head.
 struct HumanModelConfig {
-  double hip_height_m{0.95};  ///< body_<id> origin (mid-hips).
-  double eye_height_m{1.60};  ///< face_<id>, gaze_<id> and person_<id> origin (sellion).
-  /// The head (face_<id>) turns toward the gaze direction by at most this much from the body.
+  double hip_height_m{0.95};
+  double eye_height_m{1.60};
   double head_turn_limit_deg{60.0};
 
   template <class V>
   void visit(V& v) {
-    v.field("hip_height", hip_height_m, core::positive());
-    v.field("eye_height", eye_height_m, core::positive());
-    v.field("head_turn_limit_deg", head_turn_limit_deg, core::between(0.0, 180.0));
+    v.field("hip_height", hip_height_m, "m, body_<id> origin (mid-hips)", core::positive());
+    v.field("eye_height", eye_height_m, "m, face_<id>, gaze_<id> and person_<id> origin",
+            core::positive());
+    v.field("head_turn_limit_deg", head_turn_limit_deg,
+            "the face turns toward the gaze by at most this from the body",
+            core::between(0.0, 180.0));
+    v.rule("eye_height", eye_height_m > hip_height_m,
+           "more than hip_height (" + core::number_text(hip_height_m) + ")",
+           core::number_text(eye_height_m));
   }
 };
 
 /// Missed detections and re-identification errors of one tracker (bodies or faces).
 struct DetectionErrors {
-  double miss_rate{0.02};  ///< Per frame, close, centred and fully visible.
-  /// Extra per-frame miss probability reached at the sensor's range, rising linearly from 0 m.
+  double miss_rate{0.02};
   double miss_rate_at_max_range{0.10};
-  /// Extra miss probability at the edge of the field of view, rising linearly over the band.
   double miss_rate_at_fov_border{0.30};
-  double fov_border_deg{10.0};  ///< Width of that band inside each edge.
-  /// Extra miss probability at the sensor's minimum visible fraction, falling linearly to 0 at
-  /// fully visible.
+  double fov_border_deg{10.0};
   double miss_rate_occluded{0.30};
-  double reid_after_occlusion{0.2};    ///< New id when re-found after an occlusion.
-  double reid_after_leaving_fov{0.5};  ///< New id when re-found after leaving the view.
-  double reid_rate_per_min{0.2};       ///< Spontaneous id switches per minute tracked.
+  double reid_after_occlusion{0.2};
+  double reid_after_leaving_fov{0.5};
+  double reid_rate_per_min{0.2};
 
   template <class V>
   void visit(V& v) {
     const core::Bounds probability = core::between(0.0, 1.0);
-    v.field("miss_rate", miss_rate, probability);
-    v.field("miss_rate_at_max_range", miss_rate_at_max_range, probability);
-    v.field("miss_rate_at_fov_border", miss_rate_at_fov_border, probability);
-    v.field("fov_border_deg", fov_border_deg, core::non_negative());
-    v.field("miss_rate_occluded", miss_rate_occluded, probability);
-    v.field("reid_after_occlusion", reid_after_occlusion, probability);
-    v.field("reid_after_leaving_fov", reid_after_leaving_fov, probability);
-    v.field("reid_rate_per_min", reid_rate_per_min, core::non_negative());
+    v.field("miss_rate", miss_rate, "per frame, close, centred and fully visible", probability);
+    v.field("miss_rate_at_max_range", miss_rate_at_max_range,
+            "extra per-frame miss probability at the sensor's range, rising linearly from 0 m",
+            probability);
+    v.field("miss_rate_at_fov_border", miss_rate_at_fov_border,
+            "extra miss probability at the edge of the view, rising linearly over the border band",
+            probability);
+    v.field("fov_border_deg", fov_border_deg, "width of that band inside each edge",
+            core::non_negative());
+    v.field("miss_rate_occluded", miss_rate_occluded,
+            "extra miss probability at min_visible_fraction, falling linearly to 0 at fully "
+            "visible",
+            probability);
+    v.field("reid_after_occlusion", reid_after_occlusion, "new id when re-found after an occlusion",
+            probability);
+    v.field("reid_after_leaving_fov", reid_after_leaving_fov,
+            "new id when re-found after leaving the view", probability);
+    v.field("reid_rate_per_min", reid_rate_per_min, "spontaneous id switches per minute tracked",
+            core::non_negative());
   }
 };
 
 /// Gaussian noise on a perceived pose, its standard deviation growing linearly with distance.
 struct PoseNoise {
-  double position_noise_m{0.03};      ///< Standard deviation per axis at 0 m.
-  double position_noise_per_m{0.02};  ///< Added per metre of distance.
-  double orientation_noise_deg{3.0};  ///< Standard deviation at 0 m.
+  double position_noise_m{0.03};
+  double position_noise_per_m{0.02};
+  double orientation_noise_deg{3.0};
   double orientation_noise_deg_per_m{2.0};
 
   double position_stddev_m(double distance_m) const {
@@ -158,10 +183,14 @@ struct PoseNoise {
 
   template <class V>
   void visit(V& v) {
-    v.field("position_noise", position_noise_m, core::non_negative());
-    v.field("position_noise_per_m", position_noise_per_m, core::non_negative());
-    v.field("orientation_noise_deg", orientation_noise_deg, core::non_negative());
-    v.field("orientation_noise_deg_per_m", orientation_noise_deg_per_m, core::non_negative());
+    v.field("position_noise", position_noise_m, "m, standard deviation per axis at 0 m",
+            core::non_negative());
+    v.field("position_noise_per_m", position_noise_per_m, "added per metre of distance",
+            core::non_negative());
+    v.field("orientation_noise_deg", orientation_noise_deg, "standard deviation at 0 m",
+            core::non_negative());
+    v.field("orientation_noise_deg_per_m", orientation_noise_deg_per_m,
+            "added per metre of distance", core::non_negative());
   }
 };
 
@@ -178,11 +207,24 @@ struct EmotionConfusion {
 
   template <class V>
   void visit(V& v) {
-    v.field("neutral", neutral, core::between(0.0, 1.0));
-    v.field("happy", happy, core::between(0.0, 1.0));
-    v.field("angry", angry, core::between(0.0, 1.0));
-    v.field("disturbed", disturbed, core::between(0.0, 1.0));
+    const core::Bounds probability = core::between(0.0, 1.0);
+    v.field("neutral", neutral, "P(perceived emotion) when neutral", probability);
+    v.field("happy", happy, "P(perceived emotion) when happy", probability);
+    v.field("angry", angry, "P(perceived emotion) when angry", probability);
+    v.field("disturbed", disturbed, "P(perceived emotion) when disturbed", probability);
+    for (const auto& [name, row] :
+         {std::pair{"neutral", &neutral}, std::pair{"happy", &happy}, std::pair{"angry", &angry},
+          std::pair{"disturbed", &disturbed}}) {
+      v.rule(name, is_distribution(*row),
+             "4 probabilities (neutral, happy, angry, disturbed) summing to 1",
+             distribution_problem(*row));
+    }
   }
+
+ private:
+  static bool is_distribution(const std::vector<double>& row);
+  /// What keeps `row` from being a distribution: its length, or else its sum.
+  static std::string distribution_problem(const std::vector<double>& row);
 };
 
 struct BodyErrors {
@@ -199,19 +241,23 @@ struct BodyErrors {
 struct FaceErrors {
   DetectionErrors detection;
   PoseNoise pose{0.03, 0.02, 5.0, 2.0};
-  double age_noise_years{5.0};     ///< Standard deviation of the perceived age.
-  double gender_error_rate{0.05};  ///< Probability of reporting one of the other genders.
-  double mask_error_rate{0.05};    ///< Probability of reporting the opposite of the truth.
+  double age_noise_years{5.0};
+  double gender_error_rate{0.05};
+  double mask_error_rate{0.05};
   EmotionConfusion emotion_confusion;
 
   template <class V>
   void visit(V& v) {
     detection.visit(v);
     pose.visit(v);
-    v.field("age_noise_years", age_noise_years, core::non_negative());
-    v.field("gender_error_rate", gender_error_rate, core::between(0.0, 1.0));
-    v.field("mask_error_rate", mask_error_rate, core::between(0.0, 1.0));
-    v.section("emotion_confusion", emotion_confusion);
+    v.field("age_noise_years", age_noise_years, "standard deviation of the perceived age",
+            core::non_negative());
+    v.field("gender_error_rate", gender_error_rate,
+            "probability of reporting one of the other genders", core::between(0.0, 1.0));
+    v.field("mask_error_rate", mask_error_rate,
+            "probability of reporting the opposite of the truth", core::between(0.0, 1.0));
+    v.section("emotion_confusion", emotion_confusion,
+              "true emotion -> P(neutral, happy, angry, disturbed)");
   }
 };
 
@@ -223,9 +269,7 @@ struct SpeechErrors {
   double substitution_share{0.60};
   double deletion_share{0.25};
   double insertion_share{0.15};
-  /// Probability that an utterance is attributed to another audible person's voice.
   double misattribution_rate{0.05};
-  /// Words that substitutions and insertions draw from.
   std::vector<std::string> vocabulary{"the", "a",    "to",   "and",  "yes",    "no",     "is",
                                       "it",  "you",  "we",   "what", "where",  "here",   "there",
                                       "can", "help", "room", "time", "doctor", "please", "okay"};
@@ -233,108 +277,156 @@ struct SpeechErrors {
   template <class V>
   void visit(V& v) {
     const core::Bounds probability = core::between(0.0, 1.0);
-    v.field("word_error_rate", word_error_rate, probability);
-    v.field("substitution_share", substitution_share, probability);
-    v.field("deletion_share", deletion_share, probability);
-    v.field("insertion_share", insertion_share, probability);
-    v.field("misattribution_rate", misattribution_rate, probability);
-    v.field("vocabulary", vocabulary);
+    v.field("word_error_rate", word_error_rate,
+            "expected (substitutions + deletions + insertions) / words", probability);
+    v.field("substitution_share", substitution_share, "share of errors that substitute a word",
+            probability);
+    v.field("deletion_share", deletion_share, "share that delete one", probability);
+    v.field("insertion_share", insertion_share, "share that insert one", probability);
+    v.field("misattribution_rate", misattribution_rate,
+            "probability that an utterance is given to another audible person's voice",
+            probability);
+    v.field("vocabulary", vocabulary, "words that substitutions and insertions draw from");
+    const double shares = substitution_share + deletion_share + insertion_share;
+    v.rule("substitution_share", std::abs(shares - 1.0) <= 1e-6,
+           "substitution_share + deletion_share + insertion_share = 1", core::number_text(shares));
+    const bool draws_words = word_error_rate > 0.0 && substitution_share + insertion_share > 0.0;
+    v.rule("vocabulary", !draws_words || distinct_words() >= 2,
+           "at least two different words (substitutions and insertions draw from it)",
+           std::to_string(distinct_words()));
+    v.rule("vocabulary", compound_word().empty(), "single words", "'" + compound_word() + "'");
   }
+
+ private:
+  size_t distinct_words() const;
+  /// The first entry of the vocabulary that is not one word (empty or with a space), or "".
+  std::string compound_word() const;
 };
 
 /// Person bookkeeping as hri_person_manager does it.
 struct PersonConfig {
-  double location_decay_s{10.0};  ///< location_confidence falls from 1 to 0 over this once unseen.
-  /// s of sim time after which a person unseen (no face, body or voice) is forgotten: no longer
-  /// known, its per-person state released. Much longer than location_decay, so that a person
-  /// reported at confidence 0 stays known for a while, as hri_person_manager keeps them; a
-  /// forgotten human seen again is a person again, under the same id in the "human" style.
+  /// The values of id_style, as messages list them.
+  static constexpr const char* kIdStyles = "human or random";
+  static bool is_id_style(const std::string& style) {
+    return style == "human" || style == "random";
+  }
+
+  double location_decay_s{10.0};
   double forget_after_s{60.0};
-  /// How person ids look: "human" gives simulated human N the id `human<N>`, as if ARI recognised
-  /// everyone from a database; "random" gives each a seeded random id (`anonymous_person_` and
-  /// five letters), as a person manager names the persons it makes up, so that consumers can be
-  /// tested for relying on no naming at all.
   std::string id_style{"human"};
-  /// Outer edges of the proxemic zones, measured from ARI's base to the person (hri_person_manager
-  /// 1.1.0's defaults, after Hall's zones).
   double personal_distance_m{1.2};
   double social_distance_m{3.6};
   double public_distance_m{20.0};
 
   template <class V>
   void visit(V& v) {
-    v.field("location_decay", location_decay_s, core::positive());
-    v.field("forget_after", forget_after_s, core::positive());
-    v.field("id_style", id_style);
-    v.field("personal_distance", personal_distance_m, core::positive());
-    v.field("social_distance", social_distance_m, core::positive());
-    v.field("public_distance", public_distance_m, core::positive());
+    v.field("location_decay", location_decay_s,
+            "s for location_confidence to fall from 1 to 0 once unseen", core::positive());
+    // Much longer than location_decay, so that a person reported at confidence 0 stays known
+    // for a while, as hri_person_manager keeps them.
+    v.field("forget_after", forget_after_s,
+            "s of sim time unseen (no face, body or voice) after which a person is forgotten; "
+            "seen again, they are a person again, under the same id with id_style human",
+            core::positive());
+    // "random" lets consumers be tested for relying on no naming at all.
+    v.field("id_style", id_style,
+            "human: human N is `human<N>`, as if ARI recognised everyone; random: "
+            "`anonymous_person_` and five seeded letters, as a person manager names the persons "
+            "it makes up");
+    v.field("personal_distance", personal_distance_m,
+            "m from ARI's base: outer edge of the personal zone (hri_person_manager 1.1.0, after "
+            "Hall)",
+            core::positive());
+    v.field("social_distance", social_distance_m, "m: of the social zone", core::positive());
+    v.field("public_distance", public_distance_m, "m: of the public zone; farther is unknown",
+            core::positive());
+    v.rule("id_style", is_id_style(id_style), kIdStyles, "'" + id_style + "'");
+    v.rule("forget_after", forget_after_s >= location_decay_s,
+           "at least location_decay (" + core::number_text(location_decay_s) + ")",
+           core::number_text(forget_after_s));
+    v.rule("social_distance",
+           personal_distance_m < social_distance_m && social_distance_m < public_distance_m,
+           "personal_distance < social_distance < public_distance",
+           core::number_text(personal_distance_m) + ", " + core::number_text(social_distance_m) +
+               ", " + core::number_text(public_distance_m));
   }
 };
 
 /// What ROS4HRI's matchers send on /humans/candidate_matches in detectors mode
 /// (CandidateMatcher): confidences of true matches, before noise.
 struct MatcherConfig {
-  double face_body_confidence{0.9};    ///< hri_face_body_matcher, body -> face.
-  double recognition_rate{0.95};       ///< Share of face tracks the face identifier recognises.
-  double recognition_confidence{0.9};  ///< Face identifier, person -> face.
-  double voice_body_confidence{0.8};   ///< Speaker localiser, body -> voice.
-  double confidence_noise{0.05};       ///< Standard deviation added to each match, per frame.
-  /// Matches at or below are not sent (hri_face_body_matcher's confidence_threshold).
+  double face_body_confidence{0.9};
+  double recognition_rate{0.95};
+  double recognition_confidence{0.9};
+  double voice_body_confidence{0.8};
+  double confidence_noise{0.05};
   double threshold{0.5};
 
   template <class V>
   void visit(V& v) {
     const core::Bounds probability = core::between(0.0, 1.0);
-    v.field("face_body_confidence", face_body_confidence, probability);
-    v.field("recognition_rate", recognition_rate, probability);
-    v.field("recognition_confidence", recognition_confidence, probability);
-    v.field("voice_body_confidence", voice_body_confidence, probability);
-    v.field("confidence_noise", confidence_noise, core::between(0.0, 1.0));
-    v.field("threshold", threshold, core::between(0.0, 1.0));
+    v.field("face_body_confidence", face_body_confidence,
+            "body -> face of the same human (hri_face_body_matcher)", probability);
+    v.field("recognition_rate", recognition_rate,
+            "share of face tracks the face identifier recognises", probability);
+    v.field("recognition_confidence", recognition_confidence,
+            "person -> face (hri_face_identification)", probability);
+    v.field("voice_body_confidence", voice_body_confidence,
+            "body -> voice of the same human (a speaker localiser)", probability);
+    v.field("confidence_noise", confidence_noise,
+            "standard deviation added to each confidence, per frame", core::between(0.0, 1.0));
+    v.field("threshold", threshold,
+            "matches at or below are not sent (hri_face_body_matcher's confidence_threshold)",
+            core::between(0.0, 1.0));
   }
 };
 
 /// Visual social engagement (Webb & Lemaignan, RO-MAN 2022) as hri_engagement computes it.
 struct EngagementConfig {
-  double max_distance_m{4.0};           ///< Farther people score 0.
-  double field_of_attention_deg{60.0};  ///< Of both ARI and the person, for mutual gaze.
-  double threshold{0.5};                ///< Score above which a frame counts as engaged.
-  double window_s{10.0};                ///< Observation window of the level.
+  double max_distance_m{4.0};
+  double field_of_attention_deg{60.0};
+  double threshold{0.5};
+  double window_s{10.0};
 
   template <class V>
   void visit(V& v) {
-    v.field("max_distance", max_distance_m, core::positive());
+    v.field("max_distance", max_distance_m, "m; farther people score 0", core::positive());
     // tan(90 deg) is infinite: the field of attention stays below a right angle.
-    v.field("field_of_attention_deg", field_of_attention_deg, {0.0, 89.0, true});
-    v.field("threshold", threshold, core::between(0.0, 1.0));
-    v.field("window", window_s, core::positive());
+    v.field("field_of_attention_deg", field_of_attention_deg,
+            "of both ARI and the person, for mutual gaze", core::Bounds{0.0, 89.0, true});
+    v.field("threshold", threshold, "score above which a frame counts as engaged",
+            core::between(0.0, 1.0));
+    v.field("window", window_s, "s of history behind the level", core::positive());
   }
 };
 
 /// GCFF on the perceived bodies (metres).
 struct GroupConfig {
   GcffParams gcff{0.6, 0.8};
-  /// A group not seen is remembered this many frames, so that one whose members were missed
-  /// for a moment keeps its id (GroupTracker).
   int id_memory_frames{30};
-  /// Two people count as together when GCFF grouped them in most of this many frames
-  /// (MembershipFilter); 1 reports GCFF's grouping of each frame as it is.
   int membership_window_frames{10};
 
   template <class V>
   void visit(V& v) {
-    v.field("stride", gcff.stride, core::positive());
-    v.field("mdl", gcff.mdl, core::positive());
-    v.field("id_memory_frames", id_memory_frames, core::between(0.0, 10000.0));
-    v.field("membership_window_frames", membership_window_frames, core::between(1.0, 10000.0));
+    gcff.visit(v);
+    // GroupTracker: a group whose members were missed for a moment keeps its id.
+    v.field("id_memory_frames", id_memory_frames,
+            "a group unseen this many frames keeps its id when it returns",
+            core::between(0.0, 10000.0));
+    v.field("membership_window_frames", membership_window_frames,
+            "two people are together when GCFF grouped them in most of this many frames "
+            "(MembershipFilter); 1 reports each frame's grouping as it is",
+            core::between(1.0, 10000.0));
   }
+
+  /// Throws core::ConfigError naming the field outside what visit allows.
+  void validate() const;
 };
 
-/// Everything ARI's simulated perception is configured with.
+/// Everything ARI's simulated perception is configured with (config/perception.yaml).
 struct PerceptionConfig {
-  unsigned seed{1};           ///< Every random draw of the perception derives from it.
-  bool errors_enabled{true};  ///< false: every error model off, the output is ground truth.
+  unsigned seed{1};
+  bool errors_enabled{true};
   BodyCameraConfig body_camera;
   FaceCameraConfig face_camera;
   MicrophoneConfig microphone;
@@ -350,25 +442,27 @@ struct PerceptionConfig {
 
   template <class V>
   void visit(V& v) {
-    v.field("seed", seed);
-    v.field("errors_enabled", errors_enabled);
-    v.section("body_camera", body_camera);
-    v.section("face_camera", face_camera);
-    v.section("microphone", microphone);
-    v.section("occlusion", occlusion);
-    v.section("human_model", human_model);
-    v.section("body_errors", body_errors);
-    v.section("face_errors", face_errors);
-    v.section("speech_errors", speech_errors);
-    v.section("persons", persons);
-    v.section("matchers", matchers);
-    v.section("engagement", engagement);
-    v.section("groups", groups);
+    v.field("seed", seed, "every random draw of the perception derives from it");
+    v.field("errors_enabled", errors_enabled,
+            "false: every error model off, the output equals the ground truth");
+    v.section("body_camera", body_camera, "torso front fisheye (ELP IMX179), tracks bodies");
+    v.section("face_camera", face_camera, "head camera (62 degrees), turns with head_1_joint");
+    v.section("microphone", microphone, "ReSpeaker array in the torso");
+    v.section("occlusion", occlusion, "what blocks sight");
+    v.section("human_model", human_model, "the 2D world has no heights: where the 3D frames go");
+    v.section("body_errors", body_errors, "body tracker: misses, id switches, pose noise");
+    v.section("face_errors", face_errors,
+              "face tracker: misses, id switches, pose noise, soft biometrics");
+    v.section("speech_errors", speech_errors, "speech recognition errors");
+    v.section("persons", persons, "person bookkeeping, as hri_person_manager");
+    v.section("matchers", matchers,
+              "detectors mode: what ROS4HRI's matchers send on /humans/candidate_matches");
+    v.section("engagement", engagement, "hri_engagement's visual social engagement");
+    v.section("groups", groups, "GCFF on the perceived bodies (group_detection_node)");
   }
 
-  /// Throws core::ConfigError naming the first bad field (`body_errors.miss_rate: expected a
-  /// number [0, 1], got 1.5`): bounds of every field, confusion rows of 4 summing to 1, speech
-  /// shares summing to 1, a vocabulary of single words when words are substituted or inserted.
+  /// Throws core::ConfigError naming the first bad field (`PerceptionConfig:
+  /// body_errors.miss_rate: expected a number [0, 1], got 1.5`): the bounds and rules of visit.
   void validate() const;
 
   /// This configuration with every error model off (zero rates and noise, identity confusion).
@@ -376,8 +470,8 @@ struct PerceptionConfig {
   /// The error models in effect: these, or none when errors_enabled is false.
   PerceptionConfig effective() const { return errors_enabled ? *this : without_errors(); }
 
-  /// Reads a mapping (every field optional, unknown keys rejected) and validates it. Errors name
-  /// the source and the field path.
+  /// Reads a mapping (every field optional, unknown keys rejected), checking what validate()
+  /// checks. Errors name the source and the field path.
   static PerceptionConfig from_yaml(const core::YamlMap& map);
   static PerceptionConfig load_file(const std::string& path);
   /// The configuration as YAML text that from_yaml reads back to the same values.

@@ -1,29 +1,64 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/perception/perception_config.hpp"
 
 namespace ari_social_sim::perception {
 
-/// How hri_perception_node runs: its private parameters (~config, ~seed, ...), read and checked
-/// in one place. Documented in the README's parameter table.
+/// How hri_perception_node runs: its private parameters (~config, ~seed, ...), listed once in
+/// visit (core/config_fields.hpp; docs/parameters.md is generated from it).
 struct PerceptionRunConfig {
   /// What the node stands in for: the whole stack up to persons (kSim), or only the face, body
   /// and voice detectors and the matchers, leaving persons to a real person manager (kDetectors).
   enum class Mode { kSim, kDetectors };
+  static constexpr core::Choice<Mode> kModes[] = {{Mode::kSim, "sim"},
+                                                  {Mode::kDetectors, "detectors"}};
 
   Mode mode{Mode::kSim};
-  std::string config;                  ///< Perception config file; empty = the package's default.
-  int64_t seed{-1};                    ///< Overrides the config's seed when >= 0.
-  std::optional<bool> errors_enabled;  ///< Overrides the config's errors_enabled when given.
-  std::optional<std::string> person_ids;  ///< Overrides persons.id_style (human or random).
-  std::string world;            ///< World file whose walls block sound; empty = /map does.
-  double max_rate_hz{30.0};     ///< World states closer in sim time are skipped, (0, 1000].
-  double id_linger_s{1.0};      ///< Per-id topics outlive their id by this (sim s), [0, 60].
-  double marker_rate_hz{10.0};  ///< Wall-clock rate of ~markers, (0, 30].
+  std::string config;
+  int64_t seed{-1};
+  std::optional<bool> errors_enabled;
+  std::optional<std::string> person_ids;
+  std::string world;
+  double max_rate_hz{30.0};
+  double id_linger_s{1.0};
+  double marker_rate_hz{10.0};
 
+  template <class V>
+  void visit(V& v) {
+    v.choice("mode", mode,
+             "sim: detectors and person manager; detectors: no persons, the matchers' candidate "
+             "matches",
+             kModes);
+    v.field("config", config,
+            "sensors and error models (config/perception.yaml below); empty: the package's "
+            "config/perception.yaml");
+    v.field("seed", seed, "overrides the config's seed when >= 0",
+            core::Bounds{-1.0, 2147483647.0, false});
+    v.field("errors_enabled", errors_enabled,
+            "overrides the config's errors_enabled: false turns every error model off");
+    v.field("person_ids", person_ids,
+            "overrides the config's persons.id_style: human gives `human<N>`, random "
+            "`anonymous_person_<5 letters>`, seeded");
+    v.rule("person_ids", !person_ids || PersonConfig::is_id_style(*person_ids),
+           PersonConfig::kIdStyles, "'" + person_ids.value_or("") + "'");
+    v.field("world", world,
+            "a world file whose walls (not furniture) block sound; empty: everything in /map does");
+    v.field("max_rate", max_rate_hz, "Hz of sim time; world states closer together are skipped",
+            core::Bounds{0.0, 1000.0, true});
+    v.field("id_linger", id_linger_s, "s of sim time per-id topics outlive their id",
+            core::between(0.0, 60.0));
+    v.field("marker_rate", marker_rate_hz, "Hz of ~markers (wall clock)",
+            core::Bounds{0.0, 30.0, true});
+  }
+
+  /// Throws core::ConfigError naming the field outside what visit allows.
+  void validate() const;
   /// Reads every field from a mapping (parameter server or file); unknown keys and out-of-range
   /// values throw core::ConfigError naming the parameter.
   static PerceptionRunConfig from_yaml(const core::YamlMap& map);

@@ -25,7 +25,8 @@ struct CameraFrame {
 /// world) and takes the moving part (people, the robot's own body) each tick.
 class CameraRig {
  public:
-  /// Opens the renderer; throws RenderError when no headless OpenGL context can be made.
+  /// Opens the renderer; throws core::ConfigError for an invalid config
+  /// (CameraRigConfig::validate), RenderError when no headless OpenGL context can be made.
   explicit CameraRig(const CameraRigConfig& config);
 
   /// The enabled cameras, in the order of ari_camera_specs().

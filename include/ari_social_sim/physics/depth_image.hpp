@@ -3,6 +3,8 @@
 #include <opencv2/core/mat.hpp>
 #include <string>
 
+#include "ari_social_sim/core/config_fields.hpp"
+
 namespace ari_social_sim::physics {
 
 /// The two depth encodings of REP-118.
@@ -11,10 +13,12 @@ enum class DepthEncoding {
   kMillimetres16U,  // "16UC1": unsigned millimetres, 0 where there is no valid reading
 };
 
-/// sensor_msgs/Image encoding string of a depth encoding ("32FC1" or "16UC1").
+/// The sensor_msgs/Image encoding strings of the depth encodings.
+inline constexpr core::Choice<DepthEncoding> kDepthEncodings[] = {
+    {DepthEncoding::kMetres32F, "32FC1"}, {DepthEncoding::kMillimetres16U, "16UC1"}};
+
+/// "32FC1" or "16UC1".
 const char* encoding_name(DepthEncoding encoding);
-/// Parses "32FC1" or "16UC1"; throws core::ConfigError naming `field` otherwise.
-DepthEncoding parse_depth_encoding(const std::string& text, const std::string& field);
 
 /// Marks readings outside the sensor's range [min_m, max_m] invalid (NaN), in place (CV_32FC1).
 void clip_depth_range(cv::Mat& depth_m, double min_m, double max_m);

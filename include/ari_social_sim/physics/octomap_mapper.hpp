@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/physics/camera_model.hpp"
@@ -15,14 +17,32 @@ namespace ari_social_sim::physics {
 
 /// Parameters of the mapping mode (D6.4 §3.5.1: ARI maps with its torso RGB-D camera).
 struct MappingConfig {
-  double resolution_m{0.05};  // voxel edge, also the 2D map's cell size
-  double max_range_m{4.0};    // rays beyond are cleared up to here and leave no obstacle
-  int pixel_stride{4};        // every n-th pixel of every n-th row goes into the map
-  double min_height_m{0.1};   // heights projected into the 2D map: above the floor's voxels...
-  double max_height_m{2.0};   // ...and up to ARI's height
+  double resolution_m{0.05};
+  double max_range_m{4.0};
+  int pixel_stride{4};
+  double min_height_m{0.1};
+  double max_height_m{2.0};
 
-  /// Optional keys resolution_m, max_range_m, pixel_stride, min_height_m, max_height_m; unknown
-  /// keys, out-of-range values and min_height_m >= max_height_m throw core::ConfigError.
+  template <class V>
+  void visit(V& v) {
+    v.field("resolution_m", resolution_m, "voxel edge (m), also the 2D map's cell size",
+            model::kMapResolutionBounds);
+    v.field("max_range_m", max_range_m,
+            "m; rays beyond are cleared up to here and leave no obstacle", core::positive());
+    v.field("pixel_stride", pixel_stride, "every n-th pixel of every n-th row goes into the map",
+            core::between(1.0, 64.0));
+    v.field("min_height_m", min_height_m,
+            "heights projected into the 2D map: above the floor's voxels ...");
+    v.field("max_height_m", max_height_m, "... and up to ARI's height");
+    v.rule("max_height_m", min_height_m < max_height_m,
+           "a height above min_height_m (" + core::number_text(min_height_m) + ")",
+           core::number_text(max_height_m));
+  }
+
+  /// Throws core::ConfigError naming the field outside what visit allows.
+  void validate() const;
+  /// Reads the optional keys visit lists; unknown keys, out-of-range values and
+  /// min_height_m >= max_height_m throw core::ConfigError.
   static MappingConfig from_yaml(const core::YamlMap& map);
 };
 
@@ -36,6 +56,7 @@ struct Voxel {
 /// projection ARI's navigation uses.
 class OctomapMapper {
  public:
+  /// Throws core::ConfigError for an invalid config (MappingConfig::validate).
   explicit OctomapMapper(const MappingConfig& config);
 
   /// Casts the rays of a depth image (CV_32FC1 metres along the optical axis, NaN invalid) taken

@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/pose2.hpp"
 
 namespace ari_social_sim::physics {
@@ -14,6 +16,18 @@ struct PersonShapeConfig {
   double shoulder_height_m{1.45};
   double head_radius_m{0.11};
   double head_centre_height_m{1.62};  // eyes at about 1.6 m, an adult's
+
+  template <class V>
+  void visit(V& v) {
+    v.field("body_radius", body_radius_m, "m, the cylinder's radius", core::positive());
+    v.field("shoulder_height", shoulder_height_m, "m, the cylinder's top", core::positive());
+    v.field("head_radius", head_radius_m, "m, the head sphere's radius", core::positive());
+    v.field("head_centre_height", head_centre_height_m, "m, the head sphere's centre",
+            core::positive());
+    v.rule("head_centre_height", head_centre_height_m > shoulder_height_m,
+           "a height above shoulder_height (" + core::number_text(shoulder_height_m) + ")",
+           core::number_text(head_centre_height_m));
+  }
 };
 
 /// A human as the 2D world reports it (/sim/world_state): map frame.

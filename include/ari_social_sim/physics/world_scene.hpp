@@ -3,7 +3,6 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
-#include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/physics/render_primitive.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
@@ -26,10 +25,6 @@ struct SceneStyle {
   double wall_height_m{2.5};
   double furniture_height_m{0.75};
   PersonFigure person;
-
-  /// Reads the optional keys wall_height_m, furniture_height_m, person_height_m (top of the head);
-  /// unknown keys and non-positive values throw core::ConfigError naming the field.
-  static SceneStyle from_yaml(const core::YamlMap& map);
 };
 
 /// The floor (checkered), walls and furniture of a world, extruded upwards from z = 0.

@@ -6,7 +6,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/const_pointer_view.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/world/agent_grid.hpp"
 #include "ari_social_sim/world/ari.hpp"
@@ -26,11 +28,19 @@ constexpr size_t kMaxHumans = 1000;
 constexpr model::ObjectId kFirstAutomaticHumanId = 10;
 
 struct SimulationConfig {
-  double step_s{0.05};  // s of sim time per step
-  uint64_t seed{0};     // every random draw of the run derives from it
+  double step_s{0.05};
+  uint64_t seed{0};  // every random draw of the run derives from it; a scene brings its own
   double map_resolution_m{0.05};
 
-  /// Throws core::ConfigError naming the field (step in (0, 1] s, resolution in [0.01, 1] m).
+  /// The fields world_node takes as parameters (config_fields.hpp); the seed is the scene's.
+  template <class V>
+  void visit(V& v) {
+    v.field("step", step_s, "sim seconds per step", core::Bounds{0.0, 1.0, true});
+    v.field("map_resolution", map_resolution_m, "m per cell of /map and of ARI's map sensor",
+            model::kMapResolutionBounds);
+  }
+
+  /// Throws core::ConfigError naming the field outside the bounds visit gives.
   void validate() const;
 };
 
