@@ -59,7 +59,9 @@ void BM_PersonalSpaceCost(benchmark::State& state) {
   const BusyProblem busy;
   MpcConfig config;
   const UnicycleModel model(config.step_s, kFootprint);
-  const PersonalSpaceCost term(3.0, kFootprint, PersonalSpaceParams{}, config.step_s);
+  const PersonalSpaceCost term(config.weights.personal_space, config.weights.personal_space_edge,
+                               kFootprint, config.personal_space,
+                               config.personal_space_margin_sigmas, config.step_s);
   Eigen::VectorXd controls = Eigen::VectorXd::Constant(config.control_count(), 0.3);
   Rollout rollout;
   model.rollout(busy.problem.start, controls, rollout);

@@ -7,6 +7,9 @@ set -euo pipefail
 source "$(dirname "$0")/prepare.sh"
 rm -rf _build/test_results
 cmake --build _build --target tests -j"$(nproc)"
+# The benchmarks (bench/) are not run here, only built: nothing else compiles them, and an API
+# change that broke one (bench_navigation) went unnoticed.
+cmake --build _build --target benchmarks -j"$(nproc)"
 # After the test binaries are built, so that their headers and libraries count too. A package this
 # machine happens to have but install_deps.sh does not install would break a fresh machine only;
 # the self-test shows the check catches a removed entry (libnlopt-dev, ...). Fails the run.
