@@ -50,8 +50,8 @@ add_library(ari_perception_conversions
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
 
 # What the nodes that act on perceived people (social_mpc_node, scenario_node,
-# group_detection_node) read of ROS4HRI, and the tf buffer that forgets the frames of people gone.
-add_library(ari_perceived_persons src/nodes/perceived_persons.cpp src/nodes/renewing_tf_buffer.cpp)
+# group_detection_node) read of ROS4HRI.
+add_library(ari_perceived_persons src/nodes/perceived_persons.cpp)
 target_link_libraries(ari_perceived_persons PUBLIC ari_perception_conversions)
 
 add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)

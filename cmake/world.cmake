@@ -48,6 +48,7 @@ add_library(ari_world_conversions
   src/nodes/conversions/world_markers.cpp
   src/nodes/conversions/world_state.cpp
   src/nodes/input_counters.cpp
+  src/nodes/renewing_tf_buffer.cpp
   src/nodes/ros_params.cpp)
 target_include_directories(ari_world_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
 target_link_libraries(ari_world_conversions PUBLIC ari_world ${catkin_LIBRARIES})

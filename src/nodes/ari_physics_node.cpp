@@ -11,9 +11,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_broadcaster.h>
-#include <tf2_ros/transform_listener.h>
 
 #include <cmath>
 #include <memory>
@@ -34,6 +32,7 @@
 #include "conversions/ari_base.hpp"
 #include "conversions/joint_trajectory.hpp"
 #include "frames.hpp"
+#include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -264,7 +263,7 @@ class PointHeadInterface {
   using Server = actionlib::ActionServer<PointHeadAction>;
 
   PointHeadInterface(ros::NodeHandle& nh, physics::AriPhysics& physics, const SimClock& clock,
-                     const tf2_ros::Buffer& tf)
+                     const RenewingTfBuffer& tf)
       : physics_(physics),
         clock_(clock),
         tf_(tf),
@@ -331,7 +330,7 @@ class PointHeadInterface {
     }
     try {
       const geometry_msgs::TransformStamped t =
-          tf_.lookupTransform(kBaseFrame, frame, ros::Time(0), ros::Duration(0.1));
+          tf_.buffer().lookupTransform(kBaseFrame, frame, ros::Time(0), ros::Duration(0.1));
       Eigen::Isometry3d X_base_frame = Eigen::Isometry3d::Identity();
       X_base_frame.translation() = Eigen::Vector3d(
           t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
@@ -404,7 +403,7 @@ class PointHeadInterface {
 
   physics::AriPhysics& physics_;
   const SimClock& clock_;
-  const tf2_ros::Buffer& tf_;
+  const RenewingTfBuffer& tf_;
   physics::PointHeadSolver solver_;
   physics::TrajectoryController& head_;
   Server server_;
@@ -421,7 +420,7 @@ class PhysicsNode {
   /// Throws what CameraInterface throws (bad camera or mapping parameters, no OpenGL context).
   PhysicsNode(const physics::PhysicsRunConfig& config, const model::WorldDescription& world,
               std::unique_ptr<physics::AriPhysics> physics)
-      : config_(config), physics_(std::move(physics)), tf_listener_(tf_buffer_) {
+      : config_(config), physics_(std::move(physics)) {
     clock_.physics = physics_.get();
     if (config_.cameras_enabled) {
       cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
@@ -440,7 +439,7 @@ class PhysicsNode {
       controllers_.push_back(
           std::make_unique<ControllerInterface>(nh_, *controller, *physics_, clock_));
     }
-    point_head_ = std::make_unique<PointHeadInterface>(nh_, *physics_, clock_, tf_buffer_);
+    point_head_ = std::make_unique<PointHeadInterface>(nh_, *physics_, clock_, tf_);
   }
 
   void run() {
@@ -460,6 +459,7 @@ class PhysicsNode {
     publish_clock();
     while (ros::ok()) {
       ros::spinOnce();
+      tf_.renew_if_stale();
       advance_to(clock_.now_s() + tick_s);
       publish_clock();
       if (config_.real_time_factor > 0.0) {
@@ -478,6 +478,7 @@ class PhysicsNode {
     bool anchored = false;
     while (ros::ok()) {
       ros::spinOnce();
+      tf_.renew_if_stale();
       const double now_s = ros::Time::now().toSec();
       if (now_s <= 0.0) {
         ros::WallDuration(0.001).sleep();
@@ -646,8 +647,8 @@ class PhysicsNode {
   ros::Publisher clock_pub_, joint_state_pub_, odom_pub_, ground_truth_pub_, imu_pub_;
   ros::Subscriber cmd_vel_sub_, world_state_sub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  // Point-head targets may be people's frames, which come and go with perception's ids.
+  RenewingTfBuffer tf_;
   std::vector<std::unique_ptr<ControllerInterface>> controllers_;
   std::unique_ptr<PointHeadInterface> point_head_;
   std::unique_ptr<CameraInterface> cameras_;
