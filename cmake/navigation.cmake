@@ -16,6 +16,7 @@ add_library(ari_navigation
   src/navigation/mpc_solver.cpp
   src/navigation/mppi_solver.cpp
   src/navigation/navigation_config.cpp
+  src/navigation/navigation_session.cpp
   src/navigation/navigator.cpp
   src/navigation/nlopt_solver.cpp
   src/navigation/obstacle_cost.cpp
@@ -42,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
       test/navigation/test_goal_finder.cpp
       test/navigation/test_goal_request.cpp
       test/navigation/test_navigation_config.cpp
+      test/navigation/test_navigation_session.cpp
       test/navigation/test_navigator.cpp
       test/navigation/test_perception_report.cpp
       test/navigation/test_scene_tracker.cpp
@@ -66,10 +68,12 @@ if(CATKIN_ENABLE_TESTING)
 endif()
 
 # social_mpc_node: thin ROS adapter over the navigation core.
-add_executable(social_mpc_node
-  src/nodes/social_mpc_node.cpp
-  src/nodes/conversions/navigation_msgs.cpp)
-target_link_libraries(social_mpc_node ari_navigation ari_perceived_persons)
+add_library(ari_navigation_conversions
+  src/nodes/conversions/navigation_msgs.cpp
+  src/nodes/measured_ari.cpp)
+target_link_libraries(ari_navigation_conversions PUBLIC ari_navigation ari_world_conversions)
+add_executable(social_mpc_node src/nodes/social_mpc_node.cpp)
+target_link_libraries(social_mpc_node ari_navigation_conversions ari_perceived_persons)
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest_gtest(test_social_navigation test/integration/social_navigation.test

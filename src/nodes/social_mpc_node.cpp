@@ -12,13 +12,11 @@
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/String.h>
-#include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
 #include <trajectory_msgs/JointTrajectory.h>
 
-#include <algorithm>
 #include <cmath>
-#include <memory>
+#include <map>
 #include <optional>
 
 #include "ari_social_sim/ApproachAction.h"
@@ -27,13 +25,12 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
-#include "ari_social_sim/navigation/navigation_errors.hpp"
-#include "ari_social_sim/navigation/navigator.hpp"
-#include "ari_social_sim/navigation/perception_report.hpp"
-#include "ari_social_sim/navigation/scene_tracker.hpp"
+#include "ari_social_sim/navigation/navigation_session.hpp"
 #include "conversions/navigation_msgs.hpp"
 #include "conversions/world_state.hpp"
+#include "frames.hpp"
 #include "input_counters.hpp"
+#include "measured_ari.hpp"
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -41,24 +38,17 @@
 namespace ari_social_sim::nodes {
 namespace {
 
-constexpr char kMapFrame[] = "map";
-constexpr char kBaseFrame[] = "base_footprint";
-constexpr char kHeadPanJoint[] = "head_1_joint";
-constexpr char kHeadTiltJoint[] = "head_2_joint";
-constexpr char kOdomTopic[] = "/mobile_base_controller/odom";
-// How long (s of sim time) an approach goal naming someone not perceived yet waits for them
-// before it is rejected: a client may have learnt the id a moment before this node receives the
-// person's body (its latched body_id and first frames).
-constexpr double kTargetWait_s = 2.0;
-
 using MoveBaseServer = actionlib::ActionServer<move_base_msgs::MoveBaseAction>;
 using ApproachServer = actionlib::ActionServer<ApproachAction>;
+using navigation::GoalState;
+using navigation::GoalStatus;
 
 class SocialMpcNode {
  public:
   explicit SocialMpcNode(const navigation::NavigationConfig& config)
       : config_(config),
-        tracker_(config.scene),
+        session_(config),
+        measured_(inputs_),
         persons_(nh_),
         move_base_(nh_, "move_base", false),
         approach_(nh_, "/social_mpc/approach", false) {
@@ -69,7 +59,7 @@ class SocialMpcNode {
     status_pub_ = nh_.advertise<std_msgs::String>("/social_mpc/status", 1, /*latch=*/true);
     diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     map_sub_ = nh_.subscribe("/map", 1, &SocialMpcNode::on_map, this);
-    odom_sub_ = nh_.subscribe(kOdomTopic, 1, &SocialMpcNode::on_odom, this);
+    odom_sub_ = nh_.subscribe("/mobile_base_controller/odom", 1, &SocialMpcNode::on_odom, this);
     joints_sub_ = nh_.subscribe("/joint_states", 1, &SocialMpcNode::on_joints, this);
     groups_sub_ = nh_.subscribe("/humans/interactions/groups", 20, &SocialMpcNode::on_group, this);
     simple_goal_sub_ =
@@ -82,17 +72,21 @@ class SocialMpcNode {
         [this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
     move_base_.start();
     approach_.start();
-    timer_ = nh_.createTimer(ros::Duration(1.0 / config_.navigator.rate_hz),
+    // The session runs a cycle at the first call in each control period: two calls per period
+    // keep a timer that fires late from skipping a cycle.
+    timer_ = nh_.createTimer(ros::Duration(0.5 / config_.navigator.rate_hz),
                              &SocialMpcNode::on_timer, this);
     publish_status("idle");
   }
 
  private:
-  // What the current goal came from, so that its end reaches the right client.
-  struct ActiveGoal {
+  // Who asked for a goal, so that its changes reach them: a move_base or approach client, or
+  // nobody (/move_base_simple/goal).
+  struct GoalClient {
     std::optional<MoveBaseServer::GoalHandle> move_base;
     std::optional<ApproachServer::GoalHandle> approach;
-    std::string id;  // actionlib goal id, empty for /move_base_simple/goal
+    std::string what;  // for /social_mpc/status: "person human3", "/move_base_simple/goal"
+    bool accepted{false};
   };
 
   // ---- inputs ----------------------------------------------------------------------------
@@ -101,98 +95,36 @@ class SocialMpcNode {
       inputs_.drop("/map", problem->field, problem->what);
       return;
     }
-    if (active_) {
-      finish(navigation::NavigationState::kAborted, "the map changed while navigating");
-    }
-    navigator_ = std::make_unique<navigation::Navigator>(config_, from_msg(msg));
+    apply(session_.set_map(from_msg(msg)));
     ROS_INFO("social_mpc_node: map %ux%u at %.3f m", msg.info.width, msg.info.height,
              msg.info.resolution);
   }
 
-  void on_odom(const nav_msgs::Odometry& msg) {
-    const bool linear_ok =
-        inputs_.finite(kOdomTopic, "twist.twist.linear.x", msg.twist.twist.linear.x);
-    const bool angular_ok =
-        inputs_.finite(kOdomTopic, "twist.twist.angular.z", msg.twist.twist.angular.z);
-    if (linear_ok && angular_ok) {
-      linear_mps_ = msg.twist.twist.linear.x;
-      angular_rps_ = msg.twist.twist.angular.z;
-    }
-  }
+  void on_odom(const nav_msgs::Odometry& msg) { measured_.take(msg); }
+  void on_joints(const sensor_msgs::JointState& msg) { measured_.take(msg); }
 
-  void on_joints(const sensor_msgs::JointState& msg) {
-    const auto it = std::find(msg.name.begin(), msg.name.end(), kHeadPanJoint);
-    if (it == msg.name.end()) {
-      return;
-    }
-    const size_t i = static_cast<size_t>(it - msg.name.begin());
-    if (i < msg.position.size() &&
-        inputs_.finite("/joint_states", "position[head_1_joint]", msg.position[i])) {
-      pan_rad_ = msg.position[i];
-    }
-    if (i < msg.velocity.size() &&
-        inputs_.finite("/joint_states", "velocity[head_1_joint]", msg.velocity[i])) {
-      pan_rps_ = msg.velocity[i];
-    }
-  }
-
-  // Kept for the next cycle, which observes them with the persons (observe_perception).
   void on_group(const Group& msg) {
-    received_groups_.push_back({msg.group_id, msg.header.stamp.toSec(), msg.members});
+    session_.receive_group({msg.group_id, msg.header.stamp.toSec(), msg.members});
   }
 
-  // What perception reported since the last call into the tracker (navigation::observe): the
-  // persons tracked now, each at their body frame in the map from tf, and the groups received.
-  void observe_perception() {
-    navigation::PerceptionReport report{persons_.tracked(), std::move(received_groups_)};
-    received_groups_.clear();
-    navigation::observe(
-        tracker_, report,
-        [this](const std::string& body_id) {
-          return body_placement(tf_.buffer(), kMapFrame, body_id);
-        },
-        ros::Time::now().toSec());
-  }
-
-  std::optional<navigation::RobotObservation> observe_robot() const {
-    geometry_msgs::TransformStamped t;
-    try {
-      t = tf_.buffer().lookupTransform(kMapFrame, kBaseFrame, ros::Time(0));
-    } catch (const tf2::TransformException&) {
-      return std::nullopt;
-    }
-    navigation::RobotObservation robot;
-    robot.pose.position = {t.transform.translation.x, t.transform.translation.y};
-    robot.pose.theta = tf2::getYaw(t.transform.rotation);
-    robot.linear_mps = linear_mps_;
-    robot.angular_rps = angular_rps_;
-    robot.pan_rad = pan_rad_;
-    robot.pan_rps = pan_rps_;
-    return robot;
+  // What the session is told now: ARI as measured, the persons perception tracks, each at their
+  // body frame in the map from tf.
+  navigation::SessionInputs session_inputs() const {
+    navigation::SessionInputs inputs;
+    inputs.now_s = ros::Time::now().toSec();
+    inputs.robot = measured_.observe(tf_.buffer());
+    inputs.perception.persons = persons_.tracked();
+    inputs.perception.locate_body = [this](const std::string& body_id) {
+      return body_placement(tf_.buffer(), kMapFrame, body_id);
+    };
+    return inputs;
   }
 
   // ---- goals ---------------------------------------------------------------------------
-  // Starts a target; throws core::Error with the reason it cannot be pursued.
-  void start(const navigation::NavigationTarget& target) {
-    if (!navigator_) {
-      throw core::RequestError("no map received on /map yet");
-    }
-    const std::optional<navigation::RobotObservation> robot = observe_robot();
-    if (!robot) {
-      throw core::RequestError(std::string("no transform from ") + kMapFrame + " to " + kBaseFrame +
-                               " yet");
-    }
-    observe_perception();
-    const double now = ros::Time::now().toSec();
-    navigator_->start(target, tracker_.scene(now), *robot, now);
-  }
-
-  // Replaces the active goal, telling its client it was preempted.
-  void replace_active(ActiveGoal next) {
-    if (active_) {
-      end_active(actionlib_msgs::GoalStatus::PREEMPTED, "preempted by a new goal");
-    }
-    active_ = std::move(next);
+  void request(const navigation::NavigationTarget& target, GoalClient client) {
+    const navigation::SessionOutput out = session_.request(target, session_inputs());
+    clients_[session_.newest_goal()] = std::move(client);
+    apply(out);
   }
 
   // The goal pose in the map frame, checked field by field (navigation::planar_goal), turned
@@ -217,39 +149,12 @@ class SocialMpcNode {
       in_map.position = frame_in_map.transform(pose.position);
       in_map.theta = core::wrap_angle(frame_in_map.theta + pose.theta);
     }
-    // Without a map yet the goal is accepted and then aborted with that reason (start()).
-    if (navigator_) {
-      navigation::check_inside_map(in_map, navigation::MapBounds::of(navigator_->sdf()),
+    // Without a map yet the goal is accepted and then aborted with that reason (the session).
+    if (const navigation::Navigator* navigator = session_.navigator()) {
+      navigation::check_inside_map(in_map, navigation::MapBounds::of(navigator->sdf()),
                                    field + "pose.position");
     }
     return in_map;
-  }
-
-  // Accepts a goal whose request is well formed and starts it; a goal that cannot be reached
-  // (nothing to plan on yet, no free place, no path) is aborted with the reason, as move_base
-  // aborts a goal it finds no plan for.
-  template <class Handle, class Result>
-  void accept_and_start(Handle handle, const navigation::NavigationTarget& target, Result result,
-                        ActiveGoal active) {
-    handle.setAccepted();
-    try {
-      start(target);
-    } catch (const core::Error& e) {
-      ROS_WARN("goal aborted: %s", e.what());
-      handle.setAborted(with_reason(result, e.what()), e.what());
-      return;
-    }
-    replace_active(std::move(active));
-    publish_status("pursuing " + navigation::describe(target));
-  }
-
-  static move_base_msgs::MoveBaseResult with_reason(move_base_msgs::MoveBaseResult result,
-                                                    const std::string&) {
-    return result;
-  }
-  static ApproachResult with_reason(ApproachResult result, const std::string& reason) {
-    result.reason = reason;
-    return result;
   }
 
   void on_move_base(MoveBaseServer::GoalHandle handle) {
@@ -261,24 +166,25 @@ class SocialMpcNode {
       handle.setRejected(move_base_msgs::MoveBaseResult(), e.what());
       return;
     }
-    accept_and_start(handle, navigation::PoseTarget{pose}, move_base_msgs::MoveBaseResult(),
-                     {handle, std::nullopt, handle.getGoalID().id});
+    const navigation::NavigationTarget target = navigation::PoseTarget{pose};
+    request(target, {handle, std::nullopt, navigation::describe(target)});
   }
 
   // The same checks as move_base; with no result channel, a refusal is a warning and the status.
   void on_simple_goal(const geometry_msgs::PoseStamped& goal) {
+    core::Pose2 pose;
     try {
-      start(navigation::PoseTarget{goal_in_map(goal, "")});
+      pose = goal_in_map(goal, "");
     } catch (const core::Error& e) {
       ROS_WARN("/move_base_simple/goal ignored: %s", e.what());
       publish_status(std::string("goal ignored: ") + e.what());
       return;
     }
-    replace_active({std::nullopt, std::nullopt, ""});
-    publish_status("pursuing /move_base_simple/goal");
+    request(navigation::PoseTarget{pose}, {std::nullopt, std::nullopt, "/move_base_simple/goal"});
   }
 
-  // An approach goal naming an id perception does not report is rejected with the reason.
+  // An approach goal whose request is malformed is rejected with the reason; one naming an id
+  // perception does not report yet waits for it (NavigationSession::kTargetWait_s).
   void on_approach(ApproachServer::GoalHandle handle) {
     const ApproachGoalConstPtr goal = handle.getGoal();
     std::optional<navigation::NavigationTarget> target;
@@ -307,140 +213,166 @@ class SocialMpcNode {
       }
     }
     if (!problem.empty()) {
-      reject(handle, problem);
+      ROS_WARN("approach goal rejected: %s", problem.c_str());
+      handle.setRejected(with_reason(ApproachResult(), problem), problem);
       return;
     }
-    if (waiting_) {
-      reject(waiting_->handle, "preempted by a new goal before its target was perceived");
-    }
-    waiting_ = WaitingApproach{handle, *target, ros::Time::now().toSec() + kTargetWait_s};
-    observe_perception();
-    start_waiting_approach();
-  }
-
-  void reject(ApproachServer::GoalHandle handle, const std::string& problem) {
-    ROS_WARN("approach goal rejected: %s", problem.c_str());
-    handle.setRejected(with_reason(ApproachResult(), problem), problem);
-  }
-
-  // Starts the waiting approach once its target is perceived, or rejects it with the reason
-  // once it has waited kTargetWait_s; it stays pending meanwhile. People must be observed first.
-  void start_waiting_approach() {
-    const double now = ros::Time::now().toSec();
-    const std::string problem =
-        navigation::unknown_target_reason(waiting_->target, tracker_.scene(now));
-    if (problem.empty()) {
-      ApproachServer::GoalHandle handle = waiting_->handle;
-      const navigation::NavigationTarget target = waiting_->target;
-      waiting_.reset();
-      accept_and_start(handle, target, ApproachResult(),
-                       {std::nullopt, handle, handle.getGoalID().id});
-    } else if (now >= waiting_->until_s) {
-      reject(waiting_->handle, problem);
-      waiting_.reset();
-    }
+    request(*target, {std::nullopt, handle, navigation::describe(*target)});
   }
 
   void on_cancel(const actionlib_msgs::GoalID& id) {
-    if (waiting_ && waiting_->handle.getGoalID().id == id.id) {
-      waiting_->handle.setCanceled(with_reason(ApproachResult(), "canceled by the client"));
-      waiting_.reset();
-    }
-    if (active_ && active_->id == id.id) {
-      end_active(actionlib_msgs::GoalStatus::PREEMPTED, "canceled by the client");
-      if (navigator_) {
-        navigator_->cancel();
+    for (const auto& [goal, client] : clients_) {
+      const bool named = (client.move_base && client.move_base->getGoalID().id == id.id) ||
+                         (client.approach && client.approach->getGoalID().id == id.id);
+      if (named) {
+        apply(session_.cancel(goal));
+        return;
       }
-      stop();
     }
   }
 
-  // Ends the active goal with a terminal status and the reason.
-  void end_active(uint8_t status, const std::string& reason) {
-    if (!active_) {
-      return;
-    }
-    if (active_->move_base) {
-      move_base_msgs::MoveBaseResult result;
-      if (status == actionlib_msgs::GoalStatus::SUCCEEDED) {
-        active_->move_base->setSucceeded(result, reason);
-      } else if (status == actionlib_msgs::GoalStatus::ABORTED) {
-        active_->move_base->setAborted(result, reason);
-      } else {
-        active_->move_base->setCanceled(result, reason);
+  static move_base_msgs::MoveBaseResult with_reason(move_base_msgs::MoveBaseResult result,
+                                                    const std::string&) {
+    return result;
+  }
+  static ApproachResult with_reason(ApproachResult result, const std::string& reason) {
+    result.reason = reason;
+    return result;
+  }
+
+  // ---- what the session produced -----------------------------------------------------------
+  void apply(const navigation::SessionOutput& out) {
+    for (const navigation::GoalChange& change : out.goals) {
+      const auto client = clients_.find(change.goal);
+      if (client == clients_.end()) {
+        continue;
+      }
+      tell(client->second, change.status);
+      if (change.status.state != GoalState::kPending && change.status.state != GoalState::kActive) {
+        clients_.erase(client);
       }
     }
-    if (active_->approach) {
+    for (const navigation::BaseCommand& command : out.commands) {
+      send(command);
+    }
+  }
+
+  void tell(GoalClient& client, const GoalStatus& status) {
+    const bool was_accepted = client.accepted;
+    switch (status.state) {
+      case GoalState::kPending:
+        return;
+      case GoalState::kActive:
+        publish_status("pursuing " + client.what);
+        break;
+      case GoalState::kSucceeded:
+        publish_status("succeeded");
+        break;
+      case GoalState::kRejected:
+        ROS_WARN("approach goal rejected: %s", status.reason.c_str());
+        break;
+      case GoalState::kAborted:
+        if (was_accepted) {
+          ROS_WARN("navigation aborted: %s", status.reason.c_str());
+          publish_status("aborted: " + status.reason);
+        } else {
+          ROS_WARN("goal aborted: %s", status.reason.c_str());
+          if (!client.move_base && !client.approach) {
+            publish_status("goal ignored: " + status.reason);
+          }
+        }
+        break;
+      case GoalState::kCanceled:
+        break;
+    }
+    if (client.move_base) {
+      tell_action(*client.move_base, move_base_msgs::MoveBaseResult(), client.accepted, status);
+    }
+    if (client.approach) {
       ApproachResult result;
-      result.reason = reason;
-      fill_placement(result);
-      if (status == actionlib_msgs::GoalStatus::SUCCEEDED) {
-        active_->approach->setSucceeded(result, reason);
-      } else if (status == actionlib_msgs::GoalStatus::ABORTED) {
-        active_->approach->setAborted(result, reason);
-      } else {
-        active_->approach->setCanceled(result, reason);
+      if (was_accepted) {
+        fill_placement(result);
       }
+      tell_action(*client.approach, result, client.accepted, status);
     }
-    active_.reset();
+    client.accepted = client.accepted || status.state == GoalState::kActive;
+  }
+
+  // The action's side of a change: a goal is accepted when it is pursued (or, aborted at its
+  // start, just before), rejected if it never was.
+  template <class Handle, class Result>
+  static void tell_action(Handle& handle, Result result, bool accepted, const GoalStatus& status) {
+    result = with_reason(result, status.reason);
+    switch (status.state) {
+      case GoalState::kPending:
+        break;
+      case GoalState::kActive:
+        handle.setAccepted();
+        break;
+      case GoalState::kSucceeded:
+        handle.setSucceeded(result, status.reason);
+        break;
+      case GoalState::kRejected:
+        handle.setRejected(result, status.reason);
+        break;
+      case GoalState::kAborted:
+        if (!accepted) {
+          handle.setAccepted();
+        }
+        handle.setAborted(result, status.reason);
+        break;
+      case GoalState::kCanceled:
+        handle.setCanceled(result, status.reason);
+        break;
+    }
   }
 
   // Distance and heading error to the person or o-space centre, as the action reports them.
   void fill_placement(ApproachResult& result) const {
-    const std::optional<navigation::RobotObservation> robot = observe_robot();
-    if (!navigator_ || !navigator_->goal() || !navigator_->goal()->look_at || !robot) {
+    const navigation::Navigator* navigator = session_.navigator();
+    const std::optional<navigation::RobotObservation> robot = measured_.observe(tf_.buffer());
+    if (!navigator || !navigator->goal() || !navigator->goal()->look_at || !robot) {
       return;
     }
-    const Eigen::Vector2d to = *navigator_->goal()->look_at - robot->pose.position;
+    const Eigen::Vector2d to = *navigator->goal()->look_at - robot->pose.position;
     result.final_distance = to.norm();
     result.final_heading_error =
         std::abs(core::angle_difference(std::atan2(to.y(), to.x()), robot->pose.theta));
   }
 
-  void finish(navigation::NavigationState state, const std::string& reason) {
-    const bool succeeded = state == navigation::NavigationState::kSucceeded;
-    end_active(
-        succeeded ? actionlib_msgs::GoalStatus::SUCCEEDED : actionlib_msgs::GoalStatus::ABORTED,
-        reason);
-    if (!succeeded) {
-      ROS_WARN("navigation aborted: %s", reason.c_str());
-    }
-    publish_status(succeeded ? "succeeded" : "aborted: " + reason);
-    stop();
-  }
-
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
-    inputs_.publish_when_due(diagnostics_pub_, ros::Time::now());
-    tf_.renew_if_stale();
-    // People are followed all the time, so that a goal naming someone finds them known already;
-    // those perception stopped reporting are let go.
-    observe_perception();
-    if (waiting_) {
-      start_waiting_approach();
-    }
-    if (!navigator_ || navigator_->state() != navigation::NavigationState::kActive) {
-      return;
-    }
-    const std::optional<navigation::RobotObservation> robot = observe_robot();
-    if (!robot) {
-      ROS_WARN_THROTTLE(5.0, "social_mpc_node: no transform from map to base_footprint");
-      return;
-    }
     const ros::Time now = ros::Time::now();
-    const navigation::NavigatorStep step =
-        navigator_->update(now.toSec(), *robot, tracker_.scene(now.toSec()));
-    if (step.state == navigation::NavigationState::kSucceeded ||
-        step.state == navigation::NavigationState::kAborted) {
-      finish(step.state, step.reason);
-      markers_pub_.publish(navigation_markers(*navigator_, false, kMapFrame));
+    inputs_.publish_when_due(diagnostics_pub_, now);
+    tf_.renew_if_stale();
+    const navigation::SessionInputs inputs = session_inputs();
+    if (session_.pursued_goal() != 0 && !inputs.robot) {
+      ROS_WARN_THROTTLE(5.0, "social_mpc_node: no transform from map to base_footprint");
+    }
+    const navigation::GoalId pursued = session_.pursued_goal();
+    const navigation::SessionOutput out = session_.control(inputs);
+    apply(out);
+    if (out.step) {
+      publish_cycle(*out.step, *inputs.robot, pursued, now);
+    }
+  }
+
+  // What a cycle shows besides its commands: the client's feedback, the plan, the markers and
+  // the status.
+  void publish_cycle(const navigation::NavigatorStep& step,
+                     const navigation::RobotObservation& robot, navigation::GoalId goal,
+                     const ros::Time& now) {
+    const navigation::Navigator& navigator = *session_.navigator();
+    if (step.state != navigation::NavigationState::kActive) {
+      markers_pub_.publish(navigation_markers(navigator, false, kMapFrame));
       return;
     }
-    command(step.command, now);
-    publish_feedback(step, *robot);
-    plan_pub_.publish(plan_msg(navigator_->plan(), kMapFrame, now));
+    if (const auto client = clients_.find(goal); client != clients_.end()) {
+      publish_feedback(client->second, step, robot, now);
+    }
+    plan_pub_.publish(plan_msg(navigator.plan(), kMapFrame, now));
     if (markers_pub_.getNumSubscribers() > 0) {
-      markers_pub_.publish(navigation_markers(*navigator_, true, kMapFrame));
+      markers_pub_.publish(navigation_markers(navigator, true, kMapFrame));
     }
     char status[128];
     std::snprintf(status, sizeof(status), "%s, %.2f m to go", step.phase.c_str(),
@@ -448,43 +380,41 @@ class SocialMpcNode {
     publish_status(status);
   }
 
-  void command(const navigation::NavigationCommand& command, const ros::Time& now) {
+  void send(const navigation::BaseCommand& command) {
     geometry_msgs::Twist twist;
     twist.linear.x = command.linear_mps;
     twist.angular.z = command.angular_rps;
     cmd_vel_pub_.publish(twist);
+    if (!command.pan_rad) {
+      return;
+    }
     trajectory_msgs::JointTrajectory head;
-    head.header.stamp = now;
+    head.header.stamp = ros::Time::now();
     head.joint_names = {kHeadPanJoint, kHeadTiltJoint};
     trajectory_msgs::JointTrajectoryPoint point;
-    point.positions = {command.pan_rad, 0.0};
+    point.positions = {*command.pan_rad, 0.0};
     point.time_from_start = ros::Duration(1.0 / config_.navigator.rate_hz);
     head.points.push_back(point);
     head_pub_.publish(head);
   }
 
-  void stop() { cmd_vel_pub_.publish(geometry_msgs::Twist()); }
-
-  void publish_feedback(const navigation::NavigatorStep& step,
-                        const navigation::RobotObservation& robot) {
-    if (!active_) {
-      return;
-    }
-    if (active_->move_base) {
+  static void publish_feedback(GoalClient& client, const navigation::NavigatorStep& step,
+                               const navigation::RobotObservation& robot, const ros::Time& now) {
+    if (client.move_base) {
       move_base_msgs::MoveBaseFeedback feedback;
       feedback.base_position.header.frame_id = kMapFrame;
-      feedback.base_position.header.stamp = ros::Time::now();
+      feedback.base_position.header.stamp = now;
       feedback.base_position.pose.position.x = robot.pose.position.x();
       feedback.base_position.pose.position.y = robot.pose.position.y();
       feedback.base_position.pose.orientation.z = std::sin(0.5 * robot.pose.theta);
       feedback.base_position.pose.orientation.w = std::cos(0.5 * robot.pose.theta);
-      active_->move_base->publishFeedback(feedback);
+      client.move_base->publishFeedback(feedback);
     }
-    if (active_->approach) {
+    if (client.approach) {
       ApproachFeedback feedback;
       feedback.state = step.phase;
       feedback.distance_to_goal = step.distance_to_goal_m;
-      active_->approach->publishFeedback(feedback);
+      client.approach->publishFeedback(feedback);
     }
   }
 
@@ -499,19 +429,10 @@ class SocialMpcNode {
   }
 
   navigation::NavigationConfig config_;
-  navigation::SceneTracker tracker_;
-  std::unique_ptr<navigation::Navigator> navigator_;
-  std::optional<ActiveGoal> active_;
+  navigation::NavigationSession session_;
+  std::map<navigation::GoalId, GoalClient> clients_;  // of the goals waiting or pursued
   InputCounters inputs_{"social_mpc_node"};
-  // An approach goal whose target is not perceived yet (kTargetWait_s).
-  struct WaitingApproach {
-    ApproachServer::GoalHandle handle;
-    navigation::NavigationTarget target;
-    double until_s{0.0};
-  };
-  std::optional<WaitingApproach> waiting_;
-  std::vector<navigation::ReportedGroup> received_groups_;  // since the last observe_perception
-  double linear_mps_{0.0}, angular_rps_{0.0}, pan_rad_{0.0}, pan_rps_{0.0};
+  MeasuredAri measured_;
   std::string last_status_;
 
   ros::NodeHandle nh_;

@@ -1,0 +1,144 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/model/occupancy_grid.hpp"
+#include "ari_social_sim/model/tracked_person.hpp"
+#include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/navigator.hpp"
+#include "ari_social_sim/navigation/perception_report.hpp"
+#include "ari_social_sim/navigation/scene_tracker.hpp"
+
+namespace ari_social_sim::navigation {
+
+/// Where a goal is in its life, in the terms of its action client (actionlib's goal states).
+enum class GoalState {
+  kPending,    ///< waiting for its target to be perceived (kTargetWait_s)
+  kActive,     ///< pursued
+  kSucceeded,  ///< reached
+  kRejected,   ///< never pursued: its target was not perceived in time, or a newer goal came first
+  kAborted,  ///< it could not be started (no map, no pose of ARI, no place or path) or was given up
+  kCanceled,  ///< cancelled by its client, or preempted by a newer goal
+};
+
+struct GoalStatus {
+  GoalState state{GoalState::kPending};
+  std::string reason;  ///< why it ended, when it did not succeed
+};
+
+/// A session's name for a goal, unique within the session; 0 names none.
+using GoalId = uint64_t;
+
+/// A goal whose state changed, for the caller to tell the goal's client.
+struct GoalChange {
+  GoalId goal{0};
+  GoalStatus status;
+};
+
+/// What to send to ARI: a twist (/mobile_base_controller/cmd_vel) and, unless it stops the base,
+/// a head pan target (/head_controller/command).
+struct BaseCommand {
+  double linear_mps{0.0};
+  double angular_rps{0.0};
+  std::optional<double> pan_rad;
+};
+
+/// What perception reports when the session looks: the persons tracked now, with their bodies'
+/// ids, and where those bodies stand (tf live, the perception frame in process).
+struct PerceptionView {
+  std::vector<model::TrackedPerson> persons;
+  model::BodyLocator locate_body;
+};
+
+/// What the session is told at a call: the sim time, ARI as measured (nothing while it cannot be
+/// placed in the map), and perception.
+struct SessionInputs {
+  double now_s{0.0};
+  std::optional<RobotObservation> robot;
+  PerceptionView perception;
+};
+
+/// What a call produced, in order: goals whose state changed, commands to send, and the
+/// control cycle's outcome when one ran with a goal being pursued.
+struct SessionOutput {
+  std::vector<GoalChange> goals;
+  std::vector<BaseCommand> commands;
+  std::optional<NavigatorStep> step;
+};
+
+/// ARI's social navigation as a service, the one way social_mpc_node and the batch tool's
+/// navigation both run it: the goal life cycle of the move_base and approach actions, and the
+/// control timer. Goals: a request replaces any goal still waiting; one whose target perception
+/// does not report yet waits for it for kTargetWait_s; a goal that cannot be started is aborted
+/// with the reason and the goal pursued before goes on; one that starts preempts the goal pursued
+/// before; cancel ends a goal; whenever a pursued goal ends, the base is stopped (a zero twist).
+/// Control: one cycle per 1/navigator.rate_hz of sim time, at the first control() call in each
+/// such period (counted from sim time 0, so that the cycles fall on the same times whoever calls
+/// and however often): it looks at perception (tracked persons at their bodies, the groups
+/// received since the last look: navigation::observe), starts a waiting goal whose target is now
+/// known, and runs the Navigator on the pursued goal. Perception is also looked at when a goal is
+/// requested.
+class NavigationSession {
+ public:
+  /// How long (s of sim time) a goal naming someone not perceived yet waits before it is
+  /// rejected: a client may have learnt the id a moment before navigation perceives the person
+  /// (their body's first frames).
+  static constexpr double kTargetWait_s = 2.0;
+
+  explicit NavigationSession(const NavigationConfig& config);
+  NavigationSession(const NavigationSession&) = delete;
+  NavigationSession& operator=(const NavigationSession&) = delete;
+
+  /// The static map to plan on (/map); before one, goals are aborted. A goal being pursued is
+  /// aborted: its way was planned on the other map.
+  SessionOutput set_map(const model::OccupancyGrid& map);
+  /// A group perception reported (/humans/interactions/groups); kept until perception is looked
+  /// at next, so that every report reaches the scene, however many arrive per cycle.
+  void receive_group(ReportedGroup group);
+  /// A new goal; its id is newest_goal() from now on. Throws nothing: a goal that cannot be
+  /// pursued ends in the output with the reason.
+  SessionOutput request(const NavigationTarget& target, const SessionInputs& inputs);
+  /// Ends `goal` (waiting or pursued) as cancelled by its client; other ids are ignored.
+  SessionOutput cancel(GoalId goal);
+  /// The control timer: call it at least twice per control period (every world step in process);
+  /// does nothing unless a cycle is due at inputs.now_s.
+  SessionOutput control(const SessionInputs& inputs);
+
+  GoalId newest_goal() const { return next_goal_ - 1; }
+  /// The goal being pursued, 0 when none.
+  GoalId pursued_goal() const { return pursued_.value_or(0); }
+  /// The navigator, for what the caller shows of it (plan, markers, the goal's placement); null
+  /// before the map.
+  const Navigator* navigator() const { return navigator_.get(); }
+
+ private:
+  struct WaitingGoal {
+    GoalId id{0};
+    NavigationTarget target;
+    double until_s{0.0};
+  };
+
+  bool cycle_due(double now_s);
+  void look_at_perception(const SessionInputs& inputs);
+  /// Starts the waiting goal once its target is known, rejects it once it has waited too long.
+  void try_waiting_goal(const SessionInputs& inputs, SessionOutput& out);
+  void start(GoalId id, const NavigationTarget& target, const SessionInputs& inputs,
+             SessionOutput& out);
+  /// Ends the pursued goal with `status` and stops the base.
+  void end_pursued(const GoalStatus& status, SessionOutput& out);
+
+  NavigationConfig config_;
+  SceneTracker tracker_;
+  std::unique_ptr<Navigator> navigator_;
+  std::vector<ReportedGroup> received_groups_;  // since perception was last looked at
+  std::optional<WaitingGoal> waiting_;
+  std::optional<GoalId> pursued_;
+  GoalId next_goal_{1};
+  std::optional<int64_t> last_cycle_;  // index of the control period of the last cycle
+};
+
+}  // namespace ari_social_sim::navigation

@@ -1,0 +1,148 @@
+#include "ari_social_sim/navigation/navigation_session.hpp"
+
+#include <cmath>
+
+#include "ari_social_sim/core/error.hpp"
+
+namespace ari_social_sim::navigation {
+namespace {
+
+// Sim times are sums of world steps, a hair off the multiples of the control period they stand
+// for (3 x 0.1 s is 0.30000000000000004 s): a cycle falls in the period it is meant for.
+constexpr double kPeriodSlack = 1e-6;  // of a period
+
+}  // namespace
+
+NavigationSession::NavigationSession(const NavigationConfig& config)
+    : config_(config), tracker_(config.scene) {}
+
+SessionOutput NavigationSession::set_map(const model::OccupancyGrid& map) {
+  SessionOutput out;
+  if (pursued_) {
+    end_pursued({GoalState::kAborted, "the map changed while navigating"}, out);
+  }
+  navigator_ = std::make_unique<Navigator>(config_, map);
+  return out;
+}
+
+void NavigationSession::receive_group(ReportedGroup group) {
+  received_groups_.push_back(std::move(group));
+}
+
+SessionOutput NavigationSession::request(const NavigationTarget& target,
+                                         const SessionInputs& inputs) {
+  SessionOutput out;
+  if (waiting_) {
+    out.goals.push_back(
+        {waiting_->id,
+         {GoalState::kRejected, "preempted by a new goal before its target was perceived"}});
+  }
+  waiting_ = WaitingGoal{next_goal_++, target, inputs.now_s + kTargetWait_s};
+  out.goals.push_back({waiting_->id, {GoalState::kPending, ""}});
+  look_at_perception(inputs);
+  try_waiting_goal(inputs, out);
+  return out;
+}
+
+SessionOutput NavigationSession::cancel(GoalId goal) {
+  SessionOutput out;
+  const GoalStatus canceled{GoalState::kCanceled, "canceled by the client"};
+  if (waiting_ && waiting_->id == goal) {
+    out.goals.push_back({goal, canceled});
+    waiting_.reset();
+  }
+  if (pursued_ == goal) {
+    navigator_->cancel();
+    end_pursued(canceled, out);
+  }
+  return out;
+}
+
+SessionOutput NavigationSession::control(const SessionInputs& inputs) {
+  SessionOutput out;
+  if (!cycle_due(inputs.now_s)) {
+    return out;
+  }
+  // People are followed all the time, so that a goal naming someone finds them known already;
+  // those perception stopped reporting are let go.
+  look_at_perception(inputs);
+  try_waiting_goal(inputs, out);
+  if (!pursued_ || !inputs.robot) {
+    return out;
+  }
+  const NavigatorStep step =
+      navigator_->update(inputs.now_s, *inputs.robot, tracker_.scene(inputs.now_s));
+  out.step = step;
+  if (step.state == NavigationState::kSucceeded) {
+    end_pursued({GoalState::kSucceeded, ""}, out);
+  } else if (step.state == NavigationState::kAborted) {
+    end_pursued({GoalState::kAborted, step.reason}, out);
+  } else {
+    out.commands.push_back(
+        {step.command.linear_mps, step.command.angular_rps, step.command.pan_rad});
+  }
+  return out;
+}
+
+bool NavigationSession::cycle_due(double now_s) {
+  const auto cycle =
+      static_cast<int64_t>(std::floor(now_s * config_.navigator.rate_hz + kPeriodSlack));
+  // A period seen before (or time going back, after a world reset) is a new one.
+  if (last_cycle_ == cycle) {
+    return false;
+  }
+  last_cycle_ = cycle;
+  return true;
+}
+
+void NavigationSession::look_at_perception(const SessionInputs& inputs) {
+  const PerceptionReport report{inputs.perception.persons, std::move(received_groups_)};
+  received_groups_.clear();
+  observe(tracker_, report, inputs.perception.locate_body, inputs.now_s);
+}
+
+void NavigationSession::try_waiting_goal(const SessionInputs& inputs, SessionOutput& out) {
+  if (!waiting_) {
+    return;
+  }
+  const std::string unknown = unknown_target_reason(waiting_->target, tracker_.scene(inputs.now_s));
+  if (unknown.empty()) {
+    const WaitingGoal goal = std::move(*waiting_);
+    waiting_.reset();
+    start(goal.id, goal.target, inputs, out);
+  } else if (inputs.now_s >= waiting_->until_s) {
+    out.goals.push_back({waiting_->id, {GoalState::kRejected, unknown}});
+    waiting_.reset();
+  }
+}
+
+void NavigationSession::start(GoalId id, const NavigationTarget& target,
+                              const SessionInputs& inputs, SessionOutput& out) {
+  try {
+    if (!navigator_) {
+      throw core::RequestError("no map received on /map yet");
+    }
+    if (!inputs.robot) {
+      throw core::RequestError("no transform from map to base_footprint yet");
+    }
+    navigator_->start(target, tracker_.scene(inputs.now_s), *inputs.robot, inputs.now_s);
+  } catch (const core::Error& e) {
+    // The goal pursued before, if any, goes on: the navigator kept it.
+    out.goals.push_back({id, {GoalState::kAborted, e.what()}});
+    return;
+  }
+  if (pursued_) {
+    // The navigator pursues the new goal now: the old one only needs its end told.
+    out.goals.push_back({*pursued_, {GoalState::kCanceled, "preempted by a new goal"}});
+  }
+  pursued_ = id;
+  out.goals.push_back({id, {GoalState::kActive, ""}});
+}
+
+void NavigationSession::end_pursued(const GoalStatus& status, SessionOutput& out) {
+  out.goals.push_back({*pursued_, status});
+  pursued_.reset();
+  out.commands.push_back({});
+}
+
+}  // namespace ari_social_sim::navigation
