@@ -30,6 +30,7 @@ add_library(ari_perception
   src/perception/sound_map.cpp
   src/perception/speech_listener.cpp
   src/perception/track_ids.cpp
+  src/perception/tracked_persons.cpp
   src/perception/transient_ids.cpp
   src/perception/visibility.cpp)
 target_include_directories(ari_perception PUBLIC include)

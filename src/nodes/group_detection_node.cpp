@@ -14,6 +14,7 @@
 #include "ari_social_sim/Group.h"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/model/tracked_person.hpp"
+#include "ari_social_sim/perception/group_candidates.hpp"
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
@@ -71,10 +72,9 @@ class GroupDetectionNode {
   }
 
   // Each tracked person at their body frame in the reference frame, in the list's order
-  // (model::place_at_bodies: GCFF needs the body's facing, which a face or voice frame does not
-  // give). Also left out: a person whose body frame tf cannot place yet (its first transform still
-  // on the way), and one whose body frame has not moved on for kStaleBodyFrame_s (static frames,
-  // stamped 0, never go stale).
+  // (perception::group_candidates_of). Also left out: a person whose body frame tf cannot place
+  // yet (its first transform still on the way), and one whose body frame has not moved on for
+  // kStaleBodyFrame_s (static frames, stamped 0, never go stale).
   std::vector<perception::GcffPerson> candidates(const ros::Time& now) const {
     const auto locate_body = [&](const std::string& body_id) {
       std::optional<model::BodyPlacement> body =
@@ -84,13 +84,7 @@ class GroupDetectionNode {
       }
       return body;
     };
-    std::vector<perception::GcffPerson> people;
-    for (const model::PlacedPerson& person :
-         model::place_at_bodies(persons_.tracked(), locate_body)) {
-      people.push_back({person.person_id, person.pose.position.x(), person.pose.position.y(),
-                        person.pose.theta});
-    }
-    return people;
+    return perception::group_candidates_of({persons_.tracked(), locate_body});
   }
 
   void publish(const ros::Time& stamp) {

@@ -167,8 +167,9 @@ void Episode::step() {
 }
 
 // As hri_perception_node: the world states its ~max_rate gate (RateGate) takes; then as
-// group_detection_node on the persons hri_perception_node tracked in that frame (the live node runs
-// on each /humans/persons/tracked, at most at the same rate).
+// group_detection_node on the persons hri_perception_node tracked in that frame, each at their
+// body (group_candidates_of; the live node runs on its ~rate timer, 20 Hz, which takes every frame
+// at the world's 0.05 s step); what social_mpc_node receives of both.
 void Episode::perceive() {
   perceived_ = nullptr;
   if (!perception_gate_.take(observations_.world.time_s)) {
@@ -176,6 +177,8 @@ void Episode::perceive() {
   }
   perceived_ = &perception_.update(observations_.world);
   group_detection_.update(perception::group_candidates_of(*perceived_), groups_);
+  navigation_->perceive(*perceived_);
+  navigation_->receive_groups(groups_, perceived_->time_s);
   identify();
   observations_.perceived_groups.clear();
   for (const perception::PerceivedGroup& group : groups_) {
@@ -190,11 +193,8 @@ void Episode::identify() {
   observations_.person_ids = identities_.person_ids();
 }
 
-// As social_mpc_node: what perception and group detection published, then its control timer.
+// As social_mpc_node's control timer, on what perception and group detection published last.
 void Episode::navigate() {
-  if (perceived_ != nullptr) {
-    navigation_->observe(*perceived_, groups_);
-  }
   navigation_->control();
   navigation_commands_ = navigation_->take_commands();
   observations_.navigation = navigation_->status();

@@ -1,64 +1,61 @@
 #include "ari_social_sim/scenario/in_process_navigation.hpp"
 
-#include <algorithm>
-
-#include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/navigation/perception_report.hpp"
+#include "ari_social_sim/perception/tracked_persons.hpp"
 #include "ari_social_sim/scenario/ari_observation.hpp"
 
 namespace ari_social_sim::scenario {
+namespace {
+
+// scenario_node's view of a goal through its action client (status_of there): pending or
+// pursued is active, rejected or aborted is a failure, a goal cancelled is no goal.
+NavigationStatus as_seen_by_the_script(const navigation::GoalStatus& goal) {
+  switch (goal.state) {
+    case navigation::GoalState::kPending:
+    case navigation::GoalState::kActive:
+      return {NavigationState::kActive, ""};
+    case navigation::GoalState::kSucceeded:
+      return {NavigationState::kSucceeded, ""};
+    case navigation::GoalState::kRejected:
+    case navigation::GoalState::kAborted:
+      return {NavigationState::kFailed, goal.reason};
+    case navigation::GoalState::kCanceled:
+      break;
+  }
+  return {};
+}
+
+}  // namespace
 
 InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& config,
                                          const model::OccupancyGrid& map,
                                          world::Simulation& simulation)
-    : config_(config), simulation_(simulation), tracker_(config.scene), navigator_(config, map) {}
+    : simulation_(simulation), session_(config) {
+  session_.set_map(map);
+  perceived_.locate_body = [](const std::string&) { return std::nullopt; };
+}
 
-void InProcessNavigation::observe(const perception::PerceptionFrame& frame,
-                                  const std::vector<perception::PerceivedGroup>& groups) {
-  // As social_mpc_node, with the frame in place of /humans/persons/tracked, the persons' body_id
-  // and the body_<id> frames, and the groups group detection found in it.
-  navigation::PerceptionReport report;
-  for (const perception::PersonReport& person : frame.persons) {
-    if (person.tracked) {
-      report.persons.push_back({person.person_id, person.body_id});
-    }
-  }
+void InProcessNavigation::perceive(const perception::PerceptionFrame& frame) {
+  perceived_ = perception::tracked_persons_of(frame);
+}
+
+void InProcessNavigation::receive_groups(const std::vector<perception::PerceivedGroup>& groups,
+                                         double time_s) {
   for (const perception::PerceivedGroup& group : groups) {
-    report.groups.push_back({group.group_id, frame.time_s, group.members});
+    session_.receive_group({group.group_id, time_s, group.members});
   }
-  const auto locate_body = [&frame](const std::string& body_id) {
-    std::optional<model::BodyPlacement> placement;
-    const auto body =
-        std::find_if(frame.bodies.begin(), frame.bodies.end(),
-                     [&](const perception::PerceivedBody& b) { return b.body_id == body_id; });
-    if (body != frame.bodies.end()) {
-      placement = model::BodyPlacement{frame.time_s, body->X_map_body};
-    }
-    return placement;
-  };
-  navigation::observe(tracker_, report, locate_body, frame.time_s);
 }
 
 void InProcessNavigation::start(const navigation::NavigationTarget& target) {
-  const double now = simulation_.time_s();
-  try {
-    if (simulation_.ari() == nullptr) {
-      throw core::RequestError("no transform from map to base_footprint: the scene has no ARI");
-    }
-    navigator_.start(target, tracker_.scene(now), observe_ari(*simulation_.ari()), now);
-  } catch (const core::Error& e) {
-    // The previous goal stays as it was, as with an action server that rejects a new goal.
-    status_ = {NavigationState::kFailed, e.what()};
-    return;
-  }
-  status_ = {NavigationState::kActive, ""};
+  const navigation::SessionOutput out = session_.request(target, inputs());
+  goal_ = session_.newest_goal();
+  apply(out);
 }
 
 void InProcessNavigation::cancel() {
-  if (status_.state == NavigationState::kActive) {
-    navigator_.cancel();
-    stop();
+  if (goal_ != 0) {
+    apply(session_.cancel(goal_));
   }
+  goal_ = 0;
   status_ = {};
 }
 
@@ -68,40 +65,41 @@ void InProcessNavigation::fail(const std::string& reason) {
 }
 
 void InProcessNavigation::control() {
-  const double now = simulation_.time_s();
-  if (now < next_control_s_ - 1e-9) {
-    return;
-  }
-  next_control_s_ = now + 1.0 / config_.navigator.rate_hz;
-  if (navigator_.state() != navigation::NavigationState::kActive || simulation_.ari() == nullptr) {
-    return;
-  }
-  const navigation::NavigatorStep step =
-      navigator_.update(now, observe_ari(*simulation_.ari()), tracker_.scene(now));
-  if (step.state == navigation::NavigationState::kSucceeded) {
-    status_ = {NavigationState::kSucceeded, ""};
-    stop();
-    return;
-  }
-  if (step.state == navigation::NavigationState::kAborted) {
-    status_ = {NavigationState::kFailed, step.reason};
-    stop();
-    return;
-  }
-  simulation_.command_ari_twist(step.command.linear_mps, step.command.angular_rps);
-  simulation_.command_ari_head_pan(step.command.pan_rad);
-  sent_.push_back({step.command.linear_mps, step.command.angular_rps, step.command.pan_rad});
+  apply(session_.control(inputs()));
 }
 
-void InProcessNavigation::stop() {
+// As social_mpc_node sees the world: the sim time, ARI as its odometry, joint states and tf
+// measure it (nothing without ARI: world_node publishes no base frame then), the latest persons.
+navigation::SessionInputs InProcessNavigation::inputs() const {
+  navigation::SessionInputs inputs;
+  inputs.now_s = simulation_.time_s();
   if (simulation_.ari() != nullptr) {
-    simulation_.command_ari_twist(0.0, 0.0);
+    inputs.robot = observe_ari(*simulation_.ari());
   }
-  sent_.push_back({});
+  inputs.perception = perceived_;
+  return inputs;
 }
 
-std::vector<SentCommand> InProcessNavigation::take_commands() {
-  std::vector<SentCommand> taken = std::move(sent_);
+void InProcessNavigation::apply(const navigation::SessionOutput& out) {
+  for (const navigation::GoalChange& change : out.goals) {
+    if (change.goal == goal_) {
+      status_ = as_seen_by_the_script(change.status);
+    }
+  }
+  // As world_node applies /mobile_base_controller/cmd_vel and /head_controller/command.
+  for (const navigation::BaseCommand& command : out.commands) {
+    if (simulation_.ari() != nullptr) {
+      simulation_.command_ari_twist(command.linear_mps, command.angular_rps);
+      if (command.pan_rad) {
+        simulation_.command_ari_head_pan(*command.pan_rad);
+      }
+    }
+    sent_.push_back(command);
+  }
+}
+
+std::vector<navigation::BaseCommand> InProcessNavigation::take_commands() {
+  std::vector<navigation::BaseCommand> taken = std::move(sent_);
   sent_.clear();
   return taken;
 }

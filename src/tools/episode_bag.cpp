@@ -120,7 +120,7 @@ void EpisodeBag::record_world(const scenario::Episode& episode) {
 // (reached within one cycle), or a stop.
 void EpisodeBag::record_navigation(const scenario::Episode& episode) {
   const double now_s = episode.snapshot().time_s;
-  for (const scenario::SentCommand& command : episode.navigation_commands()) {
+  for (const navigation::BaseCommand& command : episode.navigation_commands()) {
     geometry_msgs::Twist twist;
     twist.linear.x = command.linear_mps;
     twist.angular.z = command.angular_rps;

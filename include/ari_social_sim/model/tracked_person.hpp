@@ -35,6 +35,13 @@ struct PlacedPerson {
 /// of its frame; in process, the perception frame holds no such body.
 using BodyLocator = std::function<std::optional<BodyPlacement>(const std::string& body_id)>;
 
+/// What perception tells the consumers that act on persons at a moment: who is tracked, in the
+/// order reported, and where their bodies stand.
+struct TrackedPersons {
+  std::vector<TrackedPerson> persons;
+  BodyLocator locate_body;
+};
+
 /// The tracked persons that the consumers needing a facing direction act on (social navigation,
 /// group detection), in the order given, each at their body's placement. Left out: a person
 /// without a body, since a person frame has a position but no meaningful orientation (REP-155),

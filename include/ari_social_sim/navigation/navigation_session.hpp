@@ -47,19 +47,13 @@ struct BaseCommand {
   std::optional<double> pan_rad;
 };
 
-/// What perception reports when the session looks: the persons tracked now, with their bodies'
-/// ids, and where those bodies stand (tf live, the perception frame in process).
-struct PerceptionView {
-  std::vector<model::TrackedPerson> persons;
-  model::BodyLocator locate_body;
-};
-
 /// What the session is told at a call: the sim time, ARI as measured (nothing while it cannot be
-/// placed in the map), and perception.
+/// placed in the map), and the persons perception tracks now with where their bodies stand (tf
+/// live, the last perception frame in process).
 struct SessionInputs {
   double now_s{0.0};
   std::optional<RobotObservation> robot;
-  PerceptionView perception;
+  model::TrackedPersons perception;
 };
 
 /// What a call produced, in order: goals whose state changed, commands to send, and the

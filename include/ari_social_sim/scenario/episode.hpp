@@ -87,7 +87,9 @@ class Episode {
   const std::vector<perception::PerceivedGroup>& perceived_groups() const { return groups_; }
   const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
   /// What social_mpc_node commanded in the last step.
-  const std::vector<SentCommand>& navigation_commands() const { return navigation_commands_; }
+  const std::vector<navigation::BaseCommand>& navigation_commands() const {
+    return navigation_commands_;
+  }
   double navigation_rate_hz() const { return config_.navigation.navigator.rate_hz; }
   /// What the dialogue reported in the last step (utterances that started, dialogues that ended).
   const dialogue::SpokenDialogueEvents& dialogue_events() const { return dialogue_events_; }
@@ -113,7 +115,7 @@ class Episode {
   std::vector<perception::PerceivedGroup> groups_;
   PersonIdentities identities_;
   std::unique_ptr<InProcessNavigation> navigation_;
-  std::vector<SentCommand> navigation_commands_;
+  std::vector<navigation::BaseCommand> navigation_commands_;
   dialogue::DialogueRunConfig dialogue_run_;
   std::unique_ptr<WorldSpeechStage> stage_;
   std::unique_ptr<dialogue::SpokenDialogue> dialogue_;
