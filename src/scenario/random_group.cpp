@@ -24,7 +24,9 @@ GeneratedGroup generate_group(const RandomGroup& spec, core::Rng& rng) {
     human.pose.position =
         group.centre + radius_m * Eigen::Vector2d(std::cos(bearing_rad), std::sin(bearing_rad));
     human.pose.theta = core::wrap_angle(bearing_rad + core::kPi);  // facing the centre
-    human.age_years = rng.uniform(18.0, 80.0);
+    // Whole years, as scene files give ages: /sim/spawn_human and /sim/world_state carry them as
+    // float32, which holds whole years exactly, so live and batch runs perceive the same ages.
+    human.age_years = std::floor(rng.uniform(18.0, 81.0));
     human.gender = rng.bernoulli(0.5) ? model::Gender::kFemale : model::Gender::kMale;
     group.members.push_back(human.id);
     generated.humans.push_back(human);

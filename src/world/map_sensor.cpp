@@ -41,8 +41,12 @@ void check_map_size(const model::WorldDescription& world, double resolution_m) {
 }
 
 model::OccupancyGrid rasterize_static_map(const model::WorldDescription& world,
-                                          double resolution_m) {
-  check_map_size(world, resolution_m);
+                                          double requested_resolution_m) {
+  check_map_size(world, requested_resolution_m);
+  // The resolution as /map carries it (nav_msgs/OccupancyGrid holds it as float32: 0.05 m is
+  // 0.0500000007 m there), so that the nodes that receive the grid and the in-process engine,
+  // which does not, work on the same grid.
+  const double resolution_m = static_cast<float>(requested_resolution_m);
   model::OccupancyGrid grid;
   grid.origin = world.origin;
   grid.resolution_m = resolution_m;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "../../src/nodes/conversions/world_state.hpp"
+#include "ari_social_sim/core/clock_time.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/scene.hpp"
 
@@ -22,7 +23,7 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
   }
   const world::WorldSnapshot truth = world::WorldSnapshot::of(*simulation);
   const world::WorldSnapshot back = from_msg(to_msg(truth, "map"));
-  EXPECT_DOUBLE_EQ(back.time_s, truth.time_s);
+  EXPECT_EQ(back.time_s, truth.time_s);
   EXPECT_EQ(back.step, truth.step);
   ASSERT_TRUE(back.ari.has_value());
   EXPECT_EQ(back.ari->pose.position, truth.ari->pose.position);
@@ -36,7 +37,7 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
     EXPECT_EQ(b.pose.position, a.pose.position);
     EXPECT_EQ(b.pose.theta, a.pose.theta);
     EXPECT_EQ(b.velocity_mps, a.velocity_mps);
-    EXPECT_FLOAT_EQ(b.age_years, a.age_years);  // float32 on the wire
+    EXPECT_EQ(b.age_years, a.age_years);  // float32 on the wire, which holds whole years
     EXPECT_EQ(b.gender, a.gender);
     EXPECT_EQ(b.mask, a.mask);
     EXPECT_EQ(b.emotion, a.emotion);
@@ -57,8 +58,26 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
   const model::OccupancyGrid grid_back = from_msg(to_msg(grid, "map", 0.0));
   EXPECT_EQ(grid_back.cells, grid.cells);
   EXPECT_EQ(grid_back.width, grid.width);
-  EXPECT_NEAR(grid_back.resolution_m, 0.05, 1e-7);  // float32 on the wire
+  // float32 on the wire, as the grid has it from the start.
+  EXPECT_EQ(grid_back.resolution_m, grid.resolution_m);
+  EXPECT_NEAR(grid.resolution_m, 0.05, 1e-8);
   EXPECT_EQ(grid_back.origin, grid.origin);
+}
+
+// Sim time in whole nanoseconds: the stamp of every step reads back the world's time exactly,
+// whatever the step (a double count of 0.05 s steps would not: 0.15000000000000002 s reads back
+// as 0.15 s).
+TEST(WorldStateConversion, EveryStepsStampReadsBackTheSimTimeExactly) {
+  for (const double step_s : {0.05, 0.01, 0.02, 1.0 / 30.0}) {
+    int differing = 0;
+    for (uint64_t step = 0; step <= 200000; ++step) {  // 2.8 h of 0.05 s steps
+      const double time_s = core::clock_time_s(step, step_s);
+      differing += ros::Time(time_s).toSec() != time_s;
+    }
+    EXPECT_EQ(differing, 0) << "steps of " << step_s << " s";
+  }
+  EXPECT_EQ(core::clock_time_s(3, 0.05), ros::Time(0, 150000000).toSec());
+  EXPECT_EQ(core::clock_time_s(20 * 3600, 0.05), 3600.0);
 }
 
 // The waiting room's state after a second, as world_node publishes it.

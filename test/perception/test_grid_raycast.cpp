@@ -20,8 +20,9 @@ TEST(GridRaycast, AWallBlocksSegmentsThatCrossIt) {
 
 TEST(GridRaycast, EndCellsAndOutsideTheGridAreNotTested) {
   const model::OccupancyGrid grid = map_with_wall({2.0, -1.0}, {2.0, 1.0});
-  // Starting or ending inside the wall's cells sees past them.
-  EXPECT_TRUE(segment_is_clear(grid, 50, {2.0, 0.0}, {5.0, 0.0}));
+  // Starting or ending inside the wall's cells sees past them (the wall covers the two cells from
+  // x = 1.95 to 2.05; 2.03 is well inside the far one).
+  EXPECT_TRUE(segment_is_clear(grid, 50, {2.03, 0.0}, {5.0, 0.0}));
   EXPECT_TRUE(segment_is_clear(grid, 50, {0.0, 0.0}, {1.99, 0.0}));
   // The grid spans -10..10 m: beyond it everything is free.
   EXPECT_TRUE(segment_is_clear(grid, 50, {-30.0, 5.0}, {30.0, 5.0}));

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 #include "ari_social_sim/core/angles.hpp"
@@ -39,7 +40,8 @@ TEST(RandomGroup, MembersStandEvenlyOnTheOspaceCircleFacingTheCentre) {
     EXPECT_NEAR((next.pose.position - h.pose.position).norm(),
                 2.0 * radius_m * std::sin(core::kPi / n), 1e-9);
     EXPECT_GE(h.age_years, 18.0);
-    EXPECT_LT(h.age_years, 80.0);
+    EXPECT_LE(h.age_years, 80.0);
+    EXPECT_EQ(h.age_years, std::floor(h.age_years));  // whole years
   }
   EXPECT_GE(g.group.centre.x(), 2.0);
   EXPECT_LT(g.group.centre.x(), 4.0);

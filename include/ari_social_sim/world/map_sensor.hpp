@@ -20,9 +20,10 @@ void check_map_size(const model::WorldDescription& world, double resolution_m);
 
 /// Rasterises the static geometry (walls and furniture, never agents) into an occupancy grid
 /// covering the world's floor: a cell is occupied when its square overlaps a shape (Box2D's exact
-/// overlap test, so thin walls are never missed). Throws core::ConfigError from check_map_size.
+/// overlap test, so thin walls are never missed). Its cells are `requested_resolution_m` rounded
+/// to float32, as /map carries them. Throws core::ConfigError from check_map_size.
 model::OccupancyGrid rasterize_static_map(const model::WorldDescription& world,
-                                          double resolution_m);
+                                          double requested_resolution_m);
 
 /// D6.4 §3.5.1 MapSensor: ARI's occupancy map of the environment, replicating its mapping from the
 /// static objects of the simulation. Static geometry never changes during a run, so the map is

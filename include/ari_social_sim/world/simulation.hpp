@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "ari_social_sim/core/clock_time.hpp"
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/const_pointer_view.hpp"
 #include "ari_social_sim/model/occupancy_grid.hpp"
@@ -136,7 +137,7 @@ class Simulation {
 
   void step();
 
-  double time_s() const { return static_cast<double>(step_count_) * config_.step_s; }
+  double time_s() const { return core::clock_time_s(step_count_, config_.step_s); }
   uint64_t step_count() const { return step_count_; }
   const SimulationConfig& config() const { return config_; }
   const model::WorldDescription& world() const { return world_; }
