@@ -28,12 +28,13 @@ target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_con
 target_include_directories(ari_scenario_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include)
 add_executable(scenario_node src/nodes/scenario_node.cpp)
 target_link_libraries(scenario_node ari_scenario_conversions ari_dialogue_conversions
-  ari_perceived_persons)
+  ari_navigation_conversions ari_perceived_persons)
 
 # run_episodes: the batch tool (cores in one process, rosbags written without a master).
 add_library(ari_episode_bag src/tools/episode_bag.cpp)
 target_link_libraries(ari_episode_bag
-  PUBLIC ari_scenario_conversions ari_perception_conversions ari_dialogue_conversions)
+  PUBLIC ari_scenario_conversions ari_perception_conversions ari_dialogue_conversions
+    ari_navigation_conversions)
 add_executable(run_episodes src/tools/run_episodes.cpp)
 target_link_libraries(run_episodes ari_episode_bag)
 target_compile_definitions(run_episodes PRIVATE

@@ -31,9 +31,6 @@ namespace {
 // this much (s of the lists' time), so that a person missed for a moment keeps it (and their
 // latched body id) while the number of subscriptions stays bounded by the people seen recently.
 constexpr double kForgetPersonAfter_s = 5.0;
-// A body frame whose last transform is older than this (s) no longer places anyone: its
-// publisher has stopped (perception died) and the person would otherwise stand there for ever.
-constexpr double kStaleBodyFrame_s = 1.0;
 
 class GroupDetectionNode {
  public:
@@ -73,16 +70,11 @@ class GroupDetectionNode {
 
   // Each tracked person at their body frame in the reference frame, in the list's order
   // (perception::group_candidates_of). Also left out: a person whose body frame tf cannot place
-  // yet (its first transform still on the way), and one whose body frame has not moved on for
-  // kStaleBodyFrame_s (static frames, stamped 0, never go stale).
+  // yet (its first transform still on the way), and one whose body frame has gone stale
+  // (fresh_body_placement).
   std::vector<perception::GcffPerson> candidates(const ros::Time& now) const {
     const auto locate_body = [&](const std::string& body_id) {
-      std::optional<model::BodyPlacement> body =
-          body_placement(tf_.buffer(), run_.reference_frame, body_id);
-      if (body && body->stamp_s != 0.0 && now.toSec() - body->stamp_s > kStaleBodyFrame_s) {
-        body.reset();
-      }
-      return body;
+      return fresh_body_placement(tf_.buffer(), run_.reference_frame, body_id, now.toSec());
     };
     return perception::group_candidates_of({persons_.tracked(), locate_body});
   }

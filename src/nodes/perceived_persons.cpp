@@ -39,6 +39,16 @@ std::optional<model::BodyPlacement> body_placement(const tf2_ros::Buffer& tf,
   return model::BodyPlacement{t->header.stamp.toSec(), planar_pose(*t)};
 }
 
+std::optional<model::BodyPlacement> fresh_body_placement(const tf2_ros::Buffer& tf,
+                                                         const std::string& frame,
+                                                         const std::string& body_id, double now_s) {
+  std::optional<model::BodyPlacement> body = body_placement(tf, frame, body_id);
+  if (body && body->stamp_s != 0.0 && now_s - body->stamp_s > kStaleBodyFrame_s) {
+    body.reset();
+  }
+  return body;
+}
+
 PerceivedPersons::PerceivedPersons(const ros::NodeHandle& nh, double forget_after_s)
     : nh_(nh), forget_after_s_(forget_after_s) {
   tracked_sub_ = nh_.subscribe("/humans/persons/tracked", 1, &PerceivedPersons::on_tracked, this,

@@ -19,6 +19,16 @@ std::optional<model::BodyPlacement> body_placement(const tf2_ros::Buffer& tf,
                                                    const std::string& frame,
                                                    const std::string& body_id);
 
+/// How old (s) the last transform of a body frame may be and still place the person: an older
+/// one's publisher has stopped (perception died), and the person would otherwise stand there for
+/// ever.
+inline constexpr double kStaleBodyFrame_s = 1.0;
+/// body_placement, unless the frame's last transform is older than kStaleBodyFrame_s at `now_s`
+/// (static frames, stamped 0, never go stale).
+std::optional<model::BodyPlacement> fresh_body_placement(const tf2_ros::Buffer& tf,
+                                                         const std::string& frame,
+                                                         const std::string& body_id, double now_s);
+
 /// Who ROS4HRI perception tracks, for the nodes that act on perceived people (social_mpc_node,
 /// group_detection_node, scenario_node): follows /humans/persons/tracked and each tracked person's
 /// latched /humans/persons/<id>/body_id. A person who has been out of the tracked list for

@@ -45,9 +45,9 @@
 #include "ari_social_sim/scenario/scenario_run_config.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "conversions/dialogue.hpp"
+#include "conversions/navigation_msgs.hpp"
 #include "conversions/scenario_status.hpp"
 #include "conversions/world_state.hpp"
-#include "frames.hpp"
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -194,12 +194,7 @@ class RosCommands : public scenario::Commands {
   void navigate(const core::Pose2& goal) override {
     cancel_navigation();
     move_base_msgs::MoveBaseGoal target;
-    target.target_pose.header.frame_id = kMapFrame;
-    target.target_pose.header.stamp = ros::Time::now();
-    target.target_pose.pose.position.x = goal.position.x();
-    target.target_pose.pose.position.y = goal.position.y();
-    target.target_pose.pose.orientation.z = std::sin(0.5 * goal.theta);
-    target.target_pose.pose.orientation.w = std::cos(0.5 * goal.theta);
+    target.target_pose = map_goal_msg(goal, ros::Time::now());
     move_base_->sendGoal(target);
     active_ = Navigation::kMoveBase;
   }

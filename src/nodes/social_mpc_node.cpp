@@ -381,21 +381,11 @@ class SocialMpcNode {
   }
 
   void send(const navigation::BaseCommand& command) {
-    geometry_msgs::Twist twist;
-    twist.linear.x = command.linear_mps;
-    twist.angular.z = command.angular_rps;
-    cmd_vel_pub_.publish(twist);
-    if (!command.pan_rad) {
-      return;
+    const CommandMessages messages = to_msgs(command, ros::Time::now(), config_.navigator.rate_hz);
+    cmd_vel_pub_.publish(messages.twist);
+    if (messages.head) {
+      head_pub_.publish(*messages.head);
     }
-    trajectory_msgs::JointTrajectory head;
-    head.header.stamp = ros::Time::now();
-    head.joint_names = {kHeadPanJoint, kHeadTiltJoint};
-    trajectory_msgs::JointTrajectoryPoint point;
-    point.positions = {*command.pan_rad, 0.0};
-    point.time_from_start = ros::Duration(1.0 / config_.navigator.rate_hz);
-    head.points.push_back(point);
-    head_pub_.publish(head);
   }
 
   static void publish_feedback(GoalClient& client, const navigation::NavigatorStep& step,

@@ -59,10 +59,6 @@ constexpr double kPacingSliceS = 0.05;
 // 10 s of wall time): the node serves nothing else meanwhile.
 constexpr uint32_t kMaxStepsPerRequest = 100000;
 
-core::Pose2 from_msg(const geometry_msgs::Pose2D& pose) {
-  return {{pose.x, pose.y}, pose.theta};
-}
-
 // Runs a service body; a core::Error becomes success = false with its text, as ROS users expect
 // from a request the server understood but could not honour.
 template <class Response, class Body>
@@ -252,19 +248,7 @@ class WorldNode {
     tf_.sendTransform(odom_to_base(ari.pose, stamp.toSec()));
     odom_pub_.publish(to_odometry(ari, stamp.toSec()));
 
-    // Every joint, as ARI's joint_state_controller reports them: the head pans (its tilt stays
-    // level in 2D), the rest stays at rest.
-    sensor_msgs::JointState joints;
-    joints.header.stamp = stamp;
-    joints.name = {kHeadPanJoint, kHeadTiltJoint};
-    joints.position = {ari.head_pan_rad, 0.0};
-    joints.velocity = {ari.head_pan_velocity_rps, 0.0};
-    for (const char* joint : kJointsAtRest) {
-      joints.name.push_back(joint);
-      joints.position.push_back(0.0);
-      joints.velocity.push_back(0.0);
-    }
-    joint_states_pub_.publish(joints);
+    joint_states_pub_.publish(joint_states_of(ari, stamp.toSec()));
   }
 
   void publish_map() { map_pub_.publish(to_msg(map_, kMapFrame, simulation_->time_s())); }
@@ -299,22 +283,15 @@ class WorldNode {
   }
 
   void on_head_command(const trajectory_msgs::JointTrajectory& trajectory) {
-    const auto joint =
-        std::find(trajectory.joint_names.begin(), trajectory.joint_names.end(), kHeadPanJoint);
-    if (simulation_->ari() == nullptr || joint == trajectory.joint_names.end() ||
-        trajectory.points.empty()) {
-      ROS_WARN_THROTTLE(5.0, "head command ignored: needs ARI and a point for %s", kHeadPanJoint);
+    const std::optional<double> pan = head_pan_target(trajectory);
+    if (simulation_->ari() == nullptr || !pan) {
+      ROS_WARN_THROTTLE(5.0,
+                        "head command ignored: needs ARI and a position for %s in its last point",
+                        kHeadPanJoint);
       return;
     }
-    const size_t index = static_cast<size_t>(joint - trajectory.joint_names.begin());
-    const trajectory_msgs::JointTrajectoryPoint& last = trajectory.points.back();
-    if (index >= last.positions.size()) {
-      ROS_WARN_THROTTLE(5.0, "head command ignored: no position for %s", kHeadPanJoint);
-      return;
-    }
-    if (inputs_.finite(kHeadCommandTopic, kHeadPosition, last.positions[index])) {
-      count_clamps(kHeadCommandTopic,
-                   [&] { simulation_->command_ari_head_pan(last.positions[index]); });
+    if (inputs_.finite(kHeadCommandTopic, kHeadPosition, *pan)) {
+      count_clamps(kHeadCommandTopic, [&] { simulation_->command_ari_head_pan(*pan); });
     }
   }
 

@@ -1,9 +1,7 @@
 #include "episode_bag.hpp"
 
-#include <geometry_msgs/Twist.h>
 #include <rosgraph_msgs/Clock.h>
 #include <tf2_msgs/TFMessage.h>
-#include <trajectory_msgs/JointTrajectory.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +9,7 @@
 #include "../nodes/conversions/ari_base.hpp"
 #include "../nodes/conversions/dialogue.hpp"
 #include "../nodes/conversions/hri_messages.hpp"
+#include "../nodes/conversions/navigation_msgs.hpp"
 #include "../nodes/conversions/scenario_status.hpp"
 #include "../nodes/conversions/world_state.hpp"
 #include "../nodes/frames.hpp"
@@ -121,19 +120,11 @@ void EpisodeBag::record_world(const scenario::Episode& episode) {
 void EpisodeBag::record_navigation(const scenario::Episode& episode) {
   const double now_s = episode.snapshot().time_s;
   for (const navigation::BaseCommand& command : episode.navigation_commands()) {
-    geometry_msgs::Twist twist;
-    twist.linear.x = command.linear_mps;
-    twist.angular.z = command.angular_rps;
-    write("/mobile_base_controller/cmd_vel", now_s, twist);
-    if (command.pan_rad) {
-      trajectory_msgs::JointTrajectory head;
-      head.header.stamp = ros::Time(now_s);
-      head.joint_names = {nodes::kHeadPanJoint, nodes::kHeadTiltJoint};
-      trajectory_msgs::JointTrajectoryPoint point;
-      point.positions = {*command.pan_rad, 0.0};
-      point.time_from_start = ros::Duration(1.0 / episode.navigation_rate_hz());
-      head.points.push_back(point);
-      write("/head_controller/command", now_s, head);
+    const nodes::CommandMessages messages =
+        nodes::to_msgs(command, ros::Time(now_s), episode.navigation_rate_hz());
+    write("/mobile_base_controller/cmd_vel", now_s, messages.twist);
+    if (messages.head) {
+      write("/head_controller/command", now_s, *messages.head);
     }
   }
 }

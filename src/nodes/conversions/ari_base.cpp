@@ -1,5 +1,7 @@
 #include "ari_base.hpp"
 
+#include <algorithm>
+
 #include "marker_builder.hpp"
 
 namespace ari_social_sim::nodes {
@@ -40,6 +42,34 @@ nav_msgs::Odometry to_odometry(const world::AriSnapshot& ari, double stamp_s) {
   odom.twist.twist.linear.x = ari.linear_mps;
   odom.twist.twist.angular.z = ari.angular_rps;
   return odom;
+}
+
+sensor_msgs::JointState joint_states_of(const world::AriSnapshot& ari, double stamp_s) {
+  sensor_msgs::JointState joints;
+  joints.header.stamp = ros::Time(stamp_s);
+  joints.name = {kHeadPanJoint, kHeadTiltJoint};
+  joints.position = {ari.head_pan_rad, 0.0};
+  joints.velocity = {ari.head_pan_velocity_rps, 0.0};
+  for (const char* joint : kJointsAtRest) {
+    joints.name.push_back(joint);
+    joints.position.push_back(0.0);
+    joints.velocity.push_back(0.0);
+  }
+  return joints;
+}
+
+std::optional<double> head_pan_target(const trajectory_msgs::JointTrajectory& command) {
+  const auto joint =
+      std::find(command.joint_names.begin(), command.joint_names.end(), kHeadPanJoint);
+  if (joint == command.joint_names.end() || command.points.empty()) {
+    return std::nullopt;
+  }
+  const auto index = static_cast<size_t>(joint - command.joint_names.begin());
+  const trajectory_msgs::JointTrajectoryPoint& last = command.points.back();
+  if (index >= last.positions.size()) {
+    return std::nullopt;
+  }
+  return last.positions[index];
 }
 
 }  // namespace ari_social_sim::nodes

@@ -2,6 +2,10 @@
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <sensor_msgs/JointState.h>
+#include <trajectory_msgs/JointTrajectory.h>
+
+#include <optional>
 
 #include "../frames.hpp"
 #include "ari_social_sim/core/pose2.hpp"
@@ -17,5 +21,11 @@ geometry_msgs::TransformStamped map_to_odom(double stamp_s,
 geometry_msgs::TransformStamped odom_to_base(const core::Pose2& base_in_odom, double stamp_s);
 /// /mobile_base_controller/odom from ARI's 2D body (pose in odom, twist in base_footprint).
 nav_msgs::Odometry to_odometry(const world::AriSnapshot& ari, double stamp_s);
+/// /joint_states of ARI's 2D body, as ARI's joint_state_controller reports every joint: the head
+/// pans (its tilt stays level), the rest stays at rest (kJointsAtRest).
+sensor_msgs::JointState joint_states_of(const world::AriSnapshot& ari, double stamp_s);
+/// The head_1_joint position a /head_controller/command asks for (its last point's), or nothing
+/// when it names none.
+std::optional<double> head_pan_target(const trajectory_msgs::JointTrajectory& command);
 
 }  // namespace ari_social_sim::nodes

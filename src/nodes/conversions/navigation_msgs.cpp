@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../frames.hpp"
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/navigation/social_cost_map.hpp"
 #include "marker_builder.hpp"
@@ -24,6 +25,17 @@ std_msgs::ColorRGBA heat(double value) {
 
 }  // namespace
 
+geometry_msgs::PoseStamped map_goal_msg(const core::Pose2& goal, const ros::Time& stamp) {
+  geometry_msgs::PoseStamped msg;
+  msg.header.frame_id = kMapFrame;
+  msg.header.stamp = stamp;
+  msg.pose.position.x = goal.position.x();
+  msg.pose.position.y = goal.position.y();
+  msg.pose.orientation.z = std::sin(0.5 * goal.theta);
+  msg.pose.orientation.w = std::cos(0.5 * goal.theta);
+  return msg;
+}
+
 navigation::PoseGoalRequest goal_request_of(const geometry_msgs::PoseStamped& goal) {
   navigation::PoseGoalRequest request;
   request.frame_id = goal.header.frame_id;
@@ -35,6 +47,24 @@ navigation::PoseGoalRequest goal_request_of(const geometry_msgs::PoseStamped& go
   request.qz = goal.pose.orientation.z;
   request.qw = goal.pose.orientation.w;
   return request;
+}
+
+CommandMessages to_msgs(const navigation::BaseCommand& command, const ros::Time& stamp,
+                        double control_rate_hz) {
+  CommandMessages messages;
+  messages.twist.linear.x = command.linear_mps;
+  messages.twist.angular.z = command.angular_rps;
+  if (command.pan_rad) {
+    trajectory_msgs::JointTrajectory head;
+    head.header.stamp = stamp;
+    head.joint_names = {kHeadPanJoint, kHeadTiltJoint};
+    trajectory_msgs::JointTrajectoryPoint point;
+    point.positions = {*command.pan_rad, 0.0};
+    point.time_from_start = ros::Duration(1.0 / control_rate_hz);
+    head.points.push_back(point);
+    messages.head = std::move(head);
+  }
+  return messages;
 }
 
 nav_msgs::Path plan_msg(const navigation::MpcSolution& plan, const std::string& frame_id,

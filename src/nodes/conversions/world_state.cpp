@@ -16,6 +16,10 @@ geometry_msgs::Pose2D to_msg(const core::Pose2& pose) {
   return msg;
 }
 
+core::Pose2 from_msg(const geometry_msgs::Pose2D& msg) {
+  return {{msg.x, msg.y}, msg.theta};
+}
+
 namespace {
 
 SpeechState to_msg(const world::SpeechSnapshot& speech) {
@@ -29,10 +33,6 @@ SpeechState to_msg(const world::SpeechSnapshot& speech) {
   msg.previous_act = speech.previous_act;
   msg.previous_content = speech.previous_content;
   return msg;
-}
-
-core::Pose2 from_msg(const geometry_msgs::Pose2D& msg) {
-  return {{msg.x, msg.y}, msg.theta};
 }
 
 world::SpeechSnapshot from_msg(const SpeechState& msg) {

@@ -13,8 +13,9 @@
 
 namespace ari_social_sim::nodes {
 
-/// geometry_msgs/Pose2D of a planar pose (the world services' poses and goals).
+/// geometry_msgs/Pose2D of a planar pose (the world services' poses and goals), and back.
 geometry_msgs::Pose2D to_msg(const core::Pose2& pose);
+core::Pose2 from_msg(const geometry_msgs::Pose2D& msg);
 
 /// /sim/world_state from a snapshot; header stamped with the snapshot's sim time in `frame_id`.
 WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id);
