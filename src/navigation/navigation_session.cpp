@@ -2,14 +2,59 @@
 
 #include <cmath>
 
+#include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::navigation {
 namespace {
 
-// Sim times are sums of world steps, a hair off the multiples of the control period they stand
-// for (3 x 0.1 s is 0.30000000000000004 s): a cycle falls in the period it is meant for.
+// A sim time may be a hair below the multiple of the control period it stands for, in doubles: a
+// cycle falls in the period it is meant for.
 constexpr double kPeriodSlack = 1e-6;  // of a period
+
+// What the session is told is rounded to a microsecond, a micrometre and a microradian (headings
+// into [-pi, pi) first): far below what ARI's sensors resolve, and far above the rounding of the
+// ways it is told. Live, headings reach social_mpc_node as quaternions (tf, move_base goals) and
+// bodies through ARI's frame, an ulp or two off what the batch engine reads in the perception
+// frame, and a script's goal heading of 3.1416 comes back from move_base's quaternion as
+// -3.14158...; unrounded, such differences changed the first command of join_group (seed 1) by
+// 1e-7 m/s and grew from there. Rounded, both plan on the same numbers.
+constexpr double kResolution = 1e-6;
+
+double rounded(double value) {
+  return std::round(value / kResolution) * kResolution;
+}
+
+core::Pose2 rounded(const core::Pose2& pose) {
+  return {{rounded(pose.position.x()), rounded(pose.position.y())},
+          rounded(core::wrap_angle(pose.theta))};
+}
+
+NavigationTarget rounded(const NavigationTarget& target) {
+  if (const auto* pose = std::get_if<PoseTarget>(&target)) {
+    return PoseTarget{rounded(pose->pose)};
+  }
+  return target;
+}
+
+SessionInputs rounded(const SessionInputs& inputs) {
+  SessionInputs out;
+  out.now_s = rounded(inputs.now_s);
+  out.robot = inputs.robot;
+  if (out.robot) {
+    out.robot->pose = rounded(out.robot->pose);
+  }
+  out.perception.persons = inputs.perception.persons;
+  out.perception.locate_body = [locate =
+                                    inputs.perception.locate_body](const std::string& body_id) {
+    std::optional<model::BodyPlacement> body = locate(body_id);
+    if (body) {
+      body = model::BodyPlacement{rounded(body->stamp_s), rounded(body->pose)};
+    }
+    return body;
+  };
+  return out;
+}
 
 }  // namespace
 
@@ -26,18 +71,20 @@ SessionOutput NavigationSession::set_map(const model::OccupancyGrid& map) {
 }
 
 void NavigationSession::receive_group(ReportedGroup group) {
+  group.stamp_s = rounded(group.stamp_s);
   received_groups_.push_back(std::move(group));
 }
 
 SessionOutput NavigationSession::request(const NavigationTarget& target,
-                                         const SessionInputs& inputs) {
+                                         const SessionInputs& told) {
+  const SessionInputs inputs = rounded(told);
   SessionOutput out;
   if (waiting_) {
     out.goals.push_back(
         {waiting_->id,
          {GoalState::kRejected, "preempted by a new goal before its target was perceived"}});
   }
-  waiting_ = WaitingGoal{next_goal_++, target, inputs.now_s + kTargetWait_s};
+  waiting_ = WaitingGoal{next_goal_++, rounded(target), inputs.now_s + kTargetWait_s};
   out.goals.push_back({waiting_->id, {GoalState::kPending, ""}});
   look_at_perception(inputs);
   try_waiting_goal(inputs, out);
@@ -58,11 +105,12 @@ SessionOutput NavigationSession::cancel(GoalId goal) {
   return out;
 }
 
-SessionOutput NavigationSession::control(const SessionInputs& inputs) {
+SessionOutput NavigationSession::control(const SessionInputs& told) {
   SessionOutput out;
-  if (!cycle_due(inputs.now_s)) {
+  if (!cycle_due(told.now_s)) {
     return out;
   }
+  const SessionInputs inputs = rounded(told);
   // People are followed all the time, so that a goal naming someone finds them known already;
   // those perception stopped reporting are let go.
   look_at_perception(inputs);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 #include "ari_social_sim/navigation/navigation_session.hpp"
@@ -193,6 +194,35 @@ TEST(NavigationSession, AGoalReachedEndsSucceededAndStopsTheBase) {
   EXPECT_FALSE(out.commands[0].pan_rad.has_value());
   ASSERT_TRUE(out.step.has_value());
   EXPECT_EQ(out.step->state, NavigationState::kSucceeded);
+}
+
+TEST(NavigationSession, WhatItIsToldAnUlpApartPlansAlike) {
+  // Live, ARI's heading and the people reach the node through tf's quaternions, and a goal
+  // heading of 3.1416 comes back from move_base's quaternion as 3.1416 - 2 pi.
+  const auto ulp_off = [](double value) { return std::nextafter(value, 10.0); };
+  NavigationSession batch{NavigationConfig{}}, live{NavigationConfig{}};
+  batch.set_map(test::room_map(6.0));
+  live.set_map(test::room_map(6.0));
+  batch.request(PoseTarget{test::pose(4.5, 4.5, 3.1416)}, with_p1(0.0));
+  live.request(PoseTarget{test::pose(4.5, 4.5, 3.1416 - 2.0 * M_PI)}, with_p1(0.0));
+  for (int cycle = 1; cycle <= 10; ++cycle) {
+    const double now_s = 0.1 * cycle;
+    SessionInputs told = with_p1(now_s);
+    told.now_s = ulp_off(now_s);
+    told.robot->pose = test::pose(ulp_off(1.0), 1.0, ulp_off(0.0));
+    told.perception.locate_body = [now_s, ulp_off](const std::string& body) {
+      return body == "b1" ? std::optional(model::BodyPlacement{
+                                now_s, test::pose(ulp_off(3.0), 3.0, ulp_off(M_PI))})
+                          : std::nullopt;
+    };
+    const SessionOutput a = batch.control(with_p1(now_s));
+    const SessionOutput b = live.control(told);
+    ASSERT_EQ(a.commands.size(), 1u);
+    ASSERT_EQ(b.commands.size(), 1u);
+    EXPECT_EQ(a.commands[0].linear_mps, b.commands[0].linear_mps) << "cycle " << cycle;
+    EXPECT_EQ(a.commands[0].angular_rps, b.commands[0].angular_rps) << "cycle " << cycle;
+    EXPECT_EQ(*a.commands[0].pan_rad, *b.commands[0].pan_rad) << "cycle " << cycle;
+  }
 }
 
 TEST(NavigationSession, ANewMapAbortsThePursuedGoal) {

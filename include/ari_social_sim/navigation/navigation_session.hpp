@@ -75,7 +75,9 @@ struct SessionOutput {
 /// and however often): it looks at perception (tracked persons at their bodies, the groups
 /// received since the last look: navigation::observe), starts a waiting goal whose target is now
 /// known, and runs the Navigator on the pursued goal. Perception is also looked at when a goal is
-/// requested.
+/// requested. The times, poses and headings it is told are rounded to 1e-6 (s, m, rad; headings
+/// into [-pi, pi)), so that the rounding of their way to it (tf's quaternions) cannot change a
+/// plan.
 class NavigationSession {
  public:
   /// How long (s of sim time) a goal naming someone not perceived yet waits before it is
