@@ -84,10 +84,11 @@ perception::PerceptionConfig seeded(perception::PerceptionConfig config, uint64_
   return config;
 }
 
-// dialogue_node's cast in world mode, from the scene's humans.
-std::vector<uint32_t> cast_humans(const dialogue::DialogueRunConfig& run,
-                                  const dialogue::DialogueSetup& setup,
-                                  const world::Simulation& simulation, const Scenario& scenario) {
+}  // namespace
+
+std::vector<uint32_t> dialogue_cast(const dialogue::DialogueRunConfig& run,
+                                    const dialogue::DialogueSetup& setup,
+                                    const world::Simulation& simulation, const Scenario& scenario) {
   if (!run.humans) {
     return {};
   }
@@ -97,8 +98,6 @@ std::vector<uint32_t> cast_humans(const dialogue::DialogueRunConfig& run,
   }
   return run.cast(humans, setup.config.users.roles, scenario.scene.path, "dialogue settings");
 }
-
-}  // namespace
 
 EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   EpisodeConfig config;
@@ -144,7 +143,7 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
   navigation_ = std::make_unique<InProcessNavigation>(config.navigation, map_, *simulation_);
   dialogue_run_.seed = seed;
   stage_ = std::make_unique<WorldSpeechStage>(
-      *simulation_, cast_humans(dialogue_run_, *config.dialogue, *simulation_, scenario));
+      *simulation_, dialogue_cast(dialogue_run_, *config.dialogue, *simulation_, scenario));
   dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
                                                          dialogue_run_, *stage_);
   commands_ = std::make_unique<InProcessCommands>(*simulation_, *dialogue_, *navigation_);
@@ -163,6 +162,8 @@ void Episode::step() {
   navigate();
   converse();
   runner_.update(observations_, *commands_);
+  // Those of the control cycle and those the script's goals caused (a cancel stops the base).
+  navigation_commands_ = navigation_->take_commands();
   metrics_.observe(observations_);
 }
 
@@ -196,7 +197,6 @@ void Episode::identify() {
 // As social_mpc_node's control timer, on what perception and group detection published last.
 void Episode::navigate() {
   navigation_->control();
-  navigation_commands_ = navigation_->take_commands();
   observations_.navigation = navigation_->status();
 }
 

@@ -51,6 +51,11 @@ struct EpisodeConfig {
 /// dialogue_node's parameters for a scenario: simulated humans (who wait for ARI to open the
 /// dialogue) when the script converses or waits for the dialogue's end, else ARI's voice only.
 dialogue::DialogueRunConfig dialogue_run_for(const Script& script, dialogue::DialogueRunConfig run);
+/// dialogue_node's cast in world mode: the scene's humans who play the dialogue's roles (none
+/// unless `run` has simulated humans). Throws core::ConfigError when a role has nobody.
+std::vector<uint32_t> dialogue_cast(const dialogue::DialogueRunConfig& run,
+                                    const dialogue::DialogueSetup& setup,
+                                    const world::Simulation& simulation, const Scenario& scenario);
 
 /// One run of a scenario with the suite's cores composed in one process, as fast as the machine
 /// allows (the batch tool's engine). Each step, in order: the world advances; perception
@@ -86,7 +91,8 @@ class Episode {
   /// perception_frame() is not null.
   const std::vector<perception::PerceivedGroup>& perceived_groups() const { return groups_; }
   const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
-  /// What social_mpc_node commanded in the last step.
+  /// What social_mpc_node commanded in the last step: on its control cycle, and when the script's
+  /// goals ended one (a stop).
   const std::vector<navigation::BaseCommand>& navigation_commands() const {
     return navigation_commands_;
   }
