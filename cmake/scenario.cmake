@@ -84,6 +84,13 @@ if(CATKIN_ENABLE_TESTING)
 endif()
 
 if(CATKIN_ENABLE_TESTING)
+  # Issue 14: the engine and the nodes' cores composed as the nodes compose them, step by step.
+  ari_add_gtest(test_live_batch_equivalence
+    SOURCES test/nodes/test_live_batch_equivalence.cpp
+    LIBRARIES ari_episode_bag ari_perceived_persons ari_navigation_conversions)
+  target_compile_definitions(test_live_batch_equivalence PRIVATE
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
   ari_add_gtest(test_episode_bag
     SOURCES test/tools/test_episode_bag.cpp
     LIBRARIES ari_episode_bag)
