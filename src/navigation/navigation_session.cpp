@@ -8,9 +8,20 @@
 namespace ari_social_sim::navigation {
 namespace {
 
-// A sim time may be a hair below the multiple of the control period it stands for, in doubles: a
-// cycle falls in the period it is meant for.
+// A sim time may be a hair below the multiple of a period it stands for, in doubles: a call falls
+// in the period it is meant for.
 constexpr double kPeriodSlack = 1e-6;  // of a period
+
+// True at the first call in each period of `rate_hz` counted from sim time 0, and after time went
+// back (a world reset); `last` keeps the period of the last such call.
+bool first_in_period(double now_s, double rate_hz, std::optional<int64_t>& last) {
+  const auto period = static_cast<int64_t>(std::floor(now_s * rate_hz + kPeriodSlack));
+  if (last == period) {
+    return false;
+  }
+  last = period;
+  return true;
+}
 
 // What the session is told is rounded to a microsecond, a micrometre and a microradian (headings
 // into [-pi, pi) first): far below what ARI's sensors resolve, and far above the rounding of the
@@ -107,13 +118,19 @@ SessionOutput NavigationSession::cancel(GoalId goal) {
 
 SessionOutput NavigationSession::control(const SessionInputs& told) {
   SessionOutput out;
-  if (!cycle_due(told.now_s)) {
+  const double rate_hz = config_.navigator.rate_hz;
+  const bool look = first_in_period(told.now_s, kLooksPerCycle * rate_hz, last_look_);
+  const bool cycle = first_in_period(told.now_s, rate_hz, last_cycle_);
+  if (!look && !cycle) {
     return out;
   }
   const SessionInputs inputs = rounded(told);
   // People are followed all the time, so that a goal naming someone finds them known already;
   // those perception stopped reporting are let go.
   look_at_perception(inputs);
+  if (!cycle) {
+    return out;
+  }
   try_waiting_goal(inputs, out);
   if (!pursued_ || !inputs.robot) {
     return out;
@@ -130,17 +147,6 @@ SessionOutput NavigationSession::control(const SessionInputs& told) {
         {step.command.linear_mps, step.command.angular_rps, step.command.pan_rad});
   }
   return out;
-}
-
-bool NavigationSession::cycle_due(double now_s) {
-  const auto cycle =
-      static_cast<int64_t>(std::floor(now_s * config_.navigator.rate_hz + kPeriodSlack));
-  // A period seen before (or time going back, after a world reset) is a new one.
-  if (last_cycle_ == cycle) {
-    return false;
-  }
-  last_cycle_ = cycle;
-  return true;
 }
 
 void NavigationSession::look_at_perception(const SessionInputs& inputs) {

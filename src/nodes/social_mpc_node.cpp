@@ -72,10 +72,11 @@ class SocialMpcNode {
         [this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
     move_base_.start();
     approach_.start();
-    // The session runs a cycle at the first call in each control period: two calls per period
-    // keep a timer that fires late from skipping a cycle.
-    timer_ = nh_.createTimer(ros::Duration(0.5 / config_.navigator.rate_hz),
-                             &SocialMpcNode::on_timer, this);
+    // The session looks at perception and runs its cycles at the first call in their periods:
+    // one call per look period.
+    const double looks_hz =
+        navigation::NavigationSession::kLooksPerCycle * config_.navigator.rate_hz;
+    timer_ = nh_.createTimer(ros::Duration(1.0 / looks_hz), &SocialMpcNode::on_timer, this);
     publish_status("idle");
   }
 

@@ -145,6 +145,20 @@ TEST(NavigationSession, AGoalNamingSomeoneNotPerceivedWaitsForThemThenStarts) {
   EXPECT_EQ(session.pursued_goal(), 1u);
 }
 
+TEST(NavigationSession, PerceptionIsLookedAtTwicePerControlPeriod) {
+  NavigationSession session{NavigationConfig{}};  // 10 Hz: looks at 20 Hz
+  session.set_map(test::room_map(6.0));
+  session.request(PersonTarget{"p1"}, at(0.0));
+  EXPECT_TRUE(session.control(at(0.1)).goals.empty());
+  // p1 reported only at 0.15 s, half way through a control period: no cycle, but a look.
+  SessionOutput out = session.control(with_p1(0.15));
+  EXPECT_TRUE(out.goals.empty());
+  // The cycle at 0.2 s finds p1 known (kept for the tracker's 2 s) and starts the goal.
+  out = session.control(at(0.2));
+  ASSERT_EQ(out.goals.size(), 1u);
+  EXPECT_EQ(out.goals[0].status.state, GoalState::kActive);
+}
+
 TEST(NavigationSession, AGoalWhoseTargetIsNeverPerceivedIsRejectedAfterTwoSeconds) {
   NavigationSession session{NavigationConfig{}};
   session.set_map(test::room_map(6.0));
