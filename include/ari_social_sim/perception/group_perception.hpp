@@ -23,8 +23,9 @@ struct PerceivedGroup {
 /// people are given each frame (ROS4HRI person ids, positions and body facings in one fixed
 /// frame, metres and rad), membership steadied over GroupConfig::membership_window_frames frames
 /// (MembershipFilter), group ids kept by GroupTracker while membership persists (and for
-/// GroupConfig::id_memory_frames after). The in-process engines give it the perceived bodies
-/// (group_candidates_of), group_detection_node the tracked persons' body frames from tf.
+/// GroupConfig::id_memory_frames after). group_detection_node and the in-process engines both give
+/// it the tracked persons at their bodies (group_candidates_of), placed by tf and by the
+/// perception frame.
 class GroupPerception {
  public:
   /// Throws core::ConfigError for an invalid config (GroupConfig::validate).
