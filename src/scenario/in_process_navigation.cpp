@@ -4,10 +4,7 @@
 #include "ari_social_sim/scenario/ari_observation.hpp"
 
 namespace ari_social_sim::scenario {
-namespace {
 
-// scenario_node's view of a goal through its action client (status_of there): pending or
-// pursued is active, rejected or aborted is a failure, a goal cancelled is no goal.
 NavigationStatus as_seen_by_the_script(const navigation::GoalStatus& goal) {
   switch (goal.state) {
     case navigation::GoalState::kPending:
@@ -23,8 +20,6 @@ NavigationStatus as_seen_by_the_script(const navigation::GoalStatus& goal) {
   }
   return {};
 }
-
-}  // namespace
 
 InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& config,
                                          const model::OccupancyGrid& map,

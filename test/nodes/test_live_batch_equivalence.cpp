@@ -62,23 +62,6 @@ double clock_s(double time_s) {
   return ros::Time(time_s).toSec();
 }
 
-// scenario_node's view of its navigation goal through its action client (status_of there).
-scenario::NavigationStatus as_action_client_sees(const navigation::GoalStatus& goal) {
-  switch (goal.state) {
-    case navigation::GoalState::kPending:
-    case navigation::GoalState::kActive:
-      return {scenario::NavigationState::kActive, ""};
-    case navigation::GoalState::kSucceeded:
-      return {scenario::NavigationState::kSucceeded, ""};
-    case navigation::GoalState::kRejected:
-    case navigation::GoalState::kAborted:
-      return {scenario::NavigationState::kFailed, goal.reason};
-    case navigation::GoalState::kCanceled:
-      break;
-  }
-  return {};
-}
-
 // The nodes of the suite composed without ROS transport between them.
 class LiveChain {
  public:
@@ -303,7 +286,7 @@ class LiveChain {
   void apply(const navigation::SessionOutput& out) {
     for (const navigation::GoalChange& change : out.goals) {
       if (change.goal == goal_) {
-        navigation_status_ = as_action_client_sees(change.status);
+        navigation_status_ = scenario::as_seen_by_the_script(change.status);
       }
     }
     for (const navigation::BaseCommand& command : out.commands) {

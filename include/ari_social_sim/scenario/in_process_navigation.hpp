@@ -14,6 +14,10 @@
 
 namespace ari_social_sim::scenario {
 
+/// A goal's state as the script sees it through its action client (scenario_node's status_of):
+/// waiting or pursued is active, rejected or aborted a failure with the reason, cancelled no goal.
+NavigationStatus as_seen_by_the_script(const navigation::GoalStatus& goal);
+
 /// social_mpc_node in-process (the batch tool's navigation): the same NavigationSession (goal
 /// life cycle, control timer, Navigator) on the static map, told what perception last published
 /// and the groups group detection reported, run at every world step on sim time, its commands
