@@ -50,6 +50,7 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_episode_csv.cpp
       test/scenario/test_episode_metrics.cpp
       test/scenario/test_episode_report.cpp
+      test/scenario/test_episode_config.cpp
       test/scenario/test_episode_requests.cpp
       test/scenario/test_observations.cpp
       test/scenario/test_person_identities.cpp

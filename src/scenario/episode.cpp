@@ -1,5 +1,6 @@
 #include "ari_social_sim/scenario/episode.hpp"
 
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/group_candidates.hpp"
 
@@ -111,6 +112,10 @@ EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   return config;
 }
 
+void EpisodeConfig::validate() const {
+  core::check_fields(*this, "EpisodeConfig");
+}
+
 dialogue::DialogueRunConfig dialogue_run_for(const Script& script,
                                              dialogue::DialogueRunConfig run) {
   run.mode = dialogue::DialogueMode::kWorld;
@@ -123,7 +128,7 @@ dialogue::DialogueRunConfig dialogue_run_for(const Script& script,
 Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& config)
     : scenario_(scenario),
       seed_(seed),
-      config_(config),
+      config_(core::validated(config)),
       perception_(seeded(config.perception, seed)),
       group_detection_(perception_.config().groups),
       perception_gate_(config.perception_max_rate_hz),

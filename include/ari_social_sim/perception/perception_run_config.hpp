@@ -25,6 +25,8 @@ struct PerceptionRunConfig {
   std::optional<bool> errors_enabled;
   std::optional<std::string> person_ids;
   std::string world;
+  /// The range of `max_rate`, also the batch engine's (scenario::EpisodeConfig).
+  static constexpr core::Bounds kMaxRateBounds{0.0, 1000.0, true};
   double max_rate_hz{30.0};
   double id_linger_s{1.0};
   double marker_rate_hz{10.0};
@@ -50,7 +52,7 @@ struct PerceptionRunConfig {
     v.field("world", world,
             "a world file whose walls (not furniture) block sound; empty: everything in /map does");
     v.field("max_rate", max_rate_hz, "Hz of sim time; world states closer together are skipped",
-            core::Bounds{0.0, 1000.0, true});
+            kMaxRateBounds);
     v.field("id_linger", id_linger_s, "s of sim time per-id topics outlive their id",
             core::between(0.0, 60.0));
     v.field("marker_rate", marker_rate_hz, "Hz of ~markers (wall clock)",

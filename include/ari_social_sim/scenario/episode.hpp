@@ -14,6 +14,7 @@
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
+#include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/in_process_navigation.hpp"
@@ -43,9 +44,22 @@ struct EpisodeConfig {
   std::shared_ptr<const dialogue::RobotNlu> nlu;
   dialogue::DialogueRunConfig dialogue_run;
 
+  template <class V>
+  void visit(V& v) {
+    v.section("simulation", simulation, "world_node's step and map resolution");
+    v.section("perception", perception, "hri_perception_node's config/perception.yaml");
+    v.field("perception_max_rate", perception_max_rate_hz, "hri_perception_node's ~max_rate",
+            perception::PerceptionRunConfig::kMaxRateBounds);
+    v.section("navigation", navigation, "social_mpc_node's config/social_mpc.yaml");
+    v.section("dialogue_run", dialogue_run, "dialogue_node's parameters");
+  }
+
   /// The live nodes' defaults, read from the package's config files under `config_dir`.
   /// Throws core::ConfigError naming the file and field.
   static EpisodeConfig load(const std::string& config_dir);
+  /// Throws core::ConfigError naming the first field outside what its node allows, e.g.
+  /// `EpisodeConfig: perception_max_rate: expected a number (0, 1000], got 0`.
+  void validate() const;
 };
 
 /// dialogue_node's parameters for a scenario: simulated humans (who wait for ARI to open the
