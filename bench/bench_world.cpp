@@ -60,8 +60,7 @@ class CrowdActivity {
   void step(world::Simulation& simulation) {
     for (const world::Human* human : simulation.humans()) {
       if (!human->speech().is_speaking()) {
-        simulation.say(human->id(), "STATEMENT",
-                        kSentences[rng_.uniform_index(kSentences.size())]);
+        simulation.say(human->id(), "STATEMENT", kSentences[rng_.uniform_index(kSentences.size())]);
       }
       if (human->motion_mode() == world::MotionMode::kNavigation && human->goal() &&
           (human->goal()->position - human->pose().position).norm() <

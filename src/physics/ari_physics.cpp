@@ -96,9 +96,9 @@ struct AriPhysics::Engine {
     double upper_rad;
   };
   struct Person {
-    PersonState reported;  // the 2D world's last report
+    PersonState reported;       // the 2D world's last report
     double reported_at_s{0.0};  // physics time it arrived
-    PersonState state;     // where the body is now
+    PersonState state;          // where the body is now
     std::unique_ptr<btDefaultMotionState> motion;
     std::unique_ptr<btRigidBody> body;
   };

@@ -15,10 +15,10 @@
 #include "ari_social_sim/perception/gcff.hpp"
 
 // Parameters of ARI's simulated perception (docs/perception.md). Defaults are ARI's sensors
-// (ari_robot's URDF, D6.4 §3.5) and moderate error levels; config/perception.yaml spells them out. Each
-// struct lists its fields once in `visit` (core/config_fields.hpp), which reads, checks, writes and
-// documents them. Angles are in degrees where the name says `_deg`, lengths in metres, rates are
-// probabilities per event unless the name gives a unit.
+// (ari_robot's URDF, D6.4 §3.5) and moderate error levels; config/perception.yaml spells them out.
+// Each struct lists its fields once in `visit` (core/config_fields.hpp), which reads, checks,
+// writes and documents them. Angles are in degrees where the name says `_deg`, lengths in metres,
+// rates are probabilities per event unless the name gives a unit.
 
 namespace ari_social_sim::perception {
 
