@@ -315,7 +315,8 @@ class ScriptReader {
   }
 
   world::GroupSpec read_created_group(const core::YamlMap& entry) {
-    for (const char* key : {"member_spacing", "social_distance"}) {
+    for (const char* key : {"min_ospace_radius", "member_spacing", "social_distance",
+                            "spacing_factor", "step_speed"}) {
       if (entry.has(key)) {
         entry.fail(key, "nothing: groups created during a run take the default " + std::string(key),
                    "a value");

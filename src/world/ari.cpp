@@ -8,39 +8,16 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
-#include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
 
 void AriSpec::validate() const {
-  const RequestCheck check;
-  check.agent(id, pose);
-  check.in_range("words_per_minute", words_per_minute, core::positive(), "1/min");
-  for (const auto& [field, value] :
-       {std::pair<const char*, double>{"max_linear", limits.max_linear_mps},
-        {"max_linear_accel", limits.max_linear_accel_mps2},
-        {"max_angular", limits.max_angular_rps},
-        {"max_angular_accel", limits.max_angular_accel_rps2},
-        {"head_pan_limit", limits.head_pan_limit_rad},
-        {"head_pan_max_speed", limits.head_pan_max_speed_rps},
-        {"cmd_vel_timeout", limits.cmd_vel_timeout_s}}) {
-    check.in_range(std::string("limits.") + field, value, core::positive());
-  }
-  check.in_range("limits.min_linear", limits.min_linear_mps,
-                 {-std::numeric_limits<double>::infinity(), 0.0, false});
-  // The head starts where the joint can go.
-  check.in_range("head_pan", head_pan_rad,
-                 core::between(-limits.head_pan_limit_rad, limits.head_pan_limit_rad), "rad");
-  if (!(footprint.rear_x_m < footprint.front_x_m && footprint.half_width_m > 0.0 &&
-        std::isfinite(footprint.rear_x_m) && std::isfinite(footprint.front_x_m) &&
-        std::isfinite(footprint.half_width_m))) {
-    check.fail("footprint", "finite numbers with rear_x < front_x and half_width > 0",
-               "rear_x " + core::number_text(footprint.rear_x_m) + ", front_x " +
-                   core::number_text(footprint.front_x_m) + ", half_width " +
-                   core::number_text(footprint.half_width_m));
-  }
+  core::check_fields<core::RequestError>(*this, "");
+  core::check_fields<core::RequestError>(limits, "limits");
+  core::check_fields<core::RequestError>(footprint, "footprint");
 }
 
 Ari::Ari(const AriSpec& spec, double map_resolution_m)

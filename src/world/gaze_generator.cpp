@@ -4,53 +4,23 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
-#include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 
 namespace ari_social_sim::world {
 
-void GazeModel::validate() const {
-  const RequestCheck check;
-  if (targets.empty() == !directions.has_value()) {
-    check.fail("gaze", "either targets with probabilities or directions (exactly one of them)",
-               targets.empty() ? "neither" : "both");
-  }
-  if (targets.size() > kMaxGazeTargets) {
-    check.fail("gaze.targets", "at most " + std::to_string(kMaxGazeTargets) + " targets",
-               std::to_string(targets.size()));
-  }
+double GazeModel::probability_sum() const {
   double total = 0.0;
-  for (size_t i = 0; i < targets.size(); ++i) {
-    if (targets[i].id == model::kNoObject) {
-      check.fail("gaze.targets[" + std::to_string(i) + "]", "a positive object id", "0");
-    }
-    check.in_range("gaze.probabilities[" + std::to_string(i) + "]", targets[i].probability,
-                   core::between(0.0, 1.0));
-    total += targets[i].probability;
+  for (const GazeTarget& target : targets) {
+    total += target.probability;
   }
-  if (!targets.empty() && std::abs(total - 1.0) > 1e-6) {
-    check.fail("gaze.probabilities", "numbers in [0, 1] that sum to 1 (within 1e-6)",
-               "a sum of " + core::number_text(total));
-  }
-  if (directions) {
-    const bool uniform = directions->distribution == GazeDirections::Distribution::kUniform;
-    if (uniform) {
-      check.heading("gaze.directions.low", directions->low_rad);
-      check.heading("gaze.directions.high", directions->high_rad);
-      if (!(directions->low_rad <= directions->high_rad)) {
-        check.fail("gaze.directions", "low <= high",
-                   "low " + core::number_text(directions->low_rad) + ", high " +
-                       core::number_text(directions->high_rad));
-      }
-    } else {
-      check.heading("gaze.directions.mean", directions->mean_rad);
-      check.in_range("gaze.directions.stddev", directions->stddev_rad,
-                     core::between(0.0, kMaxHeadingRad), "rad");
-    }
-  }
-  check.in_range("gaze.mean_duration", mean_duration_s, {0.0, kMaxGazeMeanDurationS, true}, "s");
+  return total;
+}
+
+void GazeModel::validate() const {
+  core::check_fields<core::RequestError>(*this, "");
 }
 
 GazeGenerator::GazeGenerator(GazeModel model, core::Rng rng)

@@ -6,43 +6,22 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/world/human.hpp"
-#include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/social_forces.hpp"
 #include "ari_social_sim/world/step_motion.hpp"
 
 namespace ari_social_sim::world {
 
+bool GroupSpec::lists_a_member_twice() const {
+  return std::set<model::ObjectId>(members.begin(), members.end()).size() != members.size();
+}
+
 void GroupSpec::validate() const {
-  const RequestCheck check;
-  if (id == model::kNoObject) {
-    check.fail("id", "a positive integer", "0");
-  }
-  const std::string group = "group " + std::to_string(id);
-  if (members.empty()) {
-    throw core::RequestError(group + " has no members");
-  }
-  if (members.size() > kMaxGroupMembers) {
-    check.fail("members", "at most " + std::to_string(kMaxGroupMembers) + " humans",
-               std::to_string(members.size()));
-  }
-  if (std::set<model::ObjectId>(members.begin(), members.end()).size() != members.size()) {
-    throw core::RequestError(group + " lists a member twice");
-  }
-  check.finite("centre.x", centre.x());
-  check.finite("centre.y", centre.y());
-  check.in_range("ospace_radius", ospace_radius_m, core::between(0.0, kMaxOspaceRadiusM),
-                 "m (0 = automatic)");
-  check.in_range("min_ospace_radius", min_ospace_radius_m, {0.0, kMaxOspaceRadiusM, true}, "m");
-  check.in_range("member_spacing", member_spacing_m, {0.0, kMaxOspaceRadiusM, true}, "m");
-  check.in_range("social_distance", social_distance_m, core::positive(), "m");
-  if (!(spacing_factor >= 1.0 && spacing_factor < 1.6)) {
-    check.fail("spacing_factor", "a finite number in [1, 1.6)", core::number_text(spacing_factor));
-  }
-  check.in_range("step_speed", step_speed_mps, core::positive(), "m/s per unit force");
+  core::check_fields<core::RequestError>(*this, "");
 }
 
 GroupNavigation::GroupNavigation(const GroupSpec& spec) : spec_(spec) {}

@@ -6,30 +6,14 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/human_navigation.hpp"
-#include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
+
 void HumanSpec::validate() const {
-  const RequestCheck check;
-  check.agent(id, pose);
-  check.in_range("age", age_years, core::between(0.0, kMaxAgeYears), "years");
-  check.in_range("motion.walking_speed", motion.walking_speed_mps, core::positive(), "m/s");
-  check.in_range("motion.max_speed", motion.max_speed_mps, core::positive(), "m/s");
-  check.in_range("motion.turn_gain", motion.turn_gain_per_s, core::positive(), "1/s");
-  check.in_range("motion.goal_distance", motion.goal_distance_m, core::positive(), "m");
-  check.in_range("motion.personal_distance", motion.personal_distance_m, core::positive(), "m");
-  check.in_range("motion.body_radius", motion.body_radius_m, core::positive(), "m");
-  check.in_range("words_per_minute", words_per_minute, core::positive(), "1/min");
-  if (goal) {
-    check.finite("goal.x", goal->position.x());
-    check.finite("goal.y", goal->position.y());
-    check.heading("goal.theta", goal->theta);
-  }
-  if (gaze) {
-    gaze->validate();
-  }
+  core::check_fields<core::RequestError>(*this, "");
 }
 
 Human::Human(const HumanSpec& spec, core::Rng gaze_rng)

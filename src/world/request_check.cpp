@@ -33,7 +33,7 @@ void RequestCheck::in_range(const std::string& field, double value, const core::
 }
 
 void RequestCheck::heading(const std::string& field, double theta_rad) const {
-  in_range(field, theta_rad, core::between(-kMaxHeadingRad, kMaxHeadingRad), "rad");
+  in_range(field, theta_rad, core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad), "rad");
 }
 
 void RequestCheck::agent(model::ObjectId id, const core::Pose2& pose) const {

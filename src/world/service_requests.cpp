@@ -1,26 +1,25 @@
 #include "ari_social_sim/world/service_requests.hpp"
 
-#include <optional>
-
 #include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
 
 namespace {
 
-// An optional text field: empty keeps `value`, anything else must be one `parse` knows.
-template <class Value>
+// An optional text field: empty keeps `value`, anything else must name one of `choices`.
+template <class Value, class Choices>
 void read_choice(const RequestCheck& check, const std::string& field, const std::string& text,
-                 std::optional<Value> (*parse)(const std::string&), const char* choices,
-                 Value& value) {
+                 const Choices& choices, Value& value) {
   if (text.empty()) {
     return;
   }
-  const std::optional<Value> parsed = parse(text);
-  if (!parsed) {
-    check.fail(field, choices, "'" + text + "'");
+  for (const auto& choice : choices) {
+    if (text == choice.name) {
+      value = choice.value;
+      return;
+    }
   }
-  value = *parsed;
+  check.fail(field, core::choice_names(choices), "'" + text + "'");
 }
 
 }  // namespace
@@ -35,10 +34,9 @@ HumanSpec SpawnHumanRequest::spec() const {
   if (age_years != 0.0) {
     spec.age_years = age_years;
   }
-  read_choice(check, "gender", gender, model::parse_gender, model::kGenderChoices, spec.gender);
+  read_choice(check, "gender", gender, model::kGenders, spec.gender);
   spec.mask = mask;
-  read_choice(check, "emotion", emotion, model::parse_emotion, model::kEmotionChoices,
-              spec.emotion);
+  read_choice(check, "emotion", emotion, model::kEmotions, spec.emotion);
   return spec;
 }
 

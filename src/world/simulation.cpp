@@ -207,7 +207,9 @@ const Human& Simulation::add_human(HumanSpec spec) {
     spec.id = next_free_id(kFirstAutomaticHumanId);
   }
   const RequestCheck check("spawn_human");
+  // The service's names for the pose (its theta is the spec's orientation).
   check.on_floor("pose", spec.pose.position, world_);
+  check.heading("pose.theta", spec.pose.theta);
   if (spec.goal) {
     check.on_floor("goal", spec.goal->position, world_);
   }
@@ -293,8 +295,8 @@ const GroupNavigation& Simulation::add_group(GroupSpec spec) {
     spec.id = groups_.empty() ? kFirstAutomaticGroupId : groups_.back()->id() + 1;
   }
   const RequestCheck check("create_group");
-  check.valid(spec);
   check.on_floor("centre", spec.centre, world_);
+  check.valid(spec);
   if (find_group(spec.id) != nullptr) {
     check.fail("id", "an id no other group uses", std::to_string(spec.id));
   }

@@ -281,9 +281,9 @@ class WorldNodeContract(unittest.TestCase):
              lambda v: self.call["centre"](group_id=1, centre=Point(v, 3.0, 0.0))),
             ("set_group_centre: centre.y",
              lambda v: self.call["centre"](group_id=1, centre=Point(3.0, v, 0.0))),
-            ("set_gaze_targets: gaze.probabilities[0]", lambda v: self.call["gaze"](
+            ("set_gaze_targets: targets[0].probability", lambda v: self.call["gaze"](
                 id=10, targets=[1], probabilities=[v], mean_duration=1.0)),
-            ("set_gaze_targets: gaze.mean_duration", lambda v: self.call["gaze"](
+            ("set_gaze_targets: mean_duration", lambda v: self.call["gaze"](
                 id=10, targets=[1], probabilities=[1.0], mean_duration=v)),
         ]
         refusals = 0

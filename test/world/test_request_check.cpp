@@ -58,7 +58,7 @@ TEST(RequestCheck, ValidPrefixesASpecsRefusal) {
   spec.id = 10;
   spec.age_years = kNan;
   EXPECT_EQ(refusal_text([&] { RequestCheck("spawn_human").valid(spec); }),
-            "spawn_human: age: expected a finite number [0, 130] years, got nan");
+            "spawn_human: age: expected a number [0, 130], got nan");
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/error.hpp"
@@ -10,8 +12,11 @@ namespace ari_social_sim::core {
 
 /// Checks a config built in code against what its visit declares (config_fields.hpp): numbers
 /// finite and within their bounds, choices among their values, required strings given, rules
-/// holding. Throws ConfigError naming the struct, the field path, the expectation and the value:
-/// `PerceptionConfig: body_errors.miss_rate: expected a number [0, 1], got 1.5`.
+/// holding. Throws Error (ConfigError, or RequestError for what clients send) naming the struct,
+/// the field path, the expectation and the value:
+/// `PerceptionConfig: body_errors.miss_rate: expected a number [0, 1], got 1.5`; without an owner
+/// the message starts at the field.
+template <class Error>
 class FieldChecker {
  public:
   FieldChecker(std::string owner, std::string path)
@@ -46,11 +51,28 @@ class FieldChecker {
     section.visit(nested);
   }
 
+  template <class S>
+  void section(const Key& key, std::optional<S>& section, const char* meaning) {
+    if (section) {
+      this->section(key, *section, meaning);
+    }
+  }
+
+  template <class S>
+  void list(const Key& key, std::vector<S>& items, const char* /*meaning*/, size_t max_items) {
+    rule(key.name, items.size() <= max_items,
+         "at most " + std::to_string(max_items) + " " + key.name, std::to_string(items.size()));
+    for (size_t i = 0; i < items.size(); ++i) {
+      FieldChecker nested(owner_, path_of(key.name + "[" + std::to_string(i) + "]"));
+      items[i].visit(nested);
+    }
+  }
+
   void rule(const std::string& name, bool holds, const std::string& expectation,
             const std::string& got) const {
     if (!holds) {
-      throw ConfigError(owner_ + ": " + path_of(name) + ": expected " + expectation + ", got " +
-                        got);
+      throw Error((owner_.empty() ? "" : owner_ + ": ") + path_of(name) + ": expected " +
+                  expectation + ", got " + got);
     }
   }
 
@@ -61,6 +83,10 @@ class FieldChecker {
     if constexpr (kIsConfigNumber<T>) {
       rule(name, within(value, bounds), type_phrase<T>() + (range.empty() ? "" : " " + range),
            number_text(static_cast<double>(value)));
+    } else if constexpr (std::is_same_v<T, Eigen::Vector2d>) {
+      rule(name, within(value, bounds),
+           "a point [x, y] of finite numbers" + (range.empty() ? "" : ", each " + range),
+           point_text(value));
     } else if constexpr (IsVector<T>::value) {
       if constexpr (kIsConfigNumber<typename T::value_type>) {
         std::string items;
@@ -71,8 +97,22 @@ class FieldChecker {
         }
         rule(name, all_within, type_phrase<T>() + (range.empty() ? "" : ", each " + range),
              "[" + items + "]");
+      } else if constexpr (std::is_same_v<typename T::value_type, Eigen::Vector2d>) {
+        std::string points;
+        bool all_within = true;
+        for (const Eigen::Vector2d& point : value) {
+          all_within = all_within && within(point, bounds);
+          points += (points.empty() ? "" : ", ") + point_text(point);
+        }
+        rule(name, all_within,
+             "a list of points of finite numbers" + (range.empty() ? "" : ", each " + range),
+             "[" + points + "]");
       }
     }
+  }
+
+  static std::string point_text(const Eigen::Vector2d& point) {
+    return "[" + number_text(point.x()) + ", " + number_text(point.y()) + "]";
   }
 
   std::string path_of(const std::string& name) const {
@@ -83,13 +123,13 @@ class FieldChecker {
   std::string path_;
 };
 
-/// Throws ConfigError unless `config` is what its visit allows; `owner` names the struct in the
-/// message. What every config's validate() calls.
-template <class Config>
+/// Throws Error unless `config` is what its visit allows; `owner` names the struct in the message
+/// (may be empty). What every config's validate() calls.
+template <class Error = ConfigError, class Config>
 void check_fields(const Config& config, const std::string& owner) {
   // visit is one template for reading and checking, so it takes the struct by non-const reference.
   Config copy = config;
-  FieldChecker checker(owner, "");
+  FieldChecker<Error> checker(owner, "");
   copy.visit(checker);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -8,8 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "ari_social_sim/core/bounds.hpp"
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/core/yaml_map.hpp"
 
 // The one way configurations are declared. A config struct lists each field once, in
 //
@@ -31,16 +32,23 @@
 //
 //   v.field(key, member, meaning[, bounds])  a value; a std::optional member may stay unset
 //   v.choice(key, member, meaning, choices)  an enum, spelled in files by the names of `choices`
-//   v.section(key, member, meaning)          a nested struct (its own visit): a nested mapping
+//   v.section(key, member, meaning)          a nested struct (its own visit): a nested mapping;
+//                                            a std::optional member is set only when given
+//   v.list(key, member, meaning, max_items)  a std::vector of structs (each its own visit): a
+//                                            list of mappings, at most max_items of them
 //   v.rule(name, holds, expectation, got)    a check across fields, listed after the fields it
 //   reads
 //
 // Field types: bool, int, unsigned, int64_t (read as int), uint64_t (read as unsigned), double,
-// std::string, std::vector of double, unsigned or std::string, std::optional of any of these, and
+// std::string, Eigen::Vector2d (a point `[x, y]`, bounds apply to each coordinate), std::vector of
+// double, unsigned, std::string or Eigen::Vector2d, std::optional of any of these, and
 // std::optional<YamlMap>: a mapping handed unread to another reader. Numbers checked in code must
 // be finite and within their bounds, as YamlMap requires of numbers read from files.
 
 namespace ari_social_sim::core {
+
+// Only named here (a mapping handed unread to another reader); config_reader.hpp reads it.
+class YamlMap;
 
 /// A field's name, and whether files must give it (`core::required("mode")`); a field that is not
 /// required keeps its default when absent.
@@ -129,10 +137,14 @@ template <class T>
 std::string type_name() {
   if constexpr (IsOptional<T>::value) {
     return type_name<typename T::value_type>();
+  } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector2d>>) {
+    return "list of points [x, y]";
   } else if constexpr (IsVector<T>::value) {
     return "list of " + type_name<typename T::value_type>() + "s";
   } else if constexpr (std::is_same_v<T, YamlMap>) {
     return "mapping";
+  } else if constexpr (std::is_same_v<T, Eigen::Vector2d>) {
+    return "point [x, y]";
   } else if constexpr (std::is_same_v<T, bool>) {
     return "bool";
   } else if constexpr (std::is_same_v<T, std::string>) {
@@ -155,15 +167,19 @@ std::string type_phrase() {
 }
 
 /// True when a number read or built for a field of type T lies within `bounds` (and, for floating
-/// point, is finite).
+/// point, is finite); for a point, when both coordinates do.
 template <class T>
-bool within(T value, const Bounds& bounds) {
-  if constexpr (std::is_floating_point_v<T>) {
-    if (!std::isfinite(value)) {
-      return false;
+bool within(const T& value, const Bounds& bounds) {
+  if constexpr (std::is_same_v<T, Eigen::Vector2d>) {
+    return within(value.x(), bounds) && within(value.y(), bounds);
+  } else {
+    if constexpr (std::is_floating_point_v<T>) {
+      if (!std::isfinite(value)) {
+        return false;
+      }
     }
+    return bounds.contains(static_cast<double>(value));
   }
-  return bounds.contains(static_cast<double>(value));
 }
 
 }  // namespace ari_social_sim::core

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
@@ -42,10 +44,30 @@ class FieldReader {
   template <class S>
   void section(const Key& key, S& section, const char* /*meaning*/) {
     if (key.required || map_.has(key.name)) {
-      const YamlMap nested = map_.map(key.name);
-      FieldReader reader(nested);
-      section.visit(reader);
-      nested.finish();
+      read_section(map_.map(key.name), section);
+    }
+  }
+
+  template <class S>
+  void section(const Key& key, std::optional<S>& section, const char* /*meaning*/) {
+    if (key.required || map_.has(key.name)) {
+      read_section(map_.map(key.name), section.emplace());
+    }
+  }
+
+  template <class S>
+  void list(const Key& key, std::vector<S>& items, const char* /*meaning*/, size_t max_items) {
+    if (!key.required && !map_.has(key.name)) {
+      return;
+    }
+    const std::vector<YamlMap> entries = map_.list(key.name);
+    if (entries.size() > max_items) {
+      map_.fail(key.name, "at most " + std::to_string(max_items) + " " + key.name,
+                std::to_string(entries.size()));
+    }
+    items.assign(entries.size(), S{});
+    for (size_t i = 0; i < entries.size(); ++i) {
+      read_section(entries[i], items[i]);
     }
   }
 
@@ -68,6 +90,13 @@ class FieldReader {
     } else {
       return map_.required<T>(key, bounds);
     }
+  }
+
+  template <class S>
+  static void read_section(const YamlMap& nested, S& section) {
+    FieldReader reader(nested);
+    section.visit(reader);
+    nested.finish();
   }
 
   const YamlMap& map_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,11 +50,24 @@ class ParameterTable {
   template <class S>
   void section(const Key& key, S& section, const char* meaning) {
     add(key, "mapping", "", "", meaning);
-    ParameterTable nested;
-    nested.prefix_ = path_of(key.name);
-    section.visit(nested);
-    rows_.insert(rows_.end(), nested.rows_.begin(), nested.rows_.end());
-    rules_.insert(rules_.end(), nested.rules_.begin(), nested.rules_.end());
+    add_nested(key.name, section);
+  }
+
+  /// An optional section: unset by default, its fields' defaults those of a default S.
+  template <class S>
+  void section(const Key& key, std::optional<S>& /*section*/, const char* meaning) {
+    add(key, "mapping", "unset", "", meaning);
+    S defaults{};
+    add_nested(key.name, defaults);
+  }
+
+  /// A list of mappings: one row for the list, then its items' fields as `key[].field`.
+  template <class S>
+  void list(const Key& key, std::vector<S>& /*items*/, const char* meaning, size_t max_items) {
+    add(key, "list of mappings", "`[]`", "at most " + std::to_string(max_items) + " items",
+        meaning);
+    S defaults{};
+    add_nested(key.name + "[]", defaults);
   }
 
   void rule(const std::string& name, bool /*holds*/, const std::string& expectation,
@@ -87,9 +101,20 @@ class ParameterTable {
     }
   }
 
+  template <class S>
+  void add_nested(const std::string& name, S& section) {
+    ParameterTable nested;
+    nested.prefix_ = path_of(name);
+    section.visit(nested);
+    rows_.insert(rows_.end(), nested.rows_.begin(), nested.rows_.end());
+    rules_.insert(rules_.end(), nested.rules_.begin(), nested.rules_.end());
+  }
+
   template <class T>
   static std::string item_text(const T& value) {
-    if constexpr (std::is_same_v<T, bool>) {
+    if constexpr (std::is_same_v<T, Eigen::Vector2d>) {
+      return "[" + number_text(value.x()) + ", " + number_text(value.y()) + "]";
+    } else if constexpr (std::is_same_v<T, bool>) {
       return value ? "true" : "false";
     } else if constexpr (std::is_same_v<T, std::string>) {
       return value.empty() ? "\"\"" : value;

@@ -1,8 +1,8 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
-#include <string>
+
+#include "ari_social_sim/core/config_fields.hpp"
 
 namespace ari_social_sim::model {
 
@@ -12,13 +12,20 @@ enum class Gender : uint8_t { kFemale = 1, kMale = 2, kNonIdentified = 3 };
 /// A person's displayed emotion: neutral, happy, angry or disturbed. Values match HumanState.msg.
 enum class Emotion : uint8_t { kNeutral = 0, kHappy = 1, kAngry = 2, kDisturbed = 3 };
 
-/// The texts parse_gender and parse_emotion take, as a refusal names them.
-constexpr char kGenderChoices[] = "female, male or non-identified";
-constexpr char kEmotionChoices[] = "neutral, happy, angry or disturbed";
+/// How scene files, scenario scripts and world_node's spawn_human spell each value.
+inline constexpr core::Choice<Gender> kGenders[] = {{Gender::kFemale, "female"},
+                                                    {Gender::kMale, "male"},
+                                                    {Gender::kNonIdentified, "non-identified"}};
+inline constexpr core::Choice<Emotion> kEmotions[] = {{Emotion::kNeutral, "neutral"},
+                                                      {Emotion::kHappy, "happy"},
+                                                      {Emotion::kAngry, "angry"},
+                                                      {Emotion::kDisturbed, "disturbed"}};
 
-std::optional<Gender> parse_gender(const std::string& text);
-std::optional<Emotion> parse_emotion(const std::string& text);
-const char* to_string(Gender gender);
-const char* to_string(Emotion emotion);
+inline const char* to_string(Gender gender) {
+  return core::choice_name(gender, kGenders);
+}
+inline const char* to_string(Emotion emotion) {
+  return core::choice_name(emotion, kEmotions);
+}
 
 }  // namespace ari_social_sim::model

@@ -1,8 +1,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <optional>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/model/ari_footprint.hpp"
 #include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/world/differential_drive.hpp"
@@ -21,10 +24,23 @@ struct AriSpec {
   model::AriLimits limits;
   model::AriFootprint footprint;
 
-  /// Throws core::RequestError naming the first invalid field, its value and the expectation: id
-  /// 0, a non-finite pose, a heading beyond +-kMaxHeadingRad, a head pan beyond the joint limit,
-  /// a non-positive speech rate, limits or footprint that are not finite and positive. Whether
-  /// the pose lies on the floor is the simulation's check (Simulation::add_ari).
+  /// ARI as a scene file's `ari` entry writes it (config_fields.hpp). Its limits and footprint
+  /// are the real robot's, not a scene's to change; validate() checks them too.
+  template <class V>
+  void visit(V& v) {
+    v.field("id", id, "ARI's object id, unique in the world", core::positive());
+    pose.visit(v);
+    v.field("head_pan", head_pan_rad, "rad, head_1_joint at the start, within its limit");
+    v.rule("head_pan", std::abs(head_pan_rad) <= limits.head_pan_limit_rad,
+           "a number in [-" + core::number_text(limits.head_pan_limit_rad) + ", " +
+               core::number_text(limits.head_pan_limit_rad) + "]",
+           core::number_text(head_pan_rad));
+    v.field("words_per_minute", words_per_minute, "speaking rate", core::positive());
+  }
+
+  /// Throws core::RequestError naming the first field outside what visit, the limits' and the
+  /// footprint's visits allow (id 0, a non-finite pose, a head pan beyond the joint limit, ...).
+  /// Whether the pose lies on the floor is the simulation's check (Simulation::add_ari).
   void validate() const;
 };
 

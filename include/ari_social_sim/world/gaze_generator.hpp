@@ -1,9 +1,13 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
+#include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/world/object.hpp"
 
@@ -13,16 +17,40 @@ namespace ari_social_sim::world {
 struct GazeTarget {
   model::ObjectId id{model::kNoObject};
   double probability{0.0};
+
+  template <class V>
+  void visit(V& v) {
+    v.field(core::required("id"), id, "the object looked at: a human or ARI", core::positive());
+    v.field(core::required("probability"), probability, "chance of choosing it at a gaze change",
+            core::between(0.0, 1.0));
+  }
 };
 
 /// A distribution of gaze directions relative to the body heading (rad), used instead of targets.
 struct GazeDirections {
   enum class Distribution { kUniform, kNormal };
+  static constexpr core::Choice<Distribution> kDistributions[] = {
+      {Distribution::kUniform, "uniform"}, {Distribution::kNormal, "normal"}};
+
   Distribution distribution{Distribution::kUniform};
   double low_rad{-0.5};    // uniform: lower bound
   double high_rad{0.5};    // uniform: upper bound
   double mean_rad{0.0};    // normal: mean
   double stddev_rad{0.3};  // normal: standard deviation
+
+  template <class V>
+  void visit(V& v) {
+    const core::Bounds heading = core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad);
+    v.choice(core::required("distribution"), distribution, "how directions are drawn",
+             kDistributions);
+    v.field("low", low_rad, "rad, uniform's lower bound", heading);
+    v.field("high", high_rad, "rad, uniform's upper bound", heading);
+    v.field("mean", mean_rad, "rad, normal's mean", heading);
+    v.field("stddev", stddev_rad, "rad, normal's standard deviation",
+            core::between(0.0, core::kMaxHeadingRad));
+    v.rule("high", low_rad <= high_rad, "a number >= low (" + core::number_text(low_rad) + ")",
+           core::number_text(high_rad));
+  }
 };
 
 /// Most targets one gaze model may list (each is drawn from at every gaze change).
@@ -39,10 +67,26 @@ struct GazeModel {
   std::optional<GazeDirections> directions;
   double mean_duration_s{3.0};
 
-  /// Throws core::RequestError naming the field unless exactly one of targets / directions is
-  /// given, there are at most kMaxGazeTargets targets, every probability is a finite number in
-  /// [0, 1] and they sum to 1 (within 1e-6), directions are finite (low <= high, stddev >= 0) and
-  /// the mean duration is a finite number in (0, kMaxGazeMeanDurationS] s.
+  template <class V>
+  void visit(V& v) {
+    v.field(core::required("mean_duration"), mean_duration_s, "s, mean dwell of one gaze",
+            {0.0, kMaxGazeMeanDurationS, true});
+    v.list("targets", targets, "objects looked at, with probabilities summing to 1",
+           kMaxGazeTargets);
+    v.section("directions", directions, "directions relative to the body, instead of targets");
+    v.rule("targets", targets.empty() == directions.has_value(),
+           "either a list of targets or directions (exactly one of them)",
+           targets.empty() ? "neither" : "both");
+    const double total = probability_sum();
+    v.rule("targets", targets.empty() || std::abs(total - 1.0) <= 1e-6,
+           "probabilities that sum to 1 (within 1e-6)", "a sum of " + core::number_text(total));
+  }
+
+  double probability_sum() const;
+
+  /// Throws core::RequestError naming the first field outside what visit allows (exactly one of
+  /// targets and directions, at most kMaxGazeTargets targets, probabilities in [0, 1] summing to
+  /// 1, low <= high, a mean duration in (0, kMaxGazeMeanDurationS] s).
   void validate() const;
 };
 

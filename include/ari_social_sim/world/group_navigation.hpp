@@ -1,8 +1,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/world/object.hpp"
 
@@ -14,6 +17,9 @@ class Human;
 constexpr size_t kMaxGroupMembers = 50;
 /// Largest o-space radius and member spacing (m) a group may be given.
 constexpr double kMaxOspaceRadiusM = 10.0;
+/// spacing_factor stays below this, under the golden ratio: in a group of five, neighbours two
+/// places apart stand 1.618 chords apart and must not repel each other.
+constexpr double kMaxSpacingFactor = 1.6;
 
 /// A conversational group's parameters (D6.4 §3.4.1).
 struct GroupSpec {
@@ -38,11 +44,46 @@ struct GroupSpec {
   /// still capped at the member's max_speed.
   double step_speed_mps{2.0};
 
-  /// Throws core::RequestError naming the first invalid field, its value and the expectation:
-  /// id 0, no members or more than kMaxGroupMembers, a member twice, a non-finite centre, a radius
-  /// or spacing outside its range (ospace_radius [0, 10] m, min_ospace_radius and member_spacing
-  /// (0, 10] m, social_distance and step_speed > 0, spacing_factor [1, 1.6)). Whether the centre
-  /// lies on the floor is the simulation's check (Simulation::add_group).
+  /// A group as a scene file's `groups` entry writes it (config_fields.hpp).
+  template <class V>
+  void visit(V& v) {
+    v.field(core::required("id"), id, "the group's id, unique among groups", core::positive());
+    v.field(core::required("members"), members, "ids of the humans in the group", core::positive());
+    v.rule("members", !members.empty(), "at least one human", "none");
+    v.rule("members", members.size() <= kMaxGroupMembers,
+           "at most " + std::to_string(kMaxGroupMembers) + " humans",
+           std::to_string(members.size()));
+    v.rule("members", !lists_a_member_twice(), "each human once", "a human listed twice");
+    v.field(core::required("centre"), centre, "m, o: where the o-space centre goes (map frame)");
+    v.field("ospace_radius", ospace_radius_m,
+            "m, s: radius of the o-space; 0 = from the member count, members member_spacing "
+            "apart",
+            core::between(0.0, kMaxOspaceRadiusM));
+    v.field("min_ospace_radius", min_ospace_radius_m, "m, least radius of an automatic o-space",
+            {0.0, kMaxOspaceRadiusM, true});
+    v.field("member_spacing", member_spacing_m,
+            "m between neighbouring members of an automatic o-space",
+            {0.0, kMaxOspaceRadiusM, true});
+    v.field("social_distance", social_distance_m,
+            "m (Delta_s): radius of a member's social space for the equality force",
+            core::positive());
+    v.field("spacing_factor", spacing_factor,
+            "members repel within spacing_factor x the chord between evenly spaced neighbours",
+            core::between(1.0, kMaxSpacingFactor));
+    v.rule("spacing_factor", spacing_factor < kMaxSpacingFactor,
+           "a number below " + core::number_text(kMaxSpacingFactor),
+           core::number_text(spacing_factor));
+    v.field("step_speed", step_speed_mps, "m/s per unit force: the group's step length eta / step",
+            core::positive());
+  }
+
+  /// True when a human appears twice in `members`.
+  bool lists_a_member_twice() const;
+
+  /// Throws core::RequestError naming the first field outside what visit allows, its value and
+  /// the expectation (id 0, no members or more than kMaxGroupMembers, a member twice, a radius or
+  /// spacing outside its range, ...). Whether the centre lies on the floor is the simulation's
+  /// check (Simulation::add_group).
   void validate() const;
 };
 

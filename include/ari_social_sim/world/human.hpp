@@ -32,6 +32,25 @@ struct HumanMotionParams {
   double personal_distance_m{0.8};
   /// m, radius of the body's collision circle.
   double body_radius_m{0.2};
+
+  template <class V>
+  void visit(V& v) {
+    v.field("walking_speed", walking_speed_mps,
+            "m/s under a unit force (the step length eta is walking_speed x step)",
+            core::positive());
+    v.field("max_speed", max_speed_mps, "m/s; longer steps are shortened to it", core::positive());
+    v.field("turn_gain", turn_gain_per_s,
+            "1/s; each step turns min(1, turn_gain x step) of the remaining turn",
+            core::positive());
+    v.field("goal_distance", goal_distance_m,
+            "m (Delta_G): within it the goal force fades and the human turns to the goal's "
+            "orientation",
+            core::positive());
+    v.field("personal_distance", personal_distance_m,
+            "m (Delta_p): others within it repel the human", core::positive());
+    v.field("body_radius", body_radius_m, "m, radius of the body's collision circle",
+            core::positive());
+  }
 };
 
 /// Everything needed to create a human. Defaults are the documented ones of docs/world.md.
@@ -50,10 +69,28 @@ struct HumanSpec {
   /// When set, the human walks there with HumanNavigation from the start.
   std::optional<core::Pose2> goal;
 
-  /// Throws core::RequestError naming the first invalid field, its value and the expectation:
-  /// id 0, a non-finite pose or goal, a heading beyond +-kMaxHeadingRad, age outside [0, 130],
-  /// a speed, distance or rate that is not a finite number > 0, an invalid gaze model. Whether the
-  /// pose and goal lie on the floor is the simulation's check (Simulation::add_human).
+  /// A human as a scene file's `humans` entry writes it (config_fields.hpp).
+  template <class V>
+  void visit(V& v) {
+    v.field(core::required("id"), id, "the human's object id, unique in the world",
+            core::positive());
+    v.field("name", name, "shown in rviz and reports");
+    v.field("role", role, "the human's part in a dialogue (users.roles of the dialogue settings)");
+    pose.visit(v);
+    v.field("age", age_years, "years", core::between(0.0, kMaxAgeYears));
+    v.choice("gender", gender, "as perception reports it", model::kGenders);
+    v.field("mask", mask, "wears a face mask");
+    v.choice("emotion", emotion, "the displayed expression", model::kEmotions);
+    v.field("words_per_minute", words_per_minute, "speaking rate", core::positive());
+    v.section("motion", motion, "social-force movement (docs/world.md)");
+    v.section("goal", goal, "a pose (position, orientation) the human walks to from the start");
+    v.section("gaze", gaze, "where the human looks: targets or directions");
+  }
+
+  /// Throws core::RequestError naming the first field outside what visit allows, its value and
+  /// the expectation (id 0, a non-finite pose, age outside [0, 130], a rate that is not > 0, an
+  /// invalid gaze model, ...). Whether the pose and goal lie on the floor is the simulation's check
+  /// (Simulation::add_human).
   void validate() const;
 };
 

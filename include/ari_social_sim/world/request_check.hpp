@@ -10,11 +10,6 @@
 
 namespace ari_social_sim::world {
 
-/// Largest heading (rad, either sign) a request may give. Box2D keeps angles as float, and an
-/// angle beyond float's range would turn every body it touches into NaN; a million radians is far
-/// beyond any heading a caller means, yet still within float's range.
-constexpr double kMaxHeadingRad = 1e6;
-
 /// Checks the numbers of one request against a running simulation before anything changes, so a
 /// refused request leaves the world as it was. Every failed check throws core::RequestError
 ///   `<request>: <field>: expected <expectation>, got <value>`,
@@ -33,7 +28,7 @@ class RequestCheck {
   /// A finite number within `bounds`; `unit` (may be empty) follows the interval in the message.
   void in_range(const std::string& field, double value, const core::Bounds& bounds,
                 const std::string& unit = "") const;
-  /// A finite heading within +-kMaxHeadingRad.
+  /// A finite heading within +-core::kMaxHeadingRad.
   void heading(const std::string& field, double theta_rad) const;
   /// An agent's identity and placement as its spec gives them, before the world is consulted: a
   /// positive `id`, a finite `pose.x` and `pose.y` and a valid `pose.theta`.

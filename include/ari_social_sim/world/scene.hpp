@@ -18,6 +18,28 @@ namespace ari_social_sim::world {
 /// Most groups one scene file may list (each needs members of its own, so at most one per human).
 constexpr size_t kMaxSceneGroups = kMaxHumans;
 
+/// A scene file's keys (config_fields.hpp), as parse_scene reads them before loading the world.
+struct SceneFile {
+  std::string world;
+  uint64_t seed{0};
+  std::optional<AriSpec> ari;
+  std::vector<HumanSpec> humans;
+  std::vector<GroupSpec> groups;
+  std::optional<core::YamlMap> script;
+
+  template <class V>
+  void visit(V& v) {
+    v.field(core::required("world"), world,
+            "the world file (walls, furniture), relative to the scene file's folder");
+    v.field(core::required("seed"), seed,
+            "seed of every random draw of the run (gaze, speech, perception errors)");
+    v.section("ari", ari, "ARI, when the scene has it");
+    v.list("humans", humans, "the people at the start", kMaxHumans);
+    v.list("groups", groups, "conversation groups of those people", kMaxSceneGroups);
+    v.field("script", script, "a scenario's script (docs/scenario.md); scene files have none");
+  }
+};
+
 /// Who is in a world at the start of a run: the world file, the seed, ARI, humans and groups.
 /// Read from scenes/*.yaml (format in docs/world.md). Scenario files (scenarios/*.yaml,
 /// docs/scenario.md) are scene files with a `script` section, which this loader leaves to the

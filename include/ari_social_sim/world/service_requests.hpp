@@ -18,9 +18,9 @@ struct SpawnHumanRequest {
   std::string role;
   core::Pose2 pose;
   double age_years{0.0};  // 0: HumanSpec's default age
-  std::string gender;     // model::kGenderChoices; empty: HumanSpec's default
+  std::string gender;     // a name of model::kGenders; empty: HumanSpec's default
   bool mask{false};
-  std::string emotion;  // model::kEmotionChoices; empty: HumanSpec's default
+  std::string emotion;  // a name of model::kEmotions; empty: HumanSpec's default
 
   /// The human asked for. Throws core::RequestError for a gender or emotion text it does not
   /// know, e.g. `spawn_human: gender: expected female, male or non-identified, got 'robot'`.

@@ -11,6 +11,7 @@
 #include "ari_social_sim/physics/octomap_mapper.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
 #include "ari_social_sim/scenario/scenario_run_config.hpp"
+#include "ari_social_sim/world/scene.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
 
 namespace ari_social_sim::tools {
@@ -101,10 +102,18 @@ std::string parameters_page() {
                  "dialogue_corpus's `--config` (docs/dialogue.md). File paths are relative to "
                  "the settings file.",
                  file_keys<dialogue::DialogueConfig>()) +
-         section("### Worlds, scenes and scenarios",
-                 "World files (worlds/), scene files (scenes/) and scenario files (scenarios/) "
-                 "describe what is simulated rather than how: their formats, with every key and "
-                 "limit, are in docs/world.md and docs/scenario.md.",
+         section("### Scene files (scenes/*.yaml)",
+                 "world_node's `~scene`, and the first part of every scenario file: who is in "
+                 "the world at the start (docs/world.md). `humans[].age` is the `age` of each "
+                 "entry of `humans`; a pose is `position` and `orientation`. The same limits "
+                 "hold for what clients send world_node's services (spawn_human, create_group, "
+                 "set_gaze_targets).",
+                 file_keys<world::SceneFile>()) +
+         section("### World and scenario files",
+                 "World files (worlds/: walls and furniture) and scenario scripts (the `script` "
+                 "of scenarios/*.yaml: states, conditions and actions) describe what is "
+                 "simulated rather than how; their formats, with every key and limit, are in "
+                 "docs/world.md and docs/scenario.md.",
                  "");
 }
 
