@@ -11,7 +11,8 @@ namespace ari_social_sim::core {
 /// Checks a config built in code against what its visit declares (config_fields.hpp): numbers
 /// finite and within their bounds, choices among their values, required strings given, rules
 /// holding. Throws ConfigError naming the struct, the field path, the expectation and the value:
-/// `PerceptionConfig: body_errors.miss_rate: expected a number [0, 1], got 1.5`.
+/// `PerceptionConfig: body_errors.miss_rate: expected a number [0, 1], got 1.5`; without an owner
+/// the message starts at the field.
 class FieldChecker {
  public:
   FieldChecker(std::string owner, std::string path)
@@ -49,8 +50,8 @@ class FieldChecker {
   void rule(const std::string& name, bool holds, const std::string& expectation,
             const std::string& got) const {
     if (!holds) {
-      throw ConfigError(owner_ + ": " + path_of(name) + ": expected " + expectation + ", got " +
-                        got);
+      throw ConfigError((owner_.empty() ? "" : owner_ + ": ") + path_of(name) + ": expected " +
+                        expectation + ", got " + got);
     }
   }
 
@@ -84,7 +85,7 @@ class FieldChecker {
 };
 
 /// Throws ConfigError unless `config` is what its visit allows; `owner` names the struct in the
-/// message. What every config's validate() calls.
+/// message (may be empty). What every config's validate() calls.
 template <class Config>
 void check_fields(const Config& config, const std::string& owner) {
   // visit is one template for reading and checking, so it takes the struct by non-const reference.
