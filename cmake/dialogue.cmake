@@ -100,10 +100,11 @@ add_executable(dialogue_node
   src/nodes/dialogue/live_dialogue_node.cpp
   src/nodes/dialogue/request_checks.cpp
   src/nodes/dialogue/rl_env_services.cpp
-  src/nodes/dialogue/world_stage.cpp
-  src/nodes/ros_params.cpp)
+  src/nodes/dialogue/sim_say_client.cpp)
 target_include_directories(dialogue_node PRIVATE src/nodes)
-target_link_libraries(dialogue_node ari_dialogue_conversions)
+# The world stage (mode 1) is scenario::WorldSpeechStage, fed /sim/world_state as world snapshots.
+target_link_libraries(dialogue_node
+  ari_dialogue_conversions ari_world_conversions ari_world_speech_stage)
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/dialogue_world.test DEPENDENCIES dialogue_node world_node)

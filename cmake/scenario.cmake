@@ -1,5 +1,11 @@
 # scenario/: scenario files (a scene plus a script), the state machine that plays them, and
 # scenario_node, which plays them through the suite's public services and actions.
+
+# scenario::WorldSpeechStage, the world stage of dialogue_node and of the engine: a library of its
+# own so that dialogue_node links neither perception nor navigation.
+add_library(ari_world_speech_stage src/scenario/world_speech_stage.cpp)
+target_link_libraries(ari_world_speech_stage PUBLIC ari_dialogue ari_world)
+
 add_library(ari_scenario
   src/scenario/agent_ref.cpp
   src/scenario/ari_observation.cpp
@@ -19,9 +25,9 @@ add_library(ari_scenario
   src/scenario/scenario_run_config.cpp
   src/scenario/script.cpp
   src/scenario/script_runner.cpp
-  src/scenario/transcript.cpp
-  src/scenario/world_speech_stage.cpp)
-target_link_libraries(ari_scenario PUBLIC ari_world ari_perception ari_dialogue ari_navigation)
+  src/scenario/transcript.cpp)
+target_link_libraries(ari_scenario
+  PUBLIC ari_world ari_perception ari_dialogue ari_navigation ari_world_speech_stage)
 
 add_library(ari_scenario_conversions src/nodes/conversions/scenario_status.cpp)
 target_link_libraries(ari_scenario_conversions PUBLIC ari_scenario ari_world_conversions)

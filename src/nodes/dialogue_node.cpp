@@ -16,10 +16,12 @@
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
+#include "ari_social_sim/scenario/world_speech_stage.hpp"
+#include "conversions/world_state.hpp"
 #include "dialogue/asr_stage.hpp"
 #include "dialogue/live_dialogue_node.hpp"
 #include "dialogue/rl_env_services.hpp"
-#include "dialogue/world_stage.hpp"
+#include "dialogue/sim_say_client.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -116,12 +118,17 @@ int main(int argc, char** argv) {
     if (!run.humans) {
       ROS_INFO("dialogue_node: no simulated humans (~humans false): /tts voices ARI only");
     }
+    scenario::WorldSpeechStage stage(cast.robot_id, cast.human_ids, nodes::SimSayClient(nh));
     std::unique_ptr<nodes::LiveDialogueNode> node;
-    nodes::WorldStage stage(nh, cast.robot_id, cast.human_ids, [&node] {
-      if (node) {
-        node->tick();
-      }
-    });
+    // Subscribed before the node is built, so that no state is missed meanwhile. Every state
+    // counts: a word lasts 8 steps at 150 wpm and 0.05 s, an act at least that.
+    const ros::Subscriber states = nh.subscribe<WorldState>(
+        "/sim/world_state", 100, [&stage, &node](const WorldState::ConstPtr& state) {
+          stage.follow(nodes::from_msg(*state));
+          if (node) {
+            node->tick();
+          }
+        });
     node = std::make_unique<nodes::LiveDialogueNode>(nh, *setup, nlu, run, stage);
     ros::spin();
     return 0;

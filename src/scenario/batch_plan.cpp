@@ -4,16 +4,19 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <utility>
 
+#include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/config_reader.hpp"
+#include "ari_social_sim/core/config_writer.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
 
-constexpr uint64_t kSeedLimit = 2147483648ull;  // scene seeds are integers below 2^31
-
-bool parse_positive(const std::string& text, unsigned& out) {
+// 1 to 6 decimal digits: the most a shard's K or N is spelled with.
+bool parse_digits(const std::string& text, unsigned& out) {
   if (text.empty() || text.size() > 6) {
     return false;
   }
@@ -25,7 +28,7 @@ bool parse_positive(const std::string& text, unsigned& out) {
     value = value * 10 + static_cast<unsigned>(c - '0');
   }
   out = value;
-  return value > 0;
+  return true;
 }
 
 // `field: `, or nothing for an empty field (a program that names itself).
@@ -33,14 +36,51 @@ std::string prefix(const std::string& field) {
   return field.empty() ? "" : field + ": ";
 }
 
-// A YAML single-quoted scalar: any text, a quote written twice.
-std::string yaml_quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    out += c == '\'' ? std::string("''") : std::string(1, c);
+// run_episodes' option for each key of BatchPlan::visit.
+constexpr std::pair<const char*, const char*> kOptionOfKey[] = {
+    {"first_seed", "--seed"}, {"episodes", "--episodes"}, {"shard", "--shard"}};
+
+std::string option_of(const std::string& key) {
+  for (const auto& [file_key, option] : kOptionOfKey) {
+    if (key == file_key) {
+      return option;
+    }
   }
-  return out + "'";
+  return key;
 }
+
+// Hands BatchPlan's fields and rules to `checker` under run_episodes' option names, so that
+// validate(field) names what the user typed.
+template <class Checker>
+class ByOption {
+ public:
+  explicit ByOption(Checker& checker) : checker_(checker) {}
+
+  template <class T>
+  void field(core::Key key, T& value, const char* meaning, const core::Bounds& bounds = {}) {
+    key.name = option_of(key.name);
+    checker_.field(key, value, meaning, bounds);
+  }
+
+  void rule(const std::string& name, bool holds, const std::string& expectation,
+            const std::string& got) const {
+    checker_.rule(option_of(name), holds, expectation, got);
+  }
+
+ private:
+  Checker& checker_;
+};
+
+// A BatchPlan as check_fields walks it for validate(field).
+struct PlanByOption {
+  BatchPlan plan;
+
+  template <class V>
+  void visit(V& v) {
+    ByOption<V> by_option(v);
+    plan.visit(by_option);
+  }
+};
 
 }  // namespace
 
@@ -52,61 +92,54 @@ std::vector<uint64_t> BatchPlan::episode_indices() const {
   return indices;
 }
 
+std::string BatchPlan::seed_range() {
+  return "[" + std::to_string(static_cast<uint64_t>(kSeedBounds.min)) + ", " +
+         std::to_string(static_cast<uint64_t>(kSeedBounds.max)) + "]";
+}
+
+std::string BatchPlan::shard_text() const {
+  return std::to_string(shard_index) + "/" + std::to_string(shard_count);
+}
+
+bool BatchPlan::set_shard(const std::string& k_of_n) {
+  const size_t slash = k_of_n.find('/');
+  unsigned k = 0, n = 0;
+  if (slash == std::string::npos || !parse_digits(k_of_n.substr(0, slash), k) ||
+      !parse_digits(k_of_n.substr(slash + 1), n)) {
+    return false;
+  }
+  shard_index = k;
+  shard_count = n;
+  return true;
+}
+
 void BatchPlan::validate(const std::string& field) const {
-  if (episodes == 0) {
-    throw core::ConfigError(prefix(field) + "--episodes: expected at least 1, got 0");
-  }
-  if (shard_index == 0 || shard_index > shard_count) {
-    throw core::ConfigError(prefix(field) + "--shard: expected K/N with 1 <= K <= N, got " +
-                            std::to_string(shard_index) + "/" + std::to_string(shard_count));
-  }
-  if (first_seed + episodes > kSeedLimit) {
-    throw core::ConfigError(prefix(field) + "--seed: expected seeds " + std::to_string(first_seed) +
-                            ".." + std::to_string(first_seed + episodes - 1) +
-                            " below 2^31 (scene seeds), got a last seed beyond it");
-  }
+  core::check_fields(PlanByOption{*this}, field);
 }
 
 void parse_shard(const std::string& text, const std::string& field, BatchPlan& plan) {
-  const size_t slash = text.find('/');
-  unsigned k = 0, n = 0;
-  if (slash == std::string::npos || !parse_positive(text.substr(0, slash), k) ||
-      !parse_positive(text.substr(slash + 1), n) || k > n) {
-    throw core::ConfigError(prefix(field) + "--shard: expected K/N with 1 <= K <= N, got '" + text +
-                            "'");
+  BatchPlan shard;  // the defaults' count and seeds hold, so only the shard can be refused
+  if (!shard.set_shard(text)) {
+    throw core::ConfigError(prefix(field) + "--shard: expected " + BatchPlan::kShardExpectation +
+                            ", got '" + text + "'");
   }
-  plan.shard_index = k;
-  plan.shard_count = n;
+  shard.validate(field);
+  plan.shard_index = shard.shard_index;
+  plan.shard_count = shard.shard_count;
+}
+
+void BatchSettings::validate() const {
+  core::check_fields(*this, "BatchSettings");
 }
 
 std::string BatchSettings::to_yaml() const {
   return "# run_episodes: the settings the rows of the CSV beside this file were made with;\n"
-         "# --resume adds rows only with the same ones (docs/scenario.md, section 6).\n"
-         "scenario: " +
-         yaml_quoted(scenario) + "\nscenario_file: " + yaml_quoted(scenario_file) +
-         "\nscenario_digest: " + yaml_quoted(scenario_digest) +
-         "\nconfig_digest: " + yaml_quoted(config_digest) +
-         "\nfirst_seed: " + std::to_string(plan.first_seed) +
-         "\nepisodes: " + std::to_string(plan.episodes) + "\nshard: '" +
-         std::to_string(plan.shard_index) + "/" + std::to_string(plan.shard_count) +
-         "'\nbags: " + (bags ? "true" : "false") + "\n";
+         "# --resume adds rows only with the same ones (docs/scenario.md, section 6).\n" +
+         core::write_fields(*this) + "\n";
 }
 
 BatchSettings BatchSettings::parse(const std::string& text, const std::string& source) {
-  const core::YamlMap map = core::YamlMap::parse(text, source);
-  BatchSettings settings;
-  settings.scenario = map.required<std::string>("scenario");
-  settings.scenario_file = map.required<std::string>("scenario_file");
-  settings.scenario_digest = map.required<std::string>("scenario_digest");
-  settings.config_digest = map.required<std::string>("config_digest");
-  settings.plan.first_seed = static_cast<uint64_t>(
-      map.required<int>("first_seed", core::between(0.0, static_cast<double>(kSeedLimit - 1))));
-  settings.plan.episodes =
-      static_cast<uint64_t>(map.required<int>("episodes", core::Bounds{1.0, 2147483647.0}));
-  parse_shard(map.required<std::string>("shard"), source + ": shard", settings.plan);
-  settings.bags = map.required<bool>("bags");
-  map.finish();
-  return settings;
+  return core::read_fields<BatchSettings>(core::YamlMap::parse(text, source));
 }
 
 std::vector<std::string> BatchSettings::differences(const BatchSettings& now) const {
@@ -126,11 +159,8 @@ std::vector<std::string> BatchSettings::differences(const BatchSettings& now) co
     lines.push_back("--seed: first seed " + std::to_string(plan.first_seed) + " there, " +
                     std::to_string(now.plan.first_seed) + " now");
   }
-  if (plan.shard_index != now.plan.shard_index || plan.shard_count != now.plan.shard_count) {
-    lines.push_back("--shard: " + std::to_string(plan.shard_index) + "/" +
-                    std::to_string(plan.shard_count) + " there, " +
-                    std::to_string(now.plan.shard_index) + "/" +
-                    std::to_string(now.plan.shard_count) + " now");
+  if (plan.shard_text() != now.plan.shard_text()) {
+    lines.push_back("--shard: " + plan.shard_text() + " there, " + now.plan.shard_text() + " now");
   }
   if (bags != now.bags) {
     lines.push_back(std::string("--no-bags: ") + (bags ? "bags" : "no bags") + " there, " +

@@ -100,6 +100,22 @@ std::vector<uint32_t> dialogue_cast(const dialogue::DialogueRunConfig& run,
   return run.cast(humans, setup.config.users.roles, scenario.scene.path, "dialogue settings");
 }
 
+std::unique_ptr<WorldSpeechStage> in_process_speech_stage(world::Simulation& simulation,
+                                                          std::vector<uint32_t> human_ids) {
+  // ARI is part of the scene the simulation was built from: it never comes or goes later.
+  const uint32_t robot_id = simulation.ari() != nullptr ? simulation.ari()->id() : 0;
+  return std::make_unique<WorldSpeechStage>(
+      robot_id, std::move(human_ids),
+      [&simulation](uint32_t speaker_id, const std::string& act, const std::string& content) {
+        try {
+          simulation.say(speaker_id, act, content);
+        } catch (const core::RequestError&) {
+          return false;  // as /sim/say refusing
+        }
+        return true;
+      });
+}
+
 EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   EpisodeConfig config;
   config.perception = perception::PerceptionConfig::load_file(config_dir + "/perception.yaml");
@@ -147,7 +163,7 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
   // social_mpc_node plans on the same /map.
   navigation_ = std::make_unique<InProcessNavigation>(config.navigation, map_, *simulation_);
   dialogue_run_.seed = seed;
-  stage_ = std::make_unique<WorldSpeechStage>(
+  stage_ = in_process_speech_stage(
       *simulation_, dialogue_cast(dialogue_run_, *config.dialogue, *simulation_, scenario));
   dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
                                                          dialogue_run_, *stage_);

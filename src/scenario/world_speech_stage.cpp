@@ -2,8 +2,6 @@
 
 #include <optional>
 
-#include "ari_social_sim/core/error.hpp"
-
 namespace ari_social_sim::scenario {
 namespace {
 
@@ -13,12 +11,8 @@ dialogue::SpeakerState speaker_state(const world::SpeechSnapshot& speech) {
 
 }  // namespace
 
-WorldSpeechStage::WorldSpeechStage(world::Simulation& simulation, std::vector<uint32_t> human_ids)
-    : PlaybackStage(std::move(human_ids)), simulation_(simulation) {}
-
-uint32_t WorldSpeechStage::robot_id() const {
-  return simulation_.ari() != nullptr ? simulation_.ari()->id() : 0;
-}
+WorldSpeechStage::WorldSpeechStage(uint32_t robot_id, std::vector<uint32_t> human_ids, Voice voice)
+    : PlaybackStage(std::move(human_ids)), robot_id_(robot_id), voice_(std::move(voice)) {}
 
 void WorldSpeechStage::follow(const world::WorldSnapshot& snapshot) {
   std::optional<dialogue::SpeakerState> robot, human;
@@ -35,12 +29,7 @@ void WorldSpeechStage::follow(const world::WorldSnapshot& snapshot) {
 
 bool WorldSpeechStage::play(uint32_t speaker_id, const std::string& act,
                             const std::string& content) {
-  try {
-    simulation_.say(speaker_id, act, content);
-  } catch (const core::RequestError&) {
-    return false;  // as /sim/say refusing
-  }
-  return true;
+  return voice_(speaker_id, act, content);
 }
 
 }  // namespace ari_social_sim::scenario

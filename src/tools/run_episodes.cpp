@@ -42,10 +42,13 @@ namespace {
 using namespace ari_social_sim;
 namespace fs = std::filesystem;
 
-// The documented ranges (README, docs/scenario.md): a million episodes take a day or more at the
-// fastest scenario's 600 per minute, and a terabyte of bags; seeds are scene seeds, below 2^31.
-constexpr core::IntegerOption kEpisodes{"--episodes", 1, 1000000};
-constexpr core::IntegerOption kSeed{"--seed", 0, 2147483647};
+// The ranges the settings files hold too (scenario::BatchPlan::visit).
+constexpr core::IntegerOption kEpisodes{
+    "--episodes", static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.min),
+    static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.max)};
+constexpr core::IntegerOption kSeed{"--seed",
+                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.min),
+                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.max)};
 
 // Set by the SIGINT/SIGTERM handler, read between steps: a signal handler may do nothing but set
 // a flag of this type, hence the one global of the program.

@@ -125,6 +125,18 @@ TEST(ConfigFields, CheckingACodeBuiltConfigNamesTheStructAndTheField) {
   EXPECT_EQ(check_error(recipe), "Recipe: name: expected a value (the field is required), got ''");
 }
 
+TEST(ConfigFields, WithoutAnOwnerTheMessageStartsAtTheField) {
+  Recipe recipe;
+  recipe.name = "bread";
+  recipe.oven.minutes = 0;
+  try {
+    check_fields(recipe, "");
+    FAIL() << "accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "oven.minutes: expected an integer > 0, got 0");
+  }
+}
+
 TEST(ConfigFields, WrittenYamlReadsBackToTheSameValues) {
   Recipe recipe;
   recipe.name = "bread";

@@ -17,9 +17,9 @@
 //   MeasuredAri measures it (tf, odometry, joint states) and the persons at their body frames
 //   from tf; its commands as cmd_vel and head messages (to_msgs);
 // - world_node applies them (the twist, head_pan_target) before its next step;
-// - dialogue_node: the dialogue core on the engine's world stage (dialogue_node's own world stage
-//   is still written twice: docs/ARCHITECTURE.md, "Known gaps"), what it publishes of utterances
-//   and outcomes as the messages scenario_node reads;
+// - dialogue_node: the dialogue core on its world stage (scenario::WorldSpeechStage, voicing as
+//   world_node's /sim/say does) following the world state as received (from_msg), what it
+//   publishes of utterances and outcomes as the messages scenario_node reads;
 // - the script (scenario::ScriptRunner) on what the step produced, its commands through the
 //   world's request API (what world_node's services call, with the fields the services carry)
 //   and the navigation session (what social_mpc_node's action callbacks call, a move_base goal as
@@ -88,7 +88,7 @@ class LiveChain {
     session_.set_map(from_msg(map_msg));
     tf_.setTransform(map_to_odom(0.0), "world_node", /*is_static=*/true);
     dialogue_run_.seed = seed;
-    stage_ = std::make_unique<scenario::WorldSpeechStage>(
+    stage_ = scenario::in_process_speech_stage(
         *world_, scenario::dialogue_cast(dialogue_run_, *config.dialogue, *world_, scenario));
     dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
                                                            dialogue_run_, *stage_);
@@ -303,7 +303,7 @@ class LiveChain {
   // dialogue_node in world mode, and what scenario_node hears of it on /sim/dialogue/utterances
   // and /sim/dialogue/outcome.
   void converse() {
-    stage_->follow(snapshot_);
+    stage_->follow(from_msg(state_msg_));
     dialogue_->tick();
     const dialogue::SpokenDialogueEvents events = dialogue_->take_events();
     for (const dialogue::UtteranceEvent& event : events.utterances) {

@@ -42,13 +42,34 @@ TEST(BatchPlan, SeedsMustStayBelowTwoToThe31) {
       [] {
         (BatchPlan{10, 2147483640u, 1, 1}).validate("command line");
       },
-      "command line: --seed", {"2147483640..2147483649", "below 2^31"});
+      "command line: --seed", {"2147483640..2147483649", "[0, 2147483647]"});
   world::test::expect_config_error(
       [] {
         (BatchPlan{0, 1, 1, 1}).validate("command line");
       },
-      "command line: --episodes", {"at least 1"});
+      "command line: --episodes", {"[1, 1e+06]", "got 0"});
   EXPECT_NO_THROW((BatchPlan{8, 2147483640u, 1, 1}).validate("command line"));
+}
+
+// The message validate gives, without a field as run_episodes calls it, or "" when it accepts.
+std::string refusal(const BatchPlan& plan) {
+  try {
+    plan.validate("");
+  } catch (const core::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BatchPlan, ValidateNamesTheOptionsAndStartsThereWithoutAField) {
+  // run_episodes prints it after its own name.
+  EXPECT_EQ(refusal(BatchPlan{4, 1, 5, 4}), "--shard: expected K/N with 1 <= K <= N, got '5/4'");
+  // core::number_text shows six significant digits.
+  EXPECT_EQ(refusal(BatchPlan{4, 2147483648u, 1, 1}),
+            "--seed: expected a non-negative integer [0, 2.14748e+09], got 2.14748e+09");
+  EXPECT_EQ(refusal(BatchPlan{2000000, 1, 1, 1}),
+            "--episodes: expected a non-negative integer [1, 1e+06], got 2e+06");
+  EXPECT_EQ(refusal(BatchPlan{4, 1, 4, 4}), "");
 }
 
 BatchSettings example_settings() {
@@ -77,6 +98,67 @@ TEST(BatchSettings, RoundTripsThroughTheirYaml) {
   EXPECT_TRUE(settings.differences(read).empty());
 }
 
+TEST(BatchSettings, RoundTripAnyTextAndKeepTheComment) {
+  BatchSettings settings = example_settings();
+  for (const char* text : {"null", "~", "true", "0012", "1e3", "a: b # c", "'quoted'", "\"double\"",
+                           " spaced ", "- item", "[x]", "{y}", "&anchor", "*alias", "!tag",
+                           "%percent", "line\nbreak", "ünïcode", ""}) {
+    settings.scenario_file = text;
+    const std::string yaml = settings.to_yaml();
+    EXPECT_EQ(BatchSettings::parse(yaml, "x.settings.yaml").scenario_file, text) << yaml;
+  }
+  const std::string yaml = example_settings().to_yaml();
+  EXPECT_EQ(yaml.rfind("# run_episodes: the settings the rows of the CSV beside this file", 0), 0u)
+      << yaml;
+  EXPECT_NE(yaml.find("\nshard: 2/4\n"), std::string::npos) << yaml;
+}
+
+// What run_episodes wrote before BatchSettings had a visit: every string single-quoted, the shard
+// as text.
+TEST(BatchSettings, FilesOfEarlierVersionsStillRead) {
+  const BatchSettings read = BatchSettings::parse(
+      "# run_episodes: the settings the rows of the CSV beside this file were made with;\n"
+      "# --resume adds rows only with the same ones (docs/scenario.md, section 6).\n"
+      "scenario: 'join_group'\n"
+      "scenario_file: '/data/it''s here/join_group.yaml'\n"
+      "scenario_digest: '00000000000000ab'\n"
+      "config_digest: '1234567890abcdef'\n"
+      "first_seed: 7\n"
+      "episodes: 40\n"
+      "shard: '2/4'\n"
+      "bags: false\n",
+      "old.settings.yaml");
+  const BatchSettings expected = example_settings();
+  EXPECT_EQ(read.scenario_file, expected.scenario_file);
+  EXPECT_EQ(read.plan.episodes, expected.plan.episodes);
+  EXPECT_TRUE(expected.differences(read).empty());
+}
+
+std::string refusal(const BatchSettings& settings) {
+  try {
+    settings.validate();
+  } catch (const core::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BatchSettings, ValuesBuiltInCodeAreCheckedByTheFileRules) {
+  EXPECT_EQ(refusal(example_settings()), "");
+  BatchSettings shard = example_settings();
+  shard.plan.shard_index = 5;
+  EXPECT_EQ(refusal(shard), "BatchSettings: shard: expected K/N with 1 <= K <= N, got '5/4'");
+  BatchSettings seeds = example_settings();
+  seeds.plan.first_seed = 2147483620u;
+  EXPECT_EQ(refusal(seeds),
+            "BatchSettings: first_seed: expected the episodes' seeds in [0, 2147483647] (scene "
+            "seeds), got seeds 2147483620..2147483659");
+  BatchSettings digest = example_settings();
+  digest.config_digest.clear();
+  EXPECT_EQ(refusal(digest),
+            "BatchSettings: config_digest: expected a value (the field is required), got ''");
+}
+
 TEST(BatchSettings, NameEveryDifferenceButTheEpisodeCount) {
   const BatchSettings there = example_settings();
   BatchSettings now = there;
@@ -103,6 +185,16 @@ TEST(BatchSettings, BadFilesAreNamed) {
   text.replace(text.find("first_seed: 7"), 13, "first_seed: -7");
   world::test::expect_config_error([&] { BatchSettings::parse(text, "s.yaml"); },
                                    "s.yaml: first_seed", {"-7"});
+  for (const char* bad : {"'5/4'", "'0/4'", "3", "'3/'", "'1/4/2'", "[1, 4]"}) {
+    std::string shard = example_settings().to_yaml();
+    shard.replace(shard.find("shard: 2/4"), 10, std::string("shard: ") + bad);
+    world::test::expect_config_error([&] { BatchSettings::parse(shard, "s.yaml"); },
+                                     "s.yaml: shard", {});
+  }
+  std::string seeds = example_settings().to_yaml();
+  seeds.replace(seeds.find("first_seed: 7"), 13, "first_seed: 2147483620");
+  world::test::expect_config_error([&] { BatchSettings::parse(seeds, "s.yaml"); },
+                                   "s.yaml: first_seed", {"2147483620..2147483659"});
 }
 
 TEST(DigestFiles, ChangesWithAnyByteAndTheFileBoundary) {

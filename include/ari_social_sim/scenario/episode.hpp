@@ -70,6 +70,12 @@ dialogue::DialogueRunConfig dialogue_run_for(const Script& script, dialogue::Dia
 std::vector<uint32_t> dialogue_cast(const dialogue::DialogueRunConfig& run,
                                     const dialogue::DialogueSetup& setup,
                                     const world::Simulation& simulation, const Scenario& scenario);
+/// dialogue_node's world stage on the world core in-process: ARI is the simulation's ARI (id 0
+/// without one), and each utterance is voiced with Simulation::say, as world_node's /sim/say
+/// voices it, a refused request (core::RequestError) counting as refused. Holds a reference to
+/// `simulation`, which must outlive the stage.
+std::unique_ptr<WorldSpeechStage> in_process_speech_stage(world::Simulation& simulation,
+                                                          std::vector<uint32_t> human_ids);
 
 /// One run of a scenario with the suite's cores composed in one process, as fast as the machine
 /// allows (the batch tool's engine). Each step, in order: the world advances; perception
