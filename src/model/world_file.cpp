@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <set>
-#include <sstream>
 
+#include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/config_reader.hpp"
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::model {
 namespace {
@@ -18,7 +18,8 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-// True if the vertices form a strictly convex polygon in either winding.
+}  // namespace
+
 bool is_convex(const std::vector<Eigen::Vector2d>& points) {
   int sign = 0;
   const size_t n = points.size();
@@ -38,112 +39,93 @@ bool is_convex(const std::vector<Eigen::Vector2d>& points) {
   return true;
 }
 
-// Coordinates and extents in a world file: finite (YamlMap's numbers always are) and bounded.
-const core::Bounds kCoordinate = core::between(-kMaxWorldCoordinateM, kMaxWorldCoordinateM);
-const core::Bounds kExtent{0.0, kMaxWorldSideM, true};
-
-StaticObject parse_object(const core::YamlMap& entry) {
-  StaticObject object;
-  const std::string type = entry.required<std::string>("type");
-  object.id = entry.optional<unsigned>("id", kNoObject, core::positive());
-  object.name = entry.optional<std::string>("name", "");
-  if (type == "wall") {
-    object.type = ShapeType::kWall;
-    const Eigen::Vector2d from = entry.required<Eigen::Vector2d>("from", kCoordinate);
-    const Eigen::Vector2d to = entry.required<Eigen::Vector2d>("to", kCoordinate);
-    const double thickness = entry.optional<double>("thickness", 0.1, kExtent);
-    const double length = (to - from).norm();
-    if (length < 1e-6) {
-      entry.fail("to", "a point different from 'from' (a wall needs a length)",
-                 "the same point as 'from'");
+std::string WorldObjectEntry::shape_mismatch() const {
+  const bool wall = type == ShapeType::kWall, box = type == ShapeType::kBox,
+             circle = type == ShapeType::kCircle, polygon = type == ShapeType::kPolygon;
+  // Each key: given or not, whether this type has it, whether it must then be given.
+  const struct {
+    const char* key;
+    bool given, belongs, required;
+  } keys[] = {{"from", from.has_value(), wall, true},
+              {"to", to.has_value(), wall, true},
+              {"thickness", thickness.has_value(), wall, false},
+              {"position", position.has_value(), box || circle, true},
+              {"orientation", orientation.has_value(), box, false},
+              {"size", size.has_value(), box, true},
+              {"radius", radius.has_value(), circle, true},
+              {"points", points.has_value(), polygon, true}};
+  const std::string shape = std::string("a ") + core::choice_name(type, kShapeTypes);
+  for (const auto& k : keys) {
+    if (k.belongs && k.required && !k.given) {
+      return shape + " without " + k.key;
     }
-    object.pose.position = 0.5 * (from + to);
-    object.pose.theta = std::atan2(to.y() - from.y(), to.x() - from.x());
-    object.size = {length, thickness};
-  } else if (type == "box") {
-    object.type = ShapeType::kBox;
-    object.pose.position = entry.required<Eigen::Vector2d>("position", kCoordinate);
-    object.pose.theta = entry.optional<double>("orientation", 0.0);
-    object.size = entry.required<Eigen::Vector2d>("size", kExtent);
-  } else if (type == "circle") {
-    object.type = ShapeType::kCircle;
-    object.pose.position = entry.required<Eigen::Vector2d>("position", kCoordinate);
-    object.radius_m = entry.required<double>("radius", kExtent);
-  } else if (type == "polygon") {
-    object.type = ShapeType::kPolygon;
-    object.points = entry.required<std::vector<Eigen::Vector2d>>("points", kCoordinate);
-    // Box2D takes convex polygons of at most 8 vertices; larger furniture is several objects.
-    if (object.points.size() < 3 || object.points.size() > 8 || !is_convex(object.points)) {
-      entry.fail(
-          "points", "3 to 8 vertices of a convex polygon",
-          std::to_string(object.points.size()) + " vertices" +
-              (object.points.size() >= 3 && object.points.size() <= 8 ? ", not convex" : ""));
+    if (!k.belongs && k.given) {
+      return shape + " with " + k.key;
     }
-    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    for (const Eigen::Vector2d& p : object.points) {
-      centroid += p;
-    }
-    object.pose.position = centroid / static_cast<double>(object.points.size());
-  } else {
-    entry.fail("type", "one of wall, box, circle, polygon", "'" + type + "'");
   }
-  object.height_m = entry.optional<double>(
-      "height", type == "wall" ? kDefaultWallHeightM : kDefaultFurnitureHeightM, kExtent);
-  entry.finish();
+  return "";
+}
+
+StaticObject WorldObjectEntry::object() const {
+  StaticObject object;
+  object.id = id;
+  object.name = name;
+  object.type = type;
+  switch (type) {
+    case ShapeType::kWall: {
+      const double length = (*to - *from).norm();
+      object.pose.position = 0.5 * (*from + *to);
+      object.pose.theta = std::atan2(to->y() - from->y(), to->x() - from->x());
+      object.size = {length, thickness.value_or(kDefaultWallThicknessM)};
+      break;
+    }
+    case ShapeType::kBox:
+      object.pose.position = *position;
+      object.pose.theta = orientation.value_or(0.0);
+      object.size = *size;
+      break;
+    case ShapeType::kCircle:
+      object.pose.position = *position;
+      object.radius_m = *radius;
+      break;
+    case ShapeType::kPolygon: {
+      object.points = *points;
+      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+      for (const Eigen::Vector2d& p : object.points) {
+        centroid += p;
+      }
+      object.pose.position = centroid / static_cast<double>(object.points.size());
+      break;
+    }
+  }
+  object.height_m =
+      height.value_or(type == ShapeType::kWall ? kDefaultWallHeightM : kDefaultFurnitureHeightM);
   return object;
 }
 
-}  // namespace
-
-bool WorldDescription::contains(const Eigen::Vector2d& point) const {
-  return point.x() >= origin.x() && point.y() >= origin.y() && point.x() <= origin.x() + size.x() &&
-         point.y() <= origin.y() + size.y();
-}
-
-void WorldDescription::validate() const {
-  const std::string where = "world '" + name + "': ";
-  for (int axis = 0; axis < 2; ++axis) {
-    const char* suffix = axis == 0 ? ".x" : ".y";
-    if (!(std::abs(origin[axis]) <= kMaxWorldCoordinateM)) {
-      throw core::ConfigError(where + "origin" + suffix + ": expected a finite number in [" +
-                              core::number_text(-kMaxWorldCoordinateM) + ", " +
-                              core::number_text(kMaxWorldCoordinateM) + "] m, got " +
-                              core::number_text(origin[axis]));
-    }
-    if (!(size[axis] > 0.0 && size[axis] <= kMaxWorldSideM)) {
-      throw core::ConfigError(where + "size" + suffix + ": expected a finite number in (0, " +
-                              core::number_text(kMaxWorldSideM) + "] m, got " +
-                              core::number_text(size[axis]));
-    }
-  }
-  if (objects.size() > kMaxWorldObjects) {
-    throw core::ConfigError(where + "objects: expected at most " +
-                            std::to_string(kMaxWorldObjects) + " objects, got " +
-                            std::to_string(objects.size()));
-  }
-}
-
-WorldDescription parse_world(const core::YamlMap& root) {
-  WorldDescription world;
-  world.name = root.required<std::string>("name");
-  world.origin = root.optional<Eigen::Vector2d>("origin", Eigen::Vector2d::Zero(), kCoordinate);
-  world.size = root.required<Eigen::Vector2d>("size", {0.0, kMaxWorldSideM, true});
+std::optional<ObjectId> WorldFile::repeated_id() const {
   std::set<ObjectId> ids;
-  ObjectId next_id = kFirstAutomaticStaticId;
-  const std::vector<core::YamlMap> entries = root.list("objects");
-  if (entries.size() > kMaxWorldObjects) {
-    root.fail("objects", "at most " + std::to_string(kMaxWorldObjects) + " objects",
-              std::to_string(entries.size()));
-  }
-  for (const core::YamlMap& entry : entries) {
-    StaticObject object = parse_object(entry);
-    if (object.id != kNoObject && !ids.insert(object.id).second) {
-      entry.fail("id", "an id used by no other object", std::to_string(object.id));
+  for (const WorldObjectEntry& entry : objects) {
+    if (entry.id != kNoObject && !ids.insert(entry.id).second) {
+      return entry.id;
     }
-    world.objects.push_back(std::move(object));
+  }
+  return std::nullopt;
+}
+
+WorldDescription WorldFile::description() const {
+  WorldDescription world;
+  world.name = name;
+  world.origin = origin;
+  world.size = size;
+  std::set<ObjectId> ids;
+  for (const WorldObjectEntry& entry : objects) {
+    world.objects.push_back(entry.object());
+    ids.insert(entry.id);
   }
   // Automatic ids skip the ones given explicitly, so adding an id to one object never renumbers
   // the others.
+  ObjectId next_id = kFirstAutomaticStaticId;
   for (StaticObject& object : world.objects) {
     if (object.id == kNoObject) {
       while (ids.count(next_id) > 0) {
@@ -153,8 +135,30 @@ WorldDescription parse_world(const core::YamlMap& root) {
       ids.insert(next_id);
     }
   }
-  root.finish();
   return world;
+}
+
+bool WorldDescription::contains(const Eigen::Vector2d& point) const {
+  return point.x() >= origin.x() && point.y() >= origin.y() && point.x() <= origin.x() + size.x() &&
+         point.y() <= origin.y() + size.y();
+}
+
+void WorldDescription::validate() const {
+  // The file's bounds, without the objects (built in code, they are StaticObjects).
+  WorldFile extent;
+  extent.name = name;
+  extent.origin = origin;
+  extent.size = size;
+  core::check_fields(extent, "world '" + name + "'");
+  if (objects.size() > kMaxWorldObjects) {
+    throw core::ConfigError("world '" + name + "': objects: expected at most " +
+                            std::to_string(kMaxWorldObjects) + " objects, got " +
+                            std::to_string(objects.size()));
+  }
+}
+
+WorldDescription parse_world(const core::YamlMap& root) {
+  return core::read_fields<WorldFile>(root).description();
 }
 
 WorldDescription load_world_file(const std::string& path) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -61,12 +62,18 @@ TEST(WorldFile, NonPositiveHeightNamesTheField) {
 
 TEST(WorldFile, UnknownTypeNamesTheEntry) {
   expect_rejected(std::string(kHeader) + "  - {type: sofa, position: [1, 1]}\n",
-                  {"objects[0].type", "wall, box, circle, polygon", "sofa"});
+                  {"objects[0].type", "wall, box, circle or polygon", "sofa"});
 }
 
-TEST(WorldFile, MissingFieldNamesTheField) {
+TEST(WorldFile, MissingKeyAndKeyOfAnotherShapeAreNamed) {
   expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1]}\n",
-                  {"objects[0].radius", "required"});
+                  {"objects[0].type", "the keys of its type", "got a circle without radius"});
+  expect_rejected(std::string(kHeader) +
+                      "  - {type: circle, position: [1, 1], radius: 0.5, "
+                      "from: [0, 0]}\n",
+                  {"objects[0].type", "got a circle with from"});
+  expect_rejected(std::string(kHeader) + "  - {type: wall, from: [1, 1], to: [1, 1]}\n",
+                  {"objects[0].to", "a wall needs a length"});
 }
 
 TEST(WorldFile, WrongTypeNamesFieldAndValue) {
@@ -93,7 +100,7 @@ TEST(WorldFile, NonConvexPolygonAndDuplicateIdsAreRejected) {
   expect_rejected(std::string(kHeader) +
                       "  - {type: circle, id: 3, position: [1, 1], radius: 1}\n"
                       "  - {type: circle, id: 3, position: [3, 3], radius: 1}\n",
-                  {"objects[1].id", "3"});
+                  {": objects", "ids used by one object each", "id 3 twice"});
 }
 
 TEST(WorldFile, WorldsBeyondTheDocumentedMaximaAreRefused) {
@@ -111,6 +118,20 @@ TEST(WorldFile, WorldsBeyondTheDocumentedMaximaAreRefused) {
     many += "  - {type: circle, position: [1, 1], radius: 0.1}\n";
   }
   expect_rejected(many, {": objects", "at most 2000 objects", "2001"});
+}
+
+TEST(WorldFile, ADescriptionBuiltInCodeIsCheckedAgainstTheFilesBounds) {
+  WorldDescription world;
+  world.name = "built";
+  world.size = {300.0, 5.0};
+  world::test::expect_config_error([&] { world.validate(); }, "world 'built': size",
+                                   {"each (0, 200]", "got [300, 5]"});
+  world.size = {5.0, 5.0};
+  world.origin = {0.0, std::nan("")};
+  world::test::expect_config_error([&] { world.validate(); }, "world 'built': origin",
+                                   {"[-1000, 1000]", "got [0, nan]"});
+  world.origin = {0.0, 0.0};
+  EXPECT_NO_THROW(world.validate());
 }
 
 TEST(WorldFile, DirectoriesAndOversizedFilesAreRefusedBeforeReading) {

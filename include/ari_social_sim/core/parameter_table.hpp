@@ -64,8 +64,8 @@ class ParameterTable {
   /// A list of mappings: one row for the list, then its items' fields as `key[].field`.
   template <class S>
   void list(const Key& key, std::vector<S>& /*items*/, const char* meaning, size_t max_items) {
-    add(key, "list of mappings", "`[]`", "at most " + std::to_string(max_items) + " items",
-        meaning);
+    add(key, "list of mappings", key.required ? "required" : "`[]`",
+        "at most " + std::to_string(max_items) + " items", meaning);
     S defaults{};
     add_nested(key.name + "[]", defaults);
   }

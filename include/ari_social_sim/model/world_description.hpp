@@ -36,6 +36,8 @@ constexpr size_t kMaxWorldObjects = 2000;
 
 /// Heights of objects whose world file gives none (m): a room's walls, and a table or chair.
 constexpr double kDefaultWallHeightM = 2.5;
+/// Thickness of a wall whose world file gives none (m).
+constexpr double kDefaultWallThicknessM = 0.1;
 constexpr double kDefaultFurnitureHeightM = 0.75;
 
 /// The static part of a world: a rectangle of floor and what stands on it. Shared by the 2D world,

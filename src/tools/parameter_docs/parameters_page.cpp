@@ -3,6 +3,7 @@
 #include "ari_social_sim/core/parameter_table.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
+#include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
@@ -109,11 +110,16 @@ std::string parameters_page() {
                  "hold for what clients send world_node's services (spawn_human, create_group, "
                  "set_gaze_targets).",
                  file_keys<world::SceneFile>()) +
-         section("### World and scenario files",
-                 "World files (worlds/: walls and furniture) and scenario scripts (the `script` "
-                 "of scenarios/*.yaml: states, conditions and actions) describe what is "
-                 "simulated rather than how; their formats, with every key and limit, are in "
-                 "docs/world.md and docs/scenario.md.",
+         section("### World files (worlds/*.yaml)",
+                 "The floor, walls and furniture (docs/world.md): a scene's `world`, "
+                 "ari_physics_node's `~world`, hri_perception_node's `~world`. Each object's type "
+                 "decides which of `from`, `to`, `thickness`, `position`, `orientation`, `size`, "
+                 "`radius` and `points` it has (docs/world.md, section 2.1).",
+                 file_keys<model::WorldFile>()) +
+         section("### Scenario scripts",
+                 "The `script` of scenarios/*.yaml (states, conditions and actions) is a small "
+                 "language rather than a set of parameters; docs/scenario.md lists its keys and "
+                 "limits.",
                  "");
 }
 
