@@ -148,6 +148,7 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
       perception_(seeded(config.perception, seed)),
       group_detection_(perception_.config().groups),
       perception_gate_(config.perception_max_rate_hz),
+      group_timer_(config.group_detection_rate_hz),
       dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
       runner_(scenario, seed, config.dialogue.get()) {
   if (!config.dialogue || !config.nlu) {
@@ -188,25 +189,39 @@ void Episode::step() {
   metrics_.observe(observations_);
 }
 
-// As hri_perception_node: the world states its ~max_rate gate (RateGate) takes; then as
-// group_detection_node on the persons hri_perception_node tracked in that frame, each at their
-// body (group_candidates_of; the live node runs on its ~rate timer, 20 Hz, which takes every frame
-// at the world's 0.05 s step); what social_mpc_node receives of both.
+// As hri_perception_node: the world states its ~max_rate gate (RateGate) takes; group
+// detection; and what scenario_node makes of both.
 void Episode::perceive() {
   perceived_ = nullptr;
-  if (!perception_gate_.take(observations_.world.time_s)) {
+  const double now_s = observations_.world.time_s;
+  if (perception_gate_.take(now_s)) {
+    perceived_ = &perception_.update(observations_.world);
+    latest_frame_ = perceived_;
+    navigation_->perceive(*perceived_);
+  }
+  detect_groups(now_s);
+  if (perceived_ != nullptr) {
+    identify();
+  }
+  if (perceived_ != nullptr || groups_detected_) {
+    observations_.perceived_groups.clear();
+    for (const perception::PerceivedGroup& group : groups_) {
+      observations_.perceived_groups.push_back(
+          perceived_group(group.group_id, group.members, identities_));
+    }
+  }
+}
+
+// As group_detection_node on its ~rate timer: GCFF on the persons hri_perception_node tracked in
+// its latest frame, each at their body (group_candidates_of); and social_mpc_node receiving the
+// groups.
+void Episode::detect_groups(double now_s) {
+  groups_detected_ = group_timer_.due(now_s) && latest_frame_ != nullptr;
+  if (!groups_detected_) {
     return;
   }
-  perceived_ = &perception_.update(observations_.world);
-  group_detection_.update(perception::group_candidates_of(*perceived_), groups_);
-  navigation_->perceive(*perceived_);
-  navigation_->receive_groups(groups_, perceived_->time_s);
-  identify();
-  observations_.perceived_groups.clear();
-  for (const perception::PerceivedGroup& group : groups_) {
-    observations_.perceived_groups.push_back(
-        perceived_group(group.group_id, group.members, identities_));
-  }
+  group_detection_.update(perception::group_candidates_of(*latest_frame_), groups_);
+  navigation_->receive_groups(groups_, now_s);
 }
 
 // As scenario_node: who each person perception tracks is, from where their body stands.

@@ -80,7 +80,9 @@ void EpisodeBag::record_step(const scenario::Episode& episode) {
   record_world(episode);
   if (const perception::PerceptionFrame* frame = episode.perception_frame()) {
     record_perception(*frame, episode.perception_config());
-    record_groups(episode.perceived_groups(), frame->time_s);
+  }
+  if (episode.groups_detected()) {
+    record_groups(episode.perceived_groups(), now_s);
   }
   record_navigation(episode);
   // What dialogue_node publishes.

@@ -10,9 +10,9 @@
 // - hri_perception_node: the world state as received (from_msg), its ~max_rate gate (RateGate),
 //   PerceptionPipeline, the frame's ROS4HRI tf frames into a tf buffer, /humans/persons/tracked
 //   and each person's body_id;
-// - group_detection_node (its 20 Hz timer takes every 0.05 s step): the tracked persons at their
-//   body_<id> frames from tf (body_placement, group_candidates_of), GroupPerception, the groups
-//   as /humans/interactions/groups messages;
+// - group_detection_node (its 20 Hz timer on /clock, which core::SimTimer runs as roscpp does):
+//   the tracked persons at their body_<id> frames from tf (body_placement, group_candidates_of),
+//   GroupPerception, the groups as /humans/interactions/groups messages;
 // - social_mpc_node: the groups received, then its timer: NavigationSession::control with ARI as
 //   MeasuredAri measures it (tf, odometry, joint states) and the persons at their body frames
 //   from tf; its commands as cmd_vel and head messages (to_msgs);
@@ -41,6 +41,7 @@
 #include "../../src/nodes/hri_ids.hpp"
 #include "../../src/nodes/measured_ari.hpp"
 #include "../../src/nodes/perceived_persons.hpp"
+#include "ari_social_sim/core/sim_timer.hpp"
 #include "ari_social_sim/navigation/navigation_session.hpp"
 #include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/group_candidates.hpp"
@@ -71,6 +72,7 @@ class LiveChain {
         config_(config),
         perception_(seeded(config.perception, seed)),
         perception_gate_(config.perception_max_rate_hz),
+        group_timer_(config.group_detection_rate_hz),
         group_detection_(perception_.config().groups),
         measured_(input_counters_),
         session_(config.navigation),
@@ -245,12 +247,14 @@ class LiveChain {
             [this](const std::string& body_id) { return body_placement(tf_, kMapFrame, body_id); }};
   }
 
-  // group_detection_node's timer, then social_mpc_node's /humans/interactions/groups.
+  // group_detection_node's timer (roscpp's, on /clock: core::SimTimer), then social_mpc_node's
+  // /humans/interactions/groups.
   void detect_groups() {
-    if (!has_tracked_list_) {
+    const double now_s = clock_s(snapshot_.time_s);
+    groups_detected_ = group_timer_.due(now_s) && has_tracked_list_;
+    if (!groups_detected_) {
       return;
     }
-    const double now_s = clock_s(snapshot_.time_s);
     const model::TrackedPersons persons{tracked_, [&](const std::string& body_id) {
                                           return fresh_body_placement(tf_, kMapFrame, body_id,
                                                                       now_s);
@@ -325,6 +329,8 @@ class LiveChain {
     observations.navigation = navigation_status_;
     if (frame_ != nullptr) {
       identities_.update(observations.world, scenario::sightings_of(*frame_));
+    }
+    if (frame_ != nullptr || groups_detected_) {
       perceived_groups_.clear();
       for (const perception::PerceivedGroup& group : groups_) {
         perceived_groups_.push_back(
@@ -348,6 +354,8 @@ class LiveChain {
   perception::PerceptionPipeline perception_;
   perception::RateGate perception_gate_;
   const perception::PerceptionFrame* frame_{nullptr};
+  core::SimTimer group_timer_;
+  bool groups_detected_{false};
   bool has_tracked_list_{false};
   std::vector<model::TrackedPerson> tracked_;
   perception::GroupPerception group_detection_;
@@ -364,7 +372,7 @@ class LiveChain {
   std::vector<dialogue::Perception> heard_;  // since the script last ran
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::PersonIdentities identities_;
-  std::vector<scenario::PerceivedGroup> perceived_groups_;  // of the last frame
+  std::vector<scenario::PerceivedGroup> perceived_groups_;  // as last identified
   scenario::ScriptRunner runner_;
   Commands commands_;
 };
@@ -464,6 +472,7 @@ void compare_commands(const std::vector<navigation::BaseCommand>& engine,
 struct Run {
   std::string scenario;
   uint64_t seed;
+  double step_s{0.05};  // world_node's ~step
 };
 
 class LiveBatchEquivalence : public ::testing::TestWithParam<Run> {};
@@ -472,8 +481,10 @@ TEST_P(LiveBatchEquivalence, SameWorldsFramesAndCommandsAtEveryStep) {
   const scenario::Scenario scenario =
       scenario::load_scenario_file(kSource + "/scenarios/" + GetParam().scenario + ".yaml");
   const uint64_t seed = GetParam().seed;
-  scenario::Episode engine(scenario, seed, episode_config());
-  LiveChain live(scenario, seed, episode_config());
+  scenario::EpisodeConfig config = episode_config();
+  config.simulation.step_s = GetParam().step_s;
+  scenario::Episode engine(scenario, seed, config);
+  LiveChain live(scenario, seed, config);
   Deviations most;
   int steps = 0, frames = 0, commands = 0;
   while (!engine.finished() || !live.finished()) {
@@ -509,9 +520,14 @@ TEST_P(LiveBatchEquivalence, SameWorldsFramesAndCommandsAtEveryStep) {
 INSTANTIATE_TEST_SUITE_P(ShippedScenarios, LiveBatchEquivalence,
                          ::testing::Values(Run{"group_discussion", 1}, Run{"join_group", 1},
                                            Run{"join_group", 7}, Run{"corridor", 1},
-                                           Run{"waiting_room", 1}),
+                                           Run{"waiting_room", 1},
+                                           // Perception (30 Hz) and group detection (20 Hz)
+                                           // then run on different steps.
+                                           Run{"join_group", 1, 0.02}),
                          [](const ::testing::TestParamInfo<Run>& info) {
-                           return info.param.scenario + "_seed" + std::to_string(info.param.seed);
+                           const int step_ms = static_cast<int>(info.param.step_s * 1000 + 0.5);
+                           return info.param.scenario + "_seed" + std::to_string(info.param.seed) +
+                                  "_step" + std::to_string(step_ms) + "ms";
                          });
 
 }  // namespace

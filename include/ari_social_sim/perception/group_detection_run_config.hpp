@@ -10,6 +10,9 @@ namespace ari_social_sim::perception {
 /// How group_detection_node runs: its private parameters (~config, ~reference_frame, ~rate),
 /// listed once in visit (core/config_fields.hpp; docs/parameters.md is generated from it).
 struct GroupDetectionRunConfig {
+  /// Detections per second of sim time a node may be asked for (the engine's too).
+  static constexpr core::Bounds kRateBounds{0.0, 1000.0, true};
+
   std::string config;
   std::string reference_frame{"map"};
   double rate_hz{20.0};
@@ -31,7 +34,7 @@ struct GroupDetectionRunConfig {
             "detections per second of sim time on the latest tracked persons; 20 is the "
             "perception's frame rate at the world's default step, which "
             "membership_window_frames counts in",
-            core::Bounds{0.0, 1000.0, true});
+            kRateBounds);
   }
 
   /// Throws core::ConfigError naming the field outside what visit allows.

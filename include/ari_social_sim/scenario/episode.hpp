@@ -5,12 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/core/sim_timer.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/perception/group_detection_run_config.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
@@ -34,7 +36,8 @@ struct EpisodeConfig {
   /// hri_perception_node's config/perception.yaml (group_detection_node reads its `groups:`);
   /// its seed is replaced by the episode's.
   perception::PerceptionConfig perception;
-  double perception_max_rate_hz{30.0};  // hri_perception_node's ~max_rate
+  double perception_max_rate_hz{30.0};   // hri_perception_node's ~max_rate
+  double group_detection_rate_hz{20.0};  // group_detection_node's ~rate
   /// social_mpc_node's parameters (config/social_mpc.yaml).
   navigation::NavigationConfig navigation;
   /// dialogue_node's settings (config/dialogue/simulation.yaml) and parameters in world mode;
@@ -50,6 +53,8 @@ struct EpisodeConfig {
     v.section("perception", perception, "hri_perception_node's config/perception.yaml");
     v.field("perception_max_rate", perception_max_rate_hz, "hri_perception_node's ~max_rate",
             perception::PerceptionRunConfig::kMaxRateBounds);
+    v.field("group_detection_rate", group_detection_rate_hz, "group_detection_node's ~rate",
+            perception::GroupDetectionRunConfig::kRateBounds);
     v.section("navigation", navigation, "social_mpc_node's config/social_mpc.yaml");
     v.section("dialogue_run", dialogue_run, "dialogue_node's parameters");
   }
@@ -107,8 +112,10 @@ class Episode {
   uint64_t seed() const { return seed_; }
   /// What perception reported in the last step; null when it skipped the step (its ~max_rate).
   const perception::PerceptionFrame* perception_frame() const { return perceived_; }
-  /// What group_detection_node reported on that frame (map frame); meaningful only when
-  /// perception_frame() is not null.
+  /// True when group detection ran in the last step (group_detection_node's ~rate timer, on the
+  /// latest perception frame).
+  bool groups_detected() const { return groups_detected_; }
+  /// What group_detection_node reported last (map frame).
   const std::vector<perception::PerceivedGroup>& perceived_groups() const { return groups_; }
   const perception::PerceptionConfig& perception_config() const { return perception_.config(); }
   /// What social_mpc_node commanded in the last step: on its control cycle, and when the script's
@@ -125,6 +132,7 @@ class Episode {
   class InProcessCommands;
 
   void perceive();
+  void detect_groups(double now_s);
   void identify();
   void navigate();
   void converse();
@@ -137,7 +145,11 @@ class Episode {
   perception::PerceptionPipeline perception_;
   perception::GroupPerception group_detection_;
   perception::RateGate perception_gate_;
+  core::SimTimer group_timer_;
   const perception::PerceptionFrame* perceived_{nullptr};
+  // The last frame perception reported (the pipeline keeps it), which group detection runs on.
+  const perception::PerceptionFrame* latest_frame_{nullptr};
+  bool groups_detected_{false};
   std::vector<perception::PerceivedGroup> groups_;
   PersonIdentities identities_;
   std::unique_ptr<InProcessNavigation> navigation_;
