@@ -16,6 +16,7 @@ add_library(ari_scenario
   src/scenario/episode_metrics.cpp
   src/scenario/in_process_navigation.cpp
   src/scenario/episode_report.cpp
+  src/scenario/group_memory.cpp
   src/scenario/progress_bar.cpp
   src/scenario/observations.cpp
   src/scenario/person_identities.cpp
@@ -59,6 +60,7 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_episode_config.cpp
       test/scenario/test_episode_requests.cpp
       test/scenario/test_observations.cpp
+      test/scenario/test_group_memory.cpp
       test/scenario/test_person_identities.cpp
       test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp

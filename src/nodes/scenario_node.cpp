@@ -40,6 +40,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
 #include "ari_social_sim/scenario/episode_report.hpp"
+#include "ari_social_sim/scenario/group_memory.hpp"
 #include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/scenario/run_watchdog.hpp"
 #include "ari_social_sim/scenario/scenario_run_config.hpp"
@@ -306,7 +307,8 @@ class ScenarioNode {
                 config.seed >= 0 ? static_cast<uint64_t>(config.seed) : scenario_.scene.seed,
                 dialogue_.get()),
         watchdog_(config.wall_time_limit_for(scenario_.script.time_limit_s), config.world_timeout_s,
-                  ros::WallTime::now().toSec()) {
+                  ros::WallTime::now().toSec()),
+        groups_(config.group_timeout_s) {
     status_pub_ = nh_.advertise<ScenarioStatus>("/scenario/status", 1, /*latch=*/true);
   }
 
@@ -418,15 +420,7 @@ class ScenarioNode {
       observations.person_ids = identities_.person_ids();
       log_new_matches(observations.person_ids);
     }
-    for (auto group = groups_.begin(); group != groups_.end();) {
-      if (observations.world.time_s - group->second.stamp_s > config_.group_timeout_s) {
-        group = groups_.erase(group);
-      } else {
-        observations.perceived_groups.push_back(
-            scenario::perceived_group(group->first, group->second.members, identities_));
-        ++group;
-      }
-    }
+    observations.perceived_groups = groups_.believed_at(observations.world.time_s, identities_);
     observations.heard = std::move(heard_);
     heard_.clear();
     observations.dialogue_end = dialogue_end_;
@@ -442,7 +436,7 @@ class ScenarioNode {
   }
 
   void on_group(const Group& msg) {
-    groups_[msg.group_id] = {msg.header.stamp.toSec(), msg.members};
+    groups_.report(msg.group_id, msg.header.stamp.toSec(), msg.members);
   }
 
   // Where perception's tracked persons are now: at their body, else at their person frame.
@@ -504,11 +498,6 @@ class ScenarioNode {
     }
   }
 
-  struct PerceivedGroupEntry {
-    double stamp_s{0.0};
-    std::vector<std::string> members;  // person ids
-  };
-
   scenario::ScenarioRunConfig config_;
   scenario::Scenario scenario_;
   std::unique_ptr<dialogue::DialogueSetup> dialogue_;
@@ -517,7 +506,7 @@ class ScenarioNode {
   std::vector<dialogue::Perception> heard_;  // since the last world state
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::MetricsRecorder metrics_;
-  std::map<std::string, PerceivedGroupEntry> groups_;  // by group id
+  scenario::GroupMemory groups_;
   scenario::PersonIdentities identities_;
   std::map<model::ObjectId, std::string> logged_person_ids_;  // the matches last logged
   ros::NodeHandle nh_;

@@ -149,6 +149,7 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
       group_detection_(perception_.config().groups),
       perception_gate_(config.perception_max_rate_hz),
       group_timer_(config.group_detection_rate_hz),
+      believed_groups_(config.group_timeout_s),
       dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
       runner_(scenario, seed, config.dialogue.get()) {
   if (!config.dialogue || !config.nlu) {
@@ -190,7 +191,8 @@ void Episode::step() {
 }
 
 // As hri_perception_node: the world states its ~max_rate gate (RateGate) takes; group
-// detection; and what scenario_node makes of both.
+// detection; and what scenario_node makes of both: who the persons are, and the groups reported
+// within its ~group_timeout.
 void Episode::perceive() {
   perceived_ = nullptr;
   const double now_s = observations_.world.time_s;
@@ -203,13 +205,7 @@ void Episode::perceive() {
   if (perceived_ != nullptr) {
     identify();
   }
-  if (perceived_ != nullptr || groups_detected_) {
-    observations_.perceived_groups.clear();
-    for (const perception::PerceivedGroup& group : groups_) {
-      observations_.perceived_groups.push_back(
-          perceived_group(group.group_id, group.members, identities_));
-    }
-  }
+  observations_.perceived_groups = believed_groups_.believed_at(now_s, identities_);
 }
 
 // As group_detection_node on its ~rate timer: GCFF on the persons hri_perception_node tracked in
@@ -222,6 +218,9 @@ void Episode::detect_groups(double now_s) {
   }
   group_detection_.update(perception::group_candidates_of(*latest_frame_), groups_);
   navigation_->receive_groups(groups_, now_s);
+  for (const perception::PerceivedGroup& group : groups_) {
+    believed_groups_.report(group.group_id, now_s, group.members);
+  }
 }
 
 // As scenario_node: who each person perception tracks is, from where their body stands.

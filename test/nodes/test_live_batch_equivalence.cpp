@@ -46,6 +46,7 @@
 #include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/group_candidates.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
+#include "ari_social_sim/scenario/group_memory.hpp"
 #include "ari_social_sim/world/service_requests.hpp"
 
 namespace ari_social_sim::nodes {
@@ -77,6 +78,7 @@ class LiveChain {
         measured_(input_counters_),
         session_(config.navigation),
         dialogue_run_(scenario::dialogue_run_for(scenario.script, config.dialogue_run)),
+        believed_groups_(config.group_timeout_s),
         runner_(scenario, seed, config.dialogue.get()),
         commands_(*this) {
     world::Scene scene = scenario.scene;
@@ -266,6 +268,7 @@ class LiveChain {
     for (const perception::PerceivedGroup& group : groups_) {
       const Group msg = group_msg(group, header);
       session_.receive_group({msg.group_id, msg.header.stamp.toSec(), msg.members});
+      believed_groups_.report(msg.group_id, msg.header.stamp.toSec(), msg.members);
     }
   }
 
@@ -330,15 +333,9 @@ class LiveChain {
     if (frame_ != nullptr) {
       identities_.update(observations.world, scenario::sightings_of(*frame_));
     }
-    if (frame_ != nullptr || groups_detected_) {
-      perceived_groups_.clear();
-      for (const perception::PerceivedGroup& group : groups_) {
-        perceived_groups_.push_back(
-            scenario::perceived_group(group.group_id, group.members, identities_));
-      }
-    }
     observations.person_ids = identities_.person_ids();
-    observations.perceived_groups = perceived_groups_;
+    observations.perceived_groups =
+        believed_groups_.believed_at(observations.world.time_s, identities_);
     observations.heard = std::move(heard_);
     heard_.clear();
     observations.dialogue_end = dialogue_end_;
@@ -372,7 +369,7 @@ class LiveChain {
   std::vector<dialogue::Perception> heard_;  // since the script last ran
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::PersonIdentities identities_;
-  std::vector<scenario::PerceivedGroup> perceived_groups_;  // as last identified
+  scenario::GroupMemory believed_groups_;
   scenario::ScriptRunner runner_;
   Commands commands_;
 };

@@ -19,9 +19,11 @@
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/scenario/episode_metrics.hpp"
+#include "ari_social_sim/scenario/group_memory.hpp"
 #include "ari_social_sim/scenario/in_process_navigation.hpp"
 #include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
+#include "ari_social_sim/scenario/scenario_run_config.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 #include "ari_social_sim/scenario/world_speech_stage.hpp"
 #include "ari_social_sim/world/simulation.hpp"
@@ -36,8 +38,9 @@ struct EpisodeConfig {
   /// hri_perception_node's config/perception.yaml (group_detection_node reads its `groups:`);
   /// its seed is replaced by the episode's.
   perception::PerceptionConfig perception;
-  double perception_max_rate_hz{30.0};   // hri_perception_node's ~max_rate
-  double group_detection_rate_hz{20.0};  // group_detection_node's ~rate
+  double perception_max_rate_hz{30.0};                          // hri_perception_node's ~max_rate
+  double group_detection_rate_hz{20.0};                         // group_detection_node's ~rate
+  double group_timeout_s{ScenarioRunConfig{}.group_timeout_s};  // scenario_node's ~group_timeout
   /// social_mpc_node's parameters (config/social_mpc.yaml).
   navigation::NavigationConfig navigation;
   /// dialogue_node's settings (config/dialogue/simulation.yaml) and parameters in world mode;
@@ -55,6 +58,7 @@ struct EpisodeConfig {
             perception::PerceptionRunConfig::kMaxRateBounds);
     v.field("group_detection_rate", group_detection_rate_hz, "group_detection_node's ~rate",
             perception::GroupDetectionRunConfig::kRateBounds);
+    v.field("group_timeout", group_timeout_s, "scenario_node's ~group_timeout", core::positive());
     v.section("navigation", navigation, "social_mpc_node's config/social_mpc.yaml");
     v.section("dialogue_run", dialogue_run, "dialogue_node's parameters");
   }
@@ -152,6 +156,7 @@ class Episode {
   bool groups_detected_{false};
   std::vector<perception::PerceivedGroup> groups_;
   PersonIdentities identities_;
+  GroupMemory believed_groups_;
   std::unique_ptr<InProcessNavigation> navigation_;
   std::vector<navigation::BaseCommand> navigation_commands_;
   dialogue::DialogueRunConfig dialogue_run_;
