@@ -1,15 +1,19 @@
 #include "ari_social_sim/perception/group_candidates.hpp"
 
+#include <utility>
+
 #include "ari_social_sim/perception/tracked_persons.hpp"
 
 namespace ari_social_sim::perception {
 
-std::vector<GcffPerson> group_candidates_of(const model::TrackedPersons& persons) {
+std::vector<GcffPerson> group_candidates_of(model::TrackedPersons persons) {
+  std::vector<model::PlacedPerson> placed =
+      model::place_at_bodies(std::move(persons.persons), persons.locate_body);
   std::vector<GcffPerson> candidates;
-  for (const model::PlacedPerson& person :
-       model::place_at_bodies(persons.persons, persons.locate_body)) {
-    candidates.push_back(
-        {person.person_id, person.pose.position.x(), person.pose.position.y(), person.pose.theta});
+  candidates.reserve(placed.size());
+  for (model::PlacedPerson& person : placed) {
+    candidates.push_back({std::move(person.person_id), person.pose.position.x(),
+                          person.pose.position.y(), person.pose.theta});
   }
   return candidates;
 }

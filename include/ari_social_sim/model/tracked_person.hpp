@@ -46,7 +46,8 @@ struct TrackedPersons {
 /// group detection), in the order given, each at their body's placement. Left out: a person
 /// without a body, since a person frame has a position but no meaningful orientation (REP-155),
 /// and one whose body `locate_body` cannot place.
-std::vector<PlacedPerson> place_at_bodies(const std::vector<TrackedPerson>& persons,
+/// (Takes the persons by value: a caller done with them moves them in, and their ids move on.)
+std::vector<PlacedPerson> place_at_bodies(std::vector<TrackedPerson> persons,
                                           const BodyLocator& locate_body);
 
 }  // namespace ari_social_sim::model

@@ -14,7 +14,7 @@ namespace ari_social_sim::perception {
 /// face or voice does not give), named by their person id, at the body's position and facing in
 /// the map (metres, rad), in the order the persons are reported. ARI is not a person, so it is
 /// never a candidate.
-std::vector<GcffPerson> group_candidates_of(const model::TrackedPersons& persons);
+std::vector<GcffPerson> group_candidates_of(model::TrackedPersons persons);
 /// The same for the persons a perception frame reports (tracked_persons_of).
 std::vector<GcffPerson> group_candidates_of(const PerceptionFrame& frame);
 
