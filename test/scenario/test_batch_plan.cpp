@@ -6,6 +6,7 @@
 
 #include "ari_social_sim/scenario/batch_plan.hpp"
 #include "expect_config_error.hpp"
+#include "refusal_text.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -135,12 +136,7 @@ TEST(BatchSettings, FilesOfEarlierVersionsStillRead) {
 }
 
 std::string refusal(const BatchSettings& settings) {
-  try {
-    settings.validate();
-  } catch (const core::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return world::test::refusal_text<core::ConfigError>([&] { settings.validate(); });
 }
 
 TEST(BatchSettings, ValuesBuiltInCodeAreCheckedByTheFileRules) {

@@ -7,6 +7,7 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
+#include "refusal_text.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -20,12 +21,7 @@ const EpisodeConfig& shipped_config() {
 
 // The message validate() gives for `config`, or "" when it is accepted.
 std::string refusal(const EpisodeConfig& config) {
-  try {
-    config.validate();
-  } catch (const core::ConfigError& e) {
-    return e.what();
-  }
-  return "";
+  return world::test::refusal_text<core::ConfigError>([&] { config.validate(); });
 }
 
 TEST(EpisodeConfig, TheShippedFilesGiveAValidConfig) {

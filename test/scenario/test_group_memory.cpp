@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/scenario/group_memory.hpp"
+#include "two_humans.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -10,15 +11,8 @@ const std::string kBert = "anonymous_person_fghij";
 
 // Anna is human 10 and Bert human 11, both seen at their bodies.
 PersonIdentities anna_and_bert() {
-  world::WorldSnapshot world;
-  for (model::ObjectId id : {10u, 11u}) {
-    world::HumanSnapshot human;
-    human.id = id;
-    human.pose.position = {id == 10 ? 2.0 : 3.0, 2.0};
-    world.humans.push_back(human);
-  }
   PersonIdentities identities;
-  identities.update(world, {{kAnna, {2.0, 2.0}, true}, {kBert, {3.0, 2.0}, true}});
+  identities.update(test::two_humans(), {{kAnna, {2.0, 2.0}, true}, {kBert, {3.0, 2.0}, true}});
   return identities;
 }
 

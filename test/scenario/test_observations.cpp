@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/scenario/observations.hpp"
+#include "two_humans.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -8,13 +9,7 @@ namespace {
 TEST(PerceivedGroup, MembersAreTheHumansTheirPersonsWereFoundToBe) {
   // Humans 10 at (2, 2) and 11 at (3, 2), seen under a person manager's anonymous ids; a third
   // person, 2 m from both, is nobody the script knows.
-  world::WorldSnapshot world;
-  for (model::ObjectId id : {10u, 11u}) {
-    world::HumanSnapshot human;
-    human.id = id;
-    human.pose.position = {id == 10 ? 2.0 : 3.0, 2.0};
-    world.humans.push_back(human);
-  }
+  const world::WorldSnapshot world = test::two_humans();
   PersonIdentities identities;
   identities.update(world, {{"anonymous_person_qwert", {3.1, 2.0}, true},
                             {"anonymous_person_asdfg", {1.9, 2.0}, true},

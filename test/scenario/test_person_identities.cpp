@@ -2,6 +2,7 @@
 
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/scenario/person_identities.hpp"
+#include "two_humans.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -10,17 +11,7 @@ const std::string kAnna = "anonymous_person_abcde";
 const std::string kBert = "anonymous_person_fghij";
 const std::string kCarl = "anonymous_person_klmno";
 
-// Humans 10 at (2, 2) and 11 at (3, 2): 1 m apart.
-world::WorldSnapshot two_humans() {
-  world::WorldSnapshot world;
-  for (model::ObjectId id : {10u, 11u}) {
-    world::HumanSnapshot human;
-    human.id = id;
-    human.pose.position = {id == 10 ? 2.0 : 3.0, 2.0};
-    world.humans.push_back(human);
-  }
-  return world;
-}
+using test::two_humans;
 
 PersonSighting body(const std::string& id, double x, double y) {
   return {id, {x, y}, true};

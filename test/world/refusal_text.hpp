@@ -6,12 +6,13 @@
 
 namespace ari_social_sim::world::test {
 
-/// The text of the core::RequestError `request` throws, or "" when it is accepted.
-template <class Request>
+/// The text of the Error (a refused request, or with core::ConfigError a refused config) that
+/// `request` throws, or "" when it is accepted.
+template <class Error = core::RequestError, class Request>
 std::string refusal_text(Request request) {
   try {
     request();
-  } catch (const core::RequestError& e) {
+  } catch (const Error& e) {
     return e.what();
   }
   return "";

@@ -7,6 +7,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/scene.hpp"
 #include "expect_config_error.hpp"
+#include "refusal_text.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -148,12 +149,7 @@ TEST(Scene, DirectoriesAndOversizedScenesAreRefusedBeforeReading) {
 // The message a spec built in code is refused with, or "" when its validate() accepts it.
 template <class Spec>
 std::string refusal(const Spec& spec) {
-  try {
-    spec.validate();
-  } catch (const core::RequestError& e) {
-    return e.what();
-  }
-  return "";
+  return test::refusal_text([&] { spec.validate(); });
 }
 
 TEST(SceneEntries, SpecsBuiltInCodeAreCheckedAgainstTheBoundsFilesAreReadWith) {
