@@ -22,6 +22,7 @@ add_library(ari_navigation
   src/navigation/obstacle_cost.cpp
   src/navigation/perceived_scene.cpp
   src/navigation/perception_report.cpp
+  src/navigation/policy_observation.cpp
   src/navigation/scene_tracker.cpp
   src/navigation/personal_space_cost.cpp
   src/navigation/signed_distance_field.cpp
@@ -54,10 +55,8 @@ if(CATKIN_ENABLE_TESTING)
 endif()
 
 # nav_benchmark: the navigation benchmark (a user-facing tool, `rosrun ari_social_sim nav_benchmark`).
-add_executable(nav_benchmark
-  src/tools/nav_benchmark/episodes.cpp
-  src/tools/nav_benchmark/nav_benchmark.cpp)
-target_link_libraries(nav_benchmark ari_scenario)
+add_executable(nav_benchmark src/tools/nav_benchmark/nav_benchmark.cpp)
+target_link_libraries(nav_benchmark ari_learning)
 target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)

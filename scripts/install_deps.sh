@@ -21,7 +21,10 @@ packages=(
   liburdfdom-dev liburdfdom-tools
   # headless camera rendering: OpenGL through EGL, Mesa's llvmpipe when there is no GPU
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
+  # Python bindings of the learning environments (ari_social_sim.learning)
+  pybind11-dev python3-dev python3-numpy
   # tests and benchmarks
+  python3-pytest
   libgtest-dev googletest libbenchmark-dev
   # inspection
   rviz xvfb xauth imagemagick

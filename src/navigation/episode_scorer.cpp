@@ -30,9 +30,11 @@ void EpisodeScorer::add(const ScoredTick& tick) {
   }
   last_pose_ = tick.ari;
   ++ticks_;
-  score_.duration_s = times_.empty() ? 0.0 : tick.time_s - times_.front();
-  speeds_.push_back(tick.linear_mps);
-  times_.push_back(tick.time_s);
+  if (ticks_ == 1) {
+    first_time_s_ = tick.time_s;
+  }
+  score_.duration_s = tick.time_s - first_time_s_;
+  add_jerk_sample(tick.time_s, tick.linear_mps);
 
   bool touching = false;
   bool in_space = false;
@@ -67,22 +69,26 @@ void EpisodeScorer::add(const ScoredTick& tick) {
   groups_intruded_ = std::move(intruded);
 }
 
+// Jerk by second differences of the speed over consecutive ticks, summed as they come.
+void EpisodeScorer::add_jerk_sample(double time_s, double speed_mps) {
+  if (ticks_ >= 3) {
+    const double dt1 = time_s - times_[1], dt0 = times_[1] - times_[0];
+    if (dt1 > 0.0 && dt0 > 0.0) {
+      const double a1 = (speed_mps - speeds_[1]) / dt1;
+      const double a0 = (speeds_[1] - speeds_[0]) / dt0;
+      jerk_sum_ += std::abs(a1 - a0) / (0.5 * (dt1 + dt0));
+      ++jerk_count_;
+    }
+  }
+  speeds_[0] = speeds_[1];
+  times_[0] = times_[1];
+  speeds_[1] = speed_mps;
+  times_[1] = time_s;
+}
+
 EpisodeScore EpisodeScorer::score() const {
   EpisodeScore score = score_;
-  // Jerk by second differences of the speed over consecutive ticks.
-  double sum = 0.0;
-  int count = 0;
-  for (size_t i = 2; i < speeds_.size(); ++i) {
-    const double dt1 = times_[i] - times_[i - 1], dt0 = times_[i - 1] - times_[i - 2];
-    if (dt1 <= 0.0 || dt0 <= 0.0) {
-      continue;
-    }
-    const double a1 = (speeds_[i] - speeds_[i - 1]) / dt1;
-    const double a0 = (speeds_[i - 1] - speeds_[i - 2]) / dt0;
-    sum += std::abs(a1 - a0) / (0.5 * (dt1 + dt0));
-    ++count;
-  }
-  score.mean_abs_jerk = count > 0 ? sum / count : 0.0;
+  score.mean_abs_jerk = jerk_count_ > 0 ? jerk_sum_ / jerk_count_ : 0.0;
   return score;
 }
 

@@ -63,8 +63,12 @@ class EpisodeScorer {
   bool touching_person_{false};
   bool touching_static_{false};
   std::vector<std::string> groups_intruded_;
-  std::vector<double> speeds_;
-  std::vector<double> times_;
+  void add_jerk_sample(double time_s, double speed_mps);
+  double first_time_s_{0.0};
+  double speeds_[2]{};  // the two ticks before the current one, oldest first
+  double times_[2]{};
+  double jerk_sum_{0.0};
+  int jerk_count_{0};
   core::Pose2 last_pose_;
 };
 

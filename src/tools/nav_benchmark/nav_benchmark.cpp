@@ -18,19 +18,19 @@
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/learning/ground_truth.hpp"
+#include "ari_social_sim/learning/navigation_episodes.hpp"
 #include "ari_social_sim/navigation/episode_scorer.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
-#include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/scenario/ari_observation.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
-#include "episodes.hpp"
 
 namespace {
 
 using namespace ari_social_sim;
-using tools::Episode;
-using tools::EpisodeType;
+using learning::EpisodeType;
+using learning::NavigationEpisode;
 
 constexpr int kUsageError = 2;
 
@@ -77,7 +77,7 @@ be written.
 struct Options {
   int episodes{50};
   uint64_t seed{1};
-  std::vector<EpisodeType> types{tools::all_episode_types()};
+  std::vector<EpisodeType> types{learning::all_episode_types()};
   std::vector<std::string> controllers{"social", "baseline"};
   std::string solver;
   std::string config{std::string(ARI_SOURCE_DIR) + "/config/social_mpc.yaml"};
@@ -134,7 +134,7 @@ Options parse(int argc, char** argv) {
       check_list(arg, names);
       for (const std::string& name : names) {
         EpisodeType type;
-        if (!tools::parse_type(name, type)) {
+        if (!learning::parse_type(name, type)) {
           throw core::ConfigError(
               "--types: expected pose, doorway, corridor, crossing, approach, join2, "
               "join3 or join4, got '" +
@@ -199,56 +199,6 @@ navigation::NavigationConfig controller_config(const Options& options,
   return config;
 }
 
-// Ground-truth perception: every human with the id perception would give, true velocities, and
-// every group's o-space from its members' poses.
-navigation::PerceivedScene perceive(const world::Simulation& sim, double stride_m) {
-  navigation::PerceivedScene scene;
-  for (const auto& human : sim.humans()) {
-    navigation::PersonEstimate person;
-    person.id = tools::person_id(human->id());
-    person.position = human->pose().position;
-    person.heading = human->pose().theta;
-    person.velocity = human->velocity();
-    scene.people.push_back(person);
-  }
-  for (const auto& group : sim.groups()) {
-    std::vector<navigation::PersonEstimate> members;
-    for (model::ObjectId id : group->members()) {
-      if (const auto* person = scene.find_person(tools::person_id(id))) {
-        members.push_back(*person);
-      }
-    }
-    if (!members.empty()) {
-      scene.groups.push_back(
-          navigation::estimate_group(tools::group_id(group->id()), members, stride_m));
-    }
-  }
-  return scene;
-}
-
-// Whether GCFF (perception core, default parameters) run on the final scene with ARI as one more
-// participant, at its body centre facing its heading, puts ARI with most of the joined members.
-bool gcff_includes_ari(const world::Simulation& sim, const navigation::FootprintModel& footprint,
-                       const std::vector<std::string>& members) {
-  std::vector<perception::GcffPerson> persons;
-  for (const auto& human : sim.humans()) {
-    persons.push_back({tools::person_id(human->id()), human->pose().position.x(),
-                       human->pose().position.y(), human->pose().theta});
-  }
-  const Eigen::Vector2d ari_centre = footprint.centre(sim.ari()->pose());
-  persons.push_back({"ari", ari_centre.x(), ari_centre.y(), sim.ari()->pose().theta});
-  perception::GcffDetector detector{perception::GcffParams{}};
-  const perception::GcffResult result = detector.detect(persons);
-  const int ari_label = result.labels.back();
-  int together = 0;
-  for (size_t i = 0; i + 1 < persons.size(); ++i) {
-    const bool is_member =
-        std::find(members.begin(), members.end(), persons[i].id) != members.end();
-    together += is_member && result.labels[i] == ari_label ? 1 : 0;
-  }
-  return 3 * together >= 2 * static_cast<int>(members.size());
-}
-
 struct EpisodeRecord {
   std::string type, controller, outcome, reason;
   int index{0};
@@ -294,11 +244,11 @@ void print_trace(const world::Simulation& sim, const navigation::Navigator& navi
   std::fprintf(stderr, "\n");
 }
 
-EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& config,
+EpisodeRecord run_episode(NavigationEpisode episode, const navigation::NavigationConfig& config,
                           const std::string& controller, bool trace) {
   world::Simulation& sim = *episode.simulation;
   EpisodeRecord record;
-  record.type = tools::type_name(episode.type);
+  record.type = learning::type_name(episode.type);
   record.controller = controller;
   record.index = episode.index;
   record.seed = episode.seed;
@@ -307,8 +257,8 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
   navigation::EpisodeScorer scorer(navigator.footprint(), config.mpc.personal_space,
                                    episode.exempt_people, episode.exempt_group);
   try {
-    navigator.start(episode.target, perceive(sim, stride), scenario::observe_ari(*sim.ari()),
-                    sim.time_s());
+    navigator.start(episode.target, learning::true_scene(sim, stride),
+                    scenario::observe_ari(*sim.ari()), sim.time_s());
   } catch (const core::Error& e) {
     record.outcome = "rejected";
     record.reason = e.what();
@@ -332,7 +282,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
       sim.set_human_goal(episode.walks[next_walk].human, episode.walks[next_walk].goal);
       ++next_walk;
     }
-    const navigation::PerceivedScene scene = perceive(sim, stride);
+    const navigation::PerceivedScene scene = learning::true_scene(sim, stride);
     if (sim.time_s() >= next_control_s - 1e-9) {
       next_control_s += control_period;
       const navigation::NavigatorStep step =
@@ -363,7 +313,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
     tick.time_s = sim.time_s();
     tick.ari = sim.ari()->pose();
     tick.linear_mps = sim.ari()->drive().linear_mps();
-    const navigation::PerceivedScene truth = perceive(sim, stride);
+    const navigation::PerceivedScene truth = learning::true_scene(sim, stride);
     tick.people = truth.people;
     tick.groups = truth.groups;
     tick.static_penetration_m = sim.static_penetration_m(*sim.ari());
@@ -373,7 +323,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
 
   // Final placement against the person or group (approach and join episodes).
   const core::Pose2 ari = sim.ari()->pose();
-  const navigation::PerceivedScene final_scene = perceive(sim, stride);
+  const navigation::PerceivedScene final_scene = learning::true_scene(sim, stride);
   std::optional<Eigen::Vector2d> facing;
   if (const auto* person = std::get_if<navigation::PersonTarget>(&episode.target)) {
     if (const auto* p = final_scene.find_person(person->person_id)) {
@@ -386,7 +336,7 @@ EpisodeRecord run_episode(Episode episode, const navigation::NavigationConfig& c
       facing = g->centre;
       record.final_position_error_m = (navigator.goal()->pose.position - ari.position).norm();
       record.gcff_includes_ari =
-          gcff_includes_ari(sim, navigator.footprint(), episode.exempt_people) ? 1 : 0;
+          learning::gcff_includes_ari(sim, navigator.footprint(), episode.exempt_people) ? 1 : 0;
     }
   }
   if (facing) {
@@ -448,7 +398,7 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
     for (const std::string& controller : options.controllers) {
       std::vector<const EpisodeRecord*> rows;
       for (const EpisodeRecord& r : records) {
-        if (r.type == tools::type_name(type) && r.controller == controller) {
+        if (r.type == learning::type_name(type) && r.controller == controller) {
           rows.push_back(&r);
         }
       }
@@ -500,7 +450,7 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
       std::printf(
           "| %s | %s | %zu | %.0f %% | %d / %d | %d | %.2f %% | %.2f / %.2f m | %.1f s | %.2f | %s "
           "| %s | %.2f m/s^3 | %.1f / %.1f ms |\n",
-          tools::type_name(type), controller.c_str(), rows.size(), 100.0 * successes / n,
+          learning::type_name(type), controller.c_str(), rows.size(), 100.0 * successes / n,
           person_hits, static_hits, intruding, 100.0 * mean_of(shares),
           minima.empty() ? 0.0 : *std::min_element(minima.begin(), minima.end()), mean_of(minima),
           mean_of(times), mean_of(ratios), placement, gcff, mean_of(jerks),
@@ -523,11 +473,13 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
 int main(int argc, char** argv) {
   Options options;
   std::map<std::string, navigation::NavigationConfig> configs;
+  learning::EpisodeWorlds worlds;
   try {
     options = parse(argc, argv);
     for (const std::string& controller : options.controllers) {
       configs.emplace(controller, controller_config(options, controller));
     }
+    worlds = learning::EpisodeWorlds::load(options.worlds);
   } catch (const core::Error& e) {
     std::cerr << "nav_benchmark: " << e.what() << "\n";
     return kUsageError;
@@ -538,10 +490,10 @@ int main(int argc, char** argv) {
     for (int i = 0; i < options.episodes; ++i) {
       for (const std::string& controller : options.controllers) {
         try {
-          records.push_back(run_episode(tools::make_episode(type, i, options.seed, options.worlds),
+          records.push_back(run_episode(learning::make_episode(type, i, options.seed, worlds),
                                         configs.at(controller), controller, options.trace));
         } catch (const core::Error& e) {
-          std::cerr << "nav_benchmark: " << tools::type_name(type) << " episode " << i << ": "
+          std::cerr << "nav_benchmark: " << learning::type_name(type) << " episode " << i << ": "
                     << e.what() << "\n";
           return kUsageError;
         }

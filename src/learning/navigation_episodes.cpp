@@ -1,4 +1,4 @@
-#include "episodes.hpp"
+#include "ari_social_sim/learning/navigation_episodes.hpp"
 
 #include <cmath>
 
@@ -10,13 +10,15 @@
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 
-namespace ari_social_sim::tools {
+namespace ari_social_sim::learning {
 namespace {
 
 using core::kPi;
 using model::ObjectId;
 
 constexpr int kMaxDraws = 2000;
+// Walkers added to an episode take ids from here up, clear of the episode's own people.
+constexpr ObjectId kFirstWalker = 100;
 
 model::StaticObject wall(ObjectId id, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
   model::StaticObject object;
@@ -72,7 +74,7 @@ void place_ari(world::Simulation& sim, core::Rng& rng, const Eigen::Vector2d& lo
     } catch (const core::RequestError&) {
     }
   }
-  throw core::RequestError("nav_benchmark: no free start pose for ARI");
+  throw core::RequestError("navigation episode: no free start pose for ARI");
 }
 
 // A standing person at a random free place in the box.
@@ -92,7 +94,7 @@ ObjectId place_person(world::Simulation& sim, core::Rng& rng, ObjectId id,
     } catch (const core::RequestError&) {
     }
   }
-  throw core::RequestError("nav_benchmark: no free place for person " + std::to_string(id));
+  throw core::RequestError("navigation episode: no free place for person " + std::to_string(id));
 }
 
 // A group of `size` people standing in formation around `centre` (GroupNavigation keeps it).
@@ -169,9 +171,10 @@ const Eigen::Vector2d kFlatDoor(5.0, 1.5);
 constexpr double kDoorClosingDistance = 1.5;
 
 // The flat with ARI placed anywhere ARI fits, its static map as a distance field.
-navigation::GridField flat_with_ari(Episode& e, core::Rng& rng, const std::string& worlds_dir,
-                                    const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
-  e.simulation = simulation_of(model::load_world_file(worlds_dir + "/two_room_flat.yaml"), e.seed);
+navigation::GridField flat_with_ari(NavigationEpisode& e, core::Rng& rng,
+                                    const EpisodeWorlds& worlds, const Eigen::Vector2d& low,
+                                    const Eigen::Vector2d& high) {
+  e.simulation = simulation_of(worlds.two_room_flat, e.seed);
   navigation::GridField sdf =
       navigation::signed_distance_field(world::rasterize_static_map(e.simulation->world(), 0.05));
   place_ari(*e.simulation, rng, low, high,
@@ -195,13 +198,13 @@ core::Pose2 flat_goal(const world::Simulation& sim, const navigation::GridField&
       return goal;
     }
   }
-  throw core::RequestError("nav_benchmark: no goal");
+  throw core::RequestError("navigation episode: no free goal pose");
 }
 
-Episode pose_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
+NavigationEpisode pose_episode(NavigationEpisode e, core::Rng& rng, const EpisodeWorlds& worlds) {
   // The furnished two-room flat (10 x 6 m): ARI crosses it, often through the 1 m door.
   const Eigen::Vector2d low(0.6, 0.6), high(9.4, 5.4);
-  const navigation::GridField sdf = flat_with_ari(e, rng, worlds_dir, low, high);
+  const navigation::GridField sdf = flat_with_ari(e, rng, worlds, low, high);
   world::Simulation& sim = *e.simulation;
   const Eigen::Vector2d start = sim.ari()->pose().position;
   // Two people standing about, never in a narrow passage (0.7 m from any wall) nor closing the
@@ -216,19 +219,22 @@ Episode pose_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
   const core::Pose2 goal = flat_goal(sim, sdf, rng, low, high, [&](const core::Pose2& g) {
     return (g.position - start).norm() > 4.0;
   });
+  e.floor_low = low;
+  e.floor_high = high;
   e.target = navigation::PoseTarget{goal};
   e.time_limit_s = 90.0;
   return e;
 }
 
-Episode doorway_episode(Episode e, core::Rng& rng, const std::string& worlds_dir) {
+NavigationEpisode doorway_episode(NavigationEpisode e, core::Rng& rng,
+                                  const EpisodeWorlds& worlds) {
   // The flat again, ARI going from one room to the other while someone stands near the door:
   // every way passes through their personal space, so ARI must wait, then claim the way.
   const bool from_living_room = rng.uniform(0.0, 1.0) < 0.5;
   const Eigen::Vector2d living_low(0.6, 0.6), living_high(4.4, 5.4);
   const Eigen::Vector2d kitchen_low(5.6, 0.6), kitchen_high(9.4, 5.4);
   const navigation::GridField sdf =
-      flat_with_ari(e, rng, worlds_dir, from_living_room ? living_low : kitchen_low,
+      flat_with_ari(e, rng, worlds, from_living_room ? living_low : kitchen_low,
                     from_living_room ? living_high : kitchen_high);
   world::Simulation& sim = *e.simulation;
   const Eigen::Vector2d start = sim.ari()->pose().position;
@@ -242,12 +248,14 @@ Episode doorway_episode(Episode e, core::Rng& rng, const std::string& worlds_dir
       flat_goal(sim, sdf, rng, from_living_room ? kitchen_low : living_low,
                 from_living_room ? kitchen_high : living_high,
                 [&](const core::Pose2& g) { return (g.position - kFlatDoor).norm() > 2.0; });
+  e.floor_low = Eigen::Vector2d(0.6, 0.6);
+  e.floor_high = Eigen::Vector2d(9.4, 5.4);
   e.target = navigation::PoseTarget{goal};
   e.time_limit_s = 90.0;
   return e;
 }
 
-Episode corridor_episode(Episode e, core::Rng& rng) {
+NavigationEpisode corridor_episode(NavigationEpisode e, core::Rng& rng) {
   // A 16 m corridor 3.4-4 m wide; a group of 2 or 3 stands by one wall; ARI walks its length.
   const double width = rng.uniform(3.4, 4.0);
   e.simulation = simulation_of(walled_room("corridor", {16.0, width}), e.seed);
@@ -261,12 +269,14 @@ Episode corridor_episode(Episode e, core::Rng& rng) {
   world::AriSpec ari;
   ari.pose = pose({1.5, 0.5 * width + rng.uniform(-0.3, 0.3)}, rng.uniform(-0.3, 0.3));
   sim.add_ari(ari);
+  e.floor_low = Eigen::Vector2d(0.5, 0.5);
+  e.floor_high = Eigen::Vector2d(15.5, width - 0.5);
   e.target = navigation::PoseTarget{pose({14.5, 0.5 * width}, 0.0)};
   e.time_limit_s = 60.0;
   return e;
 }
 
-Episode crossing_episode(Episode e, core::Rng& rng) {
+NavigationEpisode crossing_episode(NavigationEpisode e, core::Rng& rng) {
   // A 12 x 8 m hall; ARI crosses it west to east while two people cross its path north-south at
   // staggered times and one walks the other way along it.
   e.simulation = simulation_of(walled_room("hall", {12.0, 8.0}), e.seed);
@@ -292,12 +302,14 @@ Episode crossing_episode(Episode e, core::Rng& rng) {
   sim.add_human(oncoming);
   e.walks.push_back(
       {rng.uniform(0.0, 3.0), oncoming.id, pose({0.8, 4.0 + rng.uniform(-0.8, 0.8)}, kPi)});
+  e.floor_low = Eigen::Vector2d(0.6, 0.6);
+  e.floor_high = Eigen::Vector2d(11.4, 7.4);
   e.target = navigation::PoseTarget{pose({10.8, 4.0}, 0.0)};
   e.time_limit_s = 60.0;
   return e;
 }
 
-Episode approach_episode(Episode e, core::Rng& rng) {
+NavigationEpisode approach_episode(NavigationEpisode e, core::Rng& rng) {
   // An 8 x 8 m room with a few tables; ARI approaches one of three standing people.
   model::WorldDescription world = walled_room("room", {8.0, 8.0});
   const Eigen::Vector2d target_at = uniform_point(rng, {2.0, 2.0}, {6.0, 6.0});
@@ -321,13 +333,15 @@ Episode approach_episode(Episode e, core::Rng& rng) {
     }
     return clear;
   });
+  e.floor_low = Eigen::Vector2d(0.8, 0.8);
+  e.floor_high = Eigen::Vector2d(7.2, 7.2);
   e.target = navigation::PersonTarget{person_id(target.id)};
   e.exempt_people = {person_id(target.id)};
   e.time_limit_s = 60.0;
   return e;
 }
 
-Episode join_episode(Episode e, core::Rng& rng, int size) {
+NavigationEpisode join_episode(NavigationEpisode e, core::Rng& rng, int size) {
   // A 10 x 10 m room with a few tables, the group to join and another group of 2 or 3.
   model::WorldDescription world = walled_room("room", {10.0, 10.0});
   const Eigen::Vector2d target_centre = uniform_point(rng, {2.5, 2.5}, {7.5, 7.5});
@@ -346,6 +360,8 @@ Episode join_episode(Episode e, core::Rng& rng, int size) {
   place_ari(sim, rng, {0.8, 0.8}, {9.2, 9.2}, [&](const core::Pose2& p) {
     return (p.position - target_centre).norm() > 3.0 && (p.position - other_centre).norm() > 2.0;
   });
+  e.floor_low = Eigen::Vector2d(0.8, 0.8);
+  e.floor_high = Eigen::Vector2d(9.2, 9.2);
   e.target = navigation::GroupTarget{group_id(1)};
   for (ObjectId member : members) {
     e.exempt_people.push_back(person_id(member));
@@ -396,6 +412,35 @@ bool parse_type(const std::string& name, EpisodeType& type) {
   return false;
 }
 
+EpisodeWorlds EpisodeWorlds::load(const std::string& worlds_dir) {
+  EpisodeWorlds worlds;
+  worlds.two_room_flat = model::load_world_file(worlds_dir + "/two_room_flat.yaml");
+  return worlds;
+}
+
+void add_walkers(NavigationEpisode& episode, int count, core::Rng& rng) {
+  world::Simulation& sim = *episode.simulation;
+  const Eigen::Vector2d ari = sim.ari()->pose().position;
+  for (int i = 0; i < count; ++i) {
+    // Not on top of ARI, whom they would push at the first step.
+    place_person(sim, rng, kFirstWalker + i, episode.floor_low, episode.floor_high,
+                 [&](const core::Pose2& p) { return (p.position - ari).norm() > 1.5; });
+  }
+  keep_walking(episode, rng);
+}
+
+void keep_walking(NavigationEpisode& episode, core::Rng& rng) {
+  world::Simulation& sim = *episode.simulation;
+  for (const auto& human : sim.humans()) {
+    if (human->id() < kFirstWalker || human->goal()) {
+      continue;
+    }
+    const Eigen::Vector2d to = uniform_point(rng, episode.floor_low, episode.floor_high);
+    const Eigen::Vector2d way = to - human->pose().position;
+    sim.set_human_goal(human->id(), pose(to, std::atan2(way.y(), way.x())));
+  }
+}
+
 std::string person_id(model::ObjectId human) {
   return "human" + std::to_string(human);
 }
@@ -404,9 +449,9 @@ std::string group_id(model::ObjectId group) {
   return "group" + std::to_string(group);
 }
 
-Episode make_episode(EpisodeType type, int index, uint64_t base_seed,
-                     const std::string& worlds_dir) {
-  Episode e;
+NavigationEpisode make_episode(EpisodeType type, int index, uint64_t base_seed,
+                               const EpisodeWorlds& worlds) {
+  NavigationEpisode e;
   e.type = type;
   e.index = index;
   e.seed = core::Rng::for_stream(base_seed, 1000 * static_cast<uint64_t>(type) + index).next_u64() %
@@ -414,9 +459,9 @@ Episode make_episode(EpisodeType type, int index, uint64_t base_seed,
   core::Rng rng(e.seed);
   switch (type) {
     case EpisodeType::kPose:
-      return pose_episode(std::move(e), rng, worlds_dir);
+      return pose_episode(std::move(e), rng, worlds);
     case EpisodeType::kDoorway:
-      return doorway_episode(std::move(e), rng, worlds_dir);
+      return doorway_episode(std::move(e), rng, worlds);
     case EpisodeType::kCorridor:
       return corridor_episode(std::move(e), rng);
     case EpisodeType::kCrossing:
@@ -433,4 +478,4 @@ Episode make_episode(EpisodeType type, int index, uint64_t base_seed,
   return e;
 }
 
-}  // namespace ari_social_sim::tools
+}  // namespace ari_social_sim::learning

@@ -1,0 +1,151 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/learning/nav_task_config.hpp"
+#include "ari_social_sim/learning/navigation_episodes.hpp"
+#include "ari_social_sim/model/occupancy_grid.hpp"
+#include "ari_social_sim/navigation/episode_scorer.hpp"
+#include "ari_social_sim/navigation/goal_finder.hpp"
+#include "ari_social_sim/navigation/grid_field.hpp"
+#include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/policy_observation.hpp"
+#include "ari_social_sim/navigation/scene_tracker.hpp"
+#include "ari_social_sim/perception/group_perception.hpp"
+#include "ari_social_sim/perception/perception_config.hpp"
+#include "ari_social_sim/perception/perception_pipeline.hpp"
+
+namespace ari_social_sim::learning {
+
+/// What every environment of a kind shares, read once: the task, the suite's perception and
+/// navigation settings (config/perception.yaml, config/social_mpc.yaml: the goal finder, the
+/// perceived-scene filter, personal spaces, ARI's footprint) and the shipped worlds.
+struct NavEnvSetup {
+  NavTaskConfig task;
+  perception::PerceptionConfig perception;
+  navigation::NavigationConfig navigation;
+  EpisodeWorlds worlds;
+
+  /// From the package's config and worlds directories; `task_file` is a task file
+  /// (config/learning/<task>.yaml) and `overrides` YAML text read over it (make()'s options,
+  /// named `overrides_source` in errors). Throws core::ConfigError naming the file and field.
+  static std::shared_ptr<const NavEnvSetup> load(const std::string& package_dir,
+                                                 const std::string& task_file,
+                                                 const std::string& overrides,
+                                                 const std::string& overrides_source);
+};
+
+/// ARI's commands a policy gives, in order: base linear (m/s) and angular (rad/s) velocity, head
+/// pan (rad); each clipped to ARI's limits.
+inline constexpr int kActionSize = 3;
+struct ActionBounds {
+  std::array<float, kActionSize> low;
+  std::array<float, kActionSize> high;
+};
+ActionBounds action_bounds();
+/// The action's element names, for errors and docs.
+inline constexpr const char* kActionNames[kActionSize] = {"linear", "angular", "pan"};
+
+/// The episode so far, in nav_benchmark's terms (navigation::EpisodeScore) and the task's.
+struct NavMetrics {
+  bool arrived{false};
+  int person_collisions{0};
+  int static_collisions{0};
+  double personal_space_time_s{0.0};
+  double path_length_m{0.0};
+  int ospace_intrusions{0};
+  double min_person_distance_m{0.0};
+  double time_s{0.0};
+  double distance_to_goal_m{0.0};  // true goal, straight line
+  bool goal_perceived{false};      // the policy's goal comes from perception now
+  int gcff_includes_ari{-1};       // join_group, once ended: 1 or 0; else -1
+  uint64_t episode_seed{0};
+};
+
+/// What a step returned besides the observation.
+struct NavStepResult {
+  double reward{0.0};
+  bool terminated{false};  // arrived, or a collision with terminate_on_collision
+  bool truncated{false};   // the time limit
+};
+
+/// One learning environment: a seeded navigation episode (navigation_episodes.hpp) on the world
+/// core, seen through the perception core with its error models, group detection and the
+/// perceived-scene filter social_mpc_node uses, with ARI driven by the policy's commands. One
+/// step is one world step (0.05 s) with perception and group detection at every step. The
+/// observation is navigation::PolicyObservation of the perceived scene, the goal placed by the
+/// goal finder on it; until perception has placed the target, the goal is where the task puts
+/// it at the start (the instruction), flagged as not perceived. Rewards and the end of an
+/// episode are judged on the truth. Seeded: the same seed gives the same episode, bit for bit.
+class NavEnv {
+ public:
+  explicit NavEnv(std::shared_ptr<const NavEnvSetup> setup);
+  ~NavEnv();
+  NavEnv(const NavEnv&) = delete;
+  NavEnv& operator=(const NavEnv&) = delete;
+
+  int observation_size() const { return observation_.size(); }
+  const navigation::PolicyObservation& observation() const { return observation_; }
+  const NavEnvSetup& setup() const { return *setup_; }
+
+  /// Starts the episode of `seed`, or of the next seed of this environment's sequence (the last
+  /// seed plus `seed_stride`, from 0) when none is given. Writes the first observation.
+  void reset(std::optional<uint64_t> seed, float* observation);
+  /// Applies `action` (kActionSize values, clipped to action_bounds()) for one world step and
+  /// writes the next observation. Throws core::RequestError naming the element when a value is
+  /// not finite, and when the episode has ended or was never reset.
+  NavStepResult step(const float* action, float* observation);
+  const NavMetrics& metrics() const { return metrics_; }
+  bool done() const { return done_; }
+  /// Seeds drawn without an explicit one advance by this (a vector environment's size).
+  void set_seed_stride(uint64_t stride) { seed_stride_ = stride; }
+
+  /// The world, for inspection and rendering.
+  const world::Simulation& simulation() const { return *episode_.simulation; }
+  const std::optional<navigation::Goal>& true_goal() const { return true_goal_; }
+
+ private:
+  void perceive();
+  void place_goals(bool force);
+  void write_observation(float* out) const;
+  navigation::RobotObservation robot() const;
+
+  std::shared_ptr<const NavEnvSetup> setup_;
+  navigation::FootprintModel footprint_;
+  navigation::GoalFinder goal_finder_;
+  navigation::PolicyObservation observation_;
+  ActionBounds bounds_;
+
+  NavigationEpisode episode_;
+  navigation::NavigationTarget target_;
+  model::OccupancyGrid map_;
+  navigation::GridField sdf_;
+  std::unique_ptr<perception::PerceptionPipeline> perception_;
+  std::unique_ptr<perception::GroupPerception> groups_;
+  std::vector<perception::PerceivedGroup> detected_;
+  navigation::SceneTracker tracker_;
+  navigation::PerceivedScene scene_;
+  std::unique_ptr<navigation::EpisodeScorer> scorer_;
+  core::Rng walk_rng_{0};
+
+  std::optional<navigation::Goal> perceived_goal_;
+  std::optional<navigation::Goal> instructed_goal_;
+  std::optional<navigation::Goal> true_goal_;
+  double next_goal_update_s_{0.0};
+  double last_distance_m_{0.0};
+  std::array<float, kActionSize> last_action_{};
+  navigation::EpisodeScore last_score_;
+  NavMetrics metrics_;
+  bool done_{true};
+  bool started_{false};
+  uint64_t next_seed_{0};
+  uint64_t seed_stride_{1};
+};
+
+}  // namespace ari_social_sim::learning

@@ -1,0 +1,192 @@
+"""Learning environments over ari_social_sim's in-process engine (docs/learning.md).
+
+    from ari_social_sim import learning
+    env = learning.make("join_group", walkers=4)
+    obs, info = env.reset(seed=1)
+    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+
+    envs = learning.make_vector("join_group", num_envs=16, threads=2)
+
+Tasks: go_to_pose, approach_person, join_group. Options are the fields of the task file
+(config/learning/<task>.yaml), given as keyword arguments: a nested section as a dict
+(rewards={"arrival": 20}). `config=` names another task file to start from.
+
+The environments follow Gymnasium's conventions without needing the gymnasium package; when it is
+importable, NavigationEnv subclasses gymnasium.Env, its spaces are gymnasium Boxes, and the tasks
+are registered as "ari_social_sim/<task>-v0".
+"""
+
+import json
+import os
+
+import numpy as np
+
+from ari_social_sim import _learning
+
+try:  # optional: only used to be a gymnasium.Env when gymnasium is there
+    import gymnasium as _gymnasium
+except ImportError:  # pragma: no cover - Debian has no gymnasium
+    _gymnasium = None
+
+if _gymnasium is not None:
+    from gymnasium.spaces import Box
+    _EnvBase = _gymnasium.Env
+else:
+    from ari_social_sim.learning.spaces import Box
+    _EnvBase = object
+
+TASKS = ("go_to_pose", "approach_person", "join_group")
+ACTION_NAMES = tuple(_learning.action_names)
+
+
+def package_dir():
+    """The ari_social_sim package directory (config/, worlds/), found as rospack finds it."""
+    override = os.environ.get("ARI_SOCIAL_SIM_DIR")
+    if override:
+        return override
+    import rospkg
+    return rospkg.RosPack().get_path("ari_social_sim")
+
+
+def _setup(task, options):
+    if not isinstance(task, str) or task not in TASKS:
+        raise ValueError(f"task: expected one of {', '.join(TASKS)}, got {task!r}")
+    options = dict(options)
+    root = package_dir()
+    task_file = options.pop("config", None) or os.path.join(root, "config", "learning",
+                                                            task + ".yaml")
+    if "task" in options:
+        raise ValueError("task: give it as make()'s first argument, not as an option")
+    options["task"] = task
+    try:
+        text = json.dumps(options)
+    except TypeError as error:
+        raise ValueError(f"make() options: {error}") from None
+    return _learning.NavEnvSetup.load(root, task_file, text, "make() options")
+
+
+def _observation_space(core):
+    low = np.empty(core.observation_size, np.float32)
+    high = np.empty(core.observation_size, np.float32)
+    layout = {}
+    for name, offset, size, field_low, field_high in core.observation_fields():
+        low[offset:offset + size] = field_low
+        high[offset:offset + size] = field_high
+        layout[name] = slice(offset, offset + size)
+    return Box(low, high, dtype=np.float32), layout
+
+
+def _action_space():
+    low, high = _learning.action_bounds()
+    return Box(np.array(low, np.float32), np.array(high, np.float32), dtype=np.float32)
+
+
+class NavigationEnv(_EnvBase):
+    """One navigation environment (docs/learning.md): observations from perception, actions
+    (linear m/s, angular rad/s, head pan rad) clipped to ARI's limits, rewards and metrics on the
+    truth. Not thread-safe; use make_vector for several."""
+
+    metadata = {"render_modes": []}
+
+    def __init__(self, task="join_group", **options):
+        self._setup = _setup(task, options)
+        self._core = _learning.NavEnv(self._setup)
+        self.observation_space, self.observation_layout = _observation_space(self._core)
+        self.action_space = _action_space()
+        self.task = task
+        self.spec_time_limit_s = self._setup.time_limit_s
+        self._closed = False
+
+    def reset(self, seed=None, options=None):
+        """Starts an episode: that of `seed`, or the next in this environment's sequence.
+        `options` may hold {"seed": int} only (as gymnasium allows); anything else is refused."""
+        self._check_open()
+        if options is not None:
+            if not isinstance(options, dict):
+                raise ValueError(f"options: expected a dict or None, got {type(options).__name__}")
+            unknown = sorted(set(options) - {"seed"})
+            if unknown:
+                raise ValueError(f"options: unknown key {unknown[0]!r}; expected only 'seed'")
+            if seed is None:
+                seed = options.get("seed")
+        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))):
+            raise ValueError(f"seed: expected an integer >= 0 or None, got {seed!r}")
+        observation = self._core.reset(None if seed is None else int(seed))
+        return observation, self._core.metrics()
+
+    def step(self, action):
+        self._check_open()
+        action = np.asarray(action, dtype=np.float32)
+        observation, reward, terminated, truncated = self._core.step(action)
+        return observation, reward, terminated, truncated, self._core.metrics()
+
+    def close(self):
+        self._closed = True
+        self._core = None
+
+    def _check_open(self):
+        if self._closed:
+            raise ValueError("the environment is closed")
+
+
+class VectorNavigationEnv:
+    """num_envs navigation environments stepped in one call, optionally on several threads.
+    Environment i plays seeds seed+i, seed+i+num_envs, ...; an ended episode is reset in the same
+    step, its last observation in infos["final_observation"][i] and its metrics in
+    infos["final_info"][i] (None for environments that did not end)."""
+
+    def __init__(self, task="join_group", num_envs=8, threads=1, **options):
+        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
+            raise ValueError(f"num_envs: expected an integer >= 1, got {num_envs!r}")
+        if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
+            raise ValueError(f"threads: expected an integer >= 1, got {threads!r}")
+        self._setup = _setup(task, options)
+        self._core = _learning.VectorNavEnv(self._setup, int(num_envs), int(threads))
+        self.num_envs = int(num_envs)
+        self.single_observation_space, self.observation_layout = _observation_space(self._core)
+        self.single_action_space = _action_space()
+        self.observation_space = Box(
+            np.tile(self.single_observation_space.low, (self.num_envs, 1)),
+            np.tile(self.single_observation_space.high, (self.num_envs, 1)), dtype=np.float32)
+        self.action_space = Box(np.tile(self.single_action_space.low, (self.num_envs, 1)),
+                                np.tile(self.single_action_space.high, (self.num_envs, 1)),
+                                dtype=np.float32)
+        self.task = task
+
+    def reset(self, seed=None, options=None):
+        if options is not None:
+            raise ValueError("options: a vector environment takes none")
+        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))):
+            raise ValueError(f"seed: expected an integer >= 0 or None, got {seed!r}")
+        observations = self._core.reset(None if seed is None else int(seed))
+        return observations, {}
+
+    def step(self, actions):
+        actions = np.asarray(actions, dtype=np.float32)
+        observations, rewards, terminated, truncated, finals = self._core.step(actions)
+        ended = terminated | truncated
+        infos = {"_final": ended}
+        if ended.any():
+            infos["final_observation"] = finals
+            infos["final_info"] = [self._core.final_metrics(i) if ended[i] else None
+                                   for i in range(self.num_envs)]
+        return observations, rewards, terminated, truncated, infos
+
+    def close(self):
+        self._core = None
+
+
+def make(task, **options):
+    """One environment of `task` (go_to_pose, approach_person, join_group)."""
+    return NavigationEnv(task, **options)
+
+
+def make_vector(task, num_envs, threads=1, **options):
+    """num_envs environments of `task` stepped together on `threads` threads."""
+    return VectorNavigationEnv(task, num_envs=num_envs, threads=threads, **options)
+
+
+if _gymnasium is not None:  # pragma: no cover - Debian has no gymnasium
+    for _task in TASKS:
+        _gymnasium.register(id=f"ari_social_sim/{_task}-v0",
+                            entry_point=NavigationEnv, kwargs={"task": _task})

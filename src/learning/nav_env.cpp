@@ -1,0 +1,282 @@
+#include "ari_social_sim/learning/nav_env.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/config_reader.hpp"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/learning/ground_truth.hpp"
+#include "ari_social_sim/model/ari_limits.hpp"
+#include "ari_social_sim/navigation/perception_report.hpp"
+#include "ari_social_sim/navigation/signed_distance_field.hpp"
+#include "ari_social_sim/perception/group_candidates.hpp"
+#include "ari_social_sim/perception/tracked_persons.hpp"
+#include "ari_social_sim/scenario/ari_observation.hpp"
+#include "ari_social_sim/world/map_sensor.hpp"
+#include "ari_social_sim/world/world_snapshot.hpp"
+
+namespace ari_social_sim::learning {
+namespace {
+
+// The environments' static map: coarser than world_node's 0.05 m, as a reset rebuilds it and
+// its distance field for every episode's furniture.
+constexpr double kMapResolution_m = 0.1;
+// Attempts at a seed's episode before giving up: a few draws leave no free place to stand.
+constexpr int kEpisodeAttempts = 10;
+
+EpisodeType episode_type_for(NavTask task, uint64_t seed) {
+  switch (task) {
+    case NavTask::kGoToPose:
+      return EpisodeType::kPose;
+    case NavTask::kApproachPerson:
+      return EpisodeType::kApproach;
+    case NavTask::kJoinGroup:
+      break;
+  }
+  // Groups of 2, 3 and 4 in equal shares, drawn from the seed.
+  const uint64_t draw = core::Rng::for_stream(seed, 7).next_u64() % 3;
+  return draw == 0 ? EpisodeType::kJoin2 : draw == 1 ? EpisodeType::kJoin3 : EpisodeType::kJoin4;
+}
+
+// A join episode names its group; perception does not know group ids, so the policy is told to
+// join the group of its first member, as scenario_node asks social_mpc_node.
+navigation::NavigationTarget perceivable_target(const NavigationEpisode& episode) {
+  if (std::holds_alternative<navigation::GroupTarget>(episode.target)) {
+    return navigation::GroupOfPersonTarget{episode.exempt_people.front()};
+  }
+  return episode.target;
+}
+
+}  // namespace
+
+std::shared_ptr<const NavEnvSetup> NavEnvSetup::load(const std::string& package_dir,
+                                                     const std::string& task_file,
+                                                     const std::string& overrides,
+                                                     const std::string& overrides_source) {
+  auto setup = std::make_shared<NavEnvSetup>();
+  setup->task = NavTaskConfig::load_file(task_file);
+  if (!overrides.empty()) {
+    core::read_fields(core::YamlMap::parse(overrides, overrides_source), setup->task);
+  }
+  setup->task.validate();
+  setup->perception =
+      perception::PerceptionConfig::load_file(package_dir + "/config/perception.yaml");
+  setup->perception.errors_enabled = setup->task.perception_errors;
+  setup->navigation =
+      navigation::NavigationConfig::load_file(package_dir + "/config/social_mpc.yaml");
+  setup->worlds = EpisodeWorlds::load(package_dir + "/worlds");
+  return setup;
+}
+
+ActionBounds action_bounds() {
+  const model::AriLimits limits;
+  ActionBounds bounds;
+  bounds.low = {static_cast<float>(limits.min_linear_mps),
+                static_cast<float>(-limits.max_angular_rps),
+                static_cast<float>(-limits.head_pan_limit_rad)};
+  bounds.high = {static_cast<float>(limits.max_linear_mps),
+                 static_cast<float>(limits.max_angular_rps),
+                 static_cast<float>(limits.head_pan_limit_rad)};
+  return bounds;
+}
+
+NavEnv::NavEnv(std::shared_ptr<const NavEnvSetup> setup)
+    : setup_(std::move(setup)),
+      footprint_(navigation::FootprintModel::covering(model::AriFootprint{},
+                                                      setup_->navigation.mpc.footprint_circles)),
+      goal_finder_(setup_->navigation.goal_finder, footprint_,
+                   setup_->navigation.mpc.personal_space),
+      observation_(setup_->task.observation),
+      bounds_(action_bounds()),
+      tracker_(setup_->navigation.scene) {}
+
+NavEnv::~NavEnv() = default;
+
+navigation::RobotObservation NavEnv::robot() const {
+  return scenario::observe_ari(*episode_.simulation->ari());
+}
+
+void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
+  const uint64_t episode_seed = seed.value_or(next_seed_);
+  next_seed_ = episode_seed + seed_stride_;
+  const NavTaskConfig& task = setup_->task;
+  const EpisodeType type = episode_type_for(task.task, episode_seed);
+  for (int attempt = 0;; ++attempt) {
+    episode_ = make_episode(type, attempt, episode_seed, setup_->worlds);
+    map_ = world::rasterize_static_map(episode_.simulation->world(), kMapResolution_m);
+    sdf_ = navigation::signed_distance_field(map_);
+    const navigation::PerceivedScene truth =
+        true_scene(*episode_.simulation, setup_->navigation.scene.group_stride_m);
+    const navigation::GoalSearch search =
+        goal_finder_.find(episode_.target, truth, sdf_, episode_.simulation->ari()->pose());
+    if (const auto* goal = std::get_if<navigation::Goal>(&search)) {
+      true_goal_ = *goal;
+      break;
+    }
+    if (attempt + 1 == kEpisodeAttempts) {
+      throw core::RequestError("learning: episode seed " + std::to_string(episode_seed) +
+                               " has no place for ARI's goal in " +
+                               std::to_string(kEpisodeAttempts) + " attempts");
+    }
+  }
+  walk_rng_ = core::Rng(core::Rng::for_stream(episode_seed, 11).next_u64());
+  if (task.walkers > 0) {
+    add_walkers(episode_, task.walkers, walk_rng_);
+  }
+  episode_.time_limit_s = task.time_limit_s;
+  target_ = perceivable_target(episode_);
+
+  perception::PerceptionConfig perception = setup_->perception;
+  perception.seed = static_cast<unsigned>(episode_seed);
+  perception_ = std::make_unique<perception::PerceptionPipeline>(perception);
+  perception_->set_sight_map(map_);
+  groups_ = std::make_unique<perception::GroupPerception>(perception.groups);
+  detected_.clear();
+  tracker_.clear();
+  scorer_ =
+      std::make_unique<navigation::EpisodeScorer>(footprint_, setup_->navigation.mpc.personal_space,
+                                                  episode_.exempt_people, episode_.exempt_group);
+
+  instructed_goal_ = true_goal_;
+  perceived_goal_.reset();
+  next_goal_update_s_ = 0.0;
+  last_action_ = {};
+  last_score_ = {};
+  metrics_ = {};
+  metrics_.episode_seed = episode_seed;
+  perceive();
+  place_goals(true);
+  last_distance_m_ = (true_goal_->pose.position - robot().pose.position).norm();
+  metrics_.distance_to_goal_m = last_distance_m_;
+  metrics_.goal_perceived = perceived_goal_.has_value();
+  done_ = false;
+  started_ = true;
+  write_observation(observation);
+}
+
+// As hri_perception_node, group_detection_node and social_mpc_node's look at perception, at
+// every step: the perception frame, GCFF on its persons at their bodies, and the filtered scene.
+void NavEnv::perceive() {
+  const world::Simulation& sim = *episode_.simulation;
+  const double now_s = sim.time_s();
+  const perception::PerceptionFrame& frame = perception_->update(world::WorldSnapshot::of(sim));
+  groups_->update(perception::group_candidates_of(frame), detected_);
+  navigation::PerceptionReport report;
+  model::TrackedPersons tracked = perception::tracked_persons_of(frame);
+  report.persons = std::move(tracked.persons);
+  report.groups.reserve(detected_.size());
+  for (const perception::PerceivedGroup& group : detected_) {
+    report.groups.push_back({group.group_id, now_s, group.members});
+  }
+  navigation::observe(tracker_, report, tracked.locate_body, now_s);
+  scene_ = tracker_.scene(now_s);
+}
+
+// The goal finder on the perceived scene (the policy's goal) and on the truth (the reward's),
+// every goal_update_period; each keeps its last goal while the target cannot be placed.
+void NavEnv::place_goals(bool force) {
+  const world::Simulation& sim = *episode_.simulation;
+  if (!force && sim.time_s() < next_goal_update_s_ - 1e-9) {
+    return;
+  }
+  next_goal_update_s_ = sim.time_s() + setup_->task.goal_update_period_s;
+  const core::Pose2 pose = sim.ari()->pose();
+  navigation::GoalSearch seen = goal_finder_.find(target_, scene_, sdf_, pose, perceived_goal_);
+  if (auto* goal = std::get_if<navigation::Goal>(&seen)) {
+    perceived_goal_ = std::move(*goal);
+  }
+  const navigation::PerceivedScene truth = true_scene(sim, setup_->navigation.scene.group_stride_m);
+  navigation::GoalSearch real = goal_finder_.find(episode_.target, truth, sdf_, pose, true_goal_);
+  if (auto* goal = std::get_if<navigation::Goal>(&real)) {
+    true_goal_ = std::move(*goal);
+  }
+}
+
+void NavEnv::write_observation(float* out) const {
+  const bool perceived = perceived_goal_.has_value();
+  observation_.build(robot(), scene_, perceived ? perceived_goal_ : instructed_goal_, perceived,
+                     map_, out);
+}
+
+NavStepResult NavEnv::step(const float* action, float* observation) {
+  if (!started_) {
+    throw core::RequestError("learning: step() before reset()");
+  }
+  if (done_) {
+    throw core::RequestError("learning: step() after the episode ended; call reset()");
+  }
+  std::array<float, kActionSize> command{};
+  for (int i = 0; i < kActionSize; ++i) {
+    if (!std::isfinite(action[i])) {
+      throw core::RequestError(std::string("learning: action[") + std::to_string(i) + "] (" +
+                               kActionNames[i] + "): expected a finite number, got " +
+                               std::to_string(action[i]));
+    }
+    command[i] = std::clamp(action[i], bounds_.low[i], bounds_.high[i]);
+  }
+  world::Simulation& sim = *episode_.simulation;
+  sim.command_ari_twist(command[0], command[1]);
+  sim.command_ari_head_pan(command[2]);
+  keep_walking(episode_, walk_rng_);
+  sim.step();
+  const double dt = sim.config().step_s;
+
+  perceive();
+  place_goals(false);
+
+  const NavTaskConfig& task = setup_->task;
+  const navigation::PerceivedScene truth = true_scene(sim, setup_->navigation.scene.group_stride_m);
+  navigation::ScoredTick tick;
+  tick.time_s = sim.time_s();
+  tick.ari = sim.ari()->pose();
+  tick.linear_mps = sim.ari()->linear_mps();
+  tick.people = truth.people;
+  tick.groups = truth.groups;
+  tick.static_penetration_m = sim.static_penetration_m(*sim.ari());
+  scorer_->add(tick);
+  const navigation::EpisodeScore score = scorer_->score();
+
+  const core::Pose2& pose = tick.ari;
+  const double distance = (true_goal_->pose.position - pose.position).norm();
+  const double heading_error = std::abs(core::angle_difference(true_goal_->pose.theta, pose.theta));
+  const bool arrived = distance <= task.arrival.position_tolerance_m &&
+                       heading_error <= task.arrival.heading_tolerance_rad;
+  const int collisions = score.person_collisions + score.static_collisions -
+                         last_score_.person_collisions - last_score_.static_collisions;
+  const RewardWeights& w = task.rewards;
+  NavStepResult result;
+  result.reward =
+      w.progress * (last_distance_m_ - distance) + w.time * dt + w.collision * collisions +
+      w.personal_space * (scorer_->last_tick_in_space() ? dt : 0.0) +
+      w.ospace * (score.ospace_intrusions - last_score_.ospace_intrusions) +
+      w.smoothness *
+          (std::abs(command[0] - last_action_[0]) + std::abs(command[1] - last_action_[1])) +
+      (arrived ? w.arrival : 0.0);
+  result.terminated = arrived || (task.terminate_on_collision && collisions > 0);
+  result.truncated = !result.terminated && sim.time_s() >= episode_.time_limit_s - 1e-9;
+  last_distance_m_ = distance;
+  last_action_ = command;
+  last_score_ = score;
+
+  metrics_.arrived = arrived;
+  metrics_.person_collisions = score.person_collisions;
+  metrics_.static_collisions = score.static_collisions;
+  metrics_.personal_space_time_s = score.personal_space_share * score.duration_s;
+  metrics_.path_length_m = score.path_length_m;
+  metrics_.ospace_intrusions = score.ospace_intrusions;
+  metrics_.min_person_distance_m = score.min_person_distance_m;
+  metrics_.time_s = sim.time_s();
+  metrics_.distance_to_goal_m = distance;
+  metrics_.goal_perceived = perceived_goal_.has_value();
+  done_ = result.terminated || result.truncated;
+  if (done_ && task.task == NavTask::kJoinGroup) {
+    metrics_.gcff_includes_ari = gcff_includes_ari(sim, footprint_, episode_.exempt_people) ? 1 : 0;
+  }
+  write_observation(observation);
+  return result;
+}
+
+}  // namespace ari_social_sim::learning

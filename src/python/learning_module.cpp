@@ -1,0 +1,204 @@
+// ari_social_sim._learning: the learning environments' cores for Python (pybind11). The Python
+// package ari_social_sim.learning wraps them in the Gymnasium conventions; this module only
+// moves numbers between numpy arrays and the cores, and releases the GIL while they run.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/learning/nav_env.hpp"
+#include "ari_social_sim/learning/vector_nav_env.hpp"
+
+namespace py = pybind11;
+using namespace ari_social_sim;
+
+namespace {
+
+using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
+
+std::string shape_text(const py::array& array) {
+  std::string text = "(";
+  for (py::ssize_t i = 0; i < array.ndim(); ++i) {
+    text += (i > 0 ? ", " : "") + std::to_string(array.shape(i));
+  }
+  return text + (array.ndim() == 1 ? ",)" : ")");
+}
+
+// Refuses an array whose shape is not `expected` (a dimension of -1 matches any size).
+void check_shape(const std::string& name, const py::array& array,
+                 const std::vector<py::ssize_t>& expected, const std::string& expected_text) {
+  bool ok = array.ndim() == static_cast<py::ssize_t>(expected.size());
+  for (size_t i = 0; ok && i < expected.size(); ++i) {
+    ok = array.shape(i) == expected[i];
+  }
+  if (!ok) {
+    throw py::value_error(name + ": expected shape " + expected_text + ", got " +
+                          shape_text(array));
+  }
+}
+
+py::dict metrics_dict(const learning::NavMetrics& m) {
+  py::dict d;
+  d["success"] = m.arrived;
+  d["person_collisions"] = m.person_collisions;
+  d["static_collisions"] = m.static_collisions;
+  d["collisions"] = m.person_collisions + m.static_collisions;
+  d["personal_space_time_s"] = m.personal_space_time_s;
+  d["path_length_m"] = m.path_length_m;
+  d["ospace_intrusions"] = m.ospace_intrusions;
+  d["min_person_distance_m"] = m.min_person_distance_m;
+  d["time_s"] = m.time_s;
+  d["distance_to_goal_m"] = m.distance_to_goal_m;
+  d["goal_perceived"] = m.goal_perceived;
+  d["gcff_includes_ari"] = m.gcff_includes_ari;
+  d["episode_seed"] = m.episode_seed;
+  return d;
+}
+
+std::optional<uint64_t> seed_of(const py::object& seed) {
+  if (seed.is_none()) {
+    return std::nullopt;
+  }
+  const auto value = seed.cast<long long>();
+  if (value < 0) {
+    throw py::value_error("seed: expected an integer >= 0 or None, got " + std::to_string(value));
+  }
+  return static_cast<uint64_t>(value);
+}
+
+py::list fields_of(const navigation::PolicyObservation& observation) {
+  py::list fields;
+  for (const navigation::ObservationField& f : observation.fields()) {
+    fields.append(py::make_tuple(f.name, f.offset, f.size, f.low, f.high));
+  }
+  return fields;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_learning, m) {
+  m.doc() = "Cores of ari_social_sim.learning (use that package, not this module)";
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) {
+        std::rethrow_exception(error);
+      }
+    } catch (const core::Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  py::class_<learning::NavEnvSetup, std::shared_ptr<learning::NavEnvSetup>>(m, "NavEnvSetup")
+      .def_static(
+          "load",
+          [](const std::string& package_dir, const std::string& task_file,
+             const std::string& overrides, const std::string& source) {
+            return std::const_pointer_cast<learning::NavEnvSetup>(
+                learning::NavEnvSetup::load(package_dir, task_file, overrides, source));
+          },
+          py::arg("package_dir"), py::arg("task_file"), py::arg("overrides"), py::arg("source"))
+      .def_property_readonly("time_limit_s",
+                             [](const learning::NavEnvSetup& s) { return s.task.time_limit_s; })
+      .def_property_readonly("task", [](const learning::NavEnvSetup& s) {
+        return std::string(core::choice_name(s.task.task, learning::kNavTaskNames));
+      });
+
+  m.def("action_bounds", [] {
+    const learning::ActionBounds b = learning::action_bounds();
+    return py::make_tuple(std::vector<float>(b.low.begin(), b.low.end()),
+                          std::vector<float>(b.high.begin(), b.high.end()));
+  });
+  m.attr("action_names") = std::vector<std::string>(std::begin(learning::kActionNames),
+                                                    std::end(learning::kActionNames));
+
+  py::class_<learning::NavEnv>(m, "NavEnv")
+      .def(py::init([](std::shared_ptr<learning::NavEnvSetup> setup) {
+        return std::make_unique<learning::NavEnv>(setup);
+      }))
+      .def_property_readonly("observation_size", &learning::NavEnv::observation_size)
+      .def("observation_fields",
+           [](const learning::NavEnv& env) { return fields_of(env.observation()); })
+      .def(
+          "reset",
+          [](learning::NavEnv& env, const py::object& seed) {
+            const std::optional<uint64_t> s = seed_of(seed);
+            FloatArray observation(env.observation_size());
+            float* out = observation.mutable_data();
+            py::gil_scoped_release release;
+            env.reset(s, out);
+            return observation;
+          },
+          py::arg("seed") = py::none())
+      .def("step",
+           [](learning::NavEnv& env, const py::array& action_in) {
+             FloatArray action = FloatArray::ensure(action_in);
+             if (!action) {
+               throw py::value_error("action: expected an array of numbers");
+             }
+             check_shape("action", action, {learning::kActionSize}, "(3,)");
+             FloatArray observation(env.observation_size());
+             float* out = observation.mutable_data();
+             const float* in = action.data();
+             learning::NavStepResult result;
+             {
+               py::gil_scoped_release release;
+               result = env.step(in, out);
+             }
+             return py::make_tuple(observation, result.reward, result.terminated, result.truncated);
+           })
+      .def("metrics", [](const learning::NavEnv& env) { return metrics_dict(env.metrics()); })
+      .def_property_readonly("done", &learning::NavEnv::done);
+
+  py::class_<learning::VectorNavEnv>(m, "VectorNavEnv")
+      .def(py::init([](std::shared_ptr<learning::NavEnvSetup> setup, int num_envs, int threads) {
+             return std::make_unique<learning::VectorNavEnv>(setup, num_envs, threads);
+           }),
+           py::arg("setup"), py::arg("num_envs"), py::arg("threads"))
+      .def_property_readonly("num_envs", &learning::VectorNavEnv::num_envs)
+      .def_property_readonly("observation_size", &learning::VectorNavEnv::observation_size)
+      .def("observation_fields",
+           [](const learning::VectorNavEnv& env) { return fields_of(env.env(0).observation()); })
+      .def(
+          "reset",
+          [](learning::VectorNavEnv& env, const py::object& seed) {
+            const std::optional<uint64_t> s = seed_of(seed);
+            FloatArray observations({env.num_envs(), env.observation_size()});
+            float* out = observations.mutable_data();
+            py::gil_scoped_release release;
+            env.reset(s, out);
+            return observations;
+          },
+          py::arg("seed") = py::none())
+      .def("step",
+           [](learning::VectorNavEnv& env, const py::array& actions_in) {
+             FloatArray actions = FloatArray::ensure(actions_in);
+             if (!actions) {
+               throw py::value_error("actions: expected an array of numbers");
+             }
+             check_shape("actions", actions, {env.num_envs(), learning::kActionSize},
+                         "(" + std::to_string(env.num_envs()) + ", 3)");
+             const py::ssize_t n = env.num_envs(), size = env.observation_size();
+             FloatArray observations({n, size});
+             FloatArray final_observations({n, size});
+             py::array_t<double> rewards(n);
+             py::array_t<bool> terminated(n), truncated(n);
+             learning::VectorStepOutput out{observations.mutable_data(), rewards.mutable_data(),
+                                            terminated.mutable_data(), truncated.mutable_data(),
+                                            final_observations.mutable_data()};
+             const float* in = actions.data();
+             {
+               py::gil_scoped_release release;
+               env.step(in, out);
+             }
+             return py::make_tuple(observations, rewards, terminated, truncated,
+                                   final_observations);
+           })
+      .def("metrics", [](const learning::VectorNavEnv& env,
+                         int i) { return metrics_dict(env.env(i).metrics()); })
+      .def("final_metrics", [](const learning::VectorNavEnv& env, int i) {
+        return metrics_dict(env.final_metrics(i));
+      });
+}
