@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Fails when the build, the nodes, the tools or the tests use a Debian package that
-scripts/install_deps.sh does not install, directly or as a dependency.
+scripts/install_deps.sh does not install, directly or as a dependency; and when an optional Python
+import (guarded by `except ImportError`) comes from a package that neither it nor
+scripts/install_extras.sh installs.
 
 A machine that already has a package hides its absence from install_deps.sh: CI once stayed green
 without libnlopt-dev while a fresh machine failed. So this looks at what was really used: the
@@ -77,6 +79,7 @@ class Usage:
         roots = tuple(os.path.realpath(root) for root in (repo, build, sources))
         self.own_roots = roots + TRANSIENT_ROOTS
         self.files = {}     # path -> why it counts as used
+        self.optional = {}  # path -> why: optional imports, from install_extras.sh or the main list
         self.problems = []  # what was used but could not be found at all
 
     def use(self, path, why):
@@ -225,12 +228,33 @@ def python_sources(repo):
                 yield f"{os.path.relpath(script, repo)} (here-document)", repo, body
 
 
+def top_modules(node):
+    if isinstance(node, ast.Import):
+        yield from (alias.name.split(".")[0] for alias in node.names)
+    elif isinstance(node, ast.ImportFrom) and node.level == 0:
+        yield node.module.split(".")[0]
+
+
+def catches_import_error(handler):
+    names = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+    return any(isinstance(name, ast.Name) and name.id in ("ImportError", "ModuleNotFoundError")
+               for name in names)
+
+
 def imported_modules(source):
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Import):
-            yield from (alias.name.split(".")[0] for alias in node.names)
-        elif isinstance(node, ast.ImportFrom) and node.level == 0:
-            yield node.module.split(".")[0]
+    """(required, optional) top-level modules of a source. An import in the body of a `try:` whose
+    handler catches ImportError is optional: the program runs without it (it tells the user to
+    run scripts/install_extras.sh)."""
+    tree = ast.parse(source)
+    optional_nodes = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Try) and any(catches_import_error(h) for h in node.handlers):
+            for statement in node.body:
+                optional_nodes.update(id(inner) for inner in ast.walk(statement))
+    required, optional = set(), set()
+    for node in ast.walk(tree):
+        (optional if id(node) in optional_nodes else required).update(top_modules(node))
+    return required, optional - required
 
 
 def module_file(name):
@@ -255,7 +279,8 @@ def is_own_module(module, folder):
 
 def collect_python_imports(repo, usage):
     for name, folder, source in python_sources(repo):
-        for module in sorted(set(imported_modules(source))):
+        required, optional = imported_modules(source)
+        for module in sorted(required):
             if is_own_module(module, folder):
                 continue
             path = module_file(module)
@@ -264,6 +289,11 @@ def collect_python_imports(repo, usage):
                     f"{name} imports {module}, which Debian's python3 does not find")
             else:
                 usage.use(path, f"python module {module}, imported by {name}")
+        for module in sorted(optional):
+            path = module_file(module)
+            if path is not None and not is_own_module(module, folder):
+                usage.optional.setdefault(path, f"optional python module {module}, imported by "
+                                                f"{name}")
 
 
 # --- programs the shell scripts run -----------------------------------------------------------
@@ -490,13 +520,17 @@ class Dpkg:
 # The check.
 
 
-def install_deps_packages(repo):
-    """The entries of install_deps.sh's packages=( ... ) array, comments left out."""
-    script = read(os.path.join(repo, "scripts", "install_deps.sh"))
-    match = re.search(r"(?ms)^packages=\((.*?)^\)", script)
+def install_script_packages(repo, script_name):
+    """The entries of an install script's packages=( ... ) array, comments left out."""
+    script = re.sub(r"#.*", "", read(os.path.join(repo, "scripts", script_name)))
+    match = re.search(r"(?ms)^packages=\((.*?)\)", script)
     if not match:
-        sys.exit("check_deps: scripts/install_deps.sh has no packages=( ... ) array")
-    return re.sub(r"#.*", "", match.group(1)).split()
+        sys.exit(f"check_deps: scripts/{script_name} has no packages=( ... ) array")
+    return match.group(1).split()
+
+
+def install_deps_packages(repo):
+    return install_script_packages(repo, "install_deps.sh")
 
 
 class UsedPackages:
@@ -569,6 +603,21 @@ def run_self_test(used, dpkg, listed):
     return passed
 
 
+def check_optional(usage, dpkg, listed, extras):
+    """Optional imports (imported_modules) must come from install_deps.sh or install_extras.sh."""
+    allowed = dpkg.closure(listed + extras) | dpkg.closure(dpkg.always)
+    lines = [f"{owners[0]} is used (e.g. {path}: {usage.optional[path]}) but neither "
+             f"scripts/install_deps.sh nor scripts/install_extras.sh installs it"
+             for path, owners in sorted(dpkg.owners(list(usage.optional)).items())
+             if owners and not allowed.intersection(owners)]
+    for line in lines:
+        report(line)
+    if not lines and usage.optional:
+        report(f"{len(usage.optional)} optional modules, each from scripts/install_deps.sh or "
+               f"scripts/install_extras.sh")
+    return not lines
+
+
 def check_package_xml(repo, dpkg, listed):
     """Fails for a listed library whose rosdep key (ROSDEP_KEYS) package.xml lacks; warns about
     package.xml keys that relate to nothing install_deps.sh installs."""
@@ -621,8 +670,11 @@ def main():
                  "scripts/install_deps.sh does not list it")
     listed = [package for package in listed if package not in args.without]
     dpkg = Dpkg()
-    used = UsedPackages(collect_usage(args.repo, args.build), dpkg)
+    usage = collect_usage(args.repo, args.build)
+    used = UsedPackages(usage, dpkg)
     passed = run_check(used, dpkg, listed)
+    passed = check_optional(usage, dpkg, listed,
+                            install_script_packages(args.repo, "install_extras.sh")) and passed
     passed = check_package_xml(args.repo, dpkg, listed) and passed
     if args.self_test:
         passed = run_self_test(used, dpkg, listed) and passed

@@ -23,7 +23,7 @@ struct RewardWeights {
   double collision{-10.0};      // per contact begun with a person or a wall or furniture
   double personal_space{-1.0};  // per second inside a personal space (those approached excepted)
   double ospace{-2.0};          // per entry into the o-space of a group not joined
-  double smoothness{-0.05};     // per m/s and rad/s the command changed since the last step
+  double smoothness{-0.01};     // per m/s and rad/s the command changed since the last step
   double time{-0.1};            // per second
 
   template <class V>
