@@ -21,7 +21,9 @@ add_library(ari_navigation
   src/navigation/nlopt_solver.cpp
   src/navigation/obstacle_cost.cpp
   src/navigation/perceived_scene.cpp
+  src/navigation/mlp_policy.cpp
   src/navigation/perception_report.cpp
+  src/navigation/policy_controller.cpp
   src/navigation/policy_observation.cpp
   src/navigation/scene_tracker.cpp
   src/navigation/personal_space_cost.cpp

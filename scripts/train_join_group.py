@@ -55,7 +55,9 @@ def parse_arguments():
     parser.add_argument("--gamma", type=float, default=0.99)
     parser.add_argument("--lam", type=float, default=0.95, help="GAE lambda")
     parser.add_argument("--clip", type=float, default=0.2)
-    parser.add_argument("--hidden", type=int, default=128, help="units of each hidden layer")
+    parser.add_argument("--hidden", type=int, default=128,
+                        help="units of each hidden layer (at most 160: the exported policy must "
+                             "stay under the 1 MiB that YAML files are read up to)")
     parser.add_argument("--eval-every", type=int, default=2_000_000, help="steps between evaluations")
     parser.add_argument("--print-every", type=int, default=250_000, help="steps between progress lines")
     parser.add_argument("--eval-seeds", type=int, default=100, help="held-out seeds per evaluation")
@@ -67,6 +69,8 @@ def parse_arguments():
         if getattr(args, name) <= 0:
             parser.error(f"--{name.replace('_', '-')}: expected a number > 0, "
                          f"got {getattr(args, name)}")
+    if args.hidden > 160:
+        parser.error(f"--hidden: expected at most 160, got {args.hidden}")
     return args
 
 
@@ -156,33 +160,37 @@ def evaluate(model, normaliser, env, seeds, low, high, random_policy=False, rng=
     return {key: value / len(seeds) for key, value in totals.items()}
 
 
-def export_policy(path, model, normaliser, task, observation_config, low, high):
-    """The policy for social_mpc_node's `controller: policy` (docs/learning.md, "Deploying"):
-    plain YAML, read without PyTorch."""
+def export_policy(path, model, normaliser, env):
+    """The policy for social_mpc_node's controller/policy_file (docs/learning.md, "Deploying a
+    policy"): plain YAML, read without PyTorch."""
     layers = [module for module in model.actor if isinstance(module, nn.Linear)]
 
     def row_list(array):
-        return "[" + ", ".join(f"{value:.9g}" for value in array) + "]"
+        return "[" + ", ".join(f"{value:.7g}" for value in array) + "]"
 
     with open(path + ".tmp", "w") as out:
         out.write(f"format: {POLICY_FORMAT}\n")
-        out.write(f"task: {task}\n")
+        out.write(f"task: {env.task}\n")
+        out.write(f"control_rate: {1.0 / env.step_s:.9g}\n")
+        out.write("arrival:\n")
+        out.write(f"  position_tolerance: {env.arrival[0]:.9g}\n")
+        out.write(f"  heading_tolerance: {env.arrival[1]:.9g}\n")
         out.write("observation:\n")
-        for key, value in observation_config.items():
+        for key, value in env.observation_config.items():
             out.write(f"  {key}: {value}\n")
         out.write(f"observation_mean: {row_list(normaliser.mean)}\n")
         out.write(f"observation_std: {row_list(normaliser.std())}\n")
         out.write("observation_clip: 10.0\n")
-        out.write(f"action_low: {row_list(low)}\n")
-        out.write(f"action_high: {row_list(high)}\n")
+        out.write(f"action_low: {row_list(env.action_space.low)}\n")
+        out.write(f"action_high: {row_list(env.action_space.high)}\n")
         out.write("layers:\n")
         for index, layer in enumerate(layers):
             weight = layer.weight.detach().numpy()
             out.write(f"  - activation: {'tanh' if index + 1 < len(layers) else 'none'}\n")
+            out.write(f"    inputs: {weight.shape[1]}\n")
+            out.write(f"    outputs: {weight.shape[0]}\n")
             out.write(f"    bias: {row_list(layer.bias.detach().numpy())}\n")
-            out.write("    weight:\n")
-            for row in weight:
-                out.write(f"      - {row_list(row)}\n")
+            out.write(f"    weight: {row_list(weight.reshape(-1))}\n")
     os.replace(path + ".tmp", path)
 
 
@@ -224,8 +232,6 @@ def main():
     eval_env = learning.make(args.task)
     low, high = eval_env.action_space.low, eval_env.action_space.high
     observation_size = envs.single_observation_space.shape[0]
-    observation_config = {"nearest_people": 6, "patch_cells": 16, "patch_resolution": 0.25,
-                          "people_range": 8.0}
     model = ActorCritic(observation_size, len(low), args.hidden)
     optimiser = torch.optim.Adam(model.parameters(), lr=args.lr, eps=1e-5)
     normaliser = RunningNormaliser(observation_size)
@@ -332,8 +338,7 @@ def main():
             torch.save({"model": model.state_dict(), "mean": normaliser.mean,
                         "var": normaliser.var, "count": normaliser.count, "steps": steps},
                        os.path.join(args.out, f"checkpoint_{steps}.pt"))
-            export_policy(os.path.join(args.out, "policy.yaml"), model, normaliser, args.task,
-                          observation_config, low, high)
+            export_policy(os.path.join(args.out, "policy.yaml"), model, normaliser, eval_env)
             plot_curve(os.path.join(args.out, "curve.png"), history, random_result["success"])
 
     summary = {"task": args.task, "steps": steps, "minutes": (time.monotonic() - started) / 60,

@@ -4,6 +4,7 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/navigation/policy_controller.hpp"
 
 namespace ari_social_sim::navigation {
 namespace {
@@ -70,14 +71,26 @@ SessionInputs rounded(const SessionInputs& inputs) {
 }  // namespace
 
 NavigationSession::NavigationSession(const NavigationConfig& config)
-    : config_(config), tracker_(config.scene) {}
+    : config_(config), tracker_(config.scene), control_rate_hz_(config.navigator.rate_hz) {
+  if (!config.navigator.policy_file.empty()) {
+    policy_ = std::make_shared<const MlpPolicy>(MlpPolicy::load_file(config.navigator.policy_file));
+    control_rate_hz_ = policy_->control_rate_hz();
+  }
+}
 
 SessionOutput NavigationSession::set_map(const model::OccupancyGrid& map) {
   SessionOutput out;
   if (pursued_) {
     end_pursued({GoalState::kAborted, "the map changed while navigating"}, out);
   }
-  navigator_ = std::make_unique<Navigator>(config_, map);
+  if (policy_) {
+    controller_ = std::make_unique<PolicyController>(config_, map, policy_);
+    navigator_ = nullptr;
+  } else {
+    auto navigator = std::make_unique<Navigator>(config_, map);
+    navigator_ = navigator.get();
+    controller_ = std::move(navigator);
+  }
   return out;
 }
 
@@ -110,7 +123,7 @@ SessionOutput NavigationSession::cancel(GoalId goal) {
     waiting_.reset();
   }
   if (pursued_ == goal) {
-    navigator_->cancel();
+    controller_->cancel();
     end_pursued(canceled, out);
   }
   return out;
@@ -118,7 +131,7 @@ SessionOutput NavigationSession::cancel(GoalId goal) {
 
 SessionOutput NavigationSession::control(const SessionInputs& told) {
   SessionOutput out;
-  const double rate_hz = config_.navigator.rate_hz;
+  const double rate_hz = control_rate_hz_;
   const bool look = first_in_period(told.now_s, kLooksPerCycle * rate_hz, last_look_);
   const bool cycle = first_in_period(told.now_s, rate_hz, last_cycle_);
   if (!look && !cycle) {
@@ -136,7 +149,7 @@ SessionOutput NavigationSession::control(const SessionInputs& told) {
     return out;
   }
   const NavigatorStep step =
-      navigator_->update(inputs.now_s, *inputs.robot, tracker_.scene(inputs.now_s));
+      controller_->update(inputs.now_s, *inputs.robot, tracker_.scene(inputs.now_s));
   out.step = step;
   if (step.state == NavigationState::kSucceeded) {
     end_pursued({GoalState::kSucceeded, ""}, out);
@@ -173,13 +186,13 @@ void NavigationSession::try_waiting_goal(const SessionInputs& inputs, SessionOut
 void NavigationSession::start(GoalId id, const NavigationTarget& target,
                               const SessionInputs& inputs, SessionOutput& out) {
   try {
-    if (!navigator_) {
+    if (!controller_) {
       throw core::RequestError("no map received on /map yet");
     }
     if (!inputs.robot) {
       throw core::RequestError("no transform from map to base_footprint yet");
     }
-    navigator_->start(target, tracker_.scene(inputs.now_s), *inputs.robot, inputs.now_s);
+    controller_->start(target, tracker_.scene(inputs.now_s), *inputs.robot, inputs.now_s);
   } catch (const core::Error& e) {
     // The goal pursued before, if any, goes on: the navigator kept it.
     out.goals.push_back({id, {GoalState::kAborted, e.what()}});

@@ -27,14 +27,6 @@ std::string format_point(const Eigen::Vector2d& p) {
   return text;
 }
 
-// A goal that cannot be started, as the request's error (Navigator::start).
-[[noreturn]] void refuse(const GoalFailure& failure) {
-  if (failure.kind == GoalFailure::Kind::kUnknownTarget) {
-    throw UnknownTarget(failure.reason);
-  }
-  throw GoalUnreachable(failure.reason);
-}
-
 }  // namespace
 
 Navigator::Navigator(const NavigationConfig& config, const model::OccupancyGrid& map)
@@ -50,13 +42,13 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   check_target(target);
   GoalSearch search = goal_finder_.find(target, scene, sdf_, robot.pose);
   if (const auto* failure = std::get_if<GoalFailure>(&search)) {
-    refuse(*failure);
+    refuse_goal(*failure);
   }
   Goal& goal = std::get<Goal>(search);
   std::vector<CostDisc> discs = cost_discs(scene, goal);
   FieldSearch field = field_to(goal, robot.pose, discs);
   if (const auto* failure = std::get_if<GoalFailure>(&field)) {
-    refuse(*failure);
+    refuse_goal(*failure);
   }
   field_discs_ = std::move(discs);
   goal_ = std::move(goal);

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "ari_social_sim/ApproachAction.h"
@@ -75,7 +76,7 @@ class SocialMpcNode {
     // The session looks at perception and runs its cycles at the first call in their periods:
     // one call per look period.
     const double looks_hz =
-        navigation::NavigationSession::kLooksPerCycle * config_.navigator.rate_hz;
+        navigation::NavigationSession::kLooksPerCycle * session_.control_rate_hz();
     timer_ = nh_.createTimer(ros::Duration(1.0 / looks_hz), &SocialMpcNode::on_timer, this);
     publish_status("idle");
   }
@@ -151,8 +152,8 @@ class SocialMpcNode {
       in_map.theta = core::wrap_angle(frame_in_map.theta + pose.theta);
     }
     // Without a map yet the goal is accepted and then aborted with that reason (the session).
-    if (const navigation::Navigator* navigator = session_.navigator()) {
-      navigation::check_inside_map(in_map, navigation::MapBounds::of(navigator->sdf()),
+    if (const navigation::GoalController* controller = session_.controller()) {
+      navigation::check_inside_map(in_map, navigation::MapBounds::of(controller->sdf()),
                                    field + "pose.position");
     }
     return in_map;
@@ -330,12 +331,12 @@ class SocialMpcNode {
 
   // Distance and heading error to the person or o-space centre, as the action reports them.
   void fill_placement(ApproachResult& result) const {
-    const navigation::Navigator* navigator = session_.navigator();
+    const navigation::GoalController* controller = session_.controller();
     const std::optional<navigation::RobotObservation> robot = measured_.observe(tf_.buffer());
-    if (!navigator || !navigator->goal() || !navigator->goal()->look_at || !robot) {
+    if (!controller || !controller->goal() || !controller->goal()->look_at || !robot) {
       return;
     }
-    const Eigen::Vector2d to = *navigator->goal()->look_at - robot->pose.position;
+    const Eigen::Vector2d to = *controller->goal()->look_at - robot->pose.position;
     result.final_distance = to.norm();
     result.final_heading_error =
         std::abs(core::angle_difference(std::atan2(to.y(), to.x()), robot->pose.theta));
@@ -363,17 +364,22 @@ class SocialMpcNode {
   void publish_cycle(const navigation::NavigatorStep& step,
                      const navigation::RobotObservation& robot, navigation::GoalId goal,
                      const ros::Time& now) {
-    const navigation::Navigator& navigator = *session_.navigator();
+    // A learned policy has no plan nor MPC markers to show.
+    const navigation::Navigator* navigator = session_.navigator();
     if (step.state != navigation::NavigationState::kActive) {
-      markers_pub_.publish(navigation_markers(navigator, false, kMapFrame));
+      if (navigator) {
+        markers_pub_.publish(navigation_markers(*navigator, false, kMapFrame));
+      }
       return;
     }
     if (const auto client = clients_.find(goal); client != clients_.end()) {
       publish_feedback(client->second, step, robot, now);
     }
-    plan_pub_.publish(plan_msg(navigator.plan(), kMapFrame, now));
-    if (markers_pub_.getNumSubscribers() > 0) {
-      markers_pub_.publish(navigation_markers(navigator, true, kMapFrame));
+    if (navigator) {
+      plan_pub_.publish(plan_msg(navigator->plan(), kMapFrame, now));
+      if (markers_pub_.getNumSubscribers() > 0) {
+        markers_pub_.publish(navigation_markers(*navigator, true, kMapFrame));
+      }
     }
     char status[128];
     std::snprintf(status, sizeof(status), "%s, %.2f m to go", step.phase.c_str(),
@@ -382,7 +388,7 @@ class SocialMpcNode {
   }
 
   void send(const navigation::BaseCommand& command) {
-    const CommandMessages messages = to_msgs(command, ros::Time::now(), config_.navigator.rate_hz);
+    const CommandMessages messages = to_msgs(command, ros::Time::now(), session_.control_rate_hz());
     cmd_vel_pub_.publish(messages.twist);
     if (messages.head) {
       head_pub_.publish(*messages.head);
@@ -450,10 +456,21 @@ int main(int argc, char** argv) {
     ROS_FATAL("%s", e.what());
     return 2;
   }
-  ROS_INFO("social_mpc_node: %s solver, horizon %d x %.2f s, replanning at %.0f Hz",
-           navigation::solver_name(config.mpc.solver), config.mpc.horizon_steps, config.mpc.step_s,
-           config.navigator.rate_hz);
-  nodes::SocialMpcNode node(config);
+  std::unique_ptr<nodes::SocialMpcNode> node;
+  try {
+    node = std::make_unique<nodes::SocialMpcNode>(config);
+  } catch (const core::Error& e) {
+    ROS_FATAL("%s", e.what());  // the policy file could not be read
+    return 2;
+  }
+  if (config.navigator.policy_file.empty()) {
+    ROS_INFO("social_mpc_node: %s solver, horizon %d x %.2f s, replanning at %.0f Hz",
+             navigation::solver_name(config.mpc.solver), config.mpc.horizon_steps,
+             config.mpc.step_s, config.navigator.rate_hz);
+  } else {
+    ROS_INFO("social_mpc_node: the learned policy %s drives ARI instead of SocialMPC",
+             config.navigator.policy_file.c_str());
+  }
   ros::spin();
   return 0;
 }

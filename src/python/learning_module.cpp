@@ -102,8 +102,28 @@ PYBIND11_MODULE(_learning, m) {
           py::arg("package_dir"), py::arg("task_file"), py::arg("overrides"), py::arg("source"))
       .def_property_readonly("time_limit_s",
                              [](const learning::NavEnvSetup& s) { return s.task.time_limit_s; })
-      .def_property_readonly("task", [](const learning::NavEnvSetup& s) {
-        return std::string(core::choice_name(s.task.task, learning::kNavTaskNames));
+      .def_property_readonly("task",
+                             [](const learning::NavEnvSetup& s) {
+                               return std::string(
+                                   core::choice_name(s.task.task, learning::kNavTaskNames));
+                             })
+      .def_property_readonly("arrival",
+                             [](const learning::NavEnvSetup& s) {
+                               return py::make_tuple(s.task.arrival.position_tolerance_m,
+                                                     s.task.arrival.heading_tolerance_rad);
+                             })
+      .def_property_readonly("observation_config",
+                             [](const learning::NavEnvSetup& s) {
+                               const navigation::PolicyObservationConfig& o = s.task.observation;
+                               py::dict d;
+                               d["nearest_people"] = o.nearest_people;
+                               d["patch_cells"] = o.patch_cells;
+                               d["patch_resolution"] = o.patch_resolution_m;
+                               d["people_range"] = o.people_range_m;
+                               return d;
+                             })
+      .def_property_readonly("step_s", [](const learning::NavEnvSetup&) {
+        return learning::NavEnv::step_s();
       });
 
   m.def("action_bounds", [] {

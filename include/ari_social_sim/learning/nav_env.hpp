@@ -90,6 +90,8 @@ class NavEnv {
   NavEnv(const NavEnv&) = delete;
   NavEnv& operator=(const NavEnv&) = delete;
 
+  /// Sim seconds of one step: one world step of the episodes' simulations.
+  static double step_s() { return world::SimulationConfig{}.step_s; }
   int observation_size() const { return observation_.size(); }
   const navigation::PolicyObservation& observation() const { return observation_; }
   const NavEnvSetup& setup() const { return *setup_; }

@@ -201,6 +201,7 @@ struct NavigatorConfig {
   double goal_switch_time_s{1.0};
   double patience_s{4.0};
   double patience_halving_s{2.0};
+  std::string policy_file;  // a learned policy driving instead of SocialMPC (docs/learning.md)
   GeodesicParams geodesic;  // the file's `geodesic:` section
 
   /// The `controller:` section.
@@ -229,6 +230,9 @@ struct NavigatorConfig {
             "patience_halving",
             core::positive());
     v.field("patience_halving", patience_halving_s, "s", core::positive());
+    v.field("policy_file", policy_file,
+            "a trained policy (scripts/train_join_group.py's policy.yaml) that drives ARI instead "
+            "of SocialMPC; empty: SocialMPC");
   }
 };
 

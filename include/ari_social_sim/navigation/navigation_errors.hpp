@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/navigation/goal_finder.hpp"
 
 namespace ari_social_sim::navigation {
 
@@ -16,5 +17,13 @@ class GoalUnreachable : public core::RequestError {
  public:
   using core::RequestError::RequestError;
 };
+
+/// Throws the error of a goal that cannot be started: UnknownTarget or GoalUnreachable.
+[[noreturn]] inline void refuse_goal(const GoalFailure& failure) {
+  if (failure.kind == GoalFailure::Kind::kUnknownTarget) {
+    throw UnknownTarget(failure.reason);
+  }
+  throw GoalUnreachable(failure.reason);
+}
 
 }  // namespace ari_social_sim::navigation

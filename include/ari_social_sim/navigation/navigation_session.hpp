@@ -9,6 +9,7 @@
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/model/tracked_person.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/mlp_policy.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/navigation/perception_report.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
@@ -70,7 +71,7 @@ struct SessionOutput {
 /// does not report yet waits for it for kTargetWait_s; a goal that cannot be started is aborted
 /// with the reason and the goal pursued before goes on; one that starts preempts the goal pursued
 /// before; cancel ends a goal; whenever a pursued goal ends, the base is stopped (a zero twist).
-/// Control: kLooksPerCycle times per control period (1/navigator.rate_hz of sim time) it looks at
+/// Control: kLooksPerCycle times per control period (1/control_rate_hz() of sim time) it looks at
 /// perception (tracked persons at their bodies, the groups received since the last look:
 /// navigation::observe), and once per period it runs a cycle: it starts a waiting goal whose
 /// target is now known and runs the Navigator on the pursued goal. Each happens at the first
@@ -90,6 +91,9 @@ class NavigationSession {
   /// seeds).
   static constexpr int kLooksPerCycle = 2;
 
+  /// Drives goals with SocialMPC, or with the learned policy of `controller.policy_file` when it
+  /// names one (docs/learning.md). Throws core::ConfigError naming the policy file when it cannot
+  /// be read.
   explicit NavigationSession(const NavigationConfig& config);
   NavigationSession(const NavigationSession&) = delete;
   NavigationSession& operator=(const NavigationSession&) = delete;
@@ -113,9 +117,13 @@ class NavigationSession {
   GoalId newest_goal() const { return next_goal_ - 1; }
   /// The goal being pursued, 0 when none.
   GoalId pursued_goal() const { return pursued_.value_or(0); }
-  /// The navigator, for what the caller shows of it (plan, markers, the goal's placement); null
-  /// before the map.
-  const Navigator* navigator() const { return navigator_.get(); }
+  /// What drives the goals (the goal's placement, the map); null before the map.
+  const GoalController* controller() const { return controller_.get(); }
+  /// SocialMPC's navigator, for what the caller shows of it (plan, markers); null before the map
+  /// and when a learned policy drives.
+  const Navigator* navigator() const { return navigator_; }
+  /// Control cycles per second of sim time: the controller's rate, or the policy's.
+  double control_rate_hz() const { return control_rate_hz_; }
 
  private:
   struct WaitingGoal {
@@ -134,7 +142,10 @@ class NavigationSession {
 
   NavigationConfig config_;
   SceneTracker tracker_;
-  std::unique_ptr<Navigator> navigator_;
+  std::shared_ptr<const MlpPolicy> policy_;
+  double control_rate_hz_{0.0};
+  std::unique_ptr<GoalController> controller_;
+  const Navigator* navigator_{nullptr};  // controller_, when SocialMPC drives
   std::vector<ReportedGroup> received_groups_;  // since perception was last looked at
   std::optional<WaitingGoal> waiting_;
   std::optional<GoalId> pursued_;

@@ -9,45 +9,18 @@
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
+#include "ari_social_sim/navigation/goal_controller.hpp"
 #include "ari_social_sim/navigation/goal_finder.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/social_mpc.hpp"
 
 namespace ari_social_sim::navigation {
 
-/// ARI as the control loop measures it.
-struct RobotObservation {
-  core::Pose2 pose;        // base_footprint in the map frame
-  double linear_mps{0.0};  // base velocities (odometry)
-  double angular_rps{0.0};
-  double pan_rad{0.0};  // head_1_joint
-  double pan_rps{0.0};
-};
-
-/// What to send to ARI now.
-struct NavigationCommand {
-  double linear_mps{0.0};
-  double angular_rps{0.0};
-  double pan_rad{0.0};  // head_1_joint position target
-};
-
-enum class NavigationState { kIdle, kActive, kSucceeded, kAborted };
-
-/// The outcome of one control cycle.
-struct NavigatorStep {
-  NavigationState state{NavigationState::kIdle};
-  std::string phase;   // "approaching", "aligning", "waiting for the target", ...
-  std::string reason;  // why the goal was aborted
-  NavigationCommand command;
-  double distance_to_goal_m{0.0};  // along the geodesic field
-  bool replanned{false};           // this cycle ran the MPC
-};
-
 /// The control loop shared by social_mpc_node and the benchmark: resolves the target into a goal
 /// pose each cycle (GoalFinder), keeps the geodesic field to it up to date, runs the MPC, detects
 /// arrival, and aborts with a reason when the goal is unreachable, the target is lost beyond the
 /// timeout, or ARI makes no progress. Holds the static map's signed distance field.
-class Navigator {
+class Navigator : public GoalController {
  public:
   /// Throws core::ConfigError for an invalid config (NavigationConfig::validate).
   Navigator(const NavigationConfig& config, const model::OccupancyGrid& map);
@@ -58,19 +31,20 @@ class Navigator {
   /// (check_target: a non-finite pose, an empty id), UnknownTarget when the target's id is not in
   /// `scene`, GoalUnreachable when the goal pose cannot be placed or reached from `robot`.
   void start(const NavigationTarget& target, const PerceivedScene& scene,
-             const RobotObservation& robot, double time_s);
+             const RobotObservation& robot, double time_s) override;
   /// Stops pursuing the goal (state back to idle).
-  void cancel();
+  void cancel() override;
   /// One control cycle at sim time `time_s`. Never throws: a target lost or out of reach is an
   /// outcome of the cycle (kept pursuing for a while, or aborted with the reason).
-  NavigatorStep update(double time_s, const RobotObservation& robot, const PerceivedScene& scene);
+  NavigatorStep update(double time_s, const RobotObservation& robot,
+                       const PerceivedScene& scene) override;
 
   NavigationState state() const { return state_; }
-  const GridField& sdf() const { return sdf_; }
+  const GridField& sdf() const override { return sdf_; }
   const FootprintModel& footprint() const { return footprint_; }
   const NavigationConfig& config() const { return config_; }
   /// The current goal and its geodesic field (null before the first goal).
-  const std::optional<Goal>& goal() const { return goal_; }
+  const std::optional<Goal>& goal() const override { return goal_; }
   const GeodesicField* geodesic() const { return geodesic_.get(); }
   /// The last plan and the problem it solved.
   const MpcSolution& plan() const { return plan_; }

@@ -94,7 +94,10 @@ class NavigationEnv(_EnvBase):
         self.observation_space, self.observation_layout = _observation_space(self._core)
         self.action_space = _action_space()
         self.task = task
-        self.spec_time_limit_s = self._setup.time_limit_s
+        self.time_limit_s = self._setup.time_limit_s
+        self.step_s = self._setup.step_s
+        self.arrival = self._setup.arrival  # (position m, heading rad) tolerances
+        self.observation_config = self._setup.observation_config
         self._closed = False
 
     def reset(self, seed=None, options=None):
