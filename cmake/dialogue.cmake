@@ -21,6 +21,7 @@ add_library(ari_dialogue
   src/dialogue/agenda.cpp
   src/dialogue/user_simulation.cpp
   src/dialogue/reward.cpp
+  src/dialogue/robot_action_request.cpp
   src/dialogue/dialogue_config.cpp
   src/dialogue/dialogue_env.cpp
   src/dialogue/rule_policy.cpp

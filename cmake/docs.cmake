@@ -2,7 +2,8 @@
 # test that keeps the committed page up to date.
 add_library(ari_parameters_page src/tools/parameter_docs/parameters_page.cpp)
 target_include_directories(ari_parameters_page PUBLIC src/tools/parameter_docs)
-target_link_libraries(ari_parameters_page PUBLIC ari_scenario ari_physics ari_rendering ari_mapping)
+target_link_libraries(ari_parameters_page PUBLIC ari_scenario ari_learning ari_physics ari_rendering
+  ari_mapping)
 
 add_executable(parameter_docs src/tools/parameter_docs/parameter_docs.cpp)
 target_link_libraries(parameter_docs ari_parameters_page)

@@ -5,6 +5,7 @@ add_library(ari_learning
   src/learning/nav_env.cpp
   src/learning/nav_task_config.cpp
   src/learning/navigation_episodes.cpp
+  src/learning/scenario_nav_env.cpp
   src/learning/vector_nav_env.cpp)
 target_link_libraries(ari_learning PUBLIC ari_scenario)
 

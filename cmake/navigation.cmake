@@ -49,6 +49,7 @@ if(CATKIN_ENABLE_TESTING)
       test/navigation/test_navigation_session.cpp
       test/navigation/test_navigator.cpp
       test/navigation/test_perception_report.cpp
+      test/navigation/test_policy_controller.cpp
       test/navigation/test_scene_tracker.cpp
       test/navigation/test_episode_scorer.cpp
     LIBRARIES ari_navigation ari_world)

@@ -266,8 +266,8 @@ def main():
             final_value = np.zeros(args.envs, np.float32)
             if truncated.any():
                 with torch.no_grad():
-                    final = torch.from_numpy(normaliser(infos["final_observation"]))
-                    final_value = np.where(truncated, model.value(final).numpy(), 0.0)
+                    final = normaliser(infos["final_observation"][truncated])
+                    final_value[truncated] = model.value(torch.from_numpy(final)).numpy()
             episode_rewards += rewards
             for i in np.flatnonzero(terminated | truncated):
                 recent.append((infos["final_info"][i]["success"], episode_rewards[i]))

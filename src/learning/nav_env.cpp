@@ -9,6 +9,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/learning/ground_truth.hpp"
+#include "ari_social_sim/learning/scenario_nav_env.hpp"
 #include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/navigation/perception_report.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
@@ -34,6 +35,7 @@ EpisodeType episode_type_for(NavTask task, uint64_t seed) {
     case NavTask::kApproachPerson:
       return EpisodeType::kApproach;
     case NavTask::kJoinGroup:
+    case NavTask::kScenario:  // ScenarioNavEnv's
       break;
   }
   // Groups of 2, 3 and 4 in equal shares, drawn from the seed.
@@ -68,6 +70,11 @@ std::shared_ptr<const NavEnvSetup> NavEnvSetup::load(const std::string& package_
   setup->navigation =
       navigation::NavigationConfig::load_file(package_dir + "/config/social_mpc.yaml");
   setup->worlds = EpisodeWorlds::load(package_dir + "/worlds");
+  if (setup->task.task == NavTask::kScenario) {
+    setup->scenario = scenario::load_scenario_file(setup->task.scenario);
+    setup->episode = scenario::EpisodeConfig::load(package_dir + "/config");
+    setup->episode->perception.errors_enabled = setup->task.perception_errors;
+  }
   return setup;
 }
 
@@ -81,6 +88,19 @@ ActionBounds action_bounds() {
                  static_cast<float>(limits.max_angular_rps),
                  static_cast<float>(limits.head_pan_limit_rad)};
   return bounds;
+}
+
+std::array<float, kActionSize> checked_action(const float* action, const ActionBounds& bounds) {
+  std::array<float, kActionSize> command{};
+  for (int i = 0; i < kActionSize; ++i) {
+    if (!std::isfinite(action[i])) {
+      throw core::RequestError(std::string("learning: action[") + std::to_string(i) + "] (" +
+                               kActionNames[i] + "): expected a finite number, got " +
+                               std::to_string(action[i]));
+    }
+    command[i] = std::clamp(action[i], bounds.low[i], bounds.high[i]);
+  }
+  return command;
 }
 
 NavEnv::NavEnv(std::shared_ptr<const NavEnvSetup> setup)
@@ -100,8 +120,7 @@ navigation::RobotObservation NavEnv::robot() const {
 }
 
 void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
-  const uint64_t episode_seed = seed.value_or(next_seed_);
-  next_seed_ = episode_seed + seed_stride_;
+  const uint64_t episode_seed = seeds_.take(seed);
   const NavTaskConfig& task = setup_->task;
   const EpisodeType type = episode_type_for(task.task, episode_seed);
   for (int attempt = 0;; ++attempt) {
@@ -208,15 +227,7 @@ NavStepResult NavEnv::step(const float* action, float* observation) {
   if (done_) {
     throw core::RequestError("learning: step() after the episode ended; call reset()");
   }
-  std::array<float, kActionSize> command{};
-  for (int i = 0; i < kActionSize; ++i) {
-    if (!std::isfinite(action[i])) {
-      throw core::RequestError(std::string("learning: action[") + std::to_string(i) + "] (" +
-                               kActionNames[i] + "): expected a finite number, got " +
-                               std::to_string(action[i]));
-    }
-    command[i] = std::clamp(action[i], bounds_.low[i], bounds_.high[i]);
-  }
+  const std::array<float, kActionSize> command = checked_action(action, bounds_);
   world::Simulation& sim = *episode_.simulation;
   sim.command_ari_twist(command[0], command[1]);
   sim.command_ari_head_pan(command[2]);
@@ -277,6 +288,13 @@ NavStepResult NavEnv::step(const float* action, float* observation) {
   }
   write_observation(observation);
   return result;
+}
+
+std::unique_ptr<Env> make_env(std::shared_ptr<const NavEnvSetup> setup) {
+  if (setup->task.task == NavTask::kScenario) {
+    return std::make_unique<ScenarioNavEnv>(std::move(setup));
+  }
+  return std::make_unique<NavEnv>(std::move(setup));
 }
 
 }  // namespace ari_social_sim::learning

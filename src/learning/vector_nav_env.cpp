@@ -20,7 +20,7 @@ VectorNavEnv::VectorNavEnv(std::shared_ptr<const NavEnvSetup> setup, int num_env
                              std::to_string(threads));
   }
   for (int i = 0; i < num_envs; ++i) {
-    envs_.push_back(std::make_unique<NavEnv>(setup));
+    envs_.push_back(make_env(setup));
     envs_.back()->set_seed_stride(static_cast<uint64_t>(num_envs));
   }
   errors_.resize(threads_);
@@ -64,7 +64,7 @@ void VectorNavEnv::step(const float* actions, const VectorStepOutput& out) {
   }
   const size_t size = static_cast<size_t>(observation_size());
   for_each_env([&](int i) {
-    NavEnv& env = *envs_[i];
+    Env& env = *envs_[i];
     float* observation = out.observations + i * size;
     const NavStepResult result = env.step(actions + i * kActionSize, observation);
     out.rewards[i] = result.reward;

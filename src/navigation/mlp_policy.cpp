@@ -86,7 +86,7 @@ MlpPolicy MlpPolicy::load_file(const std::string& path) {
   return policy;
 }
 
-std::array<double, MlpPolicy::kActions> MlpPolicy::act(const float* observation) const {
+std::array<double, MlpPolicy::kActions> MlpPolicy::act(const float* observation) {
   std::vector<float> input(mean_.size());
   for (size_t i = 0; i < input.size(); ++i) {
     input[i] = std::clamp((observation[i] - mean_[i]) / std_[i], -clip_, clip_);

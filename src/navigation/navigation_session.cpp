@@ -70,10 +70,15 @@ SessionInputs rounded(const SessionInputs& inputs) {
 
 }  // namespace
 
-NavigationSession::NavigationSession(const NavigationConfig& config)
-    : config_(config), tracker_(config.scene), control_rate_hz_(config.navigator.rate_hz) {
-  if (!config.navigator.policy_file.empty()) {
-    policy_ = std::make_shared<const MlpPolicy>(MlpPolicy::load_file(config.navigator.policy_file));
+NavigationSession::NavigationSession(const NavigationConfig& config, std::shared_ptr<Policy> policy)
+    : config_(config),
+      tracker_(config.scene),
+      policy_(std::move(policy)),
+      control_rate_hz_(config.navigator.rate_hz) {
+  if (!policy_ && !config.navigator.policy_file.empty()) {
+    policy_ = std::make_shared<MlpPolicy>(MlpPolicy::load_file(config.navigator.policy_file));
+  }
+  if (policy_) {
     control_rate_hz_ = policy_->control_rate_hz();
   }
 }

@@ -10,9 +10,8 @@
 
 namespace ari_social_sim::navigation {
 
-PolicyController::PolicyController(const NavigationConfig& config,
-                                   const model::OccupancyGrid& map,
-                                   std::shared_ptr<const MlpPolicy> policy)
+PolicyController::PolicyController(const NavigationConfig& config, const model::OccupancyGrid& map,
+                                   std::shared_ptr<Policy> policy)
     : config_(core::validated(config)),
       policy_(std::move(policy)),
       footprint_(FootprintModel::covering(model::AriFootprint{}, config.mpc.footprint_circles)),
@@ -66,12 +65,13 @@ NavigatorStep PolicyController::update(double time_s, const RobotObservation& ro
   } else if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
     return finish(NavigationState::kAborted,
                   describe(*target_) + " not placed for " +
-                      std::to_string(config_.navigator.target_lost_timeout_s) + " s: " +
-                      std::get<GoalFailure>(search).reason);
+                      std::to_string(config_.navigator.target_lost_timeout_s) +
+                      " s: " + std::get<GoalFailure>(search).reason);
   }
 
   const double distance = (goal_->pose.position - robot.pose.position).norm();
-  const double heading_error = std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
+  const double heading_error =
+      std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
   if (distance <= policy_->position_tolerance_m() &&
       heading_error <= policy_->heading_tolerance_rad()) {
     NavigatorStep done = finish(NavigationState::kSucceeded, "");
@@ -83,14 +83,13 @@ NavigatorStep PolicyController::update(double time_s, const RobotObservation& ro
     best_distance_m_ = distance;
     best_distance_time_s_ = time_s;
   } else if (time_s - best_distance_time_s_ > config_.navigator.progress_timeout_s) {
-    return finish(NavigationState::kAborted, "no progress toward " + describe(*target_) +
-                                                 " for " +
-                                                 std::to_string(config_.navigator.progress_timeout_s) +
-                                                 " s");
+    return finish(NavigationState::kAborted,
+                  "no progress toward " + describe(*target_) + " for " +
+                      std::to_string(config_.navigator.progress_timeout_s) + " s");
   }
 
   observation_.build(robot, scene, goal_, true, map_, input_.data());
-  const std::array<double, MlpPolicy::kActions> action = policy_->act(input_.data());
+  const std::array<double, Policy::kActions> action = policy_->act(input_.data());
   NavigatorStep step;
   step.state = NavigationState::kActive;
   step.phase = "policy";

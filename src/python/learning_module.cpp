@@ -6,9 +6,13 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <string>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/dialogue_config.hpp"
+#include "ari_social_sim/dialogue/dialogue_env.hpp"
+#include "ari_social_sim/dialogue/robot_action_request.hpp"
 #include "ari_social_sim/learning/nav_env.hpp"
 #include "ari_social_sim/learning/vector_nav_env.hpp"
 
@@ -77,6 +81,86 @@ py::list fields_of(const navigation::PolicyObservation& observation) {
   return fields;
 }
 
+std::vector<std::string> act_strings(const std::vector<dialogue::DialogueAct>& acts) {
+  std::vector<std::string> out;
+  for (const dialogue::DialogueAct& act : acts) {
+    out.push_back(act.to_string());
+  }
+  return out;
+}
+
+// What /sim/dialogue/step's DialogueObservation holds, as Python values.
+py::dict observation_dict(const dialogue::Observation& observation) {
+  py::list heard;
+  for (const dialogue::Perception& p : observation.heard) {
+    py::dict utterance;
+    utterance["dropped"] = p.dropped;
+    utterance["speaker"] = p.speaker;
+    utterance["addressees"] = p.addressees;
+    utterance["text"] = p.text;
+    utterance["acts"] = act_strings(p.acts);
+    utterance["confidence"] = p.confidence;
+    utterance["word_errors"] = p.word_errors;
+    heard.append(utterance);
+  }
+  py::dict d;
+  d["heard"] = heard;
+  d["robot_turn"] = observation.robot_turn;
+  return d;
+}
+
+// DialogueInfo: patience per role.
+py::dict info_dict(const dialogue::StepInfo& info, const std::vector<std::string>& roles) {
+  py::dict patience;
+  for (size_t i = 0; i < roles.size() && i < info.patience.size(); ++i) {
+    patience[py::str(roles[i])] = info.patience[i];
+  }
+  py::dict d;
+  d["complete"] = info.complete;
+  d["success"] = info.success;
+  d["robot_turns"] = info.robot_turns;
+  d["utterances"] = info.utterances;
+  d["patience"] = patience;
+  d["goals"] = info.goals;
+  return d;
+}
+
+// dialogue_node's rl_env mode in-process: the same DialogueEnv and the same request checks as
+// /sim/dialogue/reset and /sim/dialogue/step.
+class DialogueEnvCore {
+ public:
+  explicit DialogueEnvCore(const std::string& settings_file)
+      : setup_(dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(settings_file))),
+        env_(*setup_) {}
+
+  py::tuple reset(uint64_t seed) {
+    const dialogue::Observation observation = env_.reset(seed);
+    started_ = true;
+    return py::make_tuple(observation_dict(observation), info_dict(env_.current_info(), roles()));
+  }
+
+  py::tuple step(const std::vector<std::string>& acts, const std::vector<std::string>& addressees,
+                 const std::string& text) {
+    if (!started_) {
+      throw core::RequestError("no episode: call reset() first");
+    }
+    if (env_.episode_over()) {
+      throw core::RequestError("the episode is over: call reset()");
+    }
+    const dialogue::StepResult result =
+        env_.step(dialogue::robot_action_from(acts, addressees, text, roles()));
+    return py::make_tuple(observation_dict(result.observation), result.reward, result.terminated,
+                          result.truncated, info_dict(result.info, roles()));
+  }
+
+  const std::vector<std::string>& roles() const { return setup_->config.users.roles; }
+
+ private:
+  std::unique_ptr<dialogue::DialogueSetup> setup_;
+  dialogue::DialogueEnv env_;
+  bool started_{false};
+};
+
 }  // namespace
 
 PYBIND11_MODULE(_learning, m) {
@@ -102,11 +186,11 @@ PYBIND11_MODULE(_learning, m) {
           py::arg("package_dir"), py::arg("task_file"), py::arg("overrides"), py::arg("source"))
       .def_property_readonly("time_limit_s",
                              [](const learning::NavEnvSetup& s) { return s.task.time_limit_s; })
-      .def_property_readonly("task",
-                             [](const learning::NavEnvSetup& s) {
-                               return std::string(
-                                   core::choice_name(s.task.task, learning::kNavTaskNames));
-                             })
+      .def_property_readonly(
+          "task",
+          [](const learning::NavEnvSetup& s) {
+            return std::string(core::choice_name(s.task.task, learning::kNavTaskNames));
+          })
       .def_property_readonly("arrival",
                              [](const learning::NavEnvSetup& s) {
                                return py::make_tuple(s.task.arrival.position_tolerance_m,
@@ -122,9 +206,8 @@ PYBIND11_MODULE(_learning, m) {
                                d["people_range"] = o.people_range_m;
                                return d;
                              })
-      .def_property_readonly("step_s", [](const learning::NavEnvSetup&) {
-        return learning::NavEnv::step_s();
-      });
+      .def_property_readonly(
+          "step_s", [](const learning::NavEnvSetup&) { return learning::NavEnv::step_s(); });
 
   m.def("action_bounds", [] {
     const learning::ActionBounds b = learning::action_bounds();
@@ -134,16 +217,15 @@ PYBIND11_MODULE(_learning, m) {
   m.attr("action_names") = std::vector<std::string>(std::begin(learning::kActionNames),
                                                     std::end(learning::kActionNames));
 
-  py::class_<learning::NavEnv>(m, "NavEnv")
-      .def(py::init([](std::shared_ptr<learning::NavEnvSetup> setup) {
-        return std::make_unique<learning::NavEnv>(setup);
-      }))
-      .def_property_readonly("observation_size", &learning::NavEnv::observation_size)
+  py::class_<learning::Env>(m, "NavEnv")
+      .def(py::init(
+          [](std::shared_ptr<learning::NavEnvSetup> setup) { return learning::make_env(setup); }))
+      .def_property_readonly("observation_size", &learning::Env::observation_size)
       .def("observation_fields",
-           [](const learning::NavEnv& env) { return fields_of(env.observation()); })
+           [](const learning::Env& env) { return fields_of(env.observation()); })
       .def(
           "reset",
-          [](learning::NavEnv& env, const py::object& seed) {
+          [](learning::Env& env, const py::object& seed) {
             const std::optional<uint64_t> s = seed_of(seed);
             FloatArray observation(env.observation_size());
             float* out = observation.mutable_data();
@@ -153,7 +235,7 @@ PYBIND11_MODULE(_learning, m) {
           },
           py::arg("seed") = py::none())
       .def("step",
-           [](learning::NavEnv& env, const py::array& action_in) {
+           [](learning::Env& env, const py::array& action_in) {
              FloatArray action = FloatArray::ensure(action_in);
              if (!action) {
                throw py::value_error("action: expected an array of numbers");
@@ -169,8 +251,8 @@ PYBIND11_MODULE(_learning, m) {
              }
              return py::make_tuple(observation, result.reward, result.terminated, result.truncated);
            })
-      .def("metrics", [](const learning::NavEnv& env) { return metrics_dict(env.metrics()); })
-      .def_property_readonly("done", &learning::NavEnv::done);
+      .def("metrics", [](const learning::Env& env) { return metrics_dict(env.metrics()); })
+      .def_property_readonly("done", &learning::Env::done);
 
   py::class_<learning::VectorNavEnv>(m, "VectorNavEnv")
       .def(py::init([](std::shared_ptr<learning::NavEnvSetup> setup, int num_envs, int threads) {
@@ -203,6 +285,9 @@ PYBIND11_MODULE(_learning, m) {
              const py::ssize_t n = env.num_envs(), size = env.observation_size();
              FloatArray observations({n, size});
              FloatArray final_observations({n, size});
+             // Rows of environments whose episode goes on are zeros, not whatever memory held.
+             std::fill(final_observations.mutable_data(),
+                       final_observations.mutable_data() + n * size, 0.0f);
              py::array_t<double> rewards(n);
              py::array_t<bool> terminated(n), truncated(n);
              learning::VectorStepOutput out{observations.mutable_data(), rewards.mutable_data(),
@@ -221,4 +306,10 @@ PYBIND11_MODULE(_learning, m) {
       .def("final_metrics", [](const learning::VectorNavEnv& env, int i) {
         return metrics_dict(env.final_metrics(i));
       });
+
+  py::class_<DialogueEnvCore>(m, "DialogueEnv")
+      .def(py::init<const std::string&>(), py::arg("settings_file"))
+      .def("reset", &DialogueEnvCore::reset, py::arg("seed"))
+      .def("step", &DialogueEnvCore::step, py::arg("acts"), py::arg("addressees"), py::arg("text"))
+      .def_property_readonly("roles", &DialogueEnvCore::roles);
 }

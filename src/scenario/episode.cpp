@@ -163,7 +163,8 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
   // hri_perception_node sees through /map: walls and furniture block sight and sound.
   perception_.set_sight_map(map_);
   // social_mpc_node plans on the same /map.
-  navigation_ = std::make_unique<InProcessNavigation>(config.navigation, map_, *simulation_);
+  navigation_ =
+      std::make_unique<InProcessNavigation>(config.navigation, map_, *simulation_, config.policy);
   dialogue_run_.seed = seed;
   stage_ = in_process_speech_stage(
       *simulation_, dialogue_cast(dialogue_run_, *config.dialogue, *simulation_, scenario));
@@ -174,6 +175,13 @@ Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& c
 }
 
 Episode::~Episode() = default;
+
+void Episode::command_ari(double linear_mps, double angular_rps, double pan_rad) {
+  if (simulation_->ari() != nullptr) {
+    simulation_->command_ari_twist(linear_mps, angular_rps);
+    simulation_->command_ari_head_pan(pan_rad);
+  }
+}
 
 void Episode::step() {
   if (finished()) {

@@ -23,8 +23,9 @@ NavigationStatus as_seen_by_the_script(const navigation::GoalStatus& goal) {
 
 InProcessNavigation::InProcessNavigation(const navigation::NavigationConfig& config,
                                          const model::OccupancyGrid& map,
-                                         world::Simulation& simulation)
-    : simulation_(simulation), session_(config) {
+                                         world::Simulation& simulation,
+                                         std::shared_ptr<navigation::Policy> policy)
+    : simulation_(simulation), session_(config, std::move(policy)) {
   session_.set_map(map);
   perceived_.locate_body = [](const std::string&) { return std::nullopt; };
 }

@@ -152,3 +152,58 @@ def test_episodes_end_as_documented():
     assert step == 20 and truncated.all() and infos["_final"].all()
     assert infos["final_info"][0]["time_s"] == pytest.approx(1.0)
     assert infos["final_observation"].shape == (2, envs.single_observation_space.shape[0])
+
+
+def test_the_dialogue_environment_plays_dialogue_nodes_rl_env():
+    env = learning.make("dialogue")
+    assert env.roles == ["patient", "companion"]
+    first, info = env.reset(seed=4)
+    again, info_again = env.reset(seed=4)
+    assert first == again and info == info_again
+    assert set(info["patience"]) == {"patient", "companion"}
+    observation, reward, terminated, truncated, info = env.step(
+        {"acts": ["greet()"], "addressees": ["patient"]})
+    assert observation["robot_turn"] == 1 and isinstance(reward, float)
+    for heard in observation["heard"]:
+        assert set(heard) == {"dropped", "speaker", "addressees", "text", "acts", "confidence",
+                              "word_errors"}
+    with pytest.raises(ValueError, match=r"addressees\[0\]: expected one of the humans' roles"):
+        env.step({"acts": ["greet()"], "addressees": ["doctor"]})
+    with pytest.raises(ValueError, match=r"acts\[0\]"):
+        env.step(["greet("])
+    with pytest.raises(ValueError, match="action: unknown key 'act'"):
+        env.step({"act": ["greet()"]})
+    steps = 1
+    while not (terminated or truncated):
+        observation, reward, terminated, truncated, info = env.step(["bye()"])
+        steps += 1
+    assert steps < 200
+    with pytest.raises(ValueError, match="the episode is over"):
+        env.step([])
+
+
+def test_a_scenario_is_played_with_the_policy_driving_aris_goals():
+    env = learning.make("scenario:join_group", perception_errors=False)
+    obs, info = env.reset(seed=1)
+    layout = env.observation_layout
+    # The first observation comes when navigation first asks: the goal of the script's join.
+    assert obs[layout["goal"]][0] == 1.0 and obs[layout["group"]][0] == 1.0
+    total, steps = 0.0, 0
+    while True:
+        goal = obs[layout["goal"]]
+        x, y, distance = goal[1], goal[2], goal[5]
+        bearing = math.atan2(y, x)
+        turn = math.atan2(goal[4], goal[3]) if distance < 0.1 else bearing
+        linear = 0.0 if distance < 0.1 or abs(bearing) > 0.5 else min(0.5, distance)
+        obs, reward, terminated, truncated, info = env.step([linear, 2.0 * turn, 0.0])
+        total += reward
+        steps += 1
+        if terminated or truncated:
+            break
+    # A go-to-the-goal controller joins the group; the script then greets and ends with success.
+    assert terminated and info["success"], info
+    assert info["path_length_m"] > 1.0 and steps > 20
+    again = learning.make("scenario:join_group", perception_errors=False)
+    np.testing.assert_array_equal(again.reset(seed=1)[0], env.reset(seed=1)[0])
+    with pytest.raises(ValueError, match="no scenario file"):
+        learning.make("scenario:no_such_scenario")

@@ -20,6 +20,8 @@
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
+#include "ari_social_sim/scenario/episode.hpp"
+#include "ari_social_sim/scenario/scenario.hpp"
 
 namespace ari_social_sim::learning {
 
@@ -31,6 +33,9 @@ struct NavEnvSetup {
   perception::PerceptionConfig perception;
   navigation::NavigationConfig navigation;
   EpisodeWorlds worlds;
+  /// Task scenario: the scenario file, and the batch engine's settings (run_episodes').
+  std::optional<scenario::Scenario> scenario;
+  std::optional<scenario::EpisodeConfig> episode;
 
   /// From the package's config and worlds directories; `task_file` is a task file
   /// (config/learning/<task>.yaml) and `overrides` YAML text read over it (make()'s options,
@@ -51,6 +56,21 @@ struct ActionBounds {
 ActionBounds action_bounds();
 /// The action's element names, for errors and docs.
 inline constexpr const char* kActionNames[kActionSize] = {"linear", "angular", "pan"};
+
+/// `action` (kActionSize values) clipped to `bounds`. Throws core::RequestError naming the
+/// element when a value is not finite.
+std::array<float, kActionSize> checked_action(const float* action, const ActionBounds& bounds);
+
+/// The seeds a learning environment plays: the one asked for, else the last plus the stride.
+struct SeedSequence {
+  uint64_t next{0};
+  uint64_t stride{1};
+  uint64_t take(std::optional<uint64_t> seed) {
+    const uint64_t taken = seed.value_or(next);
+    next = taken + stride;
+    return taken;
+  }
+};
 
 /// The episode so far, in nav_benchmark's terms (navigation::EpisodeScore) and the task's.
 struct NavMetrics {
@@ -75,6 +95,29 @@ struct NavStepResult {
   bool truncated{false};   // the time limit
 };
 
+/// A navigation learning environment, as the vector environment and the Python module drive it:
+/// NavEnv (nav_benchmark's episodes) or ScenarioNavEnv (a scenario file).
+class Env {
+ public:
+  virtual ~Env() = default;
+  virtual const navigation::PolicyObservation& observation() const = 0;
+  int observation_size() const { return observation().size(); }
+  /// Starts the episode of `seed`, or of the next seed of the environment's sequence when none
+  /// is given (SeedSequence). Writes the first observation.
+  virtual void reset(std::optional<uint64_t> seed, float* observation) = 0;
+  /// Applies `action` (checked_action) and writes the next observation. Throws
+  /// core::RequestError naming the element when a value is not finite, and when the episode has
+  /// ended or was never reset.
+  virtual NavStepResult step(const float* action, float* observation) = 0;
+  virtual const NavMetrics& metrics() const = 0;
+  virtual bool done() const = 0;
+  /// Seeds drawn without an explicit one advance by this (a vector environment's size).
+  virtual void set_seed_stride(uint64_t stride) = 0;
+};
+
+/// The environment of `setup`'s task.
+std::unique_ptr<Env> make_env(std::shared_ptr<const NavEnvSetup> setup);
+
 /// One learning environment: a seeded navigation episode (navigation_episodes.hpp) on the world
 /// core, seen through the perception core with its error models, group detection and the
 /// perceived-scene filter social_mpc_node uses, with ARI driven by the policy's commands. One
@@ -83,30 +126,24 @@ struct NavStepResult {
 /// goal finder on it; until perception has placed the target, the goal is where the task puts
 /// it at the start (the instruction), flagged as not perceived. Rewards and the end of an
 /// episode are judged on the truth. Seeded: the same seed gives the same episode, bit for bit.
-class NavEnv {
+class NavEnv : public Env {
  public:
   explicit NavEnv(std::shared_ptr<const NavEnvSetup> setup);
-  ~NavEnv();
+  ~NavEnv() override;
   NavEnv(const NavEnv&) = delete;
   NavEnv& operator=(const NavEnv&) = delete;
 
   /// Sim seconds of one step: one world step of the episodes' simulations.
   static double step_s() { return world::SimulationConfig{}.step_s; }
-  int observation_size() const { return observation_.size(); }
-  const navigation::PolicyObservation& observation() const { return observation_; }
+  const navigation::PolicyObservation& observation() const override { return observation_; }
   const NavEnvSetup& setup() const { return *setup_; }
 
-  /// Starts the episode of `seed`, or of the next seed of this environment's sequence (the last
-  /// seed plus `seed_stride`, from 0) when none is given. Writes the first observation.
-  void reset(std::optional<uint64_t> seed, float* observation);
-  /// Applies `action` (kActionSize values, clipped to action_bounds()) for one world step and
-  /// writes the next observation. Throws core::RequestError naming the element when a value is
-  /// not finite, and when the episode has ended or was never reset.
-  NavStepResult step(const float* action, float* observation);
-  const NavMetrics& metrics() const { return metrics_; }
-  bool done() const { return done_; }
-  /// Seeds drawn without an explicit one advance by this (a vector environment's size).
-  void set_seed_stride(uint64_t stride) { seed_stride_ = stride; }
+  void reset(std::optional<uint64_t> seed, float* observation) override;
+  /// One world step.
+  NavStepResult step(const float* action, float* observation) override;
+  const NavMetrics& metrics() const override { return metrics_; }
+  bool done() const override { return done_; }
+  void set_seed_stride(uint64_t stride) override { seeds_.stride = stride; }
 
   /// The world, for inspection and rendering.
   const world::Simulation& simulation() const { return *episode_.simulation; }
@@ -146,8 +183,7 @@ class NavEnv {
   NavMetrics metrics_;
   bool done_{true};
   bool started_{false};
-  uint64_t next_seed_{0};
-  uint64_t seed_stride_{1};
+  SeedSequence seeds_;
 };
 
 }  // namespace ari_social_sim::learning

@@ -8,12 +8,13 @@
 namespace ari_social_sim::learning {
 
 /// What a navigation environment asks of the policy.
-enum class NavTask { kGoToPose, kApproachPerson, kJoinGroup };
+enum class NavTask { kGoToPose, kApproachPerson, kJoinGroup, kScenario };
 
 inline constexpr core::Choice<NavTask> kNavTaskNames[] = {
     {NavTask::kGoToPose, "go_to_pose"},
     {NavTask::kApproachPerson, "approach_person"},
-    {NavTask::kJoinGroup, "join_group"}};
+    {NavTask::kJoinGroup, "join_group"},
+    {NavTask::kScenario, "scenario"}};
 
 /// The reward of a step is the sum of these terms (docs/learning.md). Signs are part of the
 /// weights: a penalty has a negative weight, and 0 switches a term off.
@@ -57,6 +58,7 @@ struct ArrivalRule {
 /// key optional, unknown keys are errors).
 struct NavTaskConfig {
   NavTask task{NavTask::kJoinGroup};
+  std::string scenario;  // the scenario file of task scenario
   double time_limit_s{40.0};
   int walkers{0};
   bool perception_errors{true};
@@ -69,6 +71,9 @@ struct NavTaskConfig {
   template <class V>
   void visit(V& v) {
     v.choice("task", task, "what the policy must do", kNavTaskNames);
+    v.field("scenario", scenario,
+            "task scenario: the scenario file whose scene, script and random draws are played, "
+            "the policy driving ARI's goals");
     v.field("time_limit", time_limit_s, "s of sim time before the episode is truncated",
             core::between(1.0, 3600.0));
     v.field("walkers", walkers, "people walking between random places, besides the episode's own",
@@ -84,6 +89,9 @@ struct NavTaskConfig {
     v.section("observation", observation, "what the policy is shown");
     v.section("rewards", rewards, "weights of the reward's terms");
     v.section("arrival", arrival, "when the goal counts as reached");
+    v.rule("scenario", (task == NavTask::kScenario) == !scenario.empty(),
+           "a file for task scenario and none for the other tasks",
+           scenario.empty() ? "none" : scenario);
   }
 
   void validate() const;

@@ -24,12 +24,12 @@ struct VectorStepOutput {
   float* final_observations{nullptr};  // num_envs x observation_size: an ended episode's last
 };
 
-/// N navigation environments stepped together. Environment i's episodes are seeds seed + i,
-/// seed + i + N, seed + i + 2N, ... An episode that ends is reset at once (in the same step):
-/// its last observation goes to final_observations, its metrics stay in final_metrics(i), and
-/// the row of observations is the next episode's first. With threads > 1 the environments are
-/// split among that many threads (the caller's one of them); each environment only ever
-/// depends on its own seed, so results are the same for any thread count.
+/// N navigation environments of one task (make_env) stepped together. Environment i's episodes are
+/// seeds seed + i, seed + i + N, seed + i + 2N, ... An episode that ends is reset at once (in the
+/// same step): its last observation goes to final_observations, its metrics stay in
+/// final_metrics(i), and the row of observations is the next episode's first. With threads > 1 the
+/// environments are split among that many threads (the caller's one of them); each environment only
+/// ever depends on its own seed, so results are the same for any thread count.
 class VectorNavEnv {
  public:
   VectorNavEnv(std::shared_ptr<const NavEnvSetup> setup, int num_envs, int threads);
@@ -39,7 +39,7 @@ class VectorNavEnv {
 
   int num_envs() const { return static_cast<int>(envs_.size()); }
   int observation_size() const { return envs_.front()->observation_size(); }
-  const NavEnv& env(int i) const { return *envs_[i]; }
+  const Env& env(int i) const { return *envs_[i]; }
   /// The metrics of environment i's last ended episode.
   const NavMetrics& final_metrics(int i) const { return final_metrics_[i]; }
 
@@ -54,7 +54,7 @@ class VectorNavEnv {
   void for_each_env(const std::function<void(int)>& work);
   void worker(int thread);
 
-  std::vector<std::unique_ptr<NavEnv>> envs_;
+  std::vector<std::unique_ptr<Env>> envs_;
   std::vector<NavMetrics> final_metrics_;
   int threads_{1};
 

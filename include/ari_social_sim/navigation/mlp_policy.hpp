@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/navigation/policy.hpp"
 #include "ari_social_sim/navigation/policy_observation.hpp"
 
 namespace ari_social_sim::navigation {
@@ -13,11 +14,10 @@ namespace ari_social_sim::navigation {
 /// observation's normalisation, the action bounds, and the rules it was trained with (control
 /// rate, arrival). Read without PyTorch, so that it runs in social_mpc_node and in the batch
 /// engine alike.
-class MlpPolicy {
+class MlpPolicy : public Policy {
  public:
   /// The file's format name; a file of another format is refused.
   static constexpr const char* kFormat = "ari_social_sim/mlp_policy/1";
-  static constexpr int kActions = 3;  // linear m/s, angular rad/s, head pan rad
 
   /// Throws core::ConfigError naming the file and field: another format, layer sizes that do not
   /// chain from the observation's size to kActions, a standard deviation <= 0, bounds not
@@ -25,14 +25,13 @@ class MlpPolicy {
   static MlpPolicy load_file(const std::string& path);
 
   const std::string& task() const { return task_; }
-  const PolicyObservationConfig& observation() const { return observation_; }
-  double control_rate_hz() const { return control_rate_hz_; }
-  double position_tolerance_m() const { return position_tolerance_m_; }
-  double heading_tolerance_rad() const { return heading_tolerance_rad_; }
+  const PolicyObservationConfig& observation() const override { return observation_; }
+  double control_rate_hz() const override { return control_rate_hz_; }
+  double position_tolerance_m() const override { return position_tolerance_m_; }
+  double heading_tolerance_rad() const override { return heading_tolerance_rad_; }
 
-  /// The command for one observation (PolicyObservation(observation()).size() values): the
-  /// network's output clipped to [-1, 1] and mapped linearly onto [action_low, action_high].
-  std::array<double, kActions> act(const float* observation) const;
+  /// The network's output clipped to [-1, 1] and mapped linearly onto [action_low, action_high].
+  std::array<double, kActions> act(const float* observation) override;
 
  private:
   struct Layer {

@@ -8,8 +8,8 @@
 
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/model/tracked_person.hpp"
-#include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/mlp_policy.hpp"
+#include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/navigation/perception_report.hpp"
 #include "ari_social_sim/navigation/scene_tracker.hpp"
@@ -91,10 +91,11 @@ class NavigationSession {
   /// seeds).
   static constexpr int kLooksPerCycle = 2;
 
-  /// Drives goals with SocialMPC, or with the learned policy of `controller.policy_file` when it
-  /// names one (docs/learning.md). Throws core::ConfigError naming the policy file when it cannot
-  /// be read.
-  explicit NavigationSession(const NavigationConfig& config);
+  /// Drives goals with `policy` when given, else with the learned policy of
+  /// `controller.policy_file` when it names one (docs/learning.md), else with SocialMPC. Throws
+  /// core::ConfigError naming the policy file when it cannot be read.
+  explicit NavigationSession(const NavigationConfig& config,
+                             std::shared_ptr<Policy> policy = nullptr);
   NavigationSession(const NavigationSession&) = delete;
   NavigationSession& operator=(const NavigationSession&) = delete;
 
@@ -142,10 +143,10 @@ class NavigationSession {
 
   NavigationConfig config_;
   SceneTracker tracker_;
-  std::shared_ptr<const MlpPolicy> policy_;
+  std::shared_ptr<Policy> policy_;
   double control_rate_hz_{0.0};
   std::unique_ptr<GoalController> controller_;
-  const Navigator* navigator_{nullptr};  // controller_, when SocialMPC drives
+  const Navigator* navigator_{nullptr};         // controller_, when SocialMPC drives
   std::vector<ReportedGroup> received_groups_;  // since perception was last looked at
   std::optional<WaitingGoal> waiting_;
   std::optional<GoalId> pursued_;

@@ -8,13 +8,13 @@
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/goal_controller.hpp"
 #include "ari_social_sim/navigation/grid_field.hpp"
-#include "ari_social_sim/navigation/mlp_policy.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/policy.hpp"
 #include "ari_social_sim/navigation/policy_observation.hpp"
 
 namespace ari_social_sim::navigation {
 
-/// A learned policy driving ARI in SocialMPC's place, as it was trained (learning::NavEnv): each
+/// A policy driving ARI in SocialMPC's place, as a learned one was trained (learning::NavEnv): each
 /// cycle the goal finder places the target on the perceived scene (the last place is kept while
 /// the target is hidden), PolicyObservation turns ARI, the scene and the goal into the policy's
 /// input, and the policy's action is the command. It arrives by the policy's own arrival rule,
@@ -23,7 +23,7 @@ namespace ari_social_sim::navigation {
 class PolicyController : public GoalController {
  public:
   PolicyController(const NavigationConfig& config, const model::OccupancyGrid& map,
-                   std::shared_ptr<const MlpPolicy> policy);
+                   std::shared_ptr<Policy> policy);
 
   void start(const NavigationTarget& target, const PerceivedScene& scene,
              const RobotObservation& robot, double time_s) override;
@@ -38,7 +38,7 @@ class PolicyController : public GoalController {
   NavigatorStep finish(NavigationState state, const std::string& reason);
 
   NavigationConfig config_;
-  std::shared_ptr<const MlpPolicy> policy_;
+  std::shared_ptr<Policy> policy_;
   FootprintModel footprint_;
   GoalFinder goal_finder_;
   GridField sdf_;

@@ -12,6 +12,7 @@
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
+#include "ari_social_sim/navigation/policy.hpp"
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
@@ -49,6 +50,9 @@ struct EpisodeConfig {
   std::shared_ptr<const dialogue::DialogueSetup> dialogue;
   std::shared_ptr<const dialogue::RobotNlu> nlu;
   dialogue::DialogueRunConfig dialogue_run;
+  /// A policy that drives ARI's goals in SocialMPC's place (a learner outside the engine,
+  /// learning::ScenarioNavEnv); null: the navigation config decides.
+  std::shared_ptr<navigation::Policy> policy;
 
   template <class V>
   void visit(V& v) {
@@ -128,6 +132,11 @@ class Episode {
     return navigation_commands_;
   }
   double navigation_rate_hz() const { return config_.navigation.navigator.rate_hz; }
+  /// The script's view of navigation's last goal (scenario_node's action client).
+  const NavigationStatus& navigation_status() const { return observations_.navigation; }
+  /// Commands ARI's base and head now, as world_node applies /mobile_base_controller/cmd_vel and
+  /// /head_controller/command: a learner acting in the policy's place before the next step.
+  void command_ari(double linear_mps, double angular_rps, double pan_rad);
   /// What the dialogue reported in the last step (utterances that started, dialogues that ended).
   const dialogue::SpokenDialogueEvents& dialogue_events() const { return dialogue_events_; }
   const dialogue::SpokenDialogue& dialogue() const { return *dialogue_; }

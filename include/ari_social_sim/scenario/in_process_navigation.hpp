@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,10 @@ NavigationStatus as_seen_by_the_script(const navigation::GoalStatus& goal);
 /// simulation, which must outlive it.
 class InProcessNavigation {
  public:
+  /// `policy`, when given, drives the goals in SocialMPC's place (NavigationSession).
   InProcessNavigation(const navigation::NavigationConfig& config, const model::OccupancyGrid& map,
-                      world::Simulation& simulation);
+                      world::Simulation& simulation,
+                      std::shared_ptr<navigation::Policy> policy = nullptr);
 
   /// What hri_perception_node published in its last frame (/humans/persons/tracked, the persons'
   /// body_id and the bodies' tf frames); the session reads it when it next looks at perception.

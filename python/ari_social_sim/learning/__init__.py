@@ -7,7 +7,9 @@
 
     envs = learning.make_vector("join_group", num_envs=16, threads=2)
 
-Tasks: go_to_pose, approach_person, join_group. Options are the fields of the task file
+Tasks: go_to_pose, approach_person, join_group, scenario:<file> (a scenario file, or the name of
+a shipped one, e.g. scenario:join_group, with the policy driving ARI's goals), and dialogue
+(DialogueEnv). Options are the fields of the task file
 (config/learning/<task>.yaml), given as keyword arguments: a nested section as a dict
 (rewards={"arrival": 20}). `config=` names another task file to start from.
 
@@ -36,6 +38,7 @@ else:
     _EnvBase = object
 
 TASKS = ("go_to_pose", "approach_person", "join_group")
+DIALOGUE_TASK = "dialogue"
 ACTION_NAMES = tuple(_learning.action_names)
 
 
@@ -48,16 +51,35 @@ def package_dir():
     return rospkg.RosPack().get_path("ari_social_sim")
 
 
+SCENARIO_PREFIX = "scenario:"
+
+
+def _scenario_file(name, root):
+    """A scenario file as given, else the package's scenarios/<name>.yaml."""
+    if os.path.isfile(name):
+        return os.path.abspath(name)
+    shipped = os.path.join(root, "scenarios", name + ("" if name.endswith(".yaml") else ".yaml"))
+    if os.path.isfile(shipped):
+        return shipped
+    raise ValueError(f"task: no scenario file {name!r} (nor {shipped})")
+
+
 def _setup(task, options):
-    if not isinstance(task, str) or task not in TASKS:
-        raise ValueError(f"task: expected one of {', '.join(TASKS)}, got {task!r}")
+    is_scenario = isinstance(task, str) and task.startswith(SCENARIO_PREFIX)
+    if not isinstance(task, str) or (task not in TASKS and not is_scenario):
+        raise ValueError(f"task: expected one of {', '.join(TASKS)} or scenario:<file>, "
+                         f"got {task!r}")
     options = dict(options)
     root = package_dir()
+    kind = "scenario" if is_scenario else task
     task_file = options.pop("config", None) or os.path.join(root, "config", "learning",
-                                                            task + ".yaml")
-    if "task" in options:
-        raise ValueError("task: give it as make()'s first argument, not as an option")
-    options["task"] = task
+                                                            kind + ".yaml")
+    for reserved in ("task", "scenario"):
+        if reserved in options:
+            raise ValueError(f"{reserved}: give it as make()'s first argument, not as an option")
+    options["task"] = kind
+    if is_scenario:
+        options["scenario"] = _scenario_file(task[len(SCENARIO_PREFIX):], root)
     try:
         text = json.dumps(options)
     except TypeError as error:
@@ -135,8 +157,8 @@ class NavigationEnv(_EnvBase):
 class VectorNavigationEnv:
     """num_envs navigation environments stepped in one call, optionally on several threads.
     Environment i plays seeds seed+i, seed+i+num_envs, ...; an ended episode is reset in the same
-    step, its last observation in infos["final_observation"][i] and its metrics in
-    infos["final_info"][i] (None for environments that did not end)."""
+    step, its last observation in infos["final_observation"][i] (zeros for the others) and its
+    metrics in infos["final_info"][i] (None for environments that did not end)."""
 
     def __init__(self, task="join_group", num_envs=8, threads=1, **options):
         if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
@@ -179,8 +201,63 @@ class VectorNavigationEnv:
         self._core = None
 
 
+class DialogueEnv:
+    """dialogue_node's rl_env mode (docs/dialogue.md) in-process: the simulated patient and
+    companion answer ARI's dialogue acts. Observations and infos are dicts with the fields of
+    /sim/dialogue/step's response; an action is a dict {"acts": [...], "addressees": [...],
+    "text": ""} (a plain list is the acts), checked as the service checks it. The observations and
+    actions are text, so observation_space and action_space are None."""
+
+    observation_space = None
+    action_space = None
+
+    def __init__(self, settings=None):
+        if settings is None:
+            settings = os.path.join(package_dir(), "config", "dialogue", "simulation.yaml")
+        self._core = _learning.DialogueEnv(settings)
+        self.roles = list(self._core.roles)
+        self._next_seed = 0
+
+    def reset(self, seed=None, options=None):
+        if options is not None:
+            raise ValueError("options: the dialogue environment takes none")
+        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
+                                 or seed < 0):
+            raise ValueError(f"seed: expected an integer >= 0 or None, got {seed!r}")
+        seed = self._next_seed if seed is None else int(seed)
+        self._next_seed = seed + 1
+        return self._core.reset(seed)
+
+    def step(self, action):
+        if isinstance(action, dict):
+            unknown = sorted(set(action) - {"acts", "addressees", "text"})
+            if unknown:
+                raise ValueError(f"action: unknown key {unknown[0]!r}; expected acts, addressees, "
+                                 f"text")
+            acts = action.get("acts", [])
+            addressees = action.get("addressees", [])
+            text = action.get("text", "")
+        elif isinstance(action, (list, tuple)):
+            acts, addressees, text = action, [], ""
+        else:
+            raise ValueError(f"action: expected a dict or a list of acts, got "
+                             f"{type(action).__name__}")
+        for name, values in (("acts", acts), ("addressees", addressees)):
+            if not isinstance(values, (list, tuple)) or not all(isinstance(v, str) for v in values):
+                raise ValueError(f"action.{name}: expected a list of strings, got {values!r}")
+        if not isinstance(text, str):
+            raise ValueError(f"action.text: expected a string, got {text!r}")
+        return self._core.step(list(acts), list(addressees), text)
+
+    def close(self):
+        self._core = None
+
+
 def make(task, **options):
-    """One environment of `task` (go_to_pose, approach_person, join_group)."""
+    """One environment of `task`: go_to_pose, approach_person, join_group (NavigationEnv), or
+    dialogue (DialogueEnv; option settings= names another dialogue settings file)."""
+    if task == DIALOGUE_TASK:
+        return DialogueEnv(**options)
     return NavigationEnv(task, **options)
 
 

@@ -3,6 +3,7 @@
 #include "ari_social_sim/core/parameter_table.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
+#include "ari_social_sim/learning/nav_task_config.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/navigation/navigation_config.hpp"
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
@@ -116,6 +117,11 @@ std::string parameters_page() {
                  "decides which of `from`, `to`, `thickness`, `position`, `orientation`, `size`, "
                  "`radius` and `points` it has (docs/world.md, section 2.1).",
                  file_keys<model::WorldFile>()) +
+         section("### Learning tasks (config/learning/*.yaml)",
+                 "The navigation learning environments' task files, and the options of "
+                 "`learning.make(task, **options)` (docs/learning.md): a nested section is a "
+                 "dict (`rewards={\"arrival\": 20}`).",
+                 file_keys<learning::NavTaskConfig>()) +
          section("### Scenario scripts",
                  "The `script` of scenarios/*.yaml (states, conditions and actions) is a small "
                  "language rather than a set of parameters; docs/scenario.md lists its keys and "
