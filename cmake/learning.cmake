@@ -6,6 +6,7 @@ add_library(ari_learning
   src/learning/nav_task_config.cpp
   src/learning/navigation_episodes.cpp
   src/learning/scenario_nav_env.cpp
+  src/learning/social_score.cpp
   src/learning/vector_nav_env.cpp)
 target_link_libraries(ari_learning PUBLIC ari_scenario)
 
@@ -29,6 +30,12 @@ if(CATKIN_ENABLE_TESTING)
   catkin_run_tests_target(pytest learning pytest-learning.xml
     COMMAND "${CMAKE_COMMAND} -E env PYTHONPATH=${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_PYTHON_DESTINATION}:${PROJECT_SOURCE_DIR}/python /usr/bin/python3 -m pytest -q -p no:cacheprovider --junitxml=${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-learning.xml ${PROJECT_SOURCE_DIR}/test/python"
     DEPENDENCIES _learning)
+  # The trained policy drives ARI live and joins the group (docs/learning.md, section 10).
+  foreach(seed 1 2 3)
+    add_rostest(test/integration/policy_join_group.test ARGS seed:=${seed}
+      DEPENDENCIES world_node hri_perception_node group_detection_node social_mpc_node
+        dialogue_node scenario_node)
+  endforeach()
 endif()
 
 ari_add_benchmark(bench_learning SOURCES bench/bench_learning.cpp LIBRARIES ari_learning)

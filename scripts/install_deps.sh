@@ -30,14 +30,5 @@ packages=(
   rviz xvfb xauth imagemagick
 )
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "install_deps: installing ${#missing[@]} missing packages"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
-echo "install_deps: all ${#packages[@]} packages present"
+installer=install_deps
+source "$(dirname "$0")/apt_install.sh"

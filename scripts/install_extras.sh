@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the optional extras that the main set-up leaves out: PyTorch, matplotlib and OpenBLAS
-# for the training example (scripts/train_join_group.py, docs/learning.md). About 1 GB; run it as root
-# only when you want to train.
+# for the training example (scripts/train_join_group.py, docs/learning.md). About 1 GB; run it as
+# root only when you want to train.
 set -euo pipefail
 
 packages=(
@@ -11,14 +11,5 @@ packages=(
   libopenblas0-pthread
 )
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "install_extras: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
-echo "install_extras: all ${#packages[@]} packages present"
+installer=install_extras
+source "$(dirname "$0")/apt_install.sh"

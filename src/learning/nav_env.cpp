@@ -155,15 +155,14 @@ void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   groups_ = std::make_unique<perception::GroupPerception>(perception.groups);
   detected_.clear();
   tracker_.clear();
-  scorer_ =
-      std::make_unique<navigation::EpisodeScorer>(footprint_, setup_->navigation.mpc.personal_space,
-                                                  episode_.exempt_people, episode_.exempt_group);
+  score_ = std::make_unique<SocialScore>(footprint_, setup_->navigation.mpc.personal_space,
+                                         episode_.exempt_people, episode_.exempt_group,
+                                         setup_->navigation.scene.group_stride_m);
 
   instructed_goal_ = true_goal_;
   perceived_goal_.reset();
   next_goal_update_s_ = 0.0;
   last_action_ = {};
-  last_score_ = {};
   metrics_ = {};
   metrics_.episode_seed = episode_seed;
   perceive();
@@ -239,47 +238,25 @@ NavStepResult NavEnv::step(const float* action, float* observation) {
   place_goals(false);
 
   const NavTaskConfig& task = setup_->task;
-  const navigation::PerceivedScene truth = true_scene(sim, setup_->navigation.scene.group_stride_m);
-  navigation::ScoredTick tick;
-  tick.time_s = sim.time_s();
-  tick.ari = sim.ari()->pose();
-  tick.linear_mps = sim.ari()->linear_mps();
-  tick.people = truth.people;
-  tick.groups = truth.groups;
-  tick.static_penetration_m = sim.static_penetration_m(*sim.ari());
-  scorer_->add(tick);
-  const navigation::EpisodeScore score = scorer_->score();
-
-  const core::Pose2& pose = tick.ari;
+  const SocialScore::Step social = score_->add(sim, dt, task.rewards);
+  const core::Pose2 pose = sim.ari()->pose();
   const double distance = (true_goal_->pose.position - pose.position).norm();
   const double heading_error = std::abs(core::angle_difference(true_goal_->pose.theta, pose.theta));
   const bool arrived = distance <= task.arrival.position_tolerance_m &&
                        heading_error <= task.arrival.heading_tolerance_rad;
-  const int collisions = score.person_collisions + score.static_collisions -
-                         last_score_.person_collisions - last_score_.static_collisions;
   const RewardWeights& w = task.rewards;
   NavStepResult result;
-  result.reward =
-      w.progress * (last_distance_m_ - distance) + w.time * dt + w.collision * collisions +
-      w.personal_space * (scorer_->last_tick_in_space() ? dt : 0.0) +
-      w.ospace * (score.ospace_intrusions - last_score_.ospace_intrusions) +
-      w.smoothness *
-          (std::abs(command[0] - last_action_[0]) + std::abs(command[1] - last_action_[1])) +
-      (arrived ? w.arrival : 0.0);
-  result.terminated = arrived || (task.terminate_on_collision && collisions > 0);
+  result.reward = social.reward + w.progress * (last_distance_m_ - distance) +
+                  w.smoothness * (std::abs(command[0] - last_action_[0]) +
+                                  std::abs(command[1] - last_action_[1])) +
+                  (arrived ? w.arrival : 0.0);
+  result.terminated = arrived || (task.terminate_on_collision && social.collisions > 0);
   result.truncated = !result.terminated && sim.time_s() >= episode_.time_limit_s - 1e-9;
   last_distance_m_ = distance;
   last_action_ = command;
-  last_score_ = score;
 
   metrics_.arrived = arrived;
-  metrics_.person_collisions = score.person_collisions;
-  metrics_.static_collisions = score.static_collisions;
-  metrics_.personal_space_time_s = score.personal_space_share * score.duration_s;
-  metrics_.path_length_m = score.path_length_m;
-  metrics_.ospace_intrusions = score.ospace_intrusions;
-  metrics_.min_person_distance_m = score.min_person_distance_m;
-  metrics_.time_s = sim.time_s();
+  score_->fill(metrics_, sim.time_s());
   metrics_.distance_to_goal_m = distance;
   metrics_.goal_perceived = perceived_goal_.has_value();
   done_ = result.terminated || result.truncated;

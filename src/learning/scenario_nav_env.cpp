@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/learning/ground_truth.hpp"
 #include "ari_social_sim/model/ari_footprint.hpp"
 
 namespace ari_social_sim::learning {
@@ -47,9 +46,9 @@ double ScenarioNavEnv::goal_distance() const {
 void ScenarioNavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   const uint64_t episode_seed = seeds_.take(seed);
   episode_ = std::make_unique<scenario::Episode>(*setup_->scenario, episode_seed, config_);
-  scorer_ = std::make_unique<navigation::EpisodeScorer>(
-      footprint_, setup_->navigation.mpc.personal_space, std::vector<std::string>{}, "");
-  last_score_ = {};
+  score_ = std::make_unique<SocialScore>(footprint_, setup_->navigation.mpc.personal_space,
+                                         std::vector<std::string>{}, "",
+                                         setup_->navigation.scene.group_stride_m);
   last_action_ = {};
   last_distance_m_.reset();
   last_navigation_ = scenario::NavigationState::kIdle;
@@ -97,26 +96,8 @@ NavStepResult ScenarioNavEnv::run_until_asked() {
   for (;;) {
     episode_->step();
     const world::Simulation& sim = episode_->simulation();
-    const double dt = sim.config().step_s;
-    if (sim.ari() != nullptr) {
-      const navigation::PerceivedScene truth =
-          true_scene(sim, setup_->navigation.scene.group_stride_m);
-      navigation::ScoredTick tick;
-      tick.time_s = sim.time_s();
-      tick.ari = sim.ari()->pose();
-      tick.linear_mps = sim.ari()->linear_mps();
-      tick.people = truth.people;
-      tick.groups = truth.groups;
-      tick.static_penetration_m = sim.static_penetration_m(*sim.ari());
-      scorer_->add(tick);
-    }
-    const navigation::EpisodeScore score = scorer_->score();
-    const int collisions = score.person_collisions + score.static_collisions -
-                           last_score_.person_collisions - last_score_.static_collisions;
-    result.reward += w.time * dt + w.collision * collisions +
-                     w.personal_space * (scorer_->last_tick_in_space() ? dt : 0.0) +
-                     w.ospace * (score.ospace_intrusions - last_score_.ospace_intrusions);
-    last_score_ = score;
+    const SocialScore::Step social = score_->add(sim, sim.config().step_s, w);
+    result.reward += social.reward;
 
     const scenario::NavigationState navigation = episode_->navigation_status().state;
     if (navigation == scenario::NavigationState::kSucceeded &&
@@ -138,14 +119,8 @@ NavStepResult ScenarioNavEnv::run_until_asked() {
       last_distance_m_.reset();  // the next goal's distances start afresh
     }
 
-    metrics_.person_collisions = score.person_collisions;
-    metrics_.static_collisions = score.static_collisions;
-    metrics_.personal_space_time_s = score.personal_space_share * score.duration_s;
-    metrics_.path_length_m = score.path_length_m;
-    metrics_.ospace_intrusions = score.ospace_intrusions;
-    metrics_.min_person_distance_m = score.min_person_distance_m;
-    metrics_.time_s = sim.time_s();
-    const bool collided = task.terminate_on_collision && collisions > 0;
+    score_->fill(metrics_, sim.time_s());
+    const bool collided = task.terminate_on_collision && social.collisions > 0;
     if (episode_->finished() || collided) {
       metrics_.arrived = episode_->finished() && episode_->runner().outcome()->success;
       result.terminated = true;

@@ -5,13 +5,11 @@ every person id that perception reported has the form of ~person_id_pattern (so 
 have relied on the simulated `human<N>` naming when the ids were of another form)."""
 import re
 import threading
-import time
 import unittest
 
-import rosgraph
 import rospy
 import rostest
-from std_srvs.srv import SetBool
+import scenario_start
 
 from ari_social_sim.msg import Group, IdsList, ScenarioStatus, WorldState
 
@@ -48,22 +46,9 @@ class ScenarioPerceptionModes(unittest.TestCase):
     def test_group_discussion_succeeds_with_this_perception(self):
         pattern = re.compile(rospy.get_param("~person_id_pattern"))
         recorder = Recorder()
-        # The world starts once scenario_node listens, so that the script sees every state.
-        master = rosgraph.Master("/test_scenario_perception_modes")
-        limit = time.monotonic() + 90.0
-        while time.monotonic() < limit:
-            _, subscribers, _ = master.getSystemState()
-            if "/scenario_node" in dict(subscribers).get("/sim/world_state", []):
-                break
-            time.sleep(0.05)
-        rospy.wait_for_service("/sim/pause", 30.0)
-        self.assertTrue(rospy.ServiceProxy("/sim/pause", SetBool)(False).success)
-        limit = time.monotonic() + 200.0
-        while time.monotonic() < limit:
-            with recorder.lock:
-                if recorder.status is not None and recorder.status.finished:
-                    break
-            time.sleep(0.1)
+        self.assertTrue(
+            scenario_start.unpause_when_scenario_node_listens("/test_scenario_perception_modes"))
+        scenario_start.wait_until_finished(recorder, 200.0)
         with recorder.lock:
             status, person_ids = recorder.status, sorted(recorder.person_ids)
             largest_group = max(recorder.group_sizes, default=0)

@@ -207,3 +207,17 @@ def test_a_scenario_is_played_with_the_policy_driving_aris_goals():
     np.testing.assert_array_equal(again.reset(seed=1)[0], env.reset(seed=1)[0])
     with pytest.raises(ValueError, match="no scenario file"):
         learning.make("scenario:no_such_scenario")
+
+
+def test_scenario_vector_environments_do_not_depend_on_the_thread_count():
+    runs = []
+    for threads in (1, 2):
+        envs = learning.make_vector("scenario:join_group", 2, threads=threads)
+        obs, _ = envs.reset(seed=3)
+        trace = [obs]
+        for t in range(30):
+            obs, rewards, terminated, truncated, _ = envs.step(np.tile([0.3, 0.2, 0.0], (2, 1)))
+            trace += [obs, rewards, terminated, truncated]
+        runs.append(trace)
+    for x, y in zip(*runs):
+        assert x.tobytes() == y.tobytes()

@@ -10,6 +10,7 @@
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/learning/nav_task_config.hpp"
 #include "ari_social_sim/learning/navigation_episodes.hpp"
+#include "ari_social_sim/learning/social_score.hpp"
 #include "ari_social_sim/model/occupancy_grid.hpp"
 #include "ari_social_sim/navigation/episode_scorer.hpp"
 #include "ari_social_sim/navigation/goal_finder.hpp"
@@ -170,7 +171,7 @@ class NavEnv : public Env {
   std::vector<perception::PerceivedGroup> detected_;
   navigation::SceneTracker tracker_;
   navigation::PerceivedScene scene_;
-  std::unique_ptr<navigation::EpisodeScorer> scorer_;
+  std::unique_ptr<SocialScore> score_;
   core::Rng walk_rng_{0};
 
   std::optional<navigation::Goal> perceived_goal_;
@@ -179,7 +180,6 @@ class NavEnv : public Env {
   double next_goal_update_s_{0.0};
   double last_distance_m_{0.0};
   std::array<float, kActionSize> last_action_{};
-  navigation::EpisodeScore last_score_;
   NavMetrics metrics_;
   bool done_{true};
   bool started_{false};

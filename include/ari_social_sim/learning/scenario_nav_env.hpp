@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "ari_social_sim/learning/nav_env.hpp"
-#include "ari_social_sim/navigation/episode_scorer.hpp"
+#include "ari_social_sim/learning/social_score.hpp"
 #include "ari_social_sim/navigation/policy.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
 
@@ -74,8 +74,7 @@ class ScenarioNavEnv : public Env {
   std::shared_ptr<ExternalPolicy> policy_;
   scenario::EpisodeConfig config_;
   std::unique_ptr<scenario::Episode> episode_;
-  std::unique_ptr<navigation::EpisodeScorer> scorer_;
-  navigation::EpisodeScore last_score_;
+  std::unique_ptr<SocialScore> score_;
   std::array<float, kActionSize> last_action_{};
   std::optional<double> last_distance_m_;
   scenario::NavigationState last_navigation_{scenario::NavigationState::kIdle};

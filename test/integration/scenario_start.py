@@ -1,0 +1,31 @@
+"""Shared by the rostests that play a whole scenario with ~start_world false: start the world
+once scenario_node listens, then wait for its outcome."""
+import time
+
+import rosgraph
+import rospy
+from std_srvs.srv import SetBool
+
+
+def unpause_when_scenario_node_listens(caller_id, timeout_s=90.0):
+    """Waits until scenario_node subscribes to /sim/world_state (so that the script sees every
+    state), then unpauses world_node. Returns whether the unpause succeeded."""
+    master = rosgraph.Master(caller_id)
+    limit = time.monotonic() + timeout_s
+    while time.monotonic() < limit:
+        _, subscribers, _ = master.getSystemState()
+        if "/scenario_node" in dict(subscribers).get("/sim/world_state", []):
+            break
+        time.sleep(0.05)
+    rospy.wait_for_service("/sim/pause", 30.0)
+    return rospy.ServiceProxy("/sim/pause", SetBool)(False).success
+
+
+def wait_until_finished(recorder, timeout_s):
+    """Waits until recorder.status (a ScenarioStatus, under recorder.lock) says finished."""
+    limit = time.monotonic() + timeout_s
+    while time.monotonic() < limit:
+        with recorder.lock:
+            if recorder.status is not None and recorder.status.finished:
+                return
+        time.sleep(0.1)
