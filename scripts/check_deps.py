@@ -39,8 +39,10 @@ SCRIPT_PATH = "/usr/bin:" + os.environ.get("PATH", "")
 
 # Entries of install_deps.sh that the self-test removes one at a time: the check must then fail and
 # name it. libnlopt-dev is the one install_deps.sh once forgot; the others are found by other
-# routes (Box2D's headers and library, yaml-cpp's headers, the screenshot scripts' ImageMagick).
-SELF_TEST_REMOVALS = ("libnlopt-dev", "libbox2d-dev", "libyaml-cpp-dev", "imagemagick")
+# routes (Box2D's headers and library, yaml-cpp's headers, the screenshot scripts' ImageMagick,
+# the Python module's pybind11 headers, the learning package's numpy import).
+SELF_TEST_REMOVALS = ("libnlopt-dev", "libbox2d-dev", "libyaml-cpp-dev", "imagemagick",
+                      "pybind11-dev", "python3-numpy")
 
 # Debian package of install_deps.sh -> the rosdep keys that install it (rosdistro's
 # rosdep/base.yaml, debian; octomap and urdfdom are also ROS packages whose package.xml Debian
@@ -56,6 +58,9 @@ ROSDEP_KEYS = {
     "libopencv-dev": ("libopencv-dev",),
     "liburdfdom-dev": ("liburdfdom-dev", "urdfdom"),
     "libyaml-cpp-dev": ("yaml-cpp",),
+    "pybind11-dev": ("pybind11-dev",),
+    "python3-numpy": ("python3-numpy",),
+    "python3-pytest": ("python3-pytest",),
 }
 PACKAGE_XML_DEPENDS = ("buildtool_depend", "depend", "build_depend", "exec_depend", "test_depend")
 
@@ -146,6 +151,15 @@ def built_binaries(build):
     return sorted(path for path in files if not os.path.islink(path) and is_elf(path))
 
 
+def needed_sonames(library, cache={}):
+    """The sonames `library` needs, directly or not (ldd), cached."""
+    if library not in cache:
+        output = subprocess.run(["ldd", library], capture_output=True, text=True).stdout
+        cache[library] = {line.split(" => ")[0].strip()
+                          for line in output.splitlines() if " => /" in line}
+    return cache[library]
+
+
 def collect_linked_libraries(build, usage):
     binaries = built_binaries(build)
     if not binaries:
@@ -156,6 +170,7 @@ def collect_linked_libraries(build, usage):
     output = subprocess.run(["ldd", *binaries], capture_output=True, text=True,
                             env=dict(os.environ, LD_LIBRARY_PATH=library_path)).stdout
     binary = binaries[0]  # ldd names each binary only when given several
+    linked = []  # (binary, soname, library path)
     for line in output.splitlines():
         if not line.startswith("\t"):
             binary = line.rstrip(":")
@@ -165,6 +180,18 @@ def collect_linked_libraries(build, usage):
             usage.problems.append(f"{binary} needs {name}, which is not installed")
         path = (target if arrow else name).split(" (")[0]  # else: the loader, or linux-vdso
         if path.startswith("/"):
+            linked.append((binary, name, path))
+    # A library reached through update-alternatives (libblas.so.3) brings what the chosen
+    # implementation links and the others do not (OpenBLAS's libopenblas.so.0): this machine's
+    # choice, not a need of the build. The alternative itself still counts (alternatives_of).
+    choice_only = set()  # sonames
+    for path in {path for _, _, path in linked}:
+        files = [file for file in alternatives_of(path) if os.path.exists(file)]
+        if files:
+            needs = [needed_sonames(file) for file in files]
+            choice_only |= needed_sonames(os.path.realpath(path)) - set.intersection(*needs)
+    for binary, name, path in linked:
+        if name not in choice_only:
             usage.use(path, f"linked by {os.path.basename(binary)}")
 
 
@@ -439,6 +466,24 @@ def merged_usr_twin(path):
     return None
 
 
+def alternatives_of(path):
+    """Every file the update-alternatives group that `path` leads through can point to (e.g.
+    libblas.so.3: the reference BLAS or OpenBLAS), or [] when no link on its way is in
+    /etc/alternatives. The group's link may point to whichever is installed, so any of them
+    serves."""
+    seen = set()
+    while os.path.islink(path) and path not in seen:
+        seen.add(path)
+        target = os.path.join(os.path.dirname(path), os.readlink(path))
+        if target.startswith("/etc/alternatives/"):
+            listing = subprocess.run(["update-alternatives", "--list", os.path.basename(target)],
+                                     capture_output=True, text=True).stdout
+            files = listing.split()
+            return files + [twin for twin in map(merged_usr_twin, files) if twin]
+        path = target
+    return []
+
+
 class Dpkg:
     """The installed packages, and the owners of files: each asked of dpkg once per run."""
 
@@ -485,10 +530,12 @@ class Dpkg:
 
     def owners(self, paths):
         """path -> its owners (dpkg -S). A path dpkg does not know is tried in its merged-/usr
-        spelling, then as the file its symlinks lead to (e.g. through /etc/alternatives)."""
+        spelling, then as every file of the update-alternatives group it leads through, then as
+        the file its symlinks lead to."""
         pending = {path for path in paths if path not in self.owners_of}
         for spellings in (lambda path: [path],
                           lambda path: [merged_usr_twin(path)],
+                          alternatives_of,
                           lambda path: [os.path.realpath(path),
                                         merged_usr_twin(os.path.realpath(path))]):
             asked = {path: [name for name in spellings(path) if name] for path in pending}
