@@ -31,7 +31,6 @@ void PolicyController::start(const NavigationTarget& target, const PerceivedScen
   goal_ = std::move(std::get<Goal>(search));
   target_ = target;
   state_ = NavigationState::kActive;
-  target_seen_s_ = time_s;
   best_distance_m_ = (goal_->pose.position - robot.pose.position).norm();
   best_distance_time_s_ = time_s;
 }
@@ -58,15 +57,11 @@ NavigatorStep PolicyController::update(double time_s, const RobotObservation& ro
     idle.state = state_;
     return idle;
   }
+  // As in training (learning::NavEnv): while the target cannot be placed (hidden, out of view),
+  // the last place stands.
   GoalSearch search = goal_finder_.find(*target_, scene, sdf_, robot.pose, goal_);
   if (auto* goal = std::get_if<Goal>(&search)) {
     goal_ = std::move(*goal);
-    target_seen_s_ = time_s;
-  } else if (time_s - target_seen_s_ > config_.navigator.target_lost_timeout_s) {
-    return finish(NavigationState::kAborted,
-                  describe(*target_) + " not placed for " +
-                      std::to_string(config_.navigator.target_lost_timeout_s) +
-                      " s: " + std::get<GoalFailure>(search).reason);
   }
 
   const double distance = (goal_->pose.position - robot.pose.position).norm();

@@ -15,6 +15,7 @@
 #include "ari_social_sim/dialogue/robot_action_request.hpp"
 #include "ari_social_sim/learning/nav_env.hpp"
 #include "ari_social_sim/learning/vector_nav_env.hpp"
+#include "ari_social_sim/navigation/mlp_policy.hpp"
 
 namespace py = pybind11;
 using namespace ari_social_sim;
@@ -312,4 +313,20 @@ PYBIND11_MODULE(_learning, m) {
       .def("reset", &DialogueEnvCore::reset, py::arg("seed"))
       .def("step", &DialogueEnvCore::step, py::arg("acts"), py::arg("addressees"), py::arg("text"))
       .def_property_readonly("roles", &DialogueEnvCore::roles);
+
+  py::class_<navigation::MlpPolicy>(m, "MlpPolicy")
+      .def(py::init([](const std::string& path) { return navigation::MlpPolicy::load_file(path); }),
+           py::arg("path"))
+      .def_property_readonly("task", &navigation::MlpPolicy::task)
+      .def("act", [](navigation::MlpPolicy& policy, const py::array& observation_in) {
+        FloatArray observation = FloatArray::ensure(observation_in);
+        const auto size =
+            static_cast<py::ssize_t>(navigation::PolicyObservation(policy.observation()).size());
+        if (!observation) {
+          throw py::value_error("observation: expected an array of numbers");
+        }
+        check_shape("observation", observation, {size}, "(" + std::to_string(size) + ",)");
+        const auto action = policy.act(observation.data());
+        return std::vector<double>(action.begin(), action.end());
+      });
 }

@@ -15,11 +15,11 @@
 namespace ari_social_sim::navigation {
 
 /// A policy driving ARI in SocialMPC's place, as a learned one was trained (learning::NavEnv): each
-/// cycle the goal finder places the target on the perceived scene (the last place is kept while
-/// the target is hidden), PolicyObservation turns ARI, the scene and the goal into the policy's
-/// input, and the policy's action is the command. It arrives by the policy's own arrival rule,
-/// and aborts as the Navigator does when the target is unseen for target_lost_timeout or the goal
-/// comes no closer by progress_distance within progress_timeout.
+/// cycle the goal finder places the target on the perceived scene (the last place stands while
+/// the target cannot be placed: hidden, out of view), PolicyObservation turns ARI, the scene and
+/// the goal into the policy's input, and the policy's action is the command. It arrives by the
+/// policy's own arrival rule, and aborts when the goal comes no closer by progress_distance
+/// within progress_timeout.
 class PolicyController : public GoalController {
  public:
   PolicyController(const NavigationConfig& config, const model::OccupancyGrid& map,
@@ -48,7 +48,6 @@ class PolicyController : public GoalController {
   NavigationState state_{NavigationState::kIdle};
   std::optional<NavigationTarget> target_;
   std::optional<Goal> goal_;
-  double target_seen_s_{0.0};
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
 };

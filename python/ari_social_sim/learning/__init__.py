@@ -253,6 +253,12 @@ class DialogueEnv:
         self._core = None
 
 
+def load_policy(path):
+    """A trained policy file (docs/learning.md, section 10) as social_mpc_node runs it: `act(obs)`
+    gives the command [linear, angular, pan] for an observation, by the same C++ code."""
+    return _learning.MlpPolicy(str(path))
+
+
 def make(task, **options):
     """One environment of `task`: go_to_pose, approach_person, join_group (NavigationEnv), or
     dialogue (DialogueEnv; option settings= names another dialogue settings file)."""
