@@ -11,13 +11,13 @@ namespace ari_social_sim::learning {
 
 VectorNavEnv::VectorNavEnv(std::shared_ptr<const NavEnvSetup> setup, int num_envs, int threads)
     : final_metrics_(num_envs), threads_(std::clamp(threads, 1, std::max(num_envs, 1))) {
-  if (num_envs < 1) {
-    throw core::RequestError("learning: num_envs: expected an integer >= 1, got " +
-                             std::to_string(num_envs));
+  if (num_envs < 1 || num_envs > kMaxEnvs) {
+    throw core::RequestError("learning: num_envs: expected an integer in [1, " +
+                             std::to_string(kMaxEnvs) + "], got " + std::to_string(num_envs));
   }
-  if (threads < 1) {
-    throw core::RequestError("learning: threads: expected an integer >= 1, got " +
-                             std::to_string(threads));
+  if (threads < 1 || threads > kMaxThreads) {
+    throw core::RequestError("learning: threads: expected an integer in [1, " +
+                             std::to_string(kMaxThreads) + "], got " + std::to_string(threads));
   }
   for (int i = 0; i < num_envs; ++i) {
     envs_.push_back(make_env(setup));

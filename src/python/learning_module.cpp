@@ -63,15 +63,12 @@ py::dict metrics_dict(const learning::NavMetrics& m) {
   return d;
 }
 
+// The Python wrappers check that a seed is an integer in [0, 2^64); this only converts it.
 std::optional<uint64_t> seed_of(const py::object& seed) {
   if (seed.is_none()) {
     return std::nullopt;
   }
-  const auto value = seed.cast<long long>();
-  if (value < 0) {
-    throw py::value_error("seed: expected an integer >= 0 or None, got " + std::to_string(value));
-  }
-  return static_cast<uint64_t>(value);
+  return seed.cast<unsigned long long>();
 }
 
 py::list fields_of(const navigation::PolicyObservation& observation) {
@@ -215,6 +212,8 @@ PYBIND11_MODULE(_learning, m) {
     return py::make_tuple(std::vector<float>(b.low.begin(), b.low.end()),
                           std::vector<float>(b.high.begin(), b.high.end()));
   });
+  m.attr("max_envs") = learning::VectorNavEnv::kMaxEnvs;
+  m.attr("max_threads") = learning::VectorNavEnv::kMaxThreads;
   m.attr("action_names") = std::vector<std::string>(std::begin(learning::kActionNames),
                                                     std::end(learning::kActionNames));
 

@@ -47,6 +47,7 @@ def test_actions_outside_the_limits_are_clipped():
     ([[0.1, 0.2, 0.3]], "action: expected shape (3,), got (1, 3)"),
     ([0.1, float("nan"), 0.0], "action[1] (angular): expected a finite number"),
     ([float("inf"), 0.0, 0.0], "action[0] (linear): expected a finite number"),
+    (["fast", "left", "up"], "action: expected numbers, got ['fast', 'left', 'up']"),
 ])
 def test_wrong_shapes_and_non_finite_actions_are_refused_by_name(action, message):
     env = learning.make("join_group")
@@ -75,6 +76,9 @@ def test_reset_options_and_make_options_are_validated():
         env.reset(seed=1.5)
     with pytest.raises(ValueError, match="seed: expected an integer"):
         env.reset(seed=-1)
+    with pytest.raises(ValueError, match=r"seed: expected an integer in \[0, 2\^64\)"):
+        env.reset(seed=2 ** 64)
+    env.reset(seed=2 ** 64 - 1)  # the largest seed plays
     obs_a, _ = env.reset(options={"seed": 7})
     obs_b, _ = env.reset(seed=7)
     np.testing.assert_array_equal(obs_a, obs_b)
@@ -86,8 +90,16 @@ def test_reset_options_and_make_options_are_validated():
         learning.make("join_group", rewards={"arival": 1})
     with pytest.raises(ValueError, match="num_envs"):
         learning.make_vector("join_group", 0)
+    with pytest.raises(ValueError, match=r"num_envs: expected an integer in \[1, 4096\]"):
+        learning.make_vector("join_group", 10 ** 7)
     with pytest.raises(ValueError, match="threads"):
         learning.make_vector("join_group", 2, threads=0)
+    with pytest.raises(ValueError, match=r"threads: expected an integer in \[1, 64\]"):
+        learning.make_vector("join_group", 2, threads=10 ** 6)
+    with pytest.raises(ValueError, match="nonexistent.yaml: cannot open the file"):
+        learning.make("join_group", config="/nonexistent.yaml")
+    with pytest.raises(ValueError, match="cannot open the file"):
+        learning.load_policy("/nonexistent/policy.yaml")
 
 
 def _rollout(env, seed, steps):

@@ -32,6 +32,13 @@ struct VectorStepOutput {
 /// ever depends on its own seed, so results are the same for any thread count.
 class VectorNavEnv {
  public:
+  /// Bounds of a vector environment: each environment holds a world, perception and a map (about
+  /// 2 MB), and more threads than cores only wait on each other.
+  static constexpr int kMaxEnvs = 4096;
+  static constexpr int kMaxThreads = 64;
+
+  /// Throws core::RequestError naming num_envs or threads outside [1, kMaxEnvs] or
+  /// [1, kMaxThreads].
   VectorNavEnv(std::shared_ptr<const NavEnvSetup> setup, int num_envs, int threads);
   ~VectorNavEnv();
   VectorNavEnv(const VectorNavEnv&) = delete;

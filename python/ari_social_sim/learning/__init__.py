@@ -40,6 +40,17 @@ else:
 TASKS = ("go_to_pose", "approach_person", "join_group")
 DIALOGUE_TASK = "dialogue"
 ACTION_NAMES = tuple(_learning.action_names)
+SEED_LIMIT = 2 ** 64  # seeds are unsigned 64-bit integers
+MAX_ENVS = _learning.max_envs        # a vector environment's size, at most
+MAX_THREADS = _learning.max_threads  # and its threads
+
+
+def _check_seed(seed):
+    """None, or an integer in [0, 2^64); anything else raises ValueError naming `seed`."""
+    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
+                             or not 0 <= int(seed) < SEED_LIMIT):
+        raise ValueError(f"seed: expected an integer in [0, 2^64) or None, got {seed!r}")
+    return None if seed is None else int(seed)
 
 
 def package_dir():
@@ -85,6 +96,14 @@ def _setup(task, options):
     except TypeError as error:
         raise ValueError(f"make() options: {error}") from None
     return _learning.NavEnvSetup.load(root, task_file, text, "make() options")
+
+
+def _numbers(name, values):
+    """`values` as a float32 array; ValueError naming `name` when they are not numbers."""
+    try:
+        return np.asarray(values, dtype=np.float32)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name}: expected numbers, got {values!r}") from None
 
 
 def _observation_space(core):
@@ -134,15 +153,12 @@ class NavigationEnv(_EnvBase):
                 raise ValueError(f"options: unknown key {unknown[0]!r}; expected only 'seed'")
             if seed is None:
                 seed = options.get("seed")
-        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))):
-            raise ValueError(f"seed: expected an integer >= 0 or None, got {seed!r}")
-        observation = self._core.reset(None if seed is None else int(seed))
+        observation = self._core.reset(_check_seed(seed))
         return observation, self._core.metrics()
 
     def step(self, action):
         self._check_open()
-        action = np.asarray(action, dtype=np.float32)
-        observation, reward, terminated, truncated = self._core.step(action)
+        observation, reward, terminated, truncated = self._core.step(_numbers("action", action))
         return observation, reward, terminated, truncated, self._core.metrics()
 
     def close(self):
@@ -161,10 +177,10 @@ class VectorNavigationEnv:
     metrics in infos["final_info"][i] (None for environments that did not end)."""
 
     def __init__(self, task="join_group", num_envs=8, threads=1, **options):
-        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
-            raise ValueError(f"num_envs: expected an integer >= 1, got {num_envs!r}")
-        if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
-            raise ValueError(f"threads: expected an integer >= 1, got {threads!r}")
+        for name, value, limit in (("num_envs", num_envs, MAX_ENVS), ("threads", threads, MAX_THREADS)):
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
+                    or not 1 <= value <= limit:
+                raise ValueError(f"{name}: expected an integer in [1, {limit}], got {value!r}")
         self._setup = _setup(task, options)
         self._core = _learning.VectorNavEnv(self._setup, int(num_envs), int(threads))
         self.num_envs = int(num_envs)
@@ -181,14 +197,12 @@ class VectorNavigationEnv:
     def reset(self, seed=None, options=None):
         if options is not None:
             raise ValueError("options: a vector environment takes none")
-        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))):
-            raise ValueError(f"seed: expected an integer >= 0 or None, got {seed!r}")
-        observations = self._core.reset(None if seed is None else int(seed))
+        observations = self._core.reset(_check_seed(seed))
         return observations, {}
 
     def step(self, actions):
-        actions = np.asarray(actions, dtype=np.float32)
-        observations, rewards, terminated, truncated, finals = self._core.step(actions)
+        observations, rewards, terminated, truncated, finals = self._core.step(
+            _numbers("actions", actions))
         ended = terminated | truncated
         infos = {"_final": ended}
         if ended.any():
@@ -221,11 +235,9 @@ class DialogueEnv:
     def reset(self, seed=None, options=None):
         if options is not None:
             raise ValueError("options: the dialogue environment takes none")
-        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
-                                 or seed < 0):
-            raise ValueError(f"seed: expected an integer >= 0 or None, got {seed!r}")
-        seed = self._next_seed if seed is None else int(seed)
-        self._next_seed = seed + 1
+        seed = _check_seed(seed)
+        seed = self._next_seed if seed is None else seed
+        self._next_seed = (seed + 1) % SEED_LIMIT
         return self._core.reset(seed)
 
     def step(self, action):
