@@ -14,10 +14,13 @@ constexpr int kGoalDistanceIndex = 5;
 }  // namespace
 
 ExternalPolicy::ExternalPolicy(const NavTaskConfig& task, double step_s)
-    : observation_(task.observation), arrival_(task.arrival), control_rate_hz_(1.0 / step_s) {}
+    : observation_(task.observation),
+      observation_size_(navigation::PolicyObservation(task.observation).size()),
+      arrival_(task.arrival),
+      control_rate_hz_(1.0 / step_s) {}
 
 std::array<double, navigation::Policy::kActions> ExternalPolicy::act(const float* observation) {
-  last_.assign(observation, observation + navigation::PolicyObservation(observation_).size());
+  last_.assign(observation, observation + observation_size_);
   asked_ = true;
   return {action_[0], action_[1], action_[2]};
 }
@@ -31,6 +34,11 @@ ScenarioNavEnv::ScenarioNavEnv(std::shared_ptr<const NavEnvSetup> setup)
   if (!setup_->scenario || !setup_->episode) {
     throw core::ConfigError("learning: task scenario: expected a scenario file, got none");
   }
+  for (const navigation::ObservationField& field : observation_.fields()) {
+    if (field.name == "goal") {
+      goal_distance_index_ = field.offset + kGoalDistanceIndex;
+    }
+  }
   config_ = *setup_->episode;
   policy_ = std::make_shared<ExternalPolicy>(setup_->task, config_.simulation.step_s);
   config_.policy = policy_;
@@ -39,8 +47,7 @@ ScenarioNavEnv::ScenarioNavEnv(std::shared_ptr<const NavEnvSetup> setup)
 ScenarioNavEnv::~ScenarioNavEnv() = default;
 
 double ScenarioNavEnv::goal_distance() const {
-  const int offset = observation_.fields()[1].offset;  // `goal`
-  return policy_->last_observation()[offset + kGoalDistanceIndex];
+  return policy_->last_observation()[goal_distance_index_];
 }
 
 void ScenarioNavEnv::reset(std::optional<uint64_t> seed, float* observation) {

@@ -87,11 +87,13 @@ MlpPolicy MlpPolicy::load_file(const std::string& path) {
 }
 
 std::array<double, MlpPolicy::kActions> MlpPolicy::act(const float* observation) {
-  std::vector<float> input(mean_.size());
+  // The buffers are members, so a control cycle allocates nothing.
+  std::vector<float>& input = input_;
+  std::vector<float>& output = output_;
+  input.resize(mean_.size());
   for (size_t i = 0; i < input.size(); ++i) {
     input[i] = std::clamp((observation[i] - mean_[i]) / std_[i], -clip_, clip_);
   }
-  std::vector<float> output;
   for (const Layer& layer : layers_) {
     output.assign(layer.bias.begin(), layer.bias.end());
     for (int o = 0; o < layer.outputs; ++o) {

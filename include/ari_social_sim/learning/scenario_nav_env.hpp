@@ -34,6 +34,7 @@ class ExternalPolicy : public navigation::Policy {
 
  private:
   navigation::PolicyObservationConfig observation_;
+  int observation_size_;
   ArrivalRule arrival_;
   double control_rate_hz_;
   std::array<float, kActions> action_{};
@@ -69,6 +70,7 @@ class ScenarioNavEnv : public Env {
 
   std::shared_ptr<const NavEnvSetup> setup_;
   navigation::PolicyObservation observation_;
+  int goal_distance_index_{0};  // of the goal's distance in an observation
   ActionBounds bounds_;
   navigation::FootprintModel footprint_;
   std::shared_ptr<ExternalPolicy> policy_;

@@ -51,6 +51,8 @@ class EpisodeScorer {
   bool last_tick_in_space() const { return last_tick_in_space_; }
 
  private:
+  void add_jerk_sample(double time_s, double speed_mps);
+
   FootprintModel footprint_;
   PersonalSpaceParams spaces_;
   std::vector<Eigen::Vector2d> outline_;
@@ -63,7 +65,6 @@ class EpisodeScorer {
   bool touching_person_{false};
   bool touching_static_{false};
   std::vector<std::string> groups_intruded_;
-  void add_jerk_sample(double time_s, double speed_mps);
   double first_time_s_{0.0};
   double speeds_[2]{};  // the two ticks before the current one, oldest first
   double times_[2]{};

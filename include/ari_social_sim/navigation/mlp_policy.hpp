@@ -53,6 +53,8 @@ class MlpPolicy : public Policy {
   std::array<double, kActions> low_{};
   std::array<double, kActions> high_{};
   std::vector<Layer> layers_;
+  std::vector<float> input_;  // act()'s layer inputs and outputs
+  std::vector<float> output_;
 };
 
 }  // namespace ari_social_sim::navigation
