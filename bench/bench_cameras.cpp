@@ -11,6 +11,7 @@
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/physics/octomap_mapper.hpp"
+#include "ari_social_sim/physics/people_figures.hpp"
 
 namespace {
 
@@ -19,17 +20,72 @@ using namespace ari_social_sim;
 // ARI in the waiting room with five people in view of the head camera, as in docs/camera_*.png.
 const core::Pose2 kAri{{6.0, 2.6}, 2.0};
 
-std::vector<physics::RenderPrimitive> people_at(double t_s) {
-  const physics::SceneStyle style;
-  std::vector<physics::RenderPrimitive> people;
-  // The people sway a little every tick so the dynamic mesh is rebuilt and uploaded, as in a run.
+// Where the ten people stand at sim time t: five in front of ARI as in docs/camera_*.png, five
+// more behind them. They sway a little so that the dynamic mesh is rebuilt and uploaded every
+// frame, as in a run; one walks.
+struct Placement {
+  core::Pose2 pose;
+  double face_yaw;
+};
+std::vector<Placement> placements_at(double t_s) {
   const double sway = 0.1 * std::sin(t_s);
-  physics::append_person({{5.1 + sway, 4.2}, -0.9}, -1.1, 0, style.person, people);
-  physics::append_person({{4.5, 3.7 + sway}, 0.2}, 0.5, 1, style.person, people);
-  physics::append_person({{4.3, 2.0 + t_s * 0.01}, 1.6}, 1.6, 2, style.person, people);
-  physics::append_person({{7.2, 0.9}, 2.3}, 2.5, 3, style.person, people);
-  physics::append_person({{6.9, 3.4}, -2.0}, -2.2 + sway, 4, style.person, people);
-  return people;
+  return {{{{5.1 + sway, 4.2}, -0.9}, -1.1}, {{{4.5, 3.7 + sway}, 0.2}, 0.5},
+          {{{4.3, 2.0 + t_s * 0.01}, 1.6}, 1.6}, {{{7.2, 0.9}, 2.3}, 2.5},
+          {{{6.9, 3.4}, -2.0}, -2.2 + sway},     {{{3.6, 4.9}, -0.5}, -0.5},
+          {{{4.2, 5.3 - sway}, -1.2}, -1.0},     {{{2.9, 3.2}, 0.0}, 0.3},
+          {{{5.6, 5.6}, -1.8}, -1.8},            {{{3.3, 2.4 + sway}, 0.6}, 0.6}};
+}
+
+// The people as the simulator draws them: articulated figures, posed per frame.
+physics::RenderMesh figures_at(double t_s, size_t count, physics::PeopleFigures& figures) {
+  std::vector<physics::FigureInput> people;
+  const std::vector<Placement> placements = placements_at(t_s);
+  for (size_t i = 0; i < count; ++i) {
+    physics::FigureInput person;
+    person.traits = {static_cast<uint32_t>(i + 1), 20.0 + 5.0 * i,
+                     i % 2 == 0 ? model::Gender::kFemale : model::Gender::kMale, i == 1};
+    person.pose = placements[i].pose;
+    person.face_yaw_rad = placements[i].face_yaw;
+    person.velocity_mps = i == 2 ? Eigen::Vector2d(0.0, 1.2) : Eigen::Vector2d::Zero();
+    person.speaking = i == 0;
+    people.push_back(person);
+  }
+  figures.update(t_s, people);
+  return figures.mesh();
+}
+
+// The baseline the figures are weighed against: the shapes people had before them (an elliptic
+// body cylinder, a head sphere, a face plate and two eye boxes), tessellated every frame.
+physics::RenderMesh shapes_at(double t_s, size_t count) {
+  auto solid = [](physics::PrimitiveShape shape, const Eigen::Isometry3d& X,
+                  const Eigen::Vector3d& size) {
+    physics::RenderPrimitive primitive;
+    primitive.shape = shape;
+    primitive.X_world_shape = X;
+    primitive.size = size;
+    return primitive;
+  };
+  std::vector<physics::RenderPrimitive> primitives;
+  const std::vector<Placement> placements = placements_at(t_s);
+  for (size_t i = 0; i < count; ++i) {
+    const Placement& p = placements[i];
+    auto planar = [&p](double z, double yaw) {
+      return Eigen::Translation3d(p.pose.position.x(), p.pose.position.y(), z) *
+             Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
+    };
+    primitives.push_back(solid(physics::PrimitiveShape::kCylinder, planar(0.725, p.pose.theta),
+                               {0.26, 0.42, 1.45}));
+    const Eigen::Isometry3d head = planar(1.6, p.face_yaw);
+    primitives.push_back(solid(physics::PrimitiveShape::kSphere, head, {0.22, 0.22, 0.22}));
+    primitives.push_back(solid(physics::PrimitiveShape::kBox,
+                               head * Eigen::Translation3d(0.0935, 0.0, 0.0), {0.04, 0.132, 0.11}));
+    for (double side : {-1.0, 1.0}) {
+      primitives.push_back(solid(physics::PrimitiveShape::kBox,
+                                 head * Eigen::Translation3d(0.1185, side * 0.03, 0.02),
+                                 {0.012, 0.022, 0.018}));
+    }
+  }
+  return physics::mesh_of(primitives);
 }
 
 // A rig with only the named cameras enabled, sized as given.
@@ -52,24 +108,53 @@ physics::CameraRig rig_with(const std::vector<std::string>& names, int width, in
   return rig;
 }
 
-// One frame of one camera per iteration, people updated each frame; items = frames.
+// One frame of one camera per iteration, the five people in front posed each frame; items =
+// frames.
 void render_frames(benchmark::State& state, const std::string& camera) {
   physics::CameraRig rig =
       rig_with({camera}, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const Eigen::Isometry3d X = physics::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
+  physics::PeopleFigures figures;
   physics::CameraFrame frame;
   double t = 0.0;
-  rig.set_dynamic_primitives(people_at(t));
+  rig.set_dynamic_mesh(figures_at(t, 5, figures));
   rig.render(0, X, frame);  // first frame allocates framebuffers and compiles the pipeline
   for (auto _ : state) {
     t += 0.1;
-    rig.set_dynamic_primitives(people_at(t));
+    rig.set_dynamic_mesh(figures_at(t, 5, figures));
     rig.render(0, X, frame);
     benchmark::DoNotOptimize(frame.colour.data);
   }
   state.SetItemsProcessed(state.iterations());
   state.SetLabel(rig.renderer().device_name());
 }
+
+// The head camera at 1280x960 with ten people, drawn as the earlier shapes (figures:0) or as
+// articulated figures posed per frame (figures:1): the figures' cost relative to the shapes.
+void BM_HeadCameraTenPeople(benchmark::State& state) {
+  physics::CameraRig rig = rig_with({"head_front_camera"}, 0, 0);
+  const Eigen::Isometry3d X = physics::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
+  const bool use_figures = state.range(0) == 1;
+  physics::PeopleFigures figures;
+  physics::CameraFrame frame;
+  double t = 0.0;
+  auto people = [&] { return use_figures ? figures_at(t, 10, figures) : shapes_at(t, 10); };
+  rig.set_dynamic_mesh(people());
+  rig.render(0, X, frame);
+  for (auto _ : state) {
+    t += 0.1;
+    rig.set_dynamic_mesh(people());
+    rig.render(0, X, frame);
+    benchmark::DoNotOptimize(frame.colour.data);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_HeadCameraTenPeople)
+    ->ArgNames({"figures"})
+    ->Arg(0)
+    ->Arg(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 void BM_HeadCamera(benchmark::State& state) {
   render_frames(state, "head_front_camera");
@@ -102,10 +187,12 @@ BENCHMARK(BM_FisheyeFront)
     ->Unit(benchmark::kMillisecond);
 
 // One sim second with the head camera at 10 Hz and the torso RGB-D at 15 Hz, stepped at 1 kHz
-// through the rig's schedule: items per second = the real-time factor the cameras allow on their
-// own (physics excluded; see docs/PERFORMANCE.md for the combination).
+// through the rig's schedule, ten people posed for every rendering tick: items per second = the
+// real-time factor the cameras allow on their own (physics excluded; see docs/PERFORMANCE.md for
+// the combination).
 void BM_HeadAndRgbdSimSecond(benchmark::State& state) {
   physics::CameraRig rig = rig_with({"head_front_camera", "torso_front_camera"}, 0, 0);
+  physics::PeopleFigures figures;
   physics::CameraFrame frame;
   double t = 0.0;
   for (auto _ : state) {
@@ -114,7 +201,7 @@ void BM_HeadAndRgbdSimSecond(benchmark::State& state) {
       if (due.empty()) {
         continue;
       }
-      rig.set_dynamic_primitives(people_at(t));
+      rig.set_dynamic_mesh(figures_at(t, 10, figures));
       for (const size_t i : due) {
         rig.render(i, physics::X_world_optical(rig.cameras()[i], kAri, 0.15, 0.05), frame);
       }
@@ -127,7 +214,8 @@ BENCHMARK(BM_HeadAndRgbdSimSecond)->UseRealTime()->Unit(benchmark::kMillisecond)
 // Inserting one torso depth image (848 x 480, every 4th pixel, 4 m rays) into the OctoMap.
 void BM_OctomapInsert(benchmark::State& state) {
   physics::CameraRig rig = rig_with({"torso_front_camera"}, 0, 0);
-  rig.set_dynamic_primitives(people_at(0.0));
+  physics::PeopleFigures figures;
+  rig.set_dynamic_mesh(figures_at(0.0, 5, figures));
   const Eigen::Isometry3d X = physics::X_world_optical(rig.cameras()[0], kAri, 0.0, 0.0);
   physics::CameraFrame frame;
   rig.render(0, X, frame);

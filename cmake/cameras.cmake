@@ -12,6 +12,10 @@ add_library(ari_rendering
   src/physics/depth_image.cpp
   src/physics/egl_context.cpp
   src/physics/fisheye_renderer.cpp
+  src/physics/human_appearance.cpp
+  src/physics/human_figure.cpp
+  src/physics/image_labels.cpp
+  src/physics/people_figures.cpp
   src/physics/physics_primitives.cpp
   src/physics/render_mesh.cpp
   src/physics/renderer.cpp
@@ -38,6 +42,15 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ari_rendering ari_mapping)
   target_compile_definitions(test_cameras PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     ARI_URDF="${PROJECT_SOURCE_DIR}/urdf/ari.urdf")
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  # Stock OpenCV detectors (HOG people, Haar faces from opencv-data) on the rendered people.
+  find_package(OpenCV REQUIRED COMPONENTS objdetect)
+  ari_add_gtest(test_detector_study
+    SOURCES test/physics/test_detector_study.cpp
+    LIBRARIES ari_rendering opencv_objdetect)
+  target_compile_definitions(test_detector_study PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)

@@ -23,8 +23,8 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
   # Python bindings of the learning environments (ari_social_sim.learning)
   pybind11-dev python3-dev python3-numpy
-  # tests and benchmarks
-  python3-pytest
+  # tests and benchmarks; opencv-data holds the stock Haar cascades the detector study runs
+  python3-pytest opencv-data
   libgtest-dev googletest libbenchmark-dev
   # inspection
   rviz xvfb xauth imagemagick

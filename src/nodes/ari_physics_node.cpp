@@ -626,6 +626,10 @@ class PhysicsNode {
       person.velocity_mps = {human.velocity.linear.x, human.velocity.linear.y};
       person.angular_velocity_rps = human.velocity.angular.z;
       person.face_yaw_rad = human.gaze.direction;
+      person.age_years = human.age;
+      person.gender = static_cast<model::Gender>(human.gender);
+      person.mask = human.mask;
+      person.speaking = human.speech.is_speaking;
       people.push_back(person);
     }
     physics_->set_people(people);

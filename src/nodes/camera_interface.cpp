@@ -41,7 +41,11 @@ cv::Mat depth_in_metres(const cv::Mat& depth) {
 CameraInterface::CameraInterface(ros::NodeHandle& nh, const physics::PhysicsRunConfig& config,
                                  const model::WorldDescription& world,
                                  const physics::AriPhysics& physics)
-    : physics_(physics), rig_(rig_config(config)), world_(world), map_file_(config.map_file) {
+    : physics_(physics),
+      figures_(config.appearance_seed),
+      rig_(rig_config(config)),
+      world_(world),
+      map_file_(config.map_file) {
   // A relative map file lands in ROS_HOME (~/.ros), where ROS puts what nodes write.
   if (!map_file_.empty() && map_file_.front() != '/') {
     const char* ros_home = std::getenv("ROS_HOME");
@@ -107,10 +111,17 @@ void CameraInterface::update(const ros::Time& stamp) {
     }
     if (!scene_ready) {
       // The moving part of the scene, once per tick that renders: people and ARI's own body.
-      std::vector<physics::RenderPrimitive> moving =
-          physics::robot_primitives(physics_.model(), physics_.link_poses());
-      physics::append_people(physics_.people(), style_.person, moving);
-      rig_.set_dynamic_primitives(moving);
+      std::vector<physics::FigureInput> people;
+      for (const physics::PersonState& person : physics_.people_states()) {
+        people.push_back(physics::figure_input_of(person));
+      }
+      figures_.update(physics_.time_s(), people);
+      physics::RenderMesh moving = figures_.mesh();
+      for (const physics::RenderPrimitive& part :
+           physics::robot_primitives(physics_.model(), physics_.link_poses())) {
+        physics::append_primitive(part, moving);
+      }
+      rig_.set_dynamic_mesh(moving);
       scene_ready = true;
     }
     const physics::CameraSpec& camera = rig_.cameras()[i];

@@ -9,6 +9,7 @@
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/physics/octomap_mapper.hpp"
+#include "ari_social_sim/physics/people_figures.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
 
 namespace ari_social_sim::nodes {
@@ -38,6 +39,7 @@ class CameraInterface {
 
   const physics::AriPhysics& physics_;
   physics::SceneStyle style_;
+  physics::PeopleFigures figures_;
   physics::CameraRig rig_;
   std::vector<Publishers> publishers_;
   physics::CameraFrame frame_;

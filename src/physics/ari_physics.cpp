@@ -750,6 +750,14 @@ const StaticScene& AriPhysics::scene() const {
   return engine_->scene;
 }
 
+std::vector<PersonState> AriPhysics::people_states() const {
+  std::vector<PersonState> states;
+  for (const Engine::Person& person : engine_->people) {
+    states.push_back(person.state);
+  }
+  return states;
+}
+
 std::vector<PersonShape> AriPhysics::people() const {
   std::vector<PersonShape> shapes;
   for (const Engine::Person& person : engine_->people) {

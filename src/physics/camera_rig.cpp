@@ -36,8 +36,8 @@ void CameraRig::set_world(const model::WorldDescription& world, const SceneStyle
   renderer_->set_static_primitives(static_primitives_of(world, style));
 }
 
-void CameraRig::set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives) {
-  renderer_->set_dynamic_primitives(primitives);
+void CameraRig::set_dynamic_mesh(const RenderMesh& mesh) {
+  renderer_->set_dynamic_mesh(mesh);
 }
 
 std::vector<size_t> CameraRig::due(double time_s) {
@@ -54,8 +54,10 @@ std::vector<size_t> CameraRig::due(double time_s) {
   return due_now;
 }
 
-void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out) {
+void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out,
+                       bool labels) {
   const CameraSpec& spec = cameras_[i];
+  out.labels.release();
   if (spec.kind == CameraKind::kFisheye) {
     fisheyes_[i]->render(*renderer_, X_world_optical, out.colour);
     out.depth.release();
@@ -63,9 +65,13 @@ void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, Camer
   }
   ViewOptions options;
   options.depth = spec.kind == CameraKind::kRgbd;
+  options.labels = labels;
   renderer_->render(pinholes_[i], X_world_optical, options, scratch_);
   // Swapping hands the rendered buffers over without a copy; the renderer refills the old ones.
   std::swap(out.colour, scratch_.colour);
+  if (labels) {
+    std::swap(out.labels, scratch_.labels);
+  }
   if (!options.depth) {
     out.depth.release();
     return;

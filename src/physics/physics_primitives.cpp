@@ -40,13 +40,4 @@ std::vector<RenderPrimitive> robot_primitives(const RobotModel& model,
   return out;
 }
 
-void append_people(const std::vector<PersonShape>& people, const PersonFigure& figure,
-                   std::vector<RenderPrimitive>& out) {
-  for (const PersonShape& person : people) {
-    const Eigen::Matrix3d& R = person.X_map_body.linear();
-    const core::Pose2 body{person.X_map_body.translation().head<2>(), std::atan2(R(1, 0), R(0, 0))};
-    append_person(body, person.face_yaw_rad, person.id, figure, out);
-  }
-}
-
 }  // namespace ari_social_sim::physics

@@ -1,5 +1,6 @@
 #include "ari_social_sim/physics/render_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ari_social_sim::physics {
@@ -40,7 +41,7 @@ class TriangleWriter {
         static_cast<float>(p.x()),       static_cast<float>(p.y()), static_cast<float>(p.z()),
         static_cast<float>(n.x()),       static_cast<float>(n.y()), static_cast<float>(n.z()),
         primitive_.colour.x(),           primitive_.colour.y(),     primitive_.colour.z(),
-        primitive_.checker ? 1.0f : 0.0f};
+        static_cast<float>(primitive_.surface), 0.0f};
     mesh_.vertices.insert(mesh_.vertices.end(), std::begin(values), std::end(values));
   }
 
@@ -93,11 +94,11 @@ void append_prism(const std::vector<Eigen::Vector2d>& ccw, double half_height, b
   }
 }
 
-void append_ellipsoid(const Eigen::Vector3d& radii, TriangleWriter& out) {
-  constexpr int kRings = kRoundSegments / 2;
+void append_ellipsoid(const Eigen::Vector3d& radii, int segments, TriangleWriter& out) {
+  const int rings = segments / 2;
   auto point = [&](int ring, int segment) {
-    const double polar = M_PI * ring / kRings;
-    const double azimuth = 2.0 * M_PI * segment / kRoundSegments;
+    const double polar = M_PI * ring / rings;
+    const double azimuth = 2.0 * M_PI * segment / segments;
     return Eigen::Vector3d(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
                            std::cos(polar));
   };
@@ -105,14 +106,14 @@ void append_ellipsoid(const Eigen::Vector3d& radii, TriangleWriter& out) {
   auto normal = [&](const Eigen::Vector3d& unit) {
     return unit.cwiseQuotient(radii).normalized().eval();
   };
-  for (int ring = 0; ring < kRings; ++ring) {
-    for (int segment = 0; segment < kRoundSegments; ++segment) {
+  for (int ring = 0; ring < rings; ++ring) {
+    for (int segment = 0; segment < segments; ++segment) {
       const Eigen::Vector3d a = point(ring, segment), b = point(ring + 1, segment);
       const Eigen::Vector3d c = point(ring + 1, segment + 1), d = point(ring, segment + 1);
       if (ring > 0) {
         out.triangle(scaled(a), scaled(b), scaled(d), normal(a), normal(b), normal(d));
       }
-      if (ring + 1 < kRings) {
+      if (ring + 1 < rings) {
         out.triangle(scaled(b), scaled(c), scaled(d), normal(b), normal(c), normal(d));
       }
     }
@@ -143,15 +144,15 @@ void append_primitive(const RenderPrimitive& primitive, RenderMesh& mesh) {
       break;
     case PrimitiveShape::kCylinder: {
       std::vector<Eigen::Vector2d> circle;
-      for (int i = 0; i < kRoundSegments; ++i) {
-        const double angle = 2.0 * M_PI * i / kRoundSegments;
+      for (int i = 0; i < primitive.round_segments; ++i) {
+        const double angle = 2.0 * M_PI * i / primitive.round_segments;
         circle.emplace_back(half.x() * std::cos(angle), half.y() * std::sin(angle));
       }
       append_prism(circle, half.z(), true, half.head<2>(), out);
       break;
     }
     case PrimitiveShape::kSphere:
-      append_ellipsoid(half, out);
+      append_ellipsoid(half, primitive.round_segments, out);
       break;
     case PrimitiveShape::kPrism:
       append_prism(counter_clockwise(primitive.outline), half.z(), false, Eigen::Vector2d::Ones(),
@@ -166,6 +167,24 @@ RenderMesh mesh_of(const std::vector<RenderPrimitive>& primitives) {
     append_primitive(primitive, mesh);
   }
   return mesh;
+}
+
+void append_moved(const RenderMesh& part, const Eigen::Isometry3f& X_world_part, float label,
+                  RenderMesh& out) {
+  constexpr int kStride = RenderMesh::kFloatsPerVertex;
+  const size_t start = out.vertices.size();
+  out.vertices.resize(start + part.vertices.size());
+  const Eigen::Matrix3f rotation = X_world_part.linear();
+  const Eigen::Vector3f translation = X_world_part.translation();
+  const float* from = part.vertices.data();
+  float* to = out.vertices.data() + start;
+  for (size_t i = 0; i < part.vertex_count(); ++i, from += kStride, to += kStride) {
+    const Eigen::Map<const Eigen::Vector3f> position(from), normal(from + 3);
+    Eigen::Map<Eigen::Vector3f>{to} = rotation * position + translation;
+    Eigen::Map<Eigen::Vector3f>{to + 3} = rotation * normal;
+    std::copy(from + 6, from + RenderMesh::kLabelOffset, to + 6);
+    to[RenderMesh::kLabelOffset] = label;
+  }
 }
 
 }  // namespace ari_social_sim::physics

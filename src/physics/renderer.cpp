@@ -22,21 +22,24 @@ constexpr const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 colour;
-layout(location = 3) in float checker;
+layout(location = 3) in float surface;
+layout(location = 4) in float label;
 uniform mat4 world_to_optical;
 uniform mat4 projection;
 out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_colour;
-out float v_checker;
+flat out float v_surface;
 out float v_depth;
+flat out float v_label;
 void main() {
   vec4 p = world_to_optical * vec4(position, 1.0);
   v_world = position;
   v_normal = normal;
   v_colour = colour;
-  v_checker = checker;
+  v_surface = surface;
   v_depth = p.z;
+  v_label = label;
   gl_Position = projection * p;
 }
 )";
@@ -45,24 +48,33 @@ constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_colour;
-in float v_checker;
+flat in float v_surface;
 in float v_depth;
+flat in float v_label;
 layout(location = 0) out vec4 out_colour;
 layout(location = 1) out float out_depth;
+layout(location = 2) out float out_label;
 uniform vec3 camera_position;
 const vec3 sun = normalize(vec3(0.35, 0.55, 1.0));
 void main() {
-  // A light from above plus a fill light at the camera, so surfaces facing the camera stay bright.
+  // Ambient light, a sun, the ceiling's light from straight above (forehead and brows bright,
+  // under them darker, as indoors) and a fill light at the camera, so that surfaces facing the
+  // camera stay bright.
   vec3 n = normalize(v_normal);
-  float fill = max(dot(n, normalize(camera_position - v_world)), 0.0);
-  float lighting = 0.35 + 0.35 * max(dot(n, sun), 0.0) + 0.35 * fill;
+  vec3 to_camera = normalize(camera_position - v_world);
+  float fill = max(dot(n, to_camera), 0.0);
+  float lighting = 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
   vec3 c = v_colour;
-  if (v_checker > 0.5) {
+  if (v_surface > 0.5 && v_surface < 1.5) {
     ivec2 cell = ivec2(floor(v_world.xy / 0.5));
     if (((cell.x + cell.y) & 1) == 1) c *= 0.8;
   }
-  out_colour = vec4(c * lighting, 1.0);
+  // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
+  float highlight = v_surface > 1.5 ? 0.22 * pow(fill, 12.0) : 0.0;
+  // Colours are display (sRGB) values and light adds up linearly: shade in linear terms.
+  out_colour = vec4(min(c * pow(lighting, 1.0 / 2.2) + highlight, vec3(1.0)), 1.0);
   out_depth = v_depth;
+  out_label = v_label;
 }
 )";
 
@@ -128,9 +140,9 @@ struct GpuMesh {
     glBindVertexArray(array);
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
     const GLsizei stride = RenderMesh::kFloatsPerVertex * sizeof(float);
-    const int offsets[4] = {0, 3, 6, 9};
-    const int sizes[4] = {3, 3, 3, 1};
-    for (GLuint i = 0; i < 4; ++i) {
+    const int offsets[5] = {0, 3, 6, 9, RenderMesh::kLabelOffset};
+    const int sizes[5] = {3, 3, 3, 1, 1};
+    for (GLuint i = 0; i < 5; ++i) {
       glEnableVertexAttribArray(i);
       glVertexAttribPointer(i, sizes[i], GL_FLOAT, GL_FALSE, stride,
                             reinterpret_cast<void*>(offsets[i] * sizeof(float)));
@@ -142,10 +154,11 @@ struct GpuMesh {
                  GL_DYNAMIC_DRAW);
     vertex_count = static_cast<GLsizei>(mesh.vertex_count());
   }
-  void draw() const {
-    if (vertex_count > 0) {
+  void draw() const { draw(0, vertex_count); }
+  void draw(GLint first, GLsizei count) const {
+    if (count > 0) {
       glBindVertexArray(array);
-      glDrawArrays(GL_TRIANGLES, 0, vertex_count);
+      glDrawArrays(GL_TRIANGLES, first, count);
     }
   }
   void destroy() {
@@ -154,18 +167,21 @@ struct GpuMesh {
   }
 };
 
-// Off-screen target of one size: RGBA8 colour, R32F optical depth, 32-bit float depth buffer.
+// Off-screen target of one size: RGBA8 colour, R32F optical depth, R32F labels, 32-bit float
+// depth buffer.
 struct Framebuffer {
+  static constexpr int kBuffers = 4;
   GLuint framebuffer{0};
-  GLuint renderbuffers[3]{0, 0, 0};
+  GLuint renderbuffers[kBuffers]{0, 0, 0, 0};
 
   void create(int width, int height) {
     glGenFramebuffers(1, &framebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glGenRenderbuffers(3, renderbuffers);
-    const GLenum formats[3] = {GL_RGBA8, GL_R32F, GL_DEPTH_COMPONENT32F};
-    const GLenum attachments[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
-    for (int i = 0; i < 3; ++i) {
+    glGenRenderbuffers(kBuffers, renderbuffers);
+    const GLenum formats[kBuffers] = {GL_RGBA8, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F};
+    const GLenum attachments[kBuffers] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                          GL_COLOR_ATTACHMENT2, GL_DEPTH_ATTACHMENT};
+    for (int i = 0; i < kBuffers; ++i) {
       glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[i]);
       glRenderbufferStorage(GL_RENDERBUFFER, formats[i], width, height);
       glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachments[i], GL_RENDERBUFFER, renderbuffers[i]);
@@ -176,7 +192,7 @@ struct Framebuffer {
     }
   }
   void destroy() {
-    glDeleteRenderbuffers(3, renderbuffers);
+    glDeleteRenderbuffers(kBuffers, renderbuffers);
     glDeleteFramebuffers(1, &framebuffer);
   }
 };
@@ -194,6 +210,7 @@ struct Renderer::Impl {
   GpuMesh dynamic_mesh;
   // One framebuffer per image size: a rig alternates between cameras of different sizes.
   std::map<std::pair<int, int>, Framebuffer> framebuffers;
+  cv::Mat label_scratch;  // CV_32FC1, the label attachment as read back
 
   Framebuffer& framebuffer_of(int width, int height) {
     auto found = framebuffers.find({width, height});
@@ -237,8 +254,12 @@ void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primiti
 }
 
 void Renderer::set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives) {
+  set_dynamic_mesh(mesh_of(primitives));
+}
+
+void Renderer::set_dynamic_mesh(const RenderMesh& mesh) {
   impl_->context.make_current();
-  impl_->dynamic_mesh.upload(mesh_of(primitives));
+  impl_->dynamic_mesh.upload(mesh);
 }
 
 void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_world_optical,
@@ -246,16 +267,24 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   impl_->context.make_current();
   Framebuffer& target = impl_->framebuffer_of(model.width, model.height);
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-  // Only the outputs asked for are written: a colour-only camera skips the depth attachment's
-  // bandwidth, which is a good part of llvmpipe's cost per pixel.
-  const GLenum draw_buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(options.depth ? 2 : 1, draw_buffers);
+  // Only the outputs asked for are written: a colour-only camera skips the depth and label
+  // attachments' bandwidth, which is a good part of llvmpipe's cost per pixel.
+  const GLenum draw_buffers[3] = {
+      options.colour ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE},
+      options.depth ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE},
+      options.labels ? GLenum{GL_COLOR_ATTACHMENT2} : GLenum{GL_NONE}};
+  glDrawBuffers(3, draw_buffers);
   glViewport(0, 0, model.width, model.height);
 
-  const float no_depth[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearBufferfv(GL_COLOR, 0, kBackground);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  if (options.colour) {
+    glClearBufferfv(GL_COLOR, 0, kBackground);
+  }
   if (options.depth) {
-    glClearBufferfv(GL_COLOR, 1, no_depth);
+    glClearBufferfv(GL_COLOR, 1, zero);
+  }
+  if (options.labels) {
+    glClearBufferfv(GL_COLOR, 2, zero);
   }
   glClear(GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -273,8 +302,13 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   glUniformMatrix4fv(impl_->projection_location, 1, GL_FALSE, projection.data());
   const Eigen::Vector3f camera_position = X_world_optical.translation().cast<float>();
   glUniform3fv(impl_->camera_position_location, 1, camera_position.data());
-  impl_->static_mesh.draw();
-  impl_->dynamic_mesh.draw();
+  if (options.only_dynamic) {
+    impl_->dynamic_mesh.draw(static_cast<GLint>(options.only_dynamic->first),
+                             static_cast<GLsizei>(options.only_dynamic->count));
+  } else {
+    impl_->static_mesh.draw();
+    impl_->dynamic_mesh.draw();
+  }
 
   // Read back; the first row read is window y = 0, which the projection made image row v = 0.
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -295,6 +329,12 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
         depth[i] = nan;
       }
     }
+  }
+  if (options.labels) {
+    impl_->label_scratch.create(model.height, model.width, CV_32FC1);
+    glReadBuffer(GL_COLOR_ATTACHMENT2);
+    glReadPixels(0, 0, model.width, model.height, GL_RED, GL_FLOAT, impl_->label_scratch.data);
+    impl_->label_scratch.convertTo(out.labels, CV_16UC1);
   }
 }
 

@@ -1,7 +1,6 @@
 #include "ari_social_sim/physics/world_scene.hpp"
 
 #include <Eigen/Geometry>
-#include <array>
 
 namespace ari_social_sim::physics {
 namespace {
@@ -9,14 +8,6 @@ namespace {
 const Eigen::Vector3f kFloorColour{0.72f, 0.70f, 0.66f};
 const Eigen::Vector3f kWallColour{0.86f, 0.85f, 0.80f};
 const Eigen::Vector3f kFurnitureColour{0.55f, 0.40f, 0.28f};
-const Eigen::Vector3f kSkinColour{0.93f, 0.76f, 0.62f};
-const Eigen::Vector3f kEyeColour{0.08f, 0.08f, 0.1f};
-const std::array<Eigen::Vector3f, 6> kShirtColours{{{0.20f, 0.35f, 0.75f},
-                                                    {0.75f, 0.22f, 0.22f},
-                                                    {0.22f, 0.60f, 0.30f},
-                                                    {0.85f, 0.65f, 0.15f},
-                                                    {0.50f, 0.30f, 0.65f},
-                                                    {0.20f, 0.60f, 0.65f}}};
 
 Eigen::Isometry3d planar(const Eigen::Vector2d& xy, double z, double yaw) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
@@ -45,7 +36,7 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
   RenderPrimitive floor = solid(
       PrimitiveShape::kBox, planar(world.origin + 0.5 * world.size, -0.5 * kFloorThickness, 0.0),
       Eigen::Vector3d(world.size.x(), world.size.y(), kFloorThickness), kFloorColour);
-  floor.checker = true;
+  floor.surface = Surface::kChecker;
   out.push_back(floor);
 
   for (const model::StaticObject& object : world.objects) {
@@ -82,41 +73,6 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
     }
   }
   return out;
-}
-
-void append_person(const core::Pose2& body, double face_direction_rad, size_t shirt_index,
-                   const PersonFigure& shape, std::vector<RenderPrimitive>& out) {
-  const Eigen::Vector3f& shirt = kShirtColours[shirt_index % kShirtColours.size()];
-  out.push_back(
-      solid(PrimitiveShape::kCylinder, planar(body.position, 0.5 * shape.body_height_m, body.theta),
-            Eigen::Vector3d(shape.body_depth_m, shape.body_width_m, shape.body_height_m), shirt));
-  const Eigen::Isometry3d X_world_head =
-      planar(body.position, shape.head_centre_height_m, face_direction_rad);
-  out.push_back(solid(PrimitiveShape::kSphere, X_world_head,
-                      Eigen::Vector3d::Constant(shape.head_diameter_m), kSkinColour));
-  // The face plate stands just proud of the sphere along the head's x axis, with two dark eyes,
-  // so the face direction reads in any image.
-  const double radius = 0.5 * shape.head_diameter_m;
-  auto on_face = [&](double forward, double left, double up) {
-    Eigen::Isometry3d X = X_world_head;
-    X.translate(Eigen::Vector3d(forward, left, up));
-    return X;
-  };
-  out.push_back(
-      solid(PrimitiveShape::kBox, on_face(0.85 * radius, 0.0, 0.0),
-            Eigen::Vector3d(0.04, 0.6 * shape.head_diameter_m, 0.5 * shape.head_diameter_m),
-            kSkinColour * 1.05f));
-  for (double side : {-1.0, 1.0}) {
-    out.push_back(solid(PrimitiveShape::kBox, on_face(0.85 * radius + 0.025, side * 0.03, 0.02),
-                        Eigen::Vector3d(0.012, 0.022, 0.018), kEyeColour));
-  }
-}
-
-void append_people(const std::vector<world::HumanSnapshot>& humans, const SceneStyle& style,
-                   std::vector<RenderPrimitive>& out) {
-  for (const world::HumanSnapshot& human : humans) {
-    append_person(human.pose, human.gaze.direction_rad, human.id, style.person, out);
-  }
 }
 
 }  // namespace ari_social_sim::physics

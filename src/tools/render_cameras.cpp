@@ -12,19 +12,22 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
+#include "ari_social_sim/physics/people_figures.hpp"
 
 namespace {
 
 using namespace ari_social_sim;
 
 constexpr int kUsageError = 2;
+// Picks the people's looks; fixed so that the pictures stay the same from run to run.
+constexpr uint64_t kAppearanceSeed = 1;
 
 constexpr const char* kUsage = R"(Usage:
   render_cameras --world WORLD_YAML --out DIR [--overwrite]
 
 Renders ARI's head camera, torso RGB-D camera (colour and depth), front and rear fisheyes and the
-T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world and four people
-around it, and writes DIR/camera_head.png, camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m
+T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world and five people
+around it (one speaking, one in a mask, one walking), and writes DIR/camera_head.png, camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m
 false-coloured, black where invalid), camera_fisheye_front.png, camera_fisheye_rear.png,
 camera_t265_fisheye1.png and camera_t265_fisheye2.png. DIR is created when missing; pictures
 already there are replaced only with --overwrite (checked before rendering).
@@ -100,20 +103,34 @@ int run(const std::string& world_path, const std::string& out_dir, bool overwrit
   const physics::SceneStyle style;
   rig.set_world(world, style);
 
-  // ARI faces north-west towards the middle rows of chairs; two people talk in front of it, one
-  // walks past on its left and one waits behind it.
+  // ARI faces north-west towards the middle rows of chairs; two people talk in front of it (one
+  // speaking, one in a mask), one walks past on its left and two wait nearby.
   const core::Pose2 ari{{6.0, 2.6}, 2.0};
   const double head_pan = 0.15, head_tilt = 0.05;
-  std::vector<physics::RenderPrimitive> people;
-  auto add = [&](Eigen::Vector2d position, double body_yaw, double face_yaw, size_t shirt) {
-    physics::append_person({position, body_yaw}, face_yaw, shirt, style.person, people);
+  std::vector<physics::FigureInput> people;
+  auto add = [&](uint32_t id, double age, model::Gender gender, bool mask,
+                 const core::Pose2& pose, double face_yaw, const Eigen::Vector2d& velocity,
+                 bool speaking) {
+    physics::FigureInput person;
+    person.traits = {id, age, gender, mask};
+    person.pose = pose;
+    person.face_yaw_rad = face_yaw;
+    person.velocity_mps = velocity;
+    person.speaking = speaking;
+    people.push_back(person);
   };
-  add({5.1, 4.2}, -0.9, -1.1, 0);  // facing ARI
-  add({4.5, 3.7}, 0.2, 0.5, 1);    // talking to the first
-  add({4.3, 2.0}, 1.6, 1.6, 2);    // walking north past ARI's left
-  add({7.2, 0.9}, 2.3, 2.5, 3);    // behind ARI, by the entrance
-  add({6.9, 3.4}, -2.0, -2.2, 4);  // close, in the torso camera's view
-  rig.set_dynamic_primitives(people);
+  const Eigen::Vector2d standing = Eigen::Vector2d::Zero();
+  add(1, 34, model::Gender::kFemale, false, {{5.1, 4.2}, -0.9}, -1.1, standing, true);
+  add(2, 61, model::Gender::kMale, true, {{4.5, 3.7}, 0.2}, 0.5, standing, false);
+  add(3, 27, model::Gender::kMale, false, {{4.3, 2.0}, 1.6}, 1.6, {0.0, 1.2}, false);
+  add(4, 45, model::Gender::kFemale, false, {{7.2, 0.9}, 2.3}, 2.5, standing, false);
+  add(5, 9, model::Gender::kMale, false, {{6.9, 3.4}, -2.0}, -2.2, standing, false);
+  physics::PeopleFigures figures(kAppearanceSeed);
+  // Half a second of walking so that the walker is mid-stride.
+  for (double t = 0.0; t <= 0.5; t += 0.05) {
+    figures.update(t, people);
+  }
+  rig.set_dynamic_mesh(figures.mesh());
 
   physics::CameraFrame frame;
   for (size_t i = 0; i < rig.cameras().size(); ++i) {

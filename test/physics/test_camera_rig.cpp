@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
+#include "ari_social_sim/physics/people_figures.hpp"
 #include "render_test_scenes.hpp"
 
 namespace ari_social_sim::physics {
@@ -26,7 +28,7 @@ TEST(CameraRig, TorsoDepthShowsTheWallAtItsDistance) {
     CameraRig rig(config);
     ASSERT_EQ(rig.cameras()[kTorso].name, "torso_front_camera");
     rig.set_world(waiting_room(), SceneStyle{});
-    rig.set_dynamic_primitives({});
+    rig.set_dynamic_mesh({});
 
     const core::Pose2 ari{{9.5, 8.95 - 1.5}, M_PI / 2};  // clear of the north table
     const Eigen::Isometry3d X_world_optical =
@@ -82,34 +84,31 @@ TEST(CameraRig, PersonInFrontOfAriAppearsWhereCameraInfoProjectsThem) {
                                    0.3 * Eigen::Vector2d(std::sin(heading), -std::cos(heading));
   const Eigen::Vector2d to_ari = X_world_optical.translation().head<2>() - position;
   const double facing = std::atan2(to_ari.y(), to_ari.x());
-  std::vector<RenderPrimitive> people;
-  const SceneStyle style;
-  append_person(core::Pose2{position, facing}, facing, 0, style.person, people);
-  rig.set_dynamic_primitives(people);
+  FigureInput person;
+  person.pose = {position, facing};
+  person.face_yaw_rad = facing;
+  PeopleFigures figures;
+  figures.update(0.0, {person});
+  rig.set_dynamic_mesh(figures.mesh());
 
   CameraFrame frame;
-  rig.render(kHead, X_world_optical, frame);
+  rig.render(kHead, X_world_optical, frame, /*labels=*/true);
   ASSERT_EQ(frame.colour.cols, 1280);
   ASSERT_TRUE(frame.depth.empty());
 
-  // Skin (head and face plate) by its hue: green and blue at fixed fractions of red, which no
-  // wall, floor, furniture or shirt colour has.
-  const auto [centroid, count] = test::centroid_of(frame.colour, [](const cv::Vec3b& rgb) {
-    const double g = rgb[1] / std::max(1.0, double(rgb[0]));
-    const double b = rgb[2] / std::max(1.0, double(rgb[0]));
-    return rgb[0] > 60 && g > 0.76 && g < 0.9 && b > 0.58 && b < 0.76;
-  });
+  // The face's pixels (labelled) centre where camera_info's K projects the head's centre.
+  const PosedPerson& posed = figures.posed()[0];
+  const cv::Moments face = cv::moments(frame.labels == posed.face_label, true);
   const CameraInfo& info = rig.info(kHead);
   const Eigen::Vector3d head_optical =
-      X_world_optical.inverse() *
-      Eigen::Vector3d(position.x(), position.y(), style.person.head_centre_height_m);
+      X_world_optical.inverse() * posed.figure->head_frame(posed.pose).translation();
   const double u = info.K[0] * head_optical.x() / head_optical.z() + info.K[2];
   const double v = info.K[4] * head_optical.y() / head_optical.z() + info.K[5];
-  std::printf("head at (%.2f, %.2f) px, projected (%.2f, %.2f) px, %d skin pixels\n", centroid.x(),
-              centroid.y(), u, v, count);
-  ASSERT_GT(count, 3000);  // a 0.22 m head at 2.5 m: about 47 px across
-  EXPECT_NEAR(centroid.x(), u, 3.0);
-  EXPECT_NEAR(centroid.y(), v, 3.0);
+  std::printf("face at (%.2f, %.2f) px, head projected (%.2f, %.2f) px, %.0f face pixels\n",
+              face.m10 / face.m00, face.m01 / face.m00, u, v, face.m00);
+  ASSERT_GT(face.m00, 1500);  // a 0.15 m wide face at 2.5 m: about 60 px across
+  EXPECT_NEAR(face.m10 / face.m00, u, 4.0);
+  EXPECT_NEAR(face.m01 / face.m00, v, 4.0);
 }
 
 TEST(CameraRig, FramesAreDueAtEachCamerasRate) {

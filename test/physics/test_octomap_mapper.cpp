@@ -145,7 +145,7 @@ TEST(OctomapMapper, DrivingThroughTheWaitingRoomMatchesTheRasterisedMap) {
   }
   CameraRig rig(rig_config);
   rig.set_world(world, SceneStyle{});
-  rig.set_dynamic_primitives({});
+  rig.set_dynamic_mesh({});
   const CameraInfo& info = rig.info(0);
   const PinholeModel model{info.width, info.height, info.K[0], info.K[4], info.K[2], info.K[5]};
 

@@ -31,17 +31,5 @@ TEST(PhysicsPrimitives, EveryVisualOfAriAtItsLinksPose) {
               0.4, 1e-9);
 }
 
-TEST(PhysicsPrimitives, PeopleStandWhereThePhysicsHasThem) {
-  PersonState state;
-  state.id = 3;
-  state.pose = {{2.0, 1.0}, 0.5};
-  state.face_yaw_rad = 1.0;
-  std::vector<RenderPrimitive> out;
-  append_people({PersonShape::of(state, PersonShapeConfig{})}, PersonFigure{}, out);
-  ASSERT_FALSE(out.empty());
-  // The first primitive is the body cylinder, centred at half the body height over the feet.
-  EXPECT_TRUE(out[0].X_world_shape.translation().isApprox(Eigen::Vector3d(2.0, 1.0, 0.725)));
-}
-
 }  // namespace
 }  // namespace ari_social_sim::physics

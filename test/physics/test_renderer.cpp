@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <opencv2/imgproc.hpp>
+
+#include "ari_social_sim/physics/people_figures.hpp"
 #include "ari_social_sim/physics/renderer.hpp"
 #include "ari_social_sim/physics/world_scene.hpp"
 #include "render_test_scenes.hpp"
@@ -90,23 +93,44 @@ TEST(Renderer, PersonAppearsWhereTheProjectionPutsThem) {
   // A person 3 m ahead and 0.6 m to the left, facing the camera.
   const Eigen::Vector2d position(3.0, 0.6);
   const double facing = std::atan2(-position.y(), -position.x());
-  std::vector<RenderPrimitive> people;
-  PersonFigure shape;
-  append_person(core::Pose2{position, facing}, facing, 0, shape, people);
-  renderer.set_dynamic_primitives(people);
+  FigureInput person;
+  person.traits.id = 4;
+  person.pose = {position, facing};
+  person.face_yaw_rad = facing;
+  PeopleFigures figures;
+  figures.update(0.0, {person});
+  renderer.set_dynamic_mesh(figures.mesh());
 
   const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
   RenderedImage image;
-  renderer.render(model, X_world_optical, ViewOptions{}, image);
-  // Skin pixels (head and face plate; the eyes are dark) are the only ones redder than blue: the
-  // background is blue-grey and the shirt blue.
-  const auto [centroid, count] =
-      test::centroid_of(image.colour, [](const cv::Vec3b& rgb) { return rgb[0] > rgb[2] + 20; });
-  ASSERT_GT(count, 1000);
-  const Eigen::Vector3d head_world(position.x(), position.y(), shape.head_centre_height_m);
+  ViewOptions options;
+  options.labels = true;
+  renderer.render(model, X_world_optical, options, image);
+  // The face's labelled pixels centre on the head's projection, within a tenth of its width.
+  const PosedPerson& posed = figures.posed()[0];
+  const cv::Mat face = image.labels == posed.face_label;
+  const cv::Moments moments = cv::moments(face, true);
+  ASSERT_GT(moments.m00, 1000);
+  const Eigen::Vector3d head_world = posed.figure->head_frame(posed.pose).translation();
   const Eigen::Vector2d expected = *model.project(X_world_optical.inverse() * head_world);
-  EXPECT_NEAR(centroid.x(), expected.x(), 3.0);
-  EXPECT_NEAR(centroid.y(), expected.y(), 3.0);
+  const double head_width_px =
+      model.fx * posed.figure->appearance().head_height_m * 0.68 / position.norm();
+  std::printf("face centroid (%.1f, %.1f), head projected (%.1f, %.1f), head %.0f px wide\n",
+              moments.m10 / moments.m00, moments.m01 / moments.m00, expected.x(), expected.y(),
+              head_width_px);
+  EXPECT_NEAR(moments.m10 / moments.m00, expected.x(), 0.1 * head_width_px);
+  EXPECT_NEAR(moments.m01 / moments.m00, expected.y(), 0.1 * head_width_px);
+  // The label image and the colour image agree on where the person is: labelled pixels are
+  // exactly those not of the background's colour.
+  const cv::Vec3b background = image.colour.at<cv::Vec3b>(0, 0);
+  int disagreements = 0;
+  for (int v = 0; v < image.colour.rows; ++v) {
+    for (int u = 0; u < image.colour.cols; ++u) {
+      const bool drawn = image.colour.at<cv::Vec3b>(v, u) != background;
+      disagreements += drawn != (image.labels.at<uint16_t>(v, u) > 0) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(disagreements, 0);
 }
 
 }  // namespace

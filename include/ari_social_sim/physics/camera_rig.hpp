@@ -18,6 +18,7 @@ struct CameraFrame {
   cv::Mat colour;  // CV_8UC3, RGB
   cv::Mat depth;   // RGB-D cameras only: CV_32FC1 metres (NaN invalid) or CV_16UC1 millimetres
                    // (0 invalid), per the rig's depth encoding; aligned pixel for pixel to colour
+  cv::Mat labels;  // when asked for (pinhole cameras): CV_16UC1, PeopleFigures' labels per pixel
 };
 
 /// ARI's enabled cameras around one renderer: the component a node (or a batch tool) calls with
@@ -37,14 +38,20 @@ class CameraRig {
   Renderer& renderer() { return *renderer_; }
 
   void set_world(const model::WorldDescription& world, const SceneStyle& style);
-  void set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives);
+  /// The moving part of the scene: the posed people (PeopleFigures::mesh(), first, so that their
+  /// vertex ranges hold) and then ARI's body.
+  void set_dynamic_mesh(const RenderMesh& mesh);
 
   /// Indices of the cameras with a frame due at sim time t: camera i's k-th frame is due at
   /// k / rate_hz. A frame that could not be taken in time is skipped, not queued.
   std::vector<size_t> due(double time_s);
 
-  /// Renders camera i from its optical frame's pose in the world.
-  void render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out);
+  /// Renders camera i from its optical frame's pose in the world, with the label image when
+  /// `labels` is set and the camera is a pinhole.
+  void render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out,
+              bool labels = false);
+  /// The pinhole model of camera i (not for fisheyes).
+  const PinholeModel& pinhole(size_t i) const { return pinholes_[i]; }
 
  private:
   std::vector<CameraSpec> cameras_;

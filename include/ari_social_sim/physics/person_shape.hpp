@@ -6,6 +6,7 @@
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/person_attributes.hpp"
 
 namespace ari_social_sim::physics {
 
@@ -37,6 +38,11 @@ struct PersonState {
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};  // map frame
   double angular_velocity_rps{0.0};
   double face_yaw_rad{0.0};  // where the face points (the gaze direction), map frame
+  // How the cameras draw them (physics::HumanFigure).
+  double age_years{35.0};
+  model::Gender gender{model::Gender::kNonIdentified};
+  bool mask{false};
+  bool speaking{false};
 };
 
 /// A person's 3D shape at one instant, for collisions and rendering.

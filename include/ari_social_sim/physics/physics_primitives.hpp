@@ -2,7 +2,6 @@
 
 #include <vector>
 
-#include "ari_social_sim/physics/person_shape.hpp"
 #include "ari_social_sim/physics/render_primitive.hpp"
 #include "ari_social_sim/physics/robot_model.hpp"
 #include "ari_social_sim/physics/world_scene.hpp"
@@ -15,10 +14,5 @@ namespace ari_social_sim::physics {
 /// out.
 std::vector<RenderPrimitive> robot_primitives(const RobotModel& model,
                                               const std::vector<Eigen::Isometry3d>& X_world_links);
-
-/// Appends the physics' people (AriPhysics::people()) as the cameras draw people: their body
-/// pose and face direction on `figure`.
-void append_people(const std::vector<PersonShape>& people, const PersonFigure& figure,
-                   std::vector<RenderPrimitive>& out);
 
 }  // namespace ari_social_sim::physics

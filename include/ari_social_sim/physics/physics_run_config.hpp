@@ -31,6 +31,7 @@ struct PhysicsRunConfig {
   double ground_truth_rate_hz{100.0};
   PhysicsConfig physics;
   bool cameras_enabled{true};
+  uint64_t appearance_seed{1};
   // Cameras and mapping (docs/cameras.md) are read by the node's camera interface, which links
   // the renderer: their mappings are handed on unread.
   std::optional<core::YamlMap> cameras;
@@ -66,6 +67,8 @@ struct PhysicsRunConfig {
             "Hz of /ground_truth_odom, as PAL's Gazebo p3d plugin", core::between(1.0, 1000.0));
     physics.visit(v);
     v.field("cameras_enabled", cameras_enabled, "render ARI's cameras for their subscribers");
+    v.field("appearance_seed", appearance_seed,
+            "draws each person's look in the cameras (stature, skin, hair, clothes) with their id");
     v.field("cameras", cameras, "overrides of the cameras' settings (camera rig below)");
     v.field("mapping", mapping, "OctoMap from the torso depth camera, and /map from it");
     v.field("mapping_params", mapping_params, "mapping settings (mapping below)");

@@ -2,12 +2,14 @@
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <optional>
 #include <opencv2/core/mat.hpp>
 #include <string>
 #include <vector>
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/physics/camera_model.hpp"
+#include "ari_social_sim/physics/render_mesh.hpp"
 #include "ari_social_sim/physics/render_primitive.hpp"
 
 namespace ari_social_sim::physics {
@@ -22,11 +24,22 @@ class RenderError : public core::Error {
 struct RenderedImage {
   cv::Mat colour;  // CV_8UC3, RGB order
   cv::Mat depth;   // CV_32FC1, metres along the optical z axis; NaN where no surface was hit
+  cv::Mat labels;  // CV_16UC1, the label of the mesh seen at each pixel (RenderMesh), 0 for none
+};
+
+/// A run of vertices of the dynamic mesh, e.g. one person's figure.
+struct VertexRange {
+  size_t first{0};
+  size_t count{0};
 };
 
 struct ViewOptions {
   bool colour{true};
   bool depth{false};
+  bool labels{false};
+  /// Draws only these vertices of the dynamic mesh and nothing of the static scene: what one
+  /// person would cover with nothing in front of them.
+  std::optional<VertexRange> only_dynamic;
   double near_m{0.02};  // clip planes of the view; sensor ranges are applied by the caller
   double far_m{100.0};
 };
@@ -49,6 +62,8 @@ class Renderer {
 
   void set_static_primitives(const std::vector<RenderPrimitive>& primitives);
   void set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives);
+  /// The dynamic part as triangles already in the world (posed figures, then primitives).
+  void set_dynamic_mesh(const RenderMesh& mesh);
 
   /// Renders the scene seen from an optical frame (REP-103) through an ideal pinhole. The images
   /// in `out` are reallocated only when the size changes.
