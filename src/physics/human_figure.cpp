@@ -32,7 +32,7 @@ constexpr double kFootWidthShare = 0.055;
 constexpr double kHipSwingRad = 0.42;
 constexpr double kKneeFlexRad = 0.75;
 constexpr double kShoulderSwingRad = 0.38;
-constexpr double kArmAbductionRad = 0.09;  // arms hang a little away from the body
+constexpr double kArmAbductionRad = 0.14;  // arms hang a little away from the body
 
 RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
                       const Eigen::Vector3f& colour, int segments) {
@@ -99,8 +99,8 @@ void HumanFigure::add_part(Joint joint, bool face, const RenderPrimitive& primit
 
 void HumanFigure::build_legs() {
   const double s = scale_;
-  const double thigh_radius = 0.034 * s * look_.build;
-  const double shin_radius = 0.025 * s * look_.build;
+  const double thigh_radius = 0.045 * s * look_.build;
+  const double shin_radius = 0.034 * s * look_.build;
   for (const auto& [hip, knee, ankle] : {std::array<Joint, 3>{kLeftHip, kLeftKnee, kLeftAnkle},
                                          std::array<Joint, 3>{kRightHip, kRightKnee, kRightAnkle}}) {
     add_part(hip, false,
@@ -121,8 +121,8 @@ void HumanFigure::build_legs() {
 
 void HumanFigure::build_trunk_and_arms() {
   const double s = scale_;
-  const double width = (look_.female_build ? 0.175 : 0.19) * s * look_.build;
-  const double depth = 0.115 * s * look_.build;
+  const double width = (look_.female_build ? 0.19 : 0.205) * s * look_.build;
+  const double depth = 0.13 * s * look_.build;
   const double hip_width = kHipWidthShare * s * look_.build * (look_.female_build ? 1.05 : 1.0);
   // Pelvis in the trousers' colour, torso and shoulders in the top's.
   add_part(kPelvis, false,
@@ -138,6 +138,11 @@ void HumanFigure::build_trunk_and_arms() {
            shape(PrimitiveShape::kSphere, {0.0, 0.0, torso_top},
                  {depth * 0.95, 2.0 * (shoulder_joint_y_ + 0.025 * s), 0.09 * s}, look_.top,
                  kTrunkSegments));
+  // The trapezius slopes from the shoulders up to the neck: the head-and-shoulders outline people
+  // detectors look for.
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {-0.01 * s, 0.0, shoulder_z_ - 0.005 * s},
+                 {depth * 0.8, 1.3 * shoulder_joint_y_, 0.09 * s}, look_.top, kTrunkSegments));
   // Neck from inside the shoulders to inside the head.
   const double neck_bottom = shoulder_z_ - 0.03 * s;
   const double neck_top = chin_z_ + 0.3 * look_.head_height_m;
@@ -146,8 +151,8 @@ void HumanFigure::build_trunk_and_arms() {
                  {0.062 * s, 0.062 * s, neck_top - neck_bottom}, darker(look_.skin, 0.9f),
                  kLimbSegments));
 
-  const double upper_arm_radius = 0.026 * s * look_.build;
-  const double forearm_radius = 0.021 * s * look_.build;
+  const double upper_arm_radius = 0.031 * s * look_.build;
+  const double forearm_radius = 0.025 * s * look_.build;
   const Eigen::Vector3f forearm_colour = look_.short_sleeves ? look_.skin : look_.top;
   for (const auto& [shoulder, elbow] : {std::array<Joint, 2>{kLeftShoulder, kLeftElbow},
                                         std::array<Joint, 2>{kRightShoulder, kRightElbow}}) {
@@ -220,8 +225,8 @@ void HumanFigure::build_head() {
                    {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
   }
   add_part(kHead, true,
-           glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h) + 0.01 * h, 0.0, -0.08 * h},
-                        {0.16 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
+           glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h) , 0.0, -0.08 * h},
+                        {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
   add_part(kHead, true,
            shape(PrimitiveShape::kSphere, {front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
                  {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
@@ -243,6 +248,16 @@ void HumanFigure::build_head() {
              shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
                    {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour,
                    kHeadSegments));
+    // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
+    for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
+      const double dz = (z + 0.27 * h) / (0.25 * h);
+      const double across = std::sqrt(1.0 - dz * dz);
+      add_part(kHead, true,
+               shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, z},
+                     {2.0 * (0.82 * r.x() * across + 0.003), 2.0 * (0.98 * r.y() * across + 0.003),
+                      0.035 * h},
+                     darker(look_.mask_colour, 0.72f), kHeadSegments));
+    }
   }
   // The face box: hairline to chin, side to side of the head at the eyes.
   for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
