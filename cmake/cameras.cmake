@@ -19,6 +19,7 @@ add_library(ari_rendering
   src/physics/physics_primitives.cpp
   src/physics/render_mesh.cpp
   src/physics/renderer.cpp
+  src/physics/snapshot_cameras.cpp
   src/physics/world_scene.cpp)
 target_include_directories(ari_rendering PUBLIC ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(ari_rendering PUBLIC ari_physics ${OpenCV_LIBS} PRIVATE OpenGL::OpenGL OpenGL::EGL)

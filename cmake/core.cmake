@@ -4,6 +4,7 @@ add_library(ari_core
   src/core/bounds.cpp
   src/core/command_line.cpp
   src/core/format_text.cpp
+  src/core/json_string.cpp
   src/core/output_file.cpp
   src/core/parameter_table.cpp
   src/core/rng.cpp
@@ -17,7 +18,7 @@ if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_core
     SOURCES test/core/test_command_line.cpp test/core/test_config_fields.cpp
       test/core/test_const_pointer_view.cpp test/core/test_format_text.cpp
-      test/core/test_output_file.cpp test/core/test_pose2.cpp
+      test/core/test_json_string.cpp test/core/test_output_file.cpp test/core/test_pose2.cpp
       test/core/test_rng.cpp test/core/test_sim_timer.cpp test/core/test_text_file.cpp
       test/core/test_yaml_map.cpp
     LIBRARIES ari_core)

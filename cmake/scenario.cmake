@@ -48,6 +48,25 @@ target_compile_definitions(run_episodes PRIVATE
   ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios"
   ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
+# export_dataset: labelled images of ARI's cameras from a scenario's episodes as a COCO dataset,
+# the engine and the renderer in one process (docs/cameras.md, "Labelled datasets").
+add_library(ari_dataset src/scenario/coco_dataset.cpp)
+target_link_libraries(ari_dataset PUBLIC ari_scenario ari_rendering)
+add_executable(export_dataset src/tools/export_dataset.cpp)
+target_link_libraries(export_dataset ari_dataset)
+target_compile_definitions(export_dataset PRIVATE
+  ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios"
+  ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+if(CATKIN_ENABLE_TESTING)
+  # The COCO file's layout, and the program itself run as a user would.
+  ari_add_gtest(test_export_dataset
+    SOURCES test/scenario/test_coco_dataset.cpp test/tools/test_export_dataset.cpp
+    LIBRARIES ari_dataset)
+  target_compile_definitions(test_export_dataset PRIVATE
+    ARI_EXPORT_DATASET_BIN="$<TARGET_FILE:export_dataset>")
+  add_dependencies(test_export_dataset export_dataset)
+endif()
+
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
     SOURCES

@@ -1,11 +1,12 @@
 #include "ari_social_sim/dialogue/json_lines.hpp"
 
-#include <cstdio>
-
 #include "ari_social_sim/core/format_text.hpp"
+#include "ari_social_sim/core/json_string.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
+
+using core::json_string;
 
 std::string fixed3(double value) {
   return core::format_text("%.3f", value);
@@ -32,38 +33,6 @@ std::string act_list(const std::vector<DialogueAct>& acts) {
 }
 
 }  // namespace
-
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (unsigned char c : text) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      default:
-        if (c < 0x20) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
-          out += escaped;
-        } else {
-          out += static_cast<char>(c);
-        }
-    }
-  }
-  return out + "\"";
-}
 
 std::string utterance_json(int dialogue, const Utterance& u) {
   std::vector<std::string> goals;

@@ -1,5 +1,6 @@
 #include "ari_social_sim/physics/camera_rig.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -52,6 +53,10 @@ std::vector<size_t> CameraRig::due(double time_s) {
     next_due_s_[i] = (std::floor(time_s * cameras_[i].rate_hz + 1e-6) + 1.0) * period;
   }
   return due_now;
+}
+
+void CameraRig::restart_schedule() {
+  std::fill(next_due_s_.begin(), next_due_s_.end(), 0.0);
 }
 
 void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out,

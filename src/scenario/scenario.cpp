@@ -450,4 +450,11 @@ Scenario load_scenario_file(const std::string& path) {
                         file.stem().string());
 }
 
+std::string scenario_file_of(const std::string& name_or_file, const std::string& scenario_dir) {
+  if (name_or_file.find('/') == std::string::npos && name_or_file.find('.') == std::string::npos) {
+    return scenario_dir + "/" + name_or_file + ".yaml";
+  }
+  return name_or_file;
+}
+
 }  // namespace ari_social_sim::scenario

@@ -125,14 +125,6 @@ Options parse_options(int argc, char** argv) {
   return options;
 }
 
-// A name without a slash or extension is one of the package's scenarios.
-std::string scenario_path(const std::string& scenario) {
-  if (scenario.find('/') == std::string::npos && scenario.find('.') == std::string::npos) {
-    return std::string(ARI_SCENARIO_DIR) + "/" + scenario + ".yaml";
-  }
-  return scenario;
-}
-
 // Every YAML file under the configuration folder, sorted: what the episodes may read.
 std::vector<std::string> config_files() {
   std::vector<std::string> files;
@@ -293,7 +285,7 @@ Batch prepare(int argc, char** argv) {
   Batch batch;
   Options& options = batch.options;
   options = parse_options(argc, argv);
-  const std::string scenario_file = scenario_path(options.scenario);
+  const std::string scenario_file = scenario::scenario_file_of(options.scenario, ARI_SCENARIO_DIR);
   core::check_input_file("--scenario", scenario_file);
   batch.scenario = scenario::load_scenario_file(scenario_file);
   batch.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);

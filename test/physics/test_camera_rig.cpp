@@ -123,5 +123,16 @@ TEST(CameraRig, FramesAreDueAtEachCamerasRate) {
   EXPECT_EQ(frames[kTorso], 15);
 }
 
+TEST(CameraRig, ARestartedScheduleGivesFrameZeroAgain) {
+  CameraRig rig(CameraRigConfig{});
+  rig.due(0.0);
+  rig.due(7.3);
+  // A new episode's clock: nothing due at 0 until the schedule restarts.
+  EXPECT_TRUE(rig.due(0.0).empty());
+  rig.restart_schedule();
+  EXPECT_EQ(rig.due(0.0), (std::vector<size_t>{kHead, kTorso}));
+  EXPECT_TRUE(rig.due(0.05).empty());
+}
+
 }  // namespace
 }  // namespace ari_social_sim::physics

@@ -6,9 +6,6 @@
 
 namespace ari_social_sim::dialogue {
 
-/// `text` as a JSON string literal, quotes included (", \, control characters escaped).
-std::string json_string(const std::string& text);
-
 /// One utterance as one line of JSON (no newline): the keys dialogue, turn, speaker, addressee
 /// (a string, or a list for several addressees), text, acts and goals (MPGT notation strings),
 /// start_s and end_s, and for human utterances `heard`, what ARI perceived (dropped, speaker,

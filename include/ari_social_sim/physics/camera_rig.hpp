@@ -45,6 +45,9 @@ class CameraRig {
   /// Indices of the cameras with a frame due at sim time t: camera i's k-th frame is due at
   /// k / rate_hz. A frame that could not be taken in time is skipped, not queued.
   std::vector<size_t> due(double time_s);
+  /// Starts every camera's schedule again at sim time 0, for a clock that starts again (the next
+  /// episode of a batch): without it, due() would wait for the last run's time.
+  void restart_schedule();
 
   /// Renders camera i from its optical frame's pose in the world, with the label image when
   /// `labels` is set and the camera is a pinhole.

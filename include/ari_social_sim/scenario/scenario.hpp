@@ -26,5 +26,8 @@ Scenario load_scenario_file(const std::string& path);
 /// The same from a parsed mapping; `base_dir` resolves the world path, `name` names the scenario.
 Scenario parse_scenario(const core::YamlMap& root, const std::string& base_dir,
                         const std::string& name);
+/// The file a tool's --scenario names: a name without a slash or extension is one of the
+/// package's scenarios, `scenario_dir/NAME.yaml`; anything else is a path as given.
+std::string scenario_file_of(const std::string& name_or_file, const std::string& scenario_dir);
 
 }  // namespace ari_social_sim::scenario

@@ -1,0 +1,412 @@
+// export_dataset: labelled images of ARI's cameras from a scenario's episodes, as a COCO dataset.
+//
+//   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] --cameras head,torso
+//                  --out DIR [--every SECONDS] [--overwrite]
+//
+// The episodes are run_episodes' (episode i with seed S + i, S defaulting to the scenario's seed;
+// --shard K/N takes the episodes with i % N == K - 1). At each frame due (each camera's rate, or
+// every --every seconds of sim time) the chosen cameras render the people from ARI's pose, and
+// each image is written as DIR/images/CAMERA/NAME_SEED_FRAME.png with its labels in
+// DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard). Exit code 2 on bad input,
+// 1 when rendering or writing fails (docs/cameras.md, "Labelled datasets").
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <optional>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/core/command_line.hpp"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/format_text.hpp"
+#include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/physics/camera_rig.hpp"
+#include "ari_social_sim/physics/snapshot_cameras.hpp"
+#include "ari_social_sim/scenario/batch_plan.hpp"
+#include "ari_social_sim/scenario/coco_dataset.hpp"
+#include "ari_social_sim/scenario/episode.hpp"
+#include "ari_social_sim/scenario/progress_bar.hpp"
+
+namespace {
+
+using namespace ari_social_sim;
+namespace fs = std::filesystem;
+
+// The ranges run_episodes takes (scenario::BatchPlan).
+constexpr core::IntegerOption kEpisodes{
+    "--episodes", static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.min),
+    static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.max)};
+constexpr core::IntegerOption kSeed{"--seed",
+                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.min),
+                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.max)};
+// A camera renders at most 100 frames per second of sim time (CameraSettings' rate_hz), hence
+// 0.01 s; a day of sim time is longer than any scenario.
+const core::NumberOption kEvery{"--every", core::between(0.01, 86400.0)};
+
+// The cameras --cameras names: ARI's two pinholes, the ones labels can be made for.
+struct CameraChoice {
+  const char* option_name;
+  const char* rig_name;
+};
+constexpr CameraChoice kCameraChoices[] = {{"head", "head_front_camera"},
+                                           {"torso", "torso_front_camera"}};
+
+// Fixed PNG settings: the same image always encodes to the same bytes, whatever OpenCV's default.
+const std::vector<int> kPngParameters{cv::IMWRITE_PNG_COMPRESSION, 3, cv::IMWRITE_PNG_STRATEGY,
+                                      cv::IMWRITE_PNG_STRATEGY_DEFAULT};
+
+constexpr const char* kUsage =
+    "usage: export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
+    "                      --cameras head,torso --out DIR [--every SECONDS] [--overwrite]\n";
+
+constexpr const char* kHelp = R"(
+Runs a scenario's episodes as run_episodes does (episode i with seed S + i, S defaulting to the
+scenario file's seed; --shard K/N runs the episodes with i % N == K - 1) and renders ARI's head
+and/or torso camera with labels at each frame due: each camera's own rate, or every SECONDS of sim
+time with --every. Writes DIR/images/CAMERA/NAME_SEED_FRAME.png and the labels as one COCO file,
+DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard). NAME is one of the
+package's scenarios or a scenario file; N in [1, 1000000]; seeds in [0, 2147483647]; SECONDS in
+[0.01, 86400]. Output of these seeds already in DIR is replaced only with --overwrite.
+
+Exit status: 0 on success, 2 on bad input (checked before any episode runs), 1 when rendering or
+writing fails.
+)";
+
+struct Options {
+  std::string scenario;
+  scenario::BatchPlan plan;
+  bool episodes_given{false};
+  bool seed_given{false};
+  std::vector<std::string> cameras;  // rig names, in --cameras' order
+  std::string out;
+  std::optional<double> every_s;
+  bool overwrite{false};
+};
+
+// `head,torso` as rig names; each name once.
+std::vector<std::string> parse_cameras(const std::string& list) {
+  std::vector<std::string> cameras;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name = list.substr(start, comma - start);
+    start = comma + 1;
+    const CameraChoice* found = nullptr;
+    for (const CameraChoice& choice : kCameraChoices) {
+      found = name == choice.option_name ? &choice : found;
+    }
+    if (found == nullptr) {
+      throw core::ConfigError(
+          "--cameras: expected a comma-separated list of head and torso, got '" + name + "' in '" +
+          list + "'");
+    }
+    if (std::find(cameras.begin(), cameras.end(), found->rig_name) != cameras.end()) {
+      throw core::ConfigError("--cameras: expected each camera once, got '" + name +
+                              "' twice in '" + list + "'");
+    }
+    cameras.push_back(found->rig_name);
+  }
+  return cameras;
+}
+
+Options parse_options(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--overwrite") {
+      options.overwrite = true;
+      continue;
+    }
+    const std::string value = core::option_value(argc, argv, i);
+    if (arg == "--scenario") {
+      options.scenario = value;
+    } else if (arg == "--episodes") {
+      options.plan.episodes = static_cast<uint64_t>(kEpisodes.parse(value));
+      options.episodes_given = true;
+    } else if (arg == "--seed") {
+      options.plan.first_seed = static_cast<uint64_t>(kSeed.parse(value));
+      options.seed_given = true;
+    } else if (arg == "--shard") {
+      scenario::parse_shard(value, "", options.plan);
+    } else if (arg == "--cameras") {
+      options.cameras = parse_cameras(value);
+    } else if (arg == "--out") {
+      options.out = value;
+    } else if (arg == "--every") {
+      options.every_s = kEvery.parse(value);
+    } else {
+      throw core::ConfigError(arg +
+                              ": expected one of --scenario, --episodes, --seed, --shard, "
+                              "--cameras, --out, --every, --overwrite");
+    }
+  }
+  if (options.scenario.empty() || !options.episodes_given || options.cameras.empty() ||
+      options.out.empty()) {
+    throw core::ConfigError("expected --scenario, --episodes, --cameras and --out");
+  }
+  return options;
+}
+
+// Where one run (one shard) writes.
+struct OutputPaths {
+  std::string dir;
+  std::string scenario;
+  std::string annotations;
+
+  std::string image_dir(const std::string& camera) const { return "images/" + camera; }
+  // Relative to dir, as the COCO file names it.
+  std::string image(const std::string& camera, uint64_t seed, uint64_t frame) const {
+    return image_dir(camera) + "/" + scenario + "_" + std::to_string(seed) + "_" +
+           core::format_text("%06llu", static_cast<unsigned long long>(frame)) + ".png";
+  }
+};
+
+// The pictures an earlier run of these seeds left in DIR/images/CAMERA (finished or .part).
+std::vector<fs::path> earlier_images(const OutputPaths& paths, const Options& options) {
+  std::set<std::string> seeds;
+  for (uint64_t episode : options.plan.episode_indices()) {
+    seeds.insert(std::to_string(options.plan.seed_of(episode)));
+  }
+  // NAME_SEED_ and six digits exactly: a prefix alone would take scenario NAME_SEED's pictures too.
+  const std::string name =
+      std::regex_replace(paths.scenario, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
+  const std::regex pattern(name + R"(_(\d+)_\d{6}\.png(\.part)?)");
+  std::vector<fs::path> found;
+  for (const std::string& camera : options.cameras) {
+    const fs::path dir = fs::path(paths.dir) / paths.image_dir(camera);
+    if (!fs::is_directory(dir)) {
+      continue;
+    }
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+      std::smatch match;
+      const std::string file = entry.path().filename().string();
+      if (std::regex_match(file, match, pattern) && seeds.count(match[1].str()) > 0) {
+        found.push_back(entry.path());
+      }
+    }
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// A checked run, ready to go.
+struct Export {
+  Options options;
+  scenario::Scenario scenario;
+  scenario::EpisodeConfig config;
+  OutputPaths paths;
+  physics::CameraRigConfig rig;
+};
+
+// Checks everything the user gave and deals with the earlier output before the first episode, so
+// that a bad option or path costs no run. Throws core::ConfigError (or std::filesystem_error).
+Export prepare(int argc, char** argv) {
+  Export run;
+  Options& options = run.options;
+  options = parse_options(argc, argv);
+  const std::string scenario_file = scenario::scenario_file_of(options.scenario, ARI_SCENARIO_DIR);
+  core::check_input_file("--scenario", scenario_file);
+  run.scenario = scenario::load_scenario_file(scenario_file);
+  if (!run.scenario.scene.ari) {
+    throw core::ConfigError("--scenario: " + scenario_file +
+                            ": expected a scenario with ARI (the cameras are ARI's), got none");
+  }
+  run.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
+  if (!options.seed_given) {
+    options.plan.first_seed = run.scenario.scene.seed;
+  }
+  options.plan.validate("");
+
+  // Only the chosen cameras render; --every sets their rate, so that CameraRig::due keeps time.
+  for (physics::CameraSpec& spec : run.rig.cameras) {
+    spec.enabled = std::find(options.cameras.begin(), options.cameras.end(), spec.name) !=
+                   options.cameras.end();
+    if (spec.enabled && options.every_s) {
+      spec.rate_hz = 1.0 / *options.every_s;
+    }
+  }
+  run.rig.validate();
+
+  if (fs::exists(options.out) && !fs::is_directory(options.out)) {
+    throw core::ConfigError("--out: " + options.out + ": expected a directory, got a file");
+  }
+  OutputPaths& paths = run.paths;
+  paths.dir = options.out;
+  paths.scenario = run.scenario.name;
+  paths.annotations =
+      options.out + "/annotations" +
+      (options.plan.shard_count > 1 ? "_shard" + std::to_string(options.plan.shard_index) + "-of-" +
+                                          std::to_string(options.plan.shard_count)
+                                    : "") +
+      ".json";
+  const std::vector<fs::path> images = earlier_images(paths, options);
+  const bool annotations_there = fs::exists(paths.annotations);
+  if (!options.overwrite && (annotations_there || !images.empty())) {
+    throw core::ConfigError(
+        "--out: " + options.out + " holds this run's output already (" +
+        (annotations_there ? paths.annotations + (images.empty() ? "" : ", ") : "") +
+        (images.empty() ? "" : std::to_string(images.size()) + " images of its seeds") +
+        "): pass --overwrite to replace it");
+  }
+  // --overwrite: the earlier annotations and the images of these seeds go first, so that neither
+  // a finished run nor a failed one leaves images and annotations that do not match.
+  for (const fs::path& image : images) {
+    fs::remove(image);
+  }
+  fs::remove(paths.annotations);
+  if (annotations_there || !images.empty()) {
+    std::cerr << "--overwrite: removed " << (annotations_there ? paths.annotations + " and " : "")
+              << images.size() << " images of the earlier run\n";
+  }
+  core::prepare_output_directory("--out", options.out);
+  for (const std::string& camera : options.cameras) {
+    core::prepare_output_directory("--out", options.out + "/" + paths.image_dir(camera));
+  }
+  core::check_output_file("--out", paths.annotations, /*replace=*/true);
+  return run;
+}
+
+// Encodes the RGB image as PNG and writes it whole or not at all (core::OutputFile).
+void write_png(const std::string& path, const cv::Mat& rgb) {
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  std::vector<uint8_t> bytes;
+  try {
+    if (!cv::imencode(".png", bgr, bytes, kPngParameters)) {
+      throw core::Error(path + ": cannot encode the image as PNG");
+    }
+  } catch (const cv::Exception& e) {
+    throw core::Error(path + ": cannot encode the image as PNG: " + e.what());
+  }
+  core::OutputFile file("--out", path);
+  file.stream().write(reinterpret_cast<const char*>(bytes.data()),
+                      static_cast<std::streamsize>(bytes.size()));
+  file.commit();
+}
+
+// An episode whose scene cannot be built from its seed: bad input (exit code 2), unlike a
+// core::ConfigError from a file that cannot be written (core::OutputFile), which is a failure (1).
+class BadEpisode : public core::Error {
+ public:
+  using core::Error::Error;
+};
+
+std::unique_ptr<scenario::Episode> start_episode(const Export& run, uint64_t index, uint64_t seed) {
+  try {
+    return std::make_unique<scenario::Episode>(run.scenario, seed, run.config);
+  } catch (const core::Error& e) {
+    const bool bad_input = dynamic_cast<const core::ConfigError*>(&e) != nullptr ||
+                           dynamic_cast<const core::RequestError*>(&e) != nullptr;
+    if (bad_input) {
+      throw BadEpisode("episode " + std::to_string(index) + " (seed " + std::to_string(seed) +
+                       "): " + e.what());
+    }
+    throw;
+  }
+}
+
+// Runs every episode of the plan, writing each image as it is rendered and the annotations at the
+// end. Throws BadEpisode, or core::Error when rendering or writing fails.
+void export_episodes(Export& run) {
+  const Options& options = run.options;
+  physics::CameraRig rig(run.rig);
+  rig.set_world(run.scenario.scene.world, physics::SceneStyle{});
+  scenario::DatasetSettings settings;
+  settings.scenario = run.scenario.name;
+  settings.plan = options.plan;
+  settings.every_s = options.every_s;
+  for (const physics::CameraSpec& spec : rig.cameras()) {
+    settings.cameras.push_back(spec.name);
+    settings.frame_rate_hz.push_back(spec.rate_hz);
+  }
+  scenario::CocoDataset dataset(settings);
+
+  const bool terminal = isatty(STDERR_FILENO) != 0;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<uint64_t> episodes = options.plan.episode_indices();
+  for (size_t done = 0; done < episodes.size(); ++done) {
+    const uint64_t index = episodes[done];
+    const uint64_t seed = options.plan.seed_of(index);
+    const std::unique_ptr<scenario::Episode> episode = start_episode(run, index, seed);
+    // The looks vary from episode to episode and come back with the seed.
+    physics::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
+    std::vector<uint64_t> frames(rig.cameras().size(), 0);  // per camera, for the file names
+    uint64_t ordinal = 0;                                   // images of the episode, for the ids
+    // The initial state first (frame 0 at time 0), then after every step.
+    while (true) {
+      for (physics::LabelledImage& image : cameras.render_due(episode->snapshot())) {
+        const std::string& camera = rig.cameras()[image.camera].name;
+        scenario::DatasetImage entry;
+        entry.id = scenario::DatasetIds::image(index, ordinal++);
+        entry.file_name = run.paths.image(camera, seed, frames[image.camera]++);
+        entry.width = image.colour.cols;
+        entry.height = image.colour.rows;
+        entry.camera = camera;
+        entry.episode_seed = seed;
+        entry.time_s = image.time_s;
+        write_png(run.paths.dir + "/" + entry.file_name, image.colour);
+        dataset.add(entry, image.labels);
+      }
+      if (episode->finished()) {
+        break;
+      }
+      episode->step();
+    }
+    const double elapsed_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << (terminal ? "\r" : "")
+              << scenario::progress_line(done + 1, episodes.size(), elapsed_s)
+              << (terminal ? "" : "\n") << std::flush;
+  }
+  std::cerr << (terminal ? "\n" : "");
+  core::OutputFile annotations("--out", run.paths.annotations);
+  annotations.stream() << dataset.to_json();
+  annotations.commit();
+  std::printf("%s: %zu episodes, %zu images, %zu person and %zu face annotations in %s\n",
+              run.scenario.name.c_str(), episodes.size(), dataset.image_count(),
+              dataset.count(scenario::CocoDataset::kPersonCategory),
+              dataset.count(scenario::CocoDataset::kFaceCategory), run.paths.annotations.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help") {
+      std::cout << kUsage << kHelp;
+      return 0;
+    }
+  }
+  Export run;
+  try {
+    run = prepare(argc, argv);
+  } catch (const core::Error& e) {
+    std::cerr << "export_dataset: " << e.what() << "\n" << kUsage;
+    return 2;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "export_dataset: --out: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    export_episodes(run);
+  } catch (const BadEpisode& e) {
+    std::cerr << "\nexport_dataset: " << e.what() << "\n";
+    return 2;
+  } catch (const core::Error& e) {
+    std::cerr << "\nexport_dataset: " << e.what() << "\n";
+    return 1;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "\nexport_dataset: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,255 @@
+// Runs the export_dataset program as a user would: bad input refused before any work, and
+// join_group (the shortest scenario) exported, checked as a COCO file, exported again byte for
+// byte, and in two shards that together hold the same images.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "program_run.hpp"
+
+namespace ari_social_sim::tools::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+ProgramRun run(const std::string& arguments) {
+  return run_program(ARI_EXPORT_DATASET_BIN, arguments);
+}
+
+// Two short episodes, a frame a second of each camera: a few seconds on one core.
+const std::string kExport = "--scenario join_group --episodes 2 --cameras head,torso --every 1";
+
+// Checks a COCO file written by export_dataset with Python's json module (a real parser, not a
+// pattern) and prints what it found: `images I persons P faces F files_checked C`, or the first
+// problem on standard error with exit status 1. Each PNG's size is read from its IHDR chunk.
+constexpr const char* kCheckScript = R"PY(
+import json, struct, sys, os
+folder, name = sys.argv[1], sys.argv[2]
+with open(os.path.join(folder, name)) as f:
+    data = json.load(f)
+def fail(message):
+    sys.stderr.write(message + "\n")
+    sys.exit(1)
+for key in ("info", "images", "annotations", "categories"):
+    if key not in data:
+        fail("no " + key)
+if [(c["id"], c["name"]) for c in data["categories"]] != [(1, "person"), (2, "face")]:
+    fail("categories: " + repr(data["categories"]))
+images = {}
+for image in data["images"]:
+    if image["id"] in images:
+        fail("image id twice: %d" % image["id"])
+    images[image["id"]] = image
+    path = os.path.join(folder, image["file_name"])
+    with open(path, "rb") as png:
+        head = png.read(24)
+    if head[:8] != b"\x89PNG\r\n\x1a\n":
+        fail(path + ": not a PNG")
+    width, height = struct.unpack(">II", head[16:24])
+    if (width, height) != (image["width"], image["height"]):
+        fail("%s: %dx%d, the file says %dx%d" % (path, width, height, image["width"], image["height"]))
+    for key in ("camera", "episode_seed", "time_s"):
+        if key not in image:
+            fail("image %d: no %s" % (image["id"], key))
+ids = set()
+counts = {1: 0, 2: 0}
+for a in data["annotations"]:
+    if a["id"] in ids:
+        fail("annotation id twice: %d" % a["id"])
+    ids.add(a["id"])
+    if a["image_id"] not in images:
+        fail("annotation %d: no image %d" % (a["id"], a["image_id"]))
+    if a["category_id"] not in counts:
+        fail("annotation %d: category %d" % (a["id"], a["category_id"]))
+    counts[a["category_id"]] += 1
+    image = images[a["image_id"]]
+    x, y, w, h = a["bbox"]
+    if not (x >= 0 and y >= 0 and w > 0 and h > 0 and x + w <= image["width"] and y + h <= image["height"]):
+        fail("annotation %d: bbox %r outside %dx%d" % (a["id"], a["bbox"], image["width"], image["height"]))
+    if a["iscrowd"] != 0 or a["area"] != w * h or not 0 <= a["occlusion"] <= 1:
+        fail("annotation %d: %r" % (a["id"], a))
+    for key in ("person_id", "truncated", "distance_m", "mask"):
+        if key not in a:
+            fail("annotation %d: no %s" % (a["id"], key))
+    if (a["category_id"] == 2) != ("face_yaw_deg" in a):
+        fail("annotation %d: face_yaw_deg on faces only" % a["id"])
+print("images %d persons %d faces %d" % (len(images), counts[1], counts[2]))
+)PY";
+
+struct Check {
+  bool passed{false};
+  int images{0};
+  int persons{0};
+  int faces{0};
+  std::string problem;
+};
+
+Check check_coco(const std::string& dir, const std::string& annotations) {
+  const std::string script = ::testing::TempDir() + "check_coco.py";
+  std::ofstream(script) << kCheckScript;
+  const ProgramRun result = run_program("/usr/bin/python3", script + " " + dir + " " + annotations);
+  Check check;
+  check.problem = result.err;
+  check.passed =
+      result.status == 0 && std::sscanf(result.out.c_str(), "images %d persons %d faces %d",
+                                        &check.images, &check.persons, &check.faces) == 3;
+  return check;
+}
+
+// Every file under `dir`, by path relative to it, with its bytes.
+std::map<std::string, std::string> files_under(const std::string& dir) {
+  std::map<std::string, std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file()) {
+      files[fs::relative(entry.path(), dir).string()] = read_all(entry.path().string());
+    }
+  }
+  return files;
+}
+
+// The file_name of every image a COCO file lists (one image per line, as export_dataset writes).
+std::set<std::string> image_names(const std::string& path) {
+  std::set<std::string> names;
+  std::istringstream lines(read_all(path));
+  const std::string key = "\"file_name\": \"";
+  for (std::string line; std::getline(lines, line);) {
+    const size_t at = line.find(key);
+    if (line.rfind("{\"id\"", 0) == 0 && at != std::string::npos) {
+      const size_t start = at + key.size();
+      names.insert(line.substr(start, line.find('"', start) - start));
+    }
+  }
+  return names;
+}
+
+TEST(ExportDataset, BadOptionsExitWithTwoNamingTheOption) {
+  const std::string dir = ::testing::TempDir() + "export_dataset_bad";
+  fs::remove_all(dir);
+  const std::string base = "--scenario join_group --episodes 2 --out " + dir;
+  for (const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
+           {base + " --cameras head,fisheye",
+            "--cameras: expected a comma-separated list of head and torso, got 'fisheye'"},
+           {base + " --cameras head,head",
+            "--cameras: expected each camera once, got 'head' twice"},
+           {base + " --cameras ''", "--cameras: expected a value, got ''"},
+           {base + " --cameras head --every 0",
+            "--every: expected a finite number in [0.01, 86400], got '0'"},
+           {base + " --cameras head --every -2",
+            "--every: expected a finite number in [0.01, 86400], got '-2'"},
+           {base + " --cameras head --every soon",
+            "--every: expected a finite number in [0.01, 86400], got 'soon'"},
+           {base + " --cameras head --shard 3/2",
+            "--shard: expected K/N with 1 <= K <= N, got '3/2'"},
+           {base + " --cameras head --shard 1", "--shard: expected K/N"},
+           {"--scenario join_group --episodes 0 --cameras head --out " + dir,
+            "--episodes: expected an integer in [1, 1000000], got '0'"},
+           {"--scenario join_group --episodes 2 --seed -1 --cameras head --out " + dir, "--seed"},
+           {"--scenario /nonexistent.yaml --episodes 2 --cameras head --out " + dir,
+            "/nonexistent.yaml"},
+           {"--scenario join_group --episodes 2 --cameras head --out /etc/hostname",
+            "--out: /etc/hostname: expected a directory, got a file"},
+           {"--scenario join_group --episodes 2 --out " + dir,
+            "expected --scenario, --episodes, --cameras and --out"},
+           {base + " --cameras head --zoom 2", "--zoom: expected one of --scenario"}}) {
+    const ProgramRun result = run(arguments);
+    expect_refused(result, fragment);
+    EXPECT_EQ(result.out, "") << arguments;
+  }
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(ExportDataset, AnEarlierExportIsKeptWithoutOverwrite) {
+  const std::string dir = ::testing::TempDir() + "export_dataset_existing";
+  fs::remove_all(dir);
+  fs::create_directories(dir + "/images/head_front_camera");
+  std::ofstream(dir + "/annotations.json") << "last week's labels";
+  expect_refused(run(kExport + " --out " + dir),
+                 "holds this run's output already (" + dir + "/annotations.json)");
+  fs::remove(dir + "/annotations.json");
+  std::ofstream(dir + "/images/head_front_camera/join_group_2_000003.png") << "last week's image";
+  // Another scenario's or seed's images are not this run's.
+  std::ofstream(dir + "/images/head_front_camera/join_group_3_000000.png") << "another seed's";
+  expect_refused(run(kExport + " --out " + dir), "(1 images of its seeds): pass --overwrite");
+  EXPECT_EQ(read_all(dir + "/images/head_front_camera/join_group_2_000003.png"),
+            "last week's image");
+}
+
+TEST(ExportDataset, AFailedWriteExitsWithOne) {
+  // The annotations are written as annotations.json.part and renamed: a folder in that place
+  // makes the last write fail after the images.
+  const std::string dir = ::testing::TempDir() + "export_dataset_unwritable";
+  fs::remove_all(dir);
+  fs::create_directories(dir + "/annotations.json.part/in_the_way");
+  const ProgramRun result =
+      run("--scenario join_group --episodes 1 --cameras torso --every 5 --out " + dir);
+  EXPECT_EQ(result.status, 1) << result.err;
+  EXPECT_NE(result.err.find("annotations.json.part"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(dir + "/annotations.json"));
+}
+
+TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInShards) {
+  const std::string dir = ::testing::TempDir() + "export_dataset_whole";
+  fs::remove_all(dir);
+  const ProgramRun first = run(kExport + " --out " + dir);
+  ASSERT_EQ(first.status, 0) << first.err;
+  std::printf("%s", first.out.c_str());
+  const Check check = check_coco(dir, "annotations.json");
+  ASSERT_TRUE(check.passed) << check.problem;
+  std::printf("annotations.json: %d images, %d person and %d face annotations\n", check.images,
+              check.persons, check.faces);
+  EXPECT_GE(check.persons, 1);
+  const std::map<std::string, std::string> files = files_under(dir);
+  // Every image listed is there, and nothing else but the annotations.
+  const std::set<std::string> names = image_names(dir + "/annotations.json");
+  EXPECT_EQ(names.size(), static_cast<size_t>(check.images));
+  EXPECT_EQ(files.size(), names.size() + 1);
+  // Both episodes start at frame 0 of each camera: the rig's schedule restarts with each.
+  for (const char* seed : {"1", "2"}) {
+    for (const char* camera : {"head_front_camera", "torso_front_camera"}) {
+      EXPECT_EQ(
+          names.count(std::string("images/") + camera + "/join_group_" + seed + "_000000.png"), 1u)
+          << camera << " seed " << seed;
+    }
+  }
+
+  // Again, over the first run's output: the same bytes, file for file.
+  const ProgramRun again = run(kExport + " --out " + dir + " --overwrite");
+  ASSERT_EQ(again.status, 0) << again.err;
+  const std::map<std::string, std::string> again_files = files_under(dir);
+  ASSERT_EQ(again_files.size(), files.size());
+  int differing = 0;
+  for (const auto& [path, bytes] : files) {
+    differing += again_files.count(path) == 0 || again_files.at(path) != bytes ? 1 : 0;
+  }
+  EXPECT_EQ(differing, 0) << "files differing between two runs with the same seeds";
+  std::printf("second run: %zu files, %d differing\n", again_files.size(), differing);
+
+  // Shards 1/2 and 2/2: one episode each; together the unsharded run's images, byte for byte.
+  const std::string shards = ::testing::TempDir() + "export_dataset_shards";
+  fs::remove_all(shards);
+  std::set<std::string> sharded_names;
+  for (const std::string shard : {"1-of-2", "2-of-2"}) {
+    const std::string k_of_n = shard.substr(0, 1) + "/2";
+    const ProgramRun part = run(kExport + " --shard " + k_of_n + " --out " + shards);
+    ASSERT_EQ(part.status, 0) << part.err;
+    const std::string file = "annotations_shard" + shard + ".json";
+    const Check part_check = check_coco(shards, file);
+    ASSERT_TRUE(part_check.passed) << part_check.problem;
+    for (const std::string& name : image_names(shards + "/" + file)) {
+      EXPECT_TRUE(sharded_names.insert(name).second) << name << " in both shards";
+      EXPECT_EQ(read_all(shards + "/" + name), files.at(name)) << name;
+    }
+  }
+  EXPECT_EQ(sharded_names, names);
+  EXPECT_FALSE(fs::exists(shards + "/annotations.json"));
+}
+
+}  // namespace
+}  // namespace ari_social_sim::tools::test
