@@ -37,6 +37,7 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_camera_rig.cpp
       test/physics/test_depth_image.cpp
       test/physics/test_fisheye_renderer.cpp
+      test/physics/test_human_figures.cpp
       test/physics/test_octomap_mapper.cpp
       test/physics/test_physics_primitives.cpp
       test/physics/test_renderer.cpp

@@ -9,10 +9,10 @@ namespace ari_social_sim::physics {
 namespace {
 
 // Facets around the axis: limbs are narrow in any image, the head is what face detectors read.
-constexpr int kLimbSegments = 12;
-constexpr int kTrunkSegments = 20;
-constexpr int kHeadSegments = 28;
-constexpr int kFeatureSegments = 12;
+constexpr int kLimbSegments = 8;
+constexpr int kTrunkSegments = 14;
+constexpr int kHeadSegments = 20;
+constexpr int kFeatureSegments = 8;
 
 // Segment lengths and heights as shares of stature (Drillis and Contini, 1966).
 constexpr double kChinShare = 0.870;
@@ -112,9 +112,10 @@ void HumanFigure::build_legs() {
                    {2.0 * shin_radius, 2.0 * shin_radius, shin_m_ + shin_radius},
                    darker(look_.trousers, 0.95f), kLimbSegments));
     const double foot_length = kFootLengthShare * s;
-    const double foot_height = kAnkleShare * s * 1.4;
+    // From the sole on the floor (when standing) to 2 cm above the ankle.
+    const double foot_height = kAnkleShare * s + 0.02;
     add_part(ankle, false,
-             shape(PrimitiveShape::kBox, {0.3 * foot_length, 0.0, -0.5 * foot_height + 0.01},
+             shape(PrimitiveShape::kBox, {0.3 * foot_length, 0.0, 0.02 - 0.5 * foot_height},
                    {foot_length, kFootWidthShare * s, foot_height}, look_.shoes, kLimbSegments));
   }
 }
@@ -201,6 +202,11 @@ void HumanFigure::build_head() {
              shape(PrimitiveShape::kSphere, {-0.45 * r.x(), 0.0, -0.45 * h},
                    {1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h}, look_.hair, kHeadSegments));
   }
+  // The face box: hairline to chin, side to side of the head at the eyes.
+  for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
+                                    Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
+    face_outline_.emplace_back(front(yz.x(), yz.y()), yz.x(), yz.y());
+  }
   // Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's
   // base at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h.
   const double eye_y = 0.137 * h;
@@ -224,8 +230,26 @@ void HumanFigure::build_head() {
              shape(PrimitiveShape::kSphere, {front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
                    {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
   }
+  if (look_.mask) {
+    // Over nose and mouth, ear to ear: a shell in front of the lower face.
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
+                   {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour,
+                   kHeadSegments));
+    // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
+    for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
+      const double dz = (z + 0.27 * h) / (0.25 * h);
+      const double across = std::sqrt(1.0 - dz * dz);
+      add_part(kHead, true,
+               shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, z},
+                     {2.0 * (0.82 * r.x() * across + 0.003), 2.0 * (0.98 * r.y() * across + 0.003),
+                      0.035 * h},
+                     darker(look_.mask_colour, 0.72f), kTrunkSegments));
+    }
+    return;  // nose and mouth are under the mask
+  }
   add_part(kHead, true,
-           glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h) , 0.0, -0.08 * h},
+           glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h), 0.0, -0.08 * h},
                         {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
   add_part(kHead, true,
            shape(PrimitiveShape::kSphere, {front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
@@ -242,28 +266,6 @@ void HumanFigure::build_head() {
   add_part(kJaw, true,
            shape(PrimitiveShape::kSphere, {front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
                  {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
-  if (look_.mask) {
-    // Over nose and mouth, ear to ear: a shell in front of the lower face.
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
-                   {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour,
-                   kHeadSegments));
-    // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
-    for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
-      const double dz = (z + 0.27 * h) / (0.25 * h);
-      const double across = std::sqrt(1.0 - dz * dz);
-      add_part(kHead, true,
-               shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, z},
-                     {2.0 * (0.82 * r.x() * across + 0.003), 2.0 * (0.98 * r.y() * across + 0.003),
-                      0.035 * h},
-                     darker(look_.mask_colour, 0.72f), kHeadSegments));
-    }
-  }
-  // The face box: hairline to chin, side to side of the head at the eyes.
-  for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
-                                    Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
-    face_outline_.emplace_back(front(yz.x(), yz.y()), yz.x(), yz.y());
-  }
 }
 
 HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const {

@@ -82,6 +82,70 @@ void write_png(const std::string& path, const cv::Mat& bgr) {
   std::printf("wrote %s (%dx%d)\n", path.c_str(), bgr.cols, bgr.rows);
 }
 
+// One scene the tool renders: where ARI looks from, who is around and which pictures it makes.
+struct Shot {
+  std::string suffix;  // empty: the overview, every camera under its own name
+  core::Pose2 ari;
+  double head_pan{0.0};
+  double head_tilt{0.0};
+  std::vector<physics::FigureInput> people;
+};
+
+physics::FigureInput person(uint32_t id, double age, model::Gender gender, bool mask,
+                            const core::Pose2& pose, double face_yaw,
+                            const Eigen::Vector2d& velocity = Eigen::Vector2d::Zero(),
+                            bool speaking = false) {
+  physics::FigureInput input;
+  input.traits = {id, age, gender, mask};
+  input.pose = pose;
+  input.face_yaw_rad = face_yaw;
+  input.velocity_mps = velocity;
+  input.speaking = speaking;
+  return input;
+}
+
+std::vector<Shot> shots() {
+  using model::Gender;
+  // Overview: ARI faces north-west towards the middle rows of chairs; two people talk in front
+  // of it (one speaking, one in a mask), one walks past on its left and two wait nearby.
+  Shot overview{"", {{6.0, 2.6}, 2.0}, 0.15, 0.05, {}};
+  overview.people = {person(1, 34, Gender::kFemale, false, {{5.1, 4.2}, -0.9}, -1.1, {}, true),
+                     person(2, 61, Gender::kMale, true, {{4.5, 3.7}, 0.2}, 0.5),
+                     person(3, 27, Gender::kMale, false, {{4.3, 2.0}, 1.6}, 1.6, {0.0, 1.2}),
+                     person(4, 45, Gender::kFemale, false, {{7.2, 0.9}, 2.3}, 2.5),
+                     person(5, 9, Gender::kMale, false, {{6.9, 3.4}, -2.0}, -2.2)};
+  // A conversation of three, 2.2 m ahead of ARI in the open middle of the room: one speaks.
+  Shot group{"group", {{6.0, 4.0}, M_PI}, 0.0, 0.1, {}};
+  const Eigen::Vector2d centre(3.8, 4.1);
+  const double bearings[3] = {-0.3, 2.0, 4.1};
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector2d at =
+        centre + 0.6 * Eigen::Vector2d(std::cos(bearings[i]), std::sin(bearings[i]));
+    const double to_centre = bearings[i] + M_PI;
+    group.people.push_back(person(11 + i, 30.0 + 12 * i, i == 1 ? Gender::kMale : Gender::kFemale,
+                                  false, {at, to_centre}, to_centre, {}, i == 0));
+  }
+  // Someone walking across ARI's view at 1.2 m/s, 3.5 m ahead.
+  Shot walking{"walking", {{6.0, 4.0}, M_PI}, 0.0, 0.15, {}};
+  walking.people = {
+      person(21, 40, Gender::kMale, false, {{2.5, 3.2}, M_PI / 2}, M_PI / 2, {0.0, 1.2})};
+  // A patient in a surgical mask facing ARI from 1.3 m.
+  Shot masked{"mask", {{6.0, 4.0}, M_PI}, 0.0, 0.0, {}};
+  masked.people = {person(37, 58, Gender::kFemale, true, {{4.6, 4.0}, 0.0}, 0.0)};
+  return {overview, group, walking, masked};
+}
+
+// The pictures a shot makes: every camera for the overview, head and torso for the others.
+std::vector<std::string> pictures_of(const Shot& shot, const std::string& camera) {
+  if (shot.suffix.empty()) {
+    return {picture_name(camera)};
+  }
+  if (camera == "head_front_camera" || camera == "torso_front_camera") {
+    return {picture_name(camera) + "_" + shot.suffix};
+  }
+  return {};
+}
+
 int run(const std::string& world_path, const std::string& out_dir, bool overwrite) {
   core::check_input_file("--world", world_path);
   const model::WorldDescription world = model::load_world_file(world_path);
@@ -92,55 +156,42 @@ int run(const std::string& world_path, const std::string& out_dir, bool overwrit
   // Every picture's place is checked before the renderer starts.
   core::prepare_output_directory("--out", out_dir);
   std::vector<std::string> pictures{out_dir + "/camera_torso_depth.png"};
-  for (const physics::CameraSpec& spec : config.cameras) {
-    pictures.push_back(out_dir + "/" + picture_name(spec.name) + ".png");
+  for (const Shot& shot : shots()) {
+    for (const physics::CameraSpec& spec : config.cameras) {
+      for (const std::string& name : pictures_of(shot, spec.name)) {
+        pictures.push_back(out_dir + "/" + name + ".png");
+      }
+    }
   }
   for (const std::string& picture : pictures) {
     core::check_output_file("--out", picture, overwrite);
   }
   physics::CameraRig rig(config);
   std::printf("renderer: %s\n", rig.renderer().device_name().c_str());
-  const physics::SceneStyle style;
-  rig.set_world(world, style);
-
-  // ARI faces north-west towards the middle rows of chairs; two people talk in front of it (one
-  // speaking, one in a mask), one walks past on its left and two wait nearby.
-  const core::Pose2 ari{{6.0, 2.6}, 2.0};
-  const double head_pan = 0.15, head_tilt = 0.05;
-  std::vector<physics::FigureInput> people;
-  auto add = [&](uint32_t id, double age, model::Gender gender, bool mask,
-                 const core::Pose2& pose, double face_yaw, const Eigen::Vector2d& velocity,
-                 bool speaking) {
-    physics::FigureInput person;
-    person.traits = {id, age, gender, mask};
-    person.pose = pose;
-    person.face_yaw_rad = face_yaw;
-    person.velocity_mps = velocity;
-    person.speaking = speaking;
-    people.push_back(person);
-  };
-  const Eigen::Vector2d standing = Eigen::Vector2d::Zero();
-  add(1, 34, model::Gender::kFemale, false, {{5.1, 4.2}, -0.9}, -1.1, standing, true);
-  add(2, 61, model::Gender::kMale, true, {{4.5, 3.7}, 0.2}, 0.5, standing, false);
-  add(3, 27, model::Gender::kMale, false, {{4.3, 2.0}, 1.6}, 1.6, {0.0, 1.2}, false);
-  add(4, 45, model::Gender::kFemale, false, {{7.2, 0.9}, 2.3}, 2.5, standing, false);
-  add(5, 9, model::Gender::kMale, false, {{6.9, 3.4}, -2.0}, -2.2, standing, false);
-  physics::PeopleFigures figures(kAppearanceSeed);
-  // Half a second of walking so that the walker is mid-stride.
-  for (double t = 0.0; t <= 0.5; t += 0.05) {
-    figures.update(t, people);
-  }
-  rig.set_dynamic_mesh(figures.mesh());
+  rig.set_world(world, physics::SceneStyle{});
 
   physics::CameraFrame frame;
-  for (size_t i = 0; i < rig.cameras().size(); ++i) {
-    const physics::CameraSpec& spec = rig.cameras()[i];
-    rig.render(i, physics::X_world_optical(spec, ari, head_pan, head_tilt), frame);
-    cv::Mat bgr;
-    cv::cvtColor(frame.colour, bgr, cv::COLOR_RGB2BGR);
-    write_png(out_dir + "/" + picture_name(spec.name) + ".png", bgr);
-    if (!frame.depth.empty()) {
-      write_png(out_dir + "/camera_torso_depth.png", false_colour(frame.depth));
+  for (const Shot& shot : shots()) {
+    physics::PeopleFigures figures(kAppearanceSeed);
+    // Half a second of walking so that walkers are mid-stride.
+    for (double t = 0.0; t <= 0.5; t += 0.05) {
+      figures.update(t, shot.people);
+    }
+    rig.set_dynamic_mesh(figures.mesh());
+    for (size_t i = 0; i < rig.cameras().size(); ++i) {
+      const physics::CameraSpec& spec = rig.cameras()[i];
+      const std::vector<std::string> names = pictures_of(shot, spec.name);
+      if (names.empty()) {
+        continue;
+      }
+      rig.render(i, physics::X_world_optical(spec, shot.ari, shot.head_pan, shot.head_tilt),
+                 frame);
+      cv::Mat bgr;
+      cv::cvtColor(frame.colour, bgr, cv::COLOR_RGB2BGR);
+      write_png(out_dir + "/" + names.front() + ".png", bgr);
+      if (shot.suffix.empty() && !frame.depth.empty()) {
+        write_png(out_dir + "/camera_torso_depth.png", false_colour(frame.depth));
+      }
     }
   }
   return 0;
