@@ -32,7 +32,8 @@ constexpr double kFootWidthShare = 0.055;
 constexpr double kHipSwingRad = 0.42;
 constexpr double kKneeFlexRad = 0.75;
 constexpr double kShoulderSwingRad = 0.38;
-constexpr double kArmAbductionRad = 0.14;  // arms hang a little away from the body
+constexpr double kArmAbductionRad = 0.14;    // arms hang a little away from the body
+constexpr double kStanceAbductionRad = 0.07;  // standing feet a little apart
 
 RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
                       const Eigen::Vector3f& colour, int segments) {
@@ -135,6 +136,14 @@ void HumanFigure::build_trunk_and_arms() {
   add_part(kPelvis, false,
            shape(PrimitiveShape::kCylinder, {0.0, 0.0, 0.5 * (torso_bottom + torso_top)},
                  {depth, width, torso_top - torso_bottom}, look_.top, kTrunkSegments));
+  // Chest and seat give the side view its curves: the chest ahead of the waist, the seat behind.
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {0.015 * s, 0.0, 0.70 * s},
+                 {depth * 1.15, width * 1.02, 0.22 * s}, look_.top, kTrunkSegments));
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {-0.02 * s, 0.0, hip_z_ - 0.01 * s},
+                 {depth * 1.1, std::max(width, hip_width * 0.9), 0.16 * s}, look_.trousers,
+                 kTrunkSegments));
   add_part(kPelvis, false,
            shape(PrimitiveShape::kSphere, {0.0, 0.0, torso_top},
                  {depth * 0.95, 2.0 * (shoulder_joint_y_ + 0.025 * s), 0.09 * s}, look_.top,
@@ -287,11 +296,16 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
   // leg on their side.
   for (const double side : {1.0, -1.0}) {
     const double leg_phase = side > 0.0 ? phase : phase + M_PI;
-    const double hip_pitch = amplitude * kHipSwingRad * std::sin(leg_phase);
+    // Standing, the feet are a little apart and the left one a little ahead (a relaxed stance);
+    // the stance fades as the stride takes over.
+    const double stance = 1.0 - amplitude;
+    const double hip_pitch =
+        amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
     const double knee_flex =
         amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
     const Eigen::Isometry3f hip =
-        body * translation(0.0, side * hip_joint_y_, hip_z_) * rotation_y(-hip_pitch);
+        body * translation(0.0, side * hip_joint_y_, hip_z_) *
+        rotation_x(side * stance * kStanceAbductionRad) * rotation_y(-hip_pitch);
     const Eigen::Isometry3f knee = hip * translation(0.0, 0.0, -thigh_m_) * rotation_y(knee_flex);
     // The foot stays flat on its heading whatever the leg does.
     Eigen::Isometry3f ankle = body;
