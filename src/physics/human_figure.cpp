@@ -10,9 +10,9 @@ namespace {
 
 // Facets around the axis: limbs are narrow in any image, the head is what face detectors read.
 constexpr int kLimbSegments = 8;
-constexpr int kTrunkSegments = 14;
-constexpr int kHeadSegments = 20;
-constexpr int kFeatureSegments = 8;
+constexpr int kTrunkSegments = 12;
+constexpr int kHeadSegments = 16;
+constexpr int kFeatureSegments = 6;
 
 // Segment lengths and heights as shares of stature (Drillis and Contini, 1966).
 constexpr double kChinShare = 0.870;

@@ -28,8 +28,8 @@ namespace {
 constexpr char kFaceCascade[] = "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml";
 constexpr double kMatchIou = 0.5;
 // HOG runs on the head camera's image scaled by this, so that people 2 to 6 m away are 105 to 315
-// pixels tall and the renderer's hard edges are averaged away (INTER_AREA). Measured: 0.3, 0.35,
-// 0.42, 0.5 found 77, 81, 78 and 75 % (docs/cameras.md).
+// pixels tall and the renderer's hard edges are averaged away (INTER_AREA). Measured with the
+// window stride below: 0.3, 0.35 and 0.5 found 87.9, 89.3 and 85.0 % (docs/cameras.md).
 constexpr double kHogScale = 0.35;
 
 // One rendered head camera frame with its labels.
@@ -177,7 +177,9 @@ TEST(DetectorStudy, HogFindsUprightFullyVisiblePeopleTwoToSixMetresAway) {
     cv::Mat small;
     cv::resize(frame.grey, small, cv::Size(), kHogScale, kHogScale, cv::INTER_AREA);
     std::vector<cv::Rect> windows;
-    hog.detectMultiScale(small, windows, 0.0, cv::Size(8, 8), cv::Size(16, 16), 1.05, 2.0);
+    // A 4-pixel window stride (OpenCV's sample uses 8) puts more windows on each person, so that
+    // more reach the grouping's threshold; padding 32 as in the sample.
+    hog.detectMultiScale(small, windows, 0.0, cv::Size(4, 4), cv::Size(32, 32), 1.05, 2.0);
     for (const PersonLabel& label : frame.labels) {
       bool hit = false;
       for (const cv::Rect& window : windows) {
@@ -204,10 +206,8 @@ TEST(DetectorStudy, HogFindsUprightFullyVisiblePeopleTwoToSixMetresAway) {
   const double rate = eligible > 0 ? double(found) / eligible : 0.0;
   std::printf("HOG: %d of %d fully visible people 2-6 m found (%.1f %%) in %d frames\n", found,
               eligible, 100.0 * rate, frames);
-  // The target is 85 %; this floor holds what the figures reach today, short of it in side
-  // views of people standing (docs/cameras.md).
   EXPECT_GE(eligible, 100);
-  EXPECT_GE(rate, 0.8);
+  EXPECT_GE(rate, 0.85);
 }
 
 TEST(DetectorStudy, HaarFindsFacesTurnedToTheCameraAndFiresRarelyWithoutThem) {
