@@ -29,11 +29,16 @@ struct Placement {
 };
 std::vector<Placement> placements_at(double t_s) {
   const double sway = 0.1 * std::sin(t_s);
-  return {{{{5.1 + sway, 4.2}, -0.9}, -1.1}, {{{4.5, 3.7 + sway}, 0.2}, 0.5},
-          {{{4.3, 2.0 + t_s * 0.01}, 1.6}, 1.6}, {{{7.2, 0.9}, 2.3}, 2.5},
-          {{{6.9, 3.4}, -2.0}, -2.2 + sway},     {{{3.6, 4.9}, -0.5}, -0.5},
-          {{{4.2, 5.3 - sway}, -1.2}, -1.0},     {{{2.9, 3.2}, 0.0}, 0.3},
-          {{{5.6, 5.6}, -1.8}, -1.8},            {{{3.3, 2.4 + sway}, 0.6}, 0.6}};
+  return {{{{5.1 + sway, 4.2}, -0.9}, -1.1},
+          {{{4.5, 3.7 + sway}, 0.2}, 0.5},
+          {{{4.3, 2.0 + t_s * 0.01}, 1.6}, 1.6},
+          {{{7.2, 0.9}, 2.3}, 2.5},
+          {{{6.9, 3.4}, -2.0}, -2.2 + sway},
+          {{{3.6, 4.9}, -0.5}, -0.5},
+          {{{4.2, 5.3 - sway}, -1.2}, -1.0},
+          {{{2.9, 3.2}, 0.0}, 0.3},
+          {{{5.6, 5.6}, -1.8}, -1.8},
+          {{{3.3, 2.4 + sway}, 0.6}, 0.6}};
 }
 
 // The people as the simulator draws them: articulated figures, posed per frame.
@@ -73,8 +78,8 @@ physics::RenderMesh shapes_at(double t_s, size_t count) {
       return Eigen::Translation3d(p.pose.position.x(), p.pose.position.y(), z) *
              Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
     };
-    primitives.push_back(solid(physics::PrimitiveShape::kCylinder, planar(0.725, p.pose.theta),
-                               {0.26, 0.42, 1.45}));
+    primitives.push_back(
+        solid(physics::PrimitiveShape::kCylinder, planar(0.725, p.pose.theta), {0.26, 0.42, 1.45}));
     const Eigen::Isometry3d head = planar(1.6, p.face_yaw);
     primitives.push_back(solid(physics::PrimitiveShape::kSphere, head, {0.22, 0.22, 0.22}));
     primitives.push_back(solid(physics::PrimitiveShape::kBox,

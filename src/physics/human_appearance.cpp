@@ -31,7 +31,8 @@ const std::array<Eigen::Vector3f, 6> kTrousers{{rgb(38, 52, 86), rgb(28, 28, 32)
                                                 rgb(60, 90, 140)}};
 const std::array<Eigen::Vector3f, 4> kShoes{
     {rgb(24, 20, 18), rgb(80, 50, 32), rgb(230, 230, 226), rgb(60, 60, 66)}};
-const std::array<Eigen::Vector3f, 3> kMasks{{rgb(158, 200, 226), rgb(238, 238, 236), rgb(44, 44, 48)}};
+const std::array<Eigen::Vector3f, 3> kMasks{
+    {rgb(158, 200, 226), rgb(238, 238, 236), rgb(44, 44, 48)}};
 const std::array<Eigen::Vector3f, 3> kIrises{{rgb(62, 40, 26), rgb(92, 112, 130), rgb(86, 96, 54)}};
 
 template <class Palette>

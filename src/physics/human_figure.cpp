@@ -32,11 +32,11 @@ constexpr double kFootWidthShare = 0.055;
 constexpr double kHipSwingRad = 0.42;
 constexpr double kKneeFlexRad = 0.75;
 constexpr double kShoulderSwingRad = 0.38;
-constexpr double kArmAbductionRad = 0.14;    // arms hang a little away from the body
+constexpr double kArmAbductionRad = 0.14;     // arms hang a little away from the body
 constexpr double kStanceAbductionRad = 0.07;  // standing feet a little apart
 
-RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
-                      const Eigen::Vector3f& colour, int segments) {
+RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre,
+                      const Eigen::Vector3d& size, const Eigen::Vector3f& colour, int segments) {
   RenderPrimitive primitive;
   primitive.shape = kind;
   primitive.X_world_shape = Eigen::Translation3d(centre) * Eigen::Isometry3d::Identity();
@@ -65,8 +65,8 @@ Eigen::Isometry3f rotation_x(double angle) {
   return Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(angle), Eigen::Vector3f::UnitX()));
 }
 Eigen::Isometry3f translation(double x, double y, double z) {
-  return Eigen::Isometry3f(Eigen::Translation3f(static_cast<float>(x), static_cast<float>(y),
-                                                static_cast<float>(z)));
+  return Eigen::Isometry3f(
+      Eigen::Translation3f(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)));
 }
 
 }  // namespace
@@ -102,12 +102,13 @@ void HumanFigure::build_legs() {
   const double s = scale_;
   const double thigh_radius = 0.045 * s * look_.build;
   const double shin_radius = 0.034 * s * look_.build;
-  for (const auto& [hip, knee, ankle] : {std::array<Joint, 3>{kLeftHip, kLeftKnee, kLeftAnkle},
-                                         std::array<Joint, 3>{kRightHip, kRightKnee, kRightAnkle}}) {
+  for (const auto& [hip, knee, ankle] :
+       {std::array<Joint, 3>{kLeftHip, kLeftKnee, kLeftAnkle},
+        std::array<Joint, 3>{kRightHip, kRightKnee, kRightAnkle}}) {
     add_part(hip, false,
              shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * thigh_m_},
-                   {2.0 * thigh_radius, 2.0 * thigh_radius, thigh_m_ + thigh_radius}, look_.trousers,
-                   kLimbSegments));
+                   {2.0 * thigh_radius, 2.0 * thigh_radius, thigh_m_ + thigh_radius},
+                   look_.trousers, kLimbSegments));
     add_part(knee, false,
              shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * shin_m_},
                    {2.0 * shin_radius, 2.0 * shin_radius, shin_m_ + shin_radius},
@@ -166,10 +167,11 @@ void HumanFigure::build_trunk_and_arms() {
   const Eigen::Vector3f forearm_colour = look_.short_sleeves ? look_.skin : look_.top;
   for (const auto& [shoulder, elbow] : {std::array<Joint, 2>{kLeftShoulder, kLeftElbow},
                                         std::array<Joint, 2>{kRightShoulder, kRightElbow}}) {
-    add_part(shoulder, false,
-             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * upper_arm_m_},
-                   {2.0 * upper_arm_radius, 2.0 * upper_arm_radius, upper_arm_m_ + upper_arm_radius},
-                   look_.top, kLimbSegments));
+    add_part(
+        shoulder, false,
+        shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * upper_arm_m_},
+              {2.0 * upper_arm_radius, 2.0 * upper_arm_radius, upper_arm_m_ + upper_arm_radius},
+              look_.top, kLimbSegments));
     add_part(elbow, false,
              shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * forearm_m_},
                    {2.0 * forearm_radius, 2.0 * forearm_radius, forearm_m_ + forearm_radius},
@@ -241,10 +243,10 @@ void HumanFigure::build_head() {
   }
   if (look_.mask) {
     // Over nose and mouth, ear to ear: a shell in front of the lower face.
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
-                   {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour,
-                   kHeadSegments));
+    add_part(
+        kHead, true,
+        shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
+              {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour, kHeadSegments));
     // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
     for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
       const double dz = (z + 0.27 * h) / (0.25 * h);
@@ -267,10 +269,10 @@ void HumanFigure::build_head() {
   add_part(kHead, true,
            shape(PrimitiveShape::kSphere, {front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
                  {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
-  add_part(kHead, true,
-           shape(PrimitiveShape::kSphere, {front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
-                 {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f),
-                 kFeatureSegments));
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, {front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
+            {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f), kFeatureSegments));
   // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
   add_part(kJaw, true,
            shape(PrimitiveShape::kSphere, {front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
@@ -281,15 +283,17 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
   JointFrames frames;
   const Eigen::Isometry3f body =
       translation(pose.body.position.x(), pose.body.position.y(), 0.0) *
-      Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(pose.body.theta), Eigen::Vector3f::UnitZ()));
+      Eigen::Isometry3f(
+          Eigen::AngleAxisf(static_cast<float>(pose.body.theta), Eigen::Vector3f::UnitZ()));
   frames[kPelvis] = body;
   const double head_turn = std::clamp(core::angle_difference(pose.head_yaw_rad, pose.body.theta),
                                       -kMaxHeadTurnRad, kMaxHeadTurnRad);
-  frames[kHead] = body * translation(0.0, 0.0, head_centre_z_) *
-                  Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(head_turn),
-                                                      Eigen::Vector3f::UnitZ()));
-  frames[kJaw] = frames[kHead] * translation(0.0, 0.0, -0.06 * look_.head_height_m *
-                                                         std::clamp(pose.mouth_open, 0.0, 1.0));
+  frames[kHead] =
+      body * translation(0.0, 0.0, head_centre_z_) *
+      Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(head_turn), Eigen::Vector3f::UnitZ()));
+  frames[kJaw] =
+      frames[kHead] *
+      translation(0.0, 0.0, -0.06 * look_.head_height_m * std::clamp(pose.mouth_open, 0.0, 1.0));
   const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
   const double phase = pose.gait_phase_rad;
   // Legs swing in antiphase; a knee bends while its leg swings forward. Arms swing against the
@@ -303,19 +307,19 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
         amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
     const double knee_flex =
         amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
-    const Eigen::Isometry3f hip =
-        body * translation(0.0, side * hip_joint_y_, hip_z_) *
-        rotation_x(side * stance * kStanceAbductionRad) * rotation_y(-hip_pitch);
+    const Eigen::Isometry3f hip = body * translation(0.0, side * hip_joint_y_, hip_z_) *
+                                  rotation_x(side * stance * kStanceAbductionRad) *
+                                  rotation_y(-hip_pitch);
     const Eigen::Isometry3f knee = hip * translation(0.0, 0.0, -thigh_m_) * rotation_y(knee_flex);
     // The foot stays flat on its heading whatever the leg does.
     Eigen::Isometry3f ankle = body;
     ankle.translation() = (knee * translation(0.0, 0.0, -shin_m_)).translation();
     const double arm_pitch = -amplitude * kShoulderSwingRad * std::sin(leg_phase);
-    const Eigen::Isometry3f shoulder = body * translation(0.0, side * shoulder_joint_y_,
-                                                          shoulder_z_ - 0.03 * scale_) *
-                                       rotation_x(side * kArmAbductionRad) * rotation_y(-arm_pitch);
-    const Eigen::Isometry3f elbow = shoulder * translation(0.0, 0.0, -upper_arm_m_) *
-                                    rotation_y(-(0.15 + 0.3 * amplitude));
+    const Eigen::Isometry3f shoulder =
+        body * translation(0.0, side * shoulder_joint_y_, shoulder_z_ - 0.03 * scale_) *
+        rotation_x(side * kArmAbductionRad) * rotation_y(-arm_pitch);
+    const Eigen::Isometry3f elbow =
+        shoulder * translation(0.0, 0.0, -upper_arm_m_) * rotation_y(-(0.15 + 0.3 * amplitude));
     frames[side > 0.0 ? kLeftHip : kRightHip] = hip;
     frames[side > 0.0 ? kLeftKnee : kRightKnee] = knee;
     frames[side > 0.0 ? kLeftAnkle : kRightAnkle] = ankle;

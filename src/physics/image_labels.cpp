@@ -106,9 +106,8 @@ std::vector<PersonLabel> label_people(Renderer& renderer, const PinholeModel& mo
     label.person_id = person.id;
     label.body_box = seen[i].box();
     label.visible_pixels = seen[i].pixels;
-    label.occlusion = whole.pixels > 0 ? std::clamp(1.0 - double(seen[i].pixels) / whole.pixels,
-                                                    0.0, 1.0)
-                                       : 0.0;
+    label.occlusion =
+        whole.pixels > 0 ? std::clamp(1.0 - double(seen[i].pixels) / whole.pixels, 0.0, 1.0) : 0.0;
     const PixelBox full = whole.box();
     label.truncated = full.x == 0 || full.y == 0 || full.x + full.width == model.width ||
                       full.y + full.height == model.height;

@@ -58,8 +58,8 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     const double dt = std::max(0.0, time_s - person.last_time_s);
     person.last_time_s = time_s;
     const double stride = kStrideShare * person.figure.appearance().height_m;
-    person.gait_phase_rad = std::fmod(person.gait_phase_rad + 2.0 * M_PI * speed * dt / stride,
-                                      2.0 * M_PI);
+    person.gait_phase_rad =
+        std::fmod(person.gait_phase_rad + 2.0 * M_PI * speed * dt / stride, 2.0 * M_PI);
 
     PosedPerson posed;
     posed.id = id;
@@ -71,9 +71,8 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
         speed < kStandingSpeedMps ? 0.0 : std::min(1.0, speed / kBriskSpeedMps);
     // Each person's syllables start at their own offset, so that speakers do not move in step.
     posed.pose.mouth_open =
-        input.speaking
-            ? 0.5 + 0.5 * std::sin(2.0 * M_PI * kSyllablesPerSecond * time_s + 1.7 * id)
-            : 0.0;
+        input.speaking ? 0.5 + 0.5 * std::sin(2.0 * M_PI * kSyllablesPerSecond * time_s + 1.7 * id)
+                       : 0.0;
     const size_t index = posed_.size();
     posed.body_label = static_cast<uint16_t>(2 * index + 1);
     posed.face_label = static_cast<uint16_t>(2 * index + 2);

@@ -269,10 +269,9 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
   // Only the outputs asked for are written: a colour-only camera skips the depth and label
   // attachments' bandwidth, which is a good part of llvmpipe's cost per pixel.
-  const GLenum draw_buffers[3] = {
-      options.colour ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE},
-      options.depth ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE},
-      options.labels ? GLenum{GL_COLOR_ATTACHMENT2} : GLenum{GL_NONE}};
+  const GLenum draw_buffers[3] = {options.colour ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE},
+                                  options.depth ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE},
+                                  options.labels ? GLenum{GL_COLOR_ATTACHMENT2} : GLenum{GL_NONE}};
   glDrawBuffers(3, draw_buffers);
   glViewport(0, 0, model.width, model.height);
 

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <utility>
 
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/config_reader.hpp"
 #include "ari_social_sim/core/config_writer.hpp"
@@ -115,6 +116,41 @@ bool BatchPlan::set_shard(const std::string& k_of_n) {
 
 void BatchPlan::validate(const std::string& field) const {
   core::check_fields(PlanByOption{*this}, field);
+}
+
+namespace {
+
+// The ranges the settings files hold too (BatchPlan::visit).
+constexpr core::IntegerOption kEpisodes{"--episodes",
+                                        static_cast<int64_t>(BatchPlan::kEpisodeBounds.min),
+                                        static_cast<int64_t>(BatchPlan::kEpisodeBounds.max)};
+constexpr core::IntegerOption kSeed{"--seed", static_cast<int64_t>(BatchPlan::kSeedBounds.min),
+                                    static_cast<int64_t>(BatchPlan::kSeedBounds.max)};
+
+}  // namespace
+
+bool read_plan_option(const std::string& option, const std::string& value, BatchPlan& plan,
+                      PlanOptionsGiven& given) {
+  if (option == "--episodes") {
+    plan.episodes = static_cast<uint64_t>(kEpisodes.parse(value));
+    given.episodes = true;
+  } else if (option == "--seed") {
+    plan.first_seed = static_cast<uint64_t>(kSeed.parse(value));
+    given.seed = true;
+  } else if (option == "--shard") {
+    parse_shard(value, "", plan);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string episodes_option_range() {
+  return kEpisodes.range();
+}
+
+std::string seed_option_range() {
+  return kSeed.range();
 }
 
 void parse_shard(const std::string& text, const std::string& field, BatchPlan& plan) {

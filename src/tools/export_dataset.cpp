@@ -41,13 +41,6 @@ namespace {
 using namespace ari_social_sim;
 namespace fs = std::filesystem;
 
-// The ranges run_episodes takes (scenario::BatchPlan).
-constexpr core::IntegerOption kEpisodes{
-    "--episodes", static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.min),
-    static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.max)};
-constexpr core::IntegerOption kSeed{"--seed",
-                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.min),
-                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.max)};
 // A camera renders at most 100 frames per second of sim time (CameraSettings' rate_hz), hence
 // 0.01 s; a day of sim time is longer than any scenario.
 const core::NumberOption kEvery{"--every", core::between(0.01, 86400.0)};
@@ -84,8 +77,7 @@ writing fails.
 struct Options {
   std::string scenario;
   scenario::BatchPlan plan;
-  bool episodes_given{false};
-  bool seed_given{false};
+  scenario::PlanOptionsGiven given;
   std::vector<std::string> cameras;  // rig names, in --cameras' order
   std::string out;
   std::optional<double> every_s;
@@ -129,14 +121,7 @@ Options parse_options(int argc, char** argv) {
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
-    } else if (arg == "--episodes") {
-      options.plan.episodes = static_cast<uint64_t>(kEpisodes.parse(value));
-      options.episodes_given = true;
-    } else if (arg == "--seed") {
-      options.plan.first_seed = static_cast<uint64_t>(kSeed.parse(value));
-      options.seed_given = true;
-    } else if (arg == "--shard") {
-      scenario::parse_shard(value, "", options.plan);
+    } else if (scenario::read_plan_option(arg, value, options.plan, options.given)) {
     } else if (arg == "--cameras") {
       options.cameras = parse_cameras(value);
     } else if (arg == "--out") {
@@ -149,7 +134,7 @@ Options parse_options(int argc, char** argv) {
                               "--cameras, --out, --every, --overwrite");
     }
   }
-  if (options.scenario.empty() || !options.episodes_given || options.cameras.empty() ||
+  if (options.scenario.empty() || !options.given.episodes || options.cameras.empty() ||
       options.out.empty()) {
     throw core::ConfigError("expected --scenario, --episodes, --cameras and --out");
   }
@@ -221,7 +206,7 @@ Export prepare(int argc, char** argv) {
                             ": expected a scenario with ARI (the cameras are ARI's), got none");
   }
   run.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
-  if (!options.seed_given) {
+  if (!options.given.seed) {
     options.plan.first_seed = run.scenario.scene.seed;
   }
   options.plan.validate("");

@@ -184,8 +184,7 @@ int run(const std::string& world_path, const std::string& out_dir, bool overwrit
       if (names.empty()) {
         continue;
       }
-      rig.render(i, physics::X_world_optical(spec, shot.ari, shot.head_pan, shot.head_tilt),
-                 frame);
+      rig.render(i, physics::X_world_optical(spec, shot.ari, shot.head_pan, shot.head_tilt), frame);
       cv::Mat bgr;
       cv::cvtColor(frame.colour, bgr, cv::COLOR_RGB2BGR);
       write_png(out_dir + "/" + names.front() + ".png", bgr);

@@ -42,14 +42,6 @@ namespace {
 using namespace ari_social_sim;
 namespace fs = std::filesystem;
 
-// The ranges the settings files hold too (scenario::BatchPlan::visit).
-constexpr core::IntegerOption kEpisodes{
-    "--episodes", static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.min),
-    static_cast<int64_t>(scenario::BatchPlan::kEpisodeBounds.max)};
-constexpr core::IntegerOption kSeed{"--seed",
-                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.min),
-                                    static_cast<int64_t>(scenario::BatchPlan::kSeedBounds.max)};
-
 // Set by the SIGINT/SIGTERM handler, read between steps: a signal handler may do nothing but set
 // a flag of this type, hence the one global of the program.
 volatile std::sig_atomic_t g_stop_signal = 0;
@@ -61,8 +53,7 @@ void on_stop_signal(int signal) {
 struct Options {
   std::string scenario;
   scenario::BatchPlan plan;
-  bool episodes_given{false};
-  bool seed_given{false};
+  scenario::PlanOptionsGiven given;
   std::string out{"episodes"};
   bool bags{true};
   bool overwrite{false};
@@ -73,7 +64,8 @@ void print_usage() {
   std::cerr << "usage: run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
                "                    [--out DIR] [--no-bags] [--overwrite | --resume]\n"
             << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n"
-            << "  N in " << kEpisodes.range() << ", S in " << kSeed.range()
+            << "  N in " << scenario::episodes_option_range() << ", S in "
+            << scenario::seed_option_range()
             << " (the last seed, S + N - 1, too)\n"
                "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
                "  --resume (finish it: same settings, --episodes and --seed default to its own)\n";
@@ -98,14 +90,7 @@ Options parse_options(int argc, char** argv) {
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
-    } else if (arg == "--episodes") {
-      options.plan.episodes = static_cast<uint64_t>(kEpisodes.parse(value));
-      options.episodes_given = true;
-    } else if (arg == "--seed") {
-      options.plan.first_seed = static_cast<uint64_t>(kSeed.parse(value));
-      options.seed_given = true;
-    } else if (arg == "--shard") {
-      scenario::parse_shard(value, "", options.plan);
+    } else if (scenario::read_plan_option(arg, value, options.plan, options.given)) {
     } else if (arg == "--out") {
       options.out = value;
     } else {
@@ -114,7 +99,7 @@ Options parse_options(int argc, char** argv) {
                               "--no-bags, --overwrite, --resume");
     }
   }
-  if (options.scenario.empty() || (!options.episodes_given && !options.resume)) {
+  if (options.scenario.empty() || (!options.given.episodes && !options.resume)) {
     throw core::ConfigError(
         "expected --scenario and --episodes (--episodes may be left out with "
         "--resume)");
@@ -305,14 +290,14 @@ Batch prepare(int argc, char** argv) {
   if (options.resume && fs::exists(paths.settings())) {
     earlier = scenario::BatchSettings::parse(read_file(paths.settings()), paths.settings());
   }
-  if (!options.episodes_given && !earlier) {
+  if (!options.given.episodes && !earlier) {
     throw core::ConfigError("--resume: " + paths.settings() +
                             " not found: nothing to resume, give --episodes");
   }
-  if (!options.episodes_given) {
+  if (!options.given.episodes) {
     options.plan.episodes = earlier->plan.episodes;
   }
-  if (!options.seed_given) {
+  if (!options.given.seed) {
     options.plan.first_seed = earlier ? earlier->plan.first_seed : batch.scenario.scene.seed;
   }
   options.plan.validate("");

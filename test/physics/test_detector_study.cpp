@@ -42,9 +42,9 @@ struct LabelledFrame {
 class StudyScenes {
  public:
   StudyScenes() : rig_(head_only()) {
-    rig_.set_world(model::load_world_file(std::string(ARI_SOURCE_DIR) +
-                                          "/worlds/hospital_waiting_room.yaml"),
-                   SceneStyle{});
+    rig_.set_world(
+        model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml"),
+        SceneStyle{});
   }
 
   struct Layout {
@@ -71,19 +71,21 @@ class StudyScenes {
       const double bearing = ari.theta + rng.uniform(-0.8, 0.8) * half_fov;
       FigureInput person;
       person.traits.id = static_cast<uint32_t>(seed * 8 + i);
-      person.traits.age_years = rng.bernoulli(0.1) ? rng.uniform(6.0, 16.0) : rng.uniform(18.0, 85.0);
+      person.traits.age_years =
+          rng.bernoulli(0.1) ? rng.uniform(6.0, 16.0) : rng.uniform(18.0, 85.0);
       person.traits.gender = rng.bernoulli(0.5) ? model::Gender::kFemale : model::Gender::kMale;
       person.traits.mask = rng.bernoulli(0.15);
-      person.pose.position = camera + distance * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
-      const double towards_camera = std::atan2(camera.y() - person.pose.position.y(),
-                                               camera.x() - person.pose.position.x());
+      person.pose.position =
+          camera + distance * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+      const double towards_camera =
+          std::atan2(camera.y() - person.pose.position.y(), camera.x() - person.pose.position.x());
       person.pose.theta = towards_camera + layout.facing_rad +
                           rng.uniform(-layout.max_turn_rad, layout.max_turn_rad);
       person.face_yaw_rad = person.pose.theta + rng.uniform(-0.2, 0.2);
       if (rng.bernoulli(0.3)) {
         const double speed = rng.uniform(0.5, 1.4);
-        person.velocity_mps = speed * Eigen::Vector2d(std::cos(person.pose.theta),
-                                                       std::sin(person.pose.theta));
+        person.velocity_mps =
+            speed * Eigen::Vector2d(std::cos(person.pose.theta), std::sin(person.pose.theta));
       }
       people.push_back(person);
     }
@@ -97,8 +99,8 @@ class StudyScenes {
     rig_.render(0, X_world_optical, image, /*labels=*/true);
     LabelledFrame out;
     cv::cvtColor(image.colour, out.grey, cv::COLOR_RGB2GRAY);
-    out.labels = label_people(rig_.renderer(), rig_.pinhole(0), X_world_optical, figures_,
-                              image.labels);
+    out.labels =
+        label_people(rig_.renderer(), rig_.pinhole(0), X_world_optical, figures_, image.labels);
     return out;
   }
 
@@ -123,7 +125,9 @@ PixelBox box_of(const cv::Rect& rect) {
 class RateTable {
  public:
   RateTable(std::string quantity, std::vector<double> edges)
-      : quantity_(std::move(quantity)), edges_(std::move(edges)), found_(edges_.size() - 1),
+      : quantity_(std::move(quantity)),
+        edges_(std::move(edges)),
+        found_(edges_.size() - 1),
         total_(edges_.size() - 1) {}
 
   void add(double value, bool found) {
@@ -137,9 +141,9 @@ class RateTable {
   void print(const char* detector) const {
     std::printf("| %s: %s | found | of | rate |\n|---|---|---|---|\n", detector, quantity_.c_str());
     for (size_t i = 0; i < total_.size(); ++i) {
-      std::printf("| %g to %g | %d | %d | %s |\n", edges_[i], edges_[i + 1], found_[i], total_[i],
-                  total_[i] > 0 ? (std::to_string(100 * found_[i] / total_[i]) + " %").c_str()
-                                : "-");
+      std::printf(
+          "| %g to %g | %d | %d | %s |\n", edges_[i], edges_[i + 1], found_[i], total_[i],
+          total_[i] > 0 ? (std::to_string(100 * found_[i] / total_[i]) + " %").c_str() : "-");
     }
   }
 
@@ -183,9 +187,9 @@ TEST(DetectorStudy, HogFindsUprightFullyVisiblePeopleTwoToSixMetresAway) {
     for (const PersonLabel& label : frame.labels) {
       bool hit = false;
       for (const cv::Rect& window : windows) {
-        const cv::Rect full(cv::Point(cvRound(window.x / kHogScale), cvRound(window.y / kHogScale)),
-                            cv::Size(cvRound(window.width / kHogScale),
-                                     cvRound(window.height / kHogScale)));
+        const cv::Rect full(
+            cv::Point(cvRound(window.x / kHogScale), cvRound(window.y / kHogScale)),
+            cv::Size(cvRound(window.width / kHogScale), cvRound(window.height / kHogScale)));
         hit = hit || person_in_hog_window(full).iou(label.body_box) >= kMatchIou;
       }
       if (label.occlusion < 0.01 && !label.truncated) {
@@ -252,9 +256,10 @@ TEST(DetectorStudy, HaarFindsFacesTurnedToTheCameraAndFiresRarelyWithoutThem) {
   by_yaw.print("Haar");
   const double rate = eligible > 0 ? double(found) / eligible : 0.0;
   const double unmasked_rate = double(found - masked_found) / std::max(1, eligible - masked);
-  std::printf("Haar: %d of %d faces within 25 deg, 0.8-3 m found (%.1f %%) in %d frames; "
-              "masked: %d of %d; without a mask %.1f %%\n",
-              found, eligible, 100.0 * rate, frames, masked_found, masked, 100.0 * unmasked_rate);
+  std::printf(
+      "Haar: %d of %d faces within 25 deg, 0.8-3 m found (%.1f %%) in %d frames; "
+      "masked: %d of %d; without a mask %.1f %%\n",
+      found, eligible, 100.0 * rate, frames, masked_found, masked, 100.0 * unmasked_rate);
   // The cascade misses nearly every masked face, as it misses real ones (it was trained on faces
   // without masks): 85 % holds for faces without a mask, and the floor of all faces is what the
   // figures reach with a mask on one person in seven (docs/cameras.md).

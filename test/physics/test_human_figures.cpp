@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
+#include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -34,8 +34,8 @@ TEST(HumanAppearance, TheSameTraitsAndSeedGiveTheSameLookAndStaturesFollowTheSur
   EXPECT_NE(appearance_of(traits, 4).height_m, a.height_m);
 
   // Adults: mean and spread of stature per gender; six skin tones in about equal shares.
-  for (const auto& [gender, mean] : {std::pair{model::Gender::kMale, 1.75},
-                                     std::pair{model::Gender::kFemale, 1.62}}) {
+  for (const auto& [gender, mean] :
+       {std::pair{model::Gender::kMale, 1.75}, std::pair{model::Gender::kFemale, 1.62}}) {
     double sum = 0.0, squares = 0.0;
     std::map<std::array<float, 3>, int> tones;
     constexpr int kPeople = 3000;
@@ -107,8 +107,8 @@ TEST(PeopleFigures, HeadTurnsToTheGazeWithinItsRangeAndTheMouthMovesOnlyWhileSpe
     const PosedPerson& posed = figures.posed()[0];
     const Eigen::Matrix3d R = posed.figure->head_frame(posed.pose).linear();
     const double head_yaw = std::atan2(R(1, 0), R(0, 0));
-    EXPECT_NEAR(head_yaw, std::clamp(gaze, -HumanFigure::kMaxHeadTurnRad,
-                                     HumanFigure::kMaxHeadTurnRad),
+    EXPECT_NEAR(head_yaw,
+                std::clamp(gaze, -HumanFigure::kMaxHeadTurnRad, HumanFigure::kMaxHeadTurnRad),
                 1e-6);
   }
   double lowest = 1.0, highest = 0.0;

@@ -12,8 +12,9 @@ namespace ari_social_sim::physics {
 
 /// A figure's pose at one instant.
 struct FigurePose {
-  core::Pose2 body;            // map frame: feet centre and heading
-  double head_yaw_rad{0.0};    // map frame; the head turns to it, at most kMaxHeadTurnRad off the body
+  core::Pose2 body;  // map frame: feet centre and heading
+  double head_yaw_rad{
+      0.0};  // map frame; the head turns to it, at most kMaxHeadTurnRad off the body
   double gait_phase_rad{0.0};  // where the legs are in a stride: 0 and pi are mid-stance
   double gait_amplitude{0.0};  // 0 standing still, 1 a brisk walk
   double mouth_open{0.0};      // 0 closed, 1 open as on a stressed syllable

@@ -8,9 +8,9 @@
 namespace ari_social_sim::physics {
 
 /// Triangles ready for the GPU: per vertex the world position, outward unit normal, colour, the
-/// surface (Surface) and a label, interleaved as kFloatsPerVertex floats, three vertices per triangle.
-/// The label is what the renderer's label image holds where the triangle is seen (0: nothing to
-/// label, such as walls and the robot).
+/// surface (Surface) and a label, interleaved as kFloatsPerVertex floats, three vertices per
+/// triangle. The label is what the renderer's label image holds where the triangle is seen (0:
+/// nothing to label, such as walls and the robot).
 struct RenderMesh {
   static constexpr int kFloatsPerVertex = 11;
   static constexpr int kLabelOffset = 10;

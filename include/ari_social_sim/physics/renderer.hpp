@@ -2,8 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <memory>
-#include <optional>
 #include <opencv2/core/mat.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 

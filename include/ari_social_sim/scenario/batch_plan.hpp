@@ -67,6 +67,22 @@ struct BatchPlan {
 /// naming `field` (when not empty) and --shard with the expectation.
 void parse_shard(const std::string& text, const std::string& field, BatchPlan& plan);
 
+/// Which of a plan's values the command line gave, so that a tool can default the others.
+struct PlanOptionsGiven {
+  bool episodes{false};
+  bool seed{false};
+};
+
+/// Reads one of the command-line options the batch tools share (`--episodes N`, `--seed S`,
+/// `--shard K/N`) into `plan`; false when `option` is none of them. Throws core::ConfigError
+/// naming the option and its range for a bad value.
+bool read_plan_option(const std::string& option, const std::string& value, BatchPlan& plan,
+                      PlanOptionsGiven& given);
+
+/// The ranges of --episodes and --seed, as the tools' usage lines print them.
+std::string episodes_option_range();
+std::string seed_option_range();
+
 /// What a batch's rows were made with, kept beside its CSV (`NAME.settings.yaml`), so that a
 /// resumed run (`run_episodes --resume`) adds only rows made the same way: the same scenario and
 /// configuration files (by digest), seeds, shard and bags. The episode count is the one asked for
