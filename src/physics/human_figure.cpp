@@ -185,16 +185,37 @@ void HumanFigure::build_head() {
   }
   // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline;
   // long hair falls behind the neck to the shoulders.
+  // (centre, diameters) of the hair's ellipsoids, which hide the skin inside them.
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> hair;
   if (look_.hair_style != HairStyle::kBald) {
-    add_part(kHead, false,
-             shape(PrimitiveShape::kSphere, {-0.12 * h, 0.0, 0.08 * h},
-                   {2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97}, look_.hair,
-                   kHeadSegments));
+    hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
+                      Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
   }
   if (look_.hair_style == HairStyle::kLong) {
+    hair.emplace_back(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.45 * h),
+                      Eigen::Vector3d(1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h));
+  }
+  for (const auto& [centre, diameters] : hair) {
     add_part(kHead, false,
-             shape(PrimitiveShape::kSphere, {-0.45 * r.x(), 0.0, -0.45 * h},
-                   {1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h}, look_.hair, kHeadSegments));
+             shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, kHeadSegments));
+  }
+  // The skin left uncovered, sampled every 6 degrees of latitude and longitude.
+  constexpr int kSteps = 30;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double latitude = M_PI * (double(i) / kSteps - 0.5);
+    for (int j = 0; j < 2 * kSteps; ++j) {
+      const double longitude = M_PI * double(j) / kSteps;
+      const Eigen::Vector3d unit(std::cos(latitude) * std::cos(longitude),
+                                 std::cos(latitude) * std::sin(longitude), std::sin(latitude));
+      const Eigen::Vector3d point = r.cwiseProduct(unit);
+      bool covered = false;
+      for (const auto& [centre, diameters] : hair) {
+        covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
+      }
+      if (!covered) {
+        face_surface_.push_back({point, point.cwiseQuotient(r.cwiseProduct(r)).normalized()});
+      }
+    }
   }
   // Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's
   // base at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h.
@@ -215,6 +236,7 @@ void HumanFigure::build_head() {
     add_part(kHead, true,
              shape(PrimitiveShape::kSphere, {front(y, 0.0) + 0.003, y, 0.0},
                    {0.02 * h, 0.07 * h, 0.07 * h}, look_.iris * 0.5f, kFeatureSegments));
+    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(front(y, 0.0) + 0.003, y, 0.0);
     add_part(kHead, true,
              shape(PrimitiveShape::kSphere, {front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
                    {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
