@@ -234,15 +234,11 @@ class HriPerceptionNode {
     }
     const world::WorldSnapshot snapshot = from_msg(*msg);
     if (run_.crops) {
-      std::vector<physics::FigureInput> people;
-      for (const world::HumanSnapshot& human : snapshot.humans) {
-        people.push_back(physics::figure_input_of(human));
-      }
       // A world state earlier than the last (a reset) starts the history afresh.
       if (!people_history_.empty() && people_history_.back().first > msg->header.stamp.toSec()) {
         people_history_.clear();
       }
-      people_history_.emplace_back(msg->header.stamp.toSec(), std::move(people));
+      people_history_.emplace_back(msg->header.stamp.toSec(), snapshot.humans);
       while (people_history_.size() > kPeopleHistory) {
         people_history_.pop_front();
       }
@@ -295,19 +291,32 @@ class HriPerceptionNode {
              kHeadImageTopic, static_cast<unsigned long>(seed), face_size_);
   }
 
-  // Poses the figures as the physics drew them at `stamp`: the people of the last world state
-  // stamped no later (the physics renders those it has last received), at the time (never
-  // backwards: the gait advances with it).
+  // Poses the figures as the physics drew them in an image stamped `stamp`. Following
+  // world_node's clock, the physics receives the world state stamped s with the clock's tick to
+  // s, before it steps (and renders) from the previous state's stamp s_prev to s, and walks the
+  // people on from their state at s by their velocity times the time since it received it
+  // (ari_physics.cpp, step 4): a render at stamp in (s_prev, s] shows the state s walked on by
+  // stamp - s_prev, one world step ahead of the truth at stamp. The time never goes backwards:
+  // the gait advances with it.
   void pose_figures(const ros::Time& stamp) {
     const double time_s = stamp.toSec();
-    const std::vector<physics::FigureInput>* people = &people_history_.front().second;
-    for (const auto& [state_s, inputs] : people_history_) {
-      if (state_s <= time_s + 1e-6) {
-        people = &inputs;
-      }
+    size_t next = 0;  // the first state stamped no earlier than the image, else the last
+    while (next + 1 < people_history_.size() && people_history_[next].first < time_s - 1e-6) {
+      ++next;
+    }
+    const auto& [state_s, humans] = people_history_[next];
+    const double received_s =
+        next > 0 ? people_history_[next - 1].first : state_s - kDefaultWorldStep_s;
+    const double ahead_s = std::max(0.0, time_s - received_s);
+    std::vector<physics::FigureInput> people;
+    for (const world::HumanSnapshot& human : humans) {
+      physics::FigureInput input = physics::figure_input_of(human);
+      input.pose.position += ahead_s * human.velocity_mps;
+      input.pose.theta += ahead_s * human.angular_velocity_rps;
+      people.push_back(input);
     }
     figures_time_s_ = std::max(figures_time_s_, time_s);
-    figures_->update(figures_time_s_, *people);
+    figures_->update(figures_time_s_, people);
   }
 
   // With the head camera known: each person's face box in its image now, for the faces' roi, so
@@ -525,7 +534,7 @@ class HriPerceptionNode {
       }
       const physics::PosedPerson& person = *found->second;
       const std::optional<physics::PixelBox> box =
-          physics::body_region(figures_->mesh(), person.vertices, camera, X_map_optical);
+          physics::stride_body_region(*person.figure, person.pose, camera, X_map_optical);
       if (box) {
         topics.cropped.publish(image_msg(physics::cut_out(image, *box), msg.header));
       }
@@ -670,9 +679,10 @@ class HriPerceptionNode {
   static constexpr double kMaxImageWait_s = 0.5;
   sensor_msgs::Image::ConstPtr pending_image_;
   std::optional<physics::PeopleFigures> figures_;
-  // The people of the last world states (sim time, inputs), oldest first.
+  // The people of the last world states (sim time, people), oldest first.
   static constexpr size_t kPeopleHistory = 40;
-  std::deque<std::pair<double, std::vector<physics::FigureInput>>> people_history_;
+  static constexpr double kDefaultWorldStep_s = 0.05;  // world_node's step, when one state is known
+  std::deque<std::pair<double, std::vector<world::HumanSnapshot>>> people_history_;
   // The last perceived frame's faces and bodies, with the human each belongs to.
   std::vector<std::pair<std::string, model::ObjectId>> tracked_faces_, tracked_bodies_;
   double tracked_time_s_{-1.0};

@@ -108,6 +108,38 @@ std::optional<PixelBox> body_region(const RenderMesh& mesh, const VertexRange& v
   return bounds.box(model);
 }
 
+std::optional<PixelBox> stride_body_region(const HumanFigure& figure, const FigurePose& pose,
+                                           const PinholeModel& model,
+                                           const Eigen::Isometry3d& X_world_optical) {
+  constexpr int kGaitSamples = 8;
+  RenderMesh mesh;
+  std::optional<PixelBox> all;
+  for (int i = 0; i <= (pose.gait_amplitude > 0.0 ? kGaitSamples : 0); ++i) {
+    FigurePose sample = pose;
+    if (i > 0) {
+      sample.gait_phase_rad = 2.0 * M_PI * (i - 1) / kGaitSamples;
+    }
+    mesh.vertices.clear();
+    figure.append_posed(sample, 0.0f, 0.0f, mesh);
+    const std::optional<PixelBox> box =
+        body_region(mesh, VertexRange{0, mesh.vertex_count()}, model, X_world_optical);
+    if (!box) {
+      continue;
+    }
+    if (!all) {
+      all = box;
+      continue;
+    }
+    const int x1 = std::max(all->x + all->width, box->x + box->width);
+    const int y1 = std::max(all->y + all->height, box->y + box->height);
+    all->x = std::min(all->x, box->x);
+    all->y = std::min(all->y, box->y);
+    all->width = x1 - all->x;
+    all->height = y1 - all->y;
+  }
+  return all;
+}
+
 std::optional<std::array<Eigen::Vector2d, 2>> eye_pixels(const HumanFigure& figure,
                                                          const FigurePose& pose,
                                                          const PinholeModel& model,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "ari_social_sim/core/angles.hpp"
 
@@ -33,6 +34,7 @@ constexpr double kHipSwingRad = 0.42;
 constexpr double kKneeFlexRad = 0.75;
 constexpr double kShoulderSwingRad = 0.38;
 constexpr double kArmAbductionRad = 0.09;  // arms hang a little away from the body
+constexpr double kJawDropShare = 0.06;     // of the head's height, the mouth fully open
 
 RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre, const Eigen::Vector3d& size,
                       const Eigen::Vector3f& colour, int segments) {
@@ -199,24 +201,6 @@ void HumanFigure::build_head() {
     add_part(kHead, false,
              shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, kHeadSegments));
   }
-  // The skin left uncovered, sampled every 6 degrees of latitude and longitude.
-  constexpr int kSteps = 30;
-  for (int i = 0; i <= kSteps; ++i) {
-    const double latitude = M_PI * (double(i) / kSteps - 0.5);
-    for (int j = 0; j < 2 * kSteps; ++j) {
-      const double longitude = M_PI * double(j) / kSteps;
-      const Eigen::Vector3d unit(std::cos(latitude) * std::cos(longitude),
-                                 std::cos(latitude) * std::sin(longitude), std::sin(latitude));
-      const Eigen::Vector3d point = r.cwiseProduct(unit);
-      bool covered = false;
-      for (const auto& [centre, diameters] : hair) {
-        covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
-      }
-      if (!covered) {
-        face_surface_.push_back({point, point.cwiseQuotient(r.cwiseProduct(r)).normalized()});
-      }
-    }
-  }
   // Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's
   // base at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h.
   const double eye_y = 0.137 * h;
@@ -271,6 +255,34 @@ void HumanFigure::build_head() {
                                     Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
     face_outline_.emplace_back(front(yz.x(), yz.y()), yz.x(), yz.y());
   }
+  // What a camera can see of the face: the vertices of every face part (skin and features) not
+  // under the hair, in the head frame; the jaw's twice, with the mouth closed and fully open.
+  std::set<std::array<float, 6>> seen;
+  for (const Part& part : parts_) {
+    if (!part.face || (part.joint != kHead && part.joint != kJaw)) {
+      continue;
+    }
+    const RenderMesh& mesh = part.mesh;
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+      const float* v = &mesh.vertices[i * RenderMesh::kFloatsPerVertex];
+      const Eigen::Vector3d point(v[0], v[1], v[2]);
+      bool covered = false;
+      for (const auto& [centre, diameters] : hair) {
+        covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
+      }
+      if (covered) {
+        continue;
+      }
+      for (const double drop : {0.0, part.joint == kJaw ? kJawDropShare * h : 0.0}) {
+        const std::array<float, 6> key{v[0], v[1], static_cast<float>(v[2] - drop),
+                                       v[3], v[4], v[5]};
+        if (seen.insert(key).second) {
+          face_surface_.push_back({Eigen::Vector3d(key[0], key[1], key[2]),
+                                   Eigen::Vector3d(key[3], key[4], key[5]).normalized()});
+        }
+      }
+    }
+  }
 }
 
 HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const {
@@ -284,8 +296,9 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
   frames[kHead] = body * translation(0.0, 0.0, head_centre_z_) *
                   Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(head_turn),
                                                       Eigen::Vector3f::UnitZ()));
-  frames[kJaw] = frames[kHead] * translation(0.0, 0.0, -0.06 * look_.head_height_m *
-                                                         std::clamp(pose.mouth_open, 0.0, 1.0));
+  frames[kJaw] = frames[kHead] * translation(0.0, 0.0,
+                                             -kJawDropShare * look_.head_height_m *
+                                                 std::clamp(pose.mouth_open, 0.0, 1.0));
   const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
   const double phase = pose.gait_phase_rad;
   // Legs swing in antiphase; a knee bends while its leg swings forward. Arms swing against the

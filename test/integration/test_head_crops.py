@@ -1,15 +1,18 @@
 #!/usr/bin/python3
-"""rostest (head_crops.test): in 3D mode, with perception:=detectors and ~crops, hri_perception_node
-publishes REP-155's face and body images for the one person in front of ARI
-(test/integration/crops_scene.yaml), cut from ARI's rendered head camera:
+"""rostest (head_crops.test, head_crops_walking.test): in 3D mode, with perception:=detectors and
+~crops, hri_perception_node publishes REP-155's face and body images for the one person in front of
+ARI, standing (test/integration/crops_scene.yaml) or walking across its view
+(crops_walking_scene.yaml), cut from ARI's rendered head camera:
   - /humans/faces/<id>/cropped and /aligned: bgr8, /humans/faces/width square (128 px), the head
     camera image's stamp and frame; aligned shows the same face as cropped (frontal, so nearly
     unrotated);
   - /humans/bodies/<id>/cropped: bgr8, cut from the image at its resolution;
   - where they come from, found in the head camera image of the same stamp without the node's
     geometry: the body crop is an exact sub-image, the face crop's content matches a region of
-    the image (block means); that face region is 30-400 px tall, lies at the top of the body's
-    and covers the face's /humans/faces/<id>/roi (with ~crops, the box of the drawn face)."""
+    the image (block means); that face region is 30-400 px tall, lies at the top of the body's,
+    lies on and spans most of the head the image shows (the columns of the pixels that differ from
+    the background at the body box's top, found from the image alone) and covers the face's /humans/faces/<id>/roi
+    of the same stamp (with ~crops, the box of the drawn face)."""
 import time
 import unittest
 
@@ -72,7 +75,7 @@ def locate_face(image, crop, within):
         width = int(round(height * aspect))
         if width > bw or width < BLOCKS:
             continue
-        stride = max(1, height // 24)
+        stride = max(1, height // 16)
         xs, ys = np.meshgrid(np.arange(bx, bx + bw - width + 1, stride),
                              np.arange(by, by + bh - height + 1, stride))
         xs, ys = xs.ravel(), ys.ravel()
@@ -81,6 +84,32 @@ def locate_face(image, crop, within):
         if errors[i] < best[0]:
             best = (errors[i], (int(xs[i]), int(ys[i]), width, height))
     return best[1], best[0]
+
+
+def head_columns(image, body_box, face_height):
+    """First and last column of the pixels that differ from the background in the body box's top
+    rows, down to half a face: the head, as the image shows it. The background of each column is
+    the pixel a few rows above the box (walls are even upwards); None when the box starts at the
+    image's top."""
+    bx, by, bw, bh = body_box
+    if by < 4:
+        return None
+    rows = image[by:by + max(4, face_height // 2), bx:bx + bw].astype(int)
+    background = image[by - 4, bx:bx + bw].astype(int)
+    person = np.abs(rows - background[None, :, :]).max(axis=2) > 30
+    columns = np.nonzero(person.any(axis=0))[0]
+    if not len(columns):
+        return None
+    # The widest run of such columns (gaps of up to 3 px closed): the head, not an edge of the
+    # room that differs from what is above it.
+    runs, start = [], columns[0]
+    for previous, column in zip(columns[:-1], columns[1:]):
+        if column - previous > 4:
+            runs.append((start, previous))
+            start = column
+    runs.append((start, columns[-1]))
+    first, last = max(runs, key=lambda run: run[1] - run[0])
+    return (bx + first, bx + last)
 
 
 def locate_exactly(image, crop):
@@ -174,11 +203,16 @@ class HeadCrops(unittest.TestCase):
             H, W = image.shape[:2]
             body_box = locate_exactly(image, bgr_of(bodies[key]))
             self.assertIsNotNone(body_box, "the body crop is not a sub-image of the head image")
-            face_box, error = locate_face(image, bgr_of(face), body_box)
-            # The ROI of the world state nearest the image (before the head camera's first
-            # camera_info the node publishes its model's ROI; by the last crops it has it).
-            self.assertTrue(self.rois)
-            roi = min(self.rois, key=lambda r: abs((r.header.stamp - face.header.stamp).to_sec()))
+            # Searched in the body box's top half (the check below wants its top tenth).
+            bx, by, bw, bh = body_box
+            face_box, error = locate_face(image, bgr_of(face), (bx, by, bw, max(30, bh // 2)))
+            # The ROI of the world state of the image's stamp (the head camera renders on world
+            # steps; before its first camera_info the node publishes its model's ROI, by the last
+            # crops it has it).
+            rois = [r for r in self.rois if abs((r.header.stamp - face.header.stamp).to_sec()) < 1e-3]
+            if not rois:
+                continue
+            roi = rois[-1]
             expected = (roi.xmin * W, roi.ymin * H, roi.xmax * W, roi.ymax * H)
             fx, fy, fw, fh = face_box
             print("image %dx%d: body crop at %s; face crop from (%d, %d) %dx%d (block error "
@@ -200,8 +234,16 @@ class HeadCrops(unittest.TestCase):
             self.assertTrue(bx <= fx and fx + fw <= bx + bw and by <= fy and fy + fh <= by + bh)
             self.assertLess(fy - by, 0.1 * bh)
             self.assertLess(fh, 0.25 * bh)
+            # The face region lies on the head the image shows (a tenth of its width spare) and
+            # spans most of it (the head's outline also holds hair and ears, the face's not).
+            head = head_columns(image, body_box, fh)
+            print("  head columns %s, face region columns (%d, %d)" % (head, fx, fx + fw - 1))
+            self.assertIsNotNone(head)
+            self.assertGreaterEqual(fx, head[0] - 0.1 * fw)
+            self.assertLessEqual(fx + fw - 1, head[1] + 0.1 * fw)
+            self.assertGreater(fw, 0.6 * (head[1] - head[0] + 1))
             checked += 1
-            if checked == 2:
+            if checked == 3:
                 break
         self.assertGreater(checked, 0, "no face crop with its head image and body crop")
 

@@ -124,6 +124,52 @@ TEST(FigureRegions, BoxesHoldTheRenderedFaceAndBody) {
   }
 }
 
+TEST(FigureRegions, StrideBoxHoldsAWalkerWhateverTheirGaitPhase) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.4});
+  // Walking across the view, 2.5 m ahead: the renderer's figures have walked for a while (their
+  // gait phase advanced), ours start now.
+  FigureInput person;
+  person.traits.id = 3;
+  person.pose = {{2.5, -0.3}, M_PI / 2};
+  person.face_yaw_rad = M_PI;
+  person.velocity_mps = {0.0, 1.3};
+  for (const double walked_s : {0.13, 0.29, 0.47, 0.61}) {
+    SCOPED_TRACE(walked_s);
+    PeopleFigures drawn(1), ours(1);
+    drawn.update(0.0, {person});
+    drawn.update(walked_s, {person});
+    ours.update(0.0, {person});
+    renderer.set_dynamic_mesh(drawn.mesh());
+    RenderedImage image;
+    ViewOptions options;
+    options.colour = false;
+    options.labels = true;
+    renderer.render(model, X_world_optical, options, image);
+    const PosedPerson& seen = drawn.posed()[0];
+    const PosedPerson& guessed = ours.posed()[0];
+    ASSERT_NE(seen.pose.gait_phase_rad, guessed.pose.gait_phase_rad);
+    const std::optional<PixelBox> stride =
+        stride_body_region(*guessed.figure, guessed.pose, model, X_world_optical);
+    const std::optional<PixelBox> exact =
+        body_region(ours.mesh(), guessed.vertices, model, X_world_optical);
+    ASSERT_TRUE(stride && exact);
+    const auto [share, pixels] =
+        share_inside(image.labels, {seen.body_label, seen.face_label}, *stride);
+    const double exact_share =
+        share_inside(image.labels, {seen.body_label, seen.face_label}, *exact).first;
+    std::printf(
+        "walked %.2f s: stride box %4dx%-4d holds %5.1f %% of %6d pixels (the box at our "
+        "phase %4dx%-4d: %5.1f %%)\n",
+        walked_s, stride->width, stride->height, 100 * share, pixels, exact->width, exact->height,
+        100 * exact_share);
+    EXPECT_GE(share, 0.95);
+    EXPECT_GT(pixels / stride->area(), 0.15);  // the envelope of arms and legs: not much more
+  }
+}
+
 TEST(FigureRegions, NothingBehindTheCamera) {
   const PinholeModel model = PinholeModel::from_horizontal_fov(640, 480, 60 * kDeg);
   const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.4});

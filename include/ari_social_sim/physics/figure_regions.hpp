@@ -59,6 +59,15 @@ std::optional<PixelBox> body_region(const RenderMesh& mesh, const VertexRange& v
                                     const PinholeModel& model,
                                     const Eigen::Isometry3d& X_world_optical);
 
+/// The body's box whatever the phase of its stride: the union of the body boxes of `figure`
+/// posed at `pose` and at `pose` with its gait phase replaced by each of eight phases around the
+/// cycle. For a figure someone else draws, whose gait phase is not known here (PeopleFigures
+/// advances it from when it first drew the person); for a person standing still (no gait
+/// amplitude) the box of `pose`.
+std::optional<PixelBox> stride_body_region(const HumanFigure& figure, const FigurePose& pose,
+                                           const PinholeModel& model,
+                                           const Eigen::Isometry3d& X_world_optical);
+
 /// The images of the figure's eyes (HumanFigure::eyes), right eye first; nullopt when either is
 /// behind the camera. Not clipped: an eye may lie outside the image.
 std::optional<std::array<Eigen::Vector2d, 2>> eye_pixels(const HumanFigure& figure,

@@ -45,9 +45,10 @@ class HumanFigure {
   /// sees of the face is face_surface's box, figure_regions.hpp).
   const std::vector<Eigen::Vector3d>& face_outline() const { return face_outline_; }
 
-  /// Points of the face's skin in the head frame with their outward normals: the skin ellipsoid
-  /// sampled every few degrees where the hair does not cover it. Those facing a camera are what
-  /// it sees of the face (face_label's pixels), so their images bound the face's.
+  /// The face's vertices in the head frame with their outward normals: every face part's (skin,
+  /// eyes, brows, nose, lips, a mask) where the hair does not cover it, the jaw's both closed and
+  /// fully open. Those facing a camera are what it sees of the face (face_label's pixels), so their
+  /// images bound the face's.
   struct SurfacePoint {
     Eigen::Vector3d point;
     Eigen::Vector3d normal;
