@@ -14,7 +14,9 @@ add_library(ari_rendering
   src/physics/fisheye_renderer.cpp
   src/physics/human_appearance.cpp
   src/physics/human_figure.cpp
+  src/physics/figure_regions.cpp
   src/physics/image_labels.cpp
+  src/physics/region_crops.cpp
   src/physics/people_figures.cpp
   src/physics/physics_primitives.cpp
   src/physics/render_mesh.cpp
@@ -36,6 +38,7 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_ari_cameras.cpp
       test/physics/test_camera_rig.cpp
       test/physics/test_depth_image.cpp
+      test/physics/test_figure_regions.cpp
       test/physics/test_fisheye_renderer.cpp
       test/physics/test_human_figures.cpp
       test/physics/test_octomap_mapper.cpp

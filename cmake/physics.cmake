@@ -73,4 +73,8 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/ari_physics_node.test DEPENDENCIES ari_physics_node)
   add_rostest(test/integration/world_3d.test DEPENDENCIES ari_physics_node world_node)
   add_rostest(test/integration/ari_cameras.test DEPENDENCIES ari_physics_node)
+  add_rostest(test/integration/head_crops.test
+    DEPENDENCIES ari_physics_node world_node hri_perception_node)
+  add_rostest(test/integration/head_crops_walking.test
+    DEPENDENCIES ari_physics_node world_node hri_perception_node)
 endif()

@@ -6,14 +6,19 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/package.h>
 #include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <Eigen/Geometry>
+#include <deque>
 #include <map>
 #include <memory>
+#include <opencv2/imgproc.hpp>
 #include <optional>
 
 #include "ari_social_sim/WorldState.h"
@@ -25,11 +30,15 @@
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
+#include "ari_social_sim/physics/figure_regions.hpp"
+#include "ari_social_sim/physics/people_figures.hpp"
+#include "ari_social_sim/physics/region_crops.hpp"
 #include "conversions/hri_messages.hpp"
 #include "conversions/perception_markers.hpp"
 #include "conversions/world_state.hpp"
 #include "input_counters.hpp"
 #include "per_id_handle.hpp"
+#include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -41,12 +50,18 @@ constexpr char kRobotFrame[] = "base_footprint";
 constexpr double kSoundMapResolution_m = 0.05;
 constexpr char kMapTopic[] = "/map";
 constexpr char kWorldStateTopic[] = "/sim/world_state";
+// With ~crops: ARI's head camera, which ari_physics_node renders while someone listens.
+constexpr char kHeadImageTopic[] = "/head_front_camera/color/image_raw";
+constexpr char kHeadInfoTopic[] = "/head_front_camera/color/camera_info";
+// hri_face_detect's default side of the cropped and aligned face images (/humans/faces/width
+// and /humans/faces/height).
+constexpr int kDefaultFaceSize = 128;
 
 struct BodyTopics {
-  ros::Publisher roi;
+  ros::Publisher roi, cropped;  // cropped with ~crops only
 };
 struct FaceTopics {
-  ros::Publisher roi, expression, softbiometrics, mask;
+  ros::Publisher roi, expression, softbiometrics, mask, cropped, aligned;  // the last two: ~crops
 };
 struct VoiceTopics {
   ros::Publisher is_speaking, speech;
@@ -129,6 +144,9 @@ class HriPerceptionNode {
     // No Nagle delay: each world state should be perceived as soon as it is published.
     state_sub_ = nh_.subscribe(kWorldStateTopic, 1, &HriPerceptionNode::on_world_state, this,
                                ros::TransportHints().tcpNoDelay());
+    if (run_.crops) {
+      start_crops();
+    }
   }
 
  private:
@@ -138,15 +156,26 @@ class HriPerceptionNode {
   BodyTopics advertise_body(const std::string& id) {
     ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/bodies/" + id + "/";
-    return {nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1)};
+    BodyTopics topics{nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1), {}};
+    if (run_.crops) {
+      topics.cropped = nh.advertise<sensor_msgs::Image>(ns + "cropped", 1);
+    }
+    return topics;
   }
   FaceTopics advertise_face(const std::string& id) {
     ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/faces/" + id + "/";
-    return {nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1),
-            nh.advertise<Expression>(ns + "expression", 1),
-            nh.advertise<SoftBiometrics>(ns + "softbiometrics", 1),
-            nh.advertise<std_msgs::Bool>(ns + "mask", 1)};
+    FaceTopics topics{nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1),
+                      nh.advertise<Expression>(ns + "expression", 1),
+                      nh.advertise<SoftBiometrics>(ns + "softbiometrics", 1),
+                      nh.advertise<std_msgs::Bool>(ns + "mask", 1),
+                      {},
+                      {}};
+    if (run_.crops) {
+      topics.cropped = nh.advertise<sensor_msgs::Image>(ns + "cropped", 1);
+      topics.aligned = nh.advertise<sensor_msgs::Image>(ns + "aligned", 1);
+    }
+    return topics;
   }
   VoiceTopics advertise_voice(const std::string& id) {
     ros::NodeHandle nh = per_id_handle(nh_);
@@ -203,8 +232,313 @@ class HriPerceptionNode {
     if (!rate_gate_.take(msg->header.stamp.toSec())) {
       return;
     }
-    const perception::PerceptionFrame& frame = pipeline_.update(from_msg(*msg));
+    const world::WorldSnapshot snapshot = from_msg(*msg);
+    if (run_.crops) {
+      // A world state earlier than the last (a reset) starts the history afresh.
+      if (!people_history_.empty() && people_history_.back().first > msg->header.stamp.toSec()) {
+        people_history_.clear();
+      }
+      people_history_.emplace_back(msg->header.stamp.toSec(), snapshot.humans);
+      while (people_history_.size() > kPeopleHistory) {
+        people_history_.pop_front();
+      }
+      project_faces(msg->header.stamp);
+    }
+    const perception::PerceptionFrame& frame = pipeline_.update(snapshot);
     publish(frame, msg->header.stamp);
+    if (run_.crops) {
+      tracked_faces_.clear();
+      tracked_bodies_.clear();
+      for (const perception::PerceivedFace& face : frame.faces) {
+        tracked_faces_.push_back({face.face_id, face.human});
+      }
+      for (const perception::PerceivedBody& body : frame.bodies) {
+        tracked_bodies_.push_back({body.body_id, body.human});
+      }
+      tracked_time_s_ = frame.time_s;
+      cut_pending_image();
+    }
+  }
+
+  // ~crops: the face and body images cut from the head camera, where the people ari_physics_node
+  // drew are. Their figures are rebuilt here from the same inputs (the world state's people, the
+  // same appearance seed), so the boxes are those of the drawn figures, projected.
+  void start_crops() {
+    uint64_t seed = 1;
+    if (run_.appearance_seed >= 0) {
+      seed = static_cast<uint64_t>(run_.appearance_seed);
+    } else {
+      int physics_seed = 1;
+      if (nh_.getParam("/ari_physics_node/appearance_seed", physics_seed) && physics_seed >= 0) {
+        seed = static_cast<uint64_t>(physics_seed);
+      }
+    }
+    figures_.emplace(seed);
+    int width = kDefaultFaceSize, height = kDefaultFaceSize;
+    nh_.param("/humans/faces/width", width, kDefaultFaceSize);
+    nh_.param("/humans/faces/height", height, kDefaultFaceSize);
+    if (width != height || width <= 0) {
+      ROS_ERROR(
+          "hri_perception_node: /humans/faces/width and /humans/faces/height must be equal "
+          "and positive; face images are %d px square",
+          width > 0 ? width : kDefaultFaceSize);
+    }
+    face_size_ = width > 0 ? width : kDefaultFaceSize;
+    tf_buffer_ = std::make_unique<RenewingTfBuffer>();
+    info_sub_ = nh_.subscribe(kHeadInfoTopic, 1, &HriPerceptionNode::on_camera_info, this);
+    image_sub_ = nh_.subscribe(kHeadImageTopic, 1, &HriPerceptionNode::on_image, this);
+    ROS_INFO("hri_perception_node: face and body crops from %s, appearance seed %lu, faces %d px",
+             kHeadImageTopic, static_cast<unsigned long>(seed), face_size_);
+  }
+
+  // Poses the figures as the physics drew them in an image stamped `stamp`. Following
+  // world_node's clock, the physics receives the world state stamped s with the clock's tick to
+  // s, before it steps (and renders) from the previous state's stamp s_prev to s, and walks the
+  // people on from their state at s by their velocity times the time since it received it
+  // (ari_physics.cpp, step 4): a render at stamp in (s_prev, s] shows the state s walked on by
+  // stamp - s_prev, one world step ahead of the truth at stamp. The time never goes backwards:
+  // the gait advances with it.
+  void pose_figures(const ros::Time& stamp) {
+    const double time_s = stamp.toSec();
+    size_t next = 0;  // the first state stamped no earlier than the image, else the last
+    while (next + 1 < people_history_.size() && people_history_[next].first < time_s - 1e-6) {
+      ++next;
+    }
+    const auto& [state_s, humans] = people_history_[next];
+    const double received_s =
+        next > 0 ? people_history_[next - 1].first : state_s - kDefaultWorldStep_s;
+    const double ahead_s = std::max(0.0, time_s - received_s);
+    std::vector<physics::FigureInput> people;
+    for (const world::HumanSnapshot& human : humans) {
+      physics::FigureInput input = physics::figure_input_of(human);
+      input.pose.position += ahead_s * human.velocity_mps;
+      input.pose.theta += ahead_s * human.angular_velocity_rps;
+      people.push_back(input);
+    }
+    figures_time_s_ = std::max(figures_time_s_, time_s);
+    figures_->update(figures_time_s_, people);
+  }
+
+  // With the head camera known: each person's face box in its image now, for the faces' roi, so
+  // that roi and cropped show the same region of the rendered image.
+  void project_faces(const ros::Time& stamp) {
+    projected_faces_.clear();
+    if (!head_camera_ || people_history_.empty()) {
+      return;
+    }
+    std_msgs::Header header;
+    header.stamp = stamp;
+    header.frame_id = head_camera_frame_;
+    const std::optional<Eigen::Isometry3d> X_map_optical = camera_pose(header, kMaxRoiPoseAge_s);
+    if (!X_map_optical) {
+      return;
+    }
+    pose_figures(stamp);
+    const physics::PinholeModel& camera = *head_camera_;
+    for (const physics::PosedPerson& person : figures_->posed()) {
+      if (const std::optional<physics::PixelBox> box =
+              physics::face_region(*person.figure, person.pose, camera, *X_map_optical)) {
+        perception::ImageRegion roi;
+        roi.xmin = double(box->x) / camera.width;
+        roi.ymin = double(box->y) / camera.height;
+        roi.xmax = double(box->x + box->width) / camera.width;
+        roi.ymax = double(box->y + box->height) / camera.height;
+        projected_faces_[static_cast<model::ObjectId>(person.id)] = roi;
+      }
+    }
+  }
+
+  void on_camera_info(const sensor_msgs::CameraInfo::ConstPtr& msg) {
+    if (msg->width == 0 || msg->height == 0 || msg->K[0] <= 0.0 || msg->K[4] <= 0.0) {
+      ROS_WARN_THROTTLE(5.0, "hri_perception_node: %s: no usable intrinsics", kHeadInfoTopic);
+      return;
+    }
+    physics::PinholeModel model;
+    model.width = static_cast<int>(msg->width);
+    model.height = static_cast<int>(msg->height);
+    model.fx = msg->K[0];
+    model.cx = msg->K[2];
+    model.fy = msg->K[4];
+    model.cy = msg->K[5];
+    head_camera_ = model;
+    head_camera_frame_ = msg->header.frame_id;
+  }
+
+  static Eigen::Isometry3d isometry_of(const geometry_msgs::Transform& transform) {
+    const geometry_msgs::Quaternion& q = transform.rotation;
+    Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+    X.linear() = Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix();
+    X.translation() =
+        Eigen::Vector3d(transform.translation.x, transform.translation.y, transform.translation.z);
+    return X;
+  }
+
+  // Where the camera was at `header`'s stamp; or, when the stamp is not in the buffer, the latest
+  // pose if no more than `latest_within_s` away from it (0: the stamp's pose only).
+  std::optional<Eigen::Isometry3d> camera_pose(const std_msgs::Header& header,
+                                               double latest_within_s) {
+    tf_buffer_->renew_if_stale();
+    const tf2_ros::Buffer& buffer = tf_buffer_->buffer();
+    try {
+      return isometry_of(
+          buffer.lookupTransform(kMapFrame, header.frame_id, header.stamp).transform);
+    } catch (const tf2::TransformException&) {
+      if (latest_within_s <= 0.0) {
+        return std::nullopt;
+      }
+    }
+    geometry_msgs::TransformStamped latest;
+    try {
+      latest = buffer.lookupTransform(kMapFrame, header.frame_id, ros::Time(0));
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5.0, "hri_perception_node: no head camera pose (crops, face roi): %s",
+                        e.what());
+      return std::nullopt;
+    }
+    const double offset_s = (latest.header.stamp - header.stamp).toSec();
+    if (std::abs(offset_s) > latest_within_s) {
+      ROS_WARN_THROTTLE(5.0,
+                        "hri_perception_node: no head camera pose (crops, face roi): the latest "
+                        "%s in %s is %.2f s off",
+                        header.frame_id.c_str(), kMapFrame, offset_s);
+      return std::nullopt;
+    }
+    return isometry_of(latest.transform);
+  }
+
+  // The image as BGR (hri_face_detect's encoding), or empty for an encoding not handled.
+  static cv::Mat bgr_of(const sensor_msgs::Image& msg) {
+    if ((msg.encoding != "rgb8" && msg.encoding != "bgr8") || msg.step < msg.width * 3 ||
+        msg.data.size() < static_cast<size_t>(msg.step) * msg.height) {
+      return {};
+    }
+    const cv::Mat view(static_cast<int>(msg.height), static_cast<int>(msg.width), CV_8UC3,
+                       const_cast<uint8_t*>(msg.data.data()), msg.step);
+    cv::Mat bgr;
+    if (msg.encoding == "rgb8") {
+      cv::cvtColor(view, bgr, cv::COLOR_RGB2BGR);
+    } else {
+      bgr = view.clone();
+    }
+    return bgr;
+  }
+
+  static sensor_msgs::Image image_msg(const cv::Mat& bgr, const std_msgs::Header& header) {
+    sensor_msgs::Image msg;
+    msg.header = header;
+    msg.height = static_cast<uint32_t>(bgr.rows);
+    msg.width = static_cast<uint32_t>(bgr.cols);
+    msg.encoding = "bgr8";
+    msg.step = static_cast<uint32_t>(bgr.cols * 3);
+    msg.data.resize(static_cast<size_t>(msg.step) * msg.height);
+    for (int row = 0; row < bgr.rows; ++row) {
+      std::copy_n(bgr.ptr<uint8_t>(row), msg.step, msg.data.data() + row * msg.step);
+    }
+    return msg;
+  }
+
+  // An image waits for the camera's pose at its stamp (robot_state_publisher sends the head's
+  // transforms a little after the physics renders): it is cut when the pose has come, on the
+  // next world state or image, or with the latest pose once it has waited kMaxImageWait_s.
+  void on_image(const sensor_msgs::Image::ConstPtr& msg) {
+    pending_image_ = msg;  // one waiting at a time: a newer image replaces it
+    cut_pending_image();
+  }
+
+  void cut_pending_image() {
+    if (!pending_image_) {
+      return;
+    }
+    const sensor_msgs::Image::ConstPtr msg = pending_image_;
+    const bool waited = (ros::Time::now() - msg->header.stamp).toSec() > kMaxImageWait_s;
+    std::optional<Eigen::Isometry3d> X_map_optical;
+    if (tf_buffer_) {
+      X_map_optical = camera_pose(msg->header, waited ? kMaxPoseAge_s : 0.0);
+    }
+    if (!X_map_optical && !waited) {
+      return;  // again later
+    }
+    pending_image_.reset();
+    if (X_map_optical) {
+      cut(*msg, *X_map_optical);
+    }
+  }
+
+  // The crops of one image, the camera at X_map_optical.
+  void cut(const sensor_msgs::Image& msg, const Eigen::Isometry3d& X_map_optical) {
+    if (!head_camera_ || people_history_.empty() || tracked_time_s_ < 0.0 ||
+        (tracked_faces_.empty() && tracked_bodies_.empty())) {
+      return;
+    }
+    if (static_cast<int>(msg.width) != head_camera_->width ||
+        static_cast<int>(msg.height) != head_camera_->height) {
+      ROS_WARN_THROTTLE(5.0, "hri_perception_node: %s is %ux%u, its camera_info says %dx%d",
+                        kHeadImageTopic, msg.width, msg.height, head_camera_->width,
+                        head_camera_->height);
+      return;
+    }
+    const auto wanted = [](const ros::Publisher& publisher) {
+      return publisher && publisher.getNumSubscribers() > 0;
+    };
+    bool any = false;
+    for (const auto& [id, human] : tracked_faces_) {
+      FaceTopics& topics = faces_.of(id, tracked_time_s_);
+      any = any || wanted(topics.cropped) || wanted(topics.aligned);
+    }
+    for (const auto& [id, human] : tracked_bodies_) {
+      any = any || wanted(bodies_.of(id, tracked_time_s_).cropped);
+    }
+    if (!any) {
+      return;  // no-one listens: no conversion, no projection
+    }
+    const cv::Mat image = bgr_of(msg);
+    if (image.empty()) {
+      ROS_WARN_THROTTLE(5.0, "hri_perception_node: %s: encoding %s not handled (rgb8, bgr8)",
+                        kHeadImageTopic, msg.encoding.c_str());
+      return;
+    }
+    pose_figures(msg.header.stamp);
+    std::map<model::ObjectId, const physics::PosedPerson*> posed;
+    for (const physics::PosedPerson& person : figures_->posed()) {
+      posed[static_cast<model::ObjectId>(person.id)] = &person;
+    }
+    const physics::PinholeModel& camera = *head_camera_;
+    for (const auto& [id, human] : tracked_faces_) {
+      const auto found = posed.find(human);
+      if (found == posed.end()) {
+        continue;
+      }
+      const physics::PosedPerson& person = *found->second;
+      const std::optional<physics::PixelBox> box =
+          physics::face_region(*person.figure, person.pose, camera, X_map_optical);
+      if (!box) {
+        continue;
+      }
+      FaceTopics& topics = faces_.of(id, tracked_time_s_);
+      if (wanted(topics.cropped)) {
+        topics.cropped.publish(
+            image_msg(physics::letterboxed(image, *box, face_size_), msg.header));
+      }
+      const std::optional<std::array<Eigen::Vector2d, 2>> eyes =
+          physics::eye_pixels(*person.figure, person.pose, camera, X_map_optical);
+      if (eyes && wanted(topics.aligned)) {
+        topics.aligned.publish(image_msg(
+            physics::aligned_face(image, *box, (*eyes)[0], (*eyes)[1], face_size_), msg.header));
+      }
+    }
+    for (const auto& [id, human] : tracked_bodies_) {
+      const auto found = posed.find(human);
+      BodyTopics& topics = bodies_.of(id, tracked_time_s_);
+      if (found == posed.end() || !wanted(topics.cropped)) {
+        continue;
+      }
+      const physics::PosedPerson& person = *found->second;
+      const std::optional<physics::PixelBox> box =
+          physics::stride_body_region(*person.figure, person.pose, camera, X_map_optical);
+      if (box) {
+        topics.cropped.publish(image_msg(physics::cut_out(image, *box), msg.header));
+      }
+    }
   }
 
   void publish(const perception::PerceptionFrame& frame, const ros::Time& stamp) {
@@ -220,7 +554,10 @@ class HriPerceptionNode {
     }
     for (const perception::PerceivedFace& face : frame.faces) {
       FaceTopics& topics = faces_.of(face.face_id, now_s);
-      topics.roi.publish(roi_msg(face.roi, 1.0, header));
+      // ~crops: where the rendered face is, as in the cropped image; otherwise the model's box.
+      const auto projected = projected_faces_.find(face.human);
+      topics.roi.publish(
+          roi_msg(projected != projected_faces_.end() ? projected->second : face.roi, 1.0, header));
       topics.expression.publish(expression_msg(face, header));
       topics.softbiometrics.publish(softbiometrics_msg(face, header));
       std_msgs::Bool mask;
@@ -333,6 +670,29 @@ class HriPerceptionNode {
   perception::PerIdStore<PersonTopics> persons_;
   std::map<perception::ProxemicSpace, ros::Publisher> in_space_;
   std::map<perception::ProxemicSpace, std::vector<std::string>> sent_in_space_;
+
+  // ~crops
+  // How far from an image's stamp the camera's pose may be, once it has waited for its own; and
+  // from a world state's, for the faces' roi (the head's transforms come ~0.1 s late).
+  static constexpr double kMaxPoseAge_s = 0.1;
+  static constexpr double kMaxRoiPoseAge_s = 0.5;
+  static constexpr double kMaxImageWait_s = 0.5;
+  sensor_msgs::Image::ConstPtr pending_image_;
+  std::optional<physics::PeopleFigures> figures_;
+  // The people of the last world states (sim time, people), oldest first.
+  static constexpr size_t kPeopleHistory = 40;
+  static constexpr double kDefaultWorldStep_s = 0.05;  // world_node's step, when one state is known
+  std::deque<std::pair<double, std::vector<world::HumanSnapshot>>> people_history_;
+  // The last perceived frame's faces and bodies, with the human each belongs to.
+  std::vector<std::pair<std::string, model::ObjectId>> tracked_faces_, tracked_bodies_;
+  double tracked_time_s_{-1.0};
+  double figures_time_s_{0.0};
+  std::map<model::ObjectId, perception::ImageRegion> projected_faces_;  // this state's
+  std::string head_camera_frame_;
+  int face_size_{kDefaultFaceSize};
+  std::optional<physics::PinholeModel> head_camera_;
+  std::unique_ptr<RenewingTfBuffer> tf_buffer_;
+  ros::Subscriber image_sub_, info_sub_;
 };
 
 }  // namespace

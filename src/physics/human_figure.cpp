@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "ari_social_sim/core/angles.hpp"
 
@@ -34,6 +35,7 @@ constexpr double kKneeFlexRad = 0.75;
 constexpr double kShoulderSwingRad = 0.38;
 constexpr double kArmAbductionRad = 0.14;     // arms hang a little away from the body
 constexpr double kStanceAbductionRad = 0.07;  // standing feet a little apart
+constexpr double kJawDropShare = 0.06;        // of the head's height, the mouth fully open
 
 RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre,
                       const Eigen::Vector3d& size, const Eigen::Vector3f& colour, int segments) {
@@ -202,16 +204,19 @@ void HumanFigure::build_head() {
   }
   // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline;
   // long hair falls behind the neck to the shoulders.
+  // (centre, diameters) of the hair's ellipsoids, which hide the skin inside them.
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> hair;
   if (look_.hair_style != HairStyle::kBald) {
-    add_part(kHead, false,
-             shape(PrimitiveShape::kSphere, {-0.12 * h, 0.0, 0.08 * h},
-                   {2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97}, look_.hair,
-                   kHeadSegments));
+    hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
+                      Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
   }
   if (look_.hair_style == HairStyle::kLong) {
+    hair.emplace_back(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.45 * h),
+                      Eigen::Vector3d(1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h));
+  }
+  for (const auto& [centre, diameters] : hair) {
     add_part(kHead, false,
-             shape(PrimitiveShape::kSphere, {-0.45 * r.x(), 0.0, -0.45 * h},
-                   {1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h}, look_.hair, kHeadSegments));
+             shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, kHeadSegments));
   }
   // The face box: hairline to chin, side to side of the head at the eyes.
   for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
@@ -237,6 +242,7 @@ void HumanFigure::build_head() {
     add_part(kHead, true,
              shape(PrimitiveShape::kSphere, {front(y, 0.0) + 0.003, y, 0.0},
                    {0.02 * h, 0.07 * h, 0.07 * h}, look_.iris * 0.5f, kFeatureSegments));
+    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(front(y, 0.0) + 0.003, y, 0.0);
     add_part(kHead, true,
              shape(PrimitiveShape::kSphere, {front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
                    {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
@@ -257,26 +263,54 @@ void HumanFigure::build_head() {
                       0.035 * h},
                      darker(look_.mask_colour, 0.72f), kTrunkSegments));
     }
-    return;  // nose and mouth are under the mask
+  } else {  // nose and mouth, which a mask covers
+    add_part(kHead, true,
+             glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h), 0.0, -0.08 * h},
+                          {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
+                   {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
+    const Eigen::Vector3f lips = darker(skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
+                   {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
+                   {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f),
+                   kFeatureSegments));
+    // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
+    add_part(kJaw, true,
+             shape(PrimitiveShape::kSphere, {front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
+                   {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
   }
-  add_part(kHead, true,
-           glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h), 0.0, -0.08 * h},
-                        {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
-  add_part(kHead, true,
-           shape(PrimitiveShape::kSphere, {front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
-                 {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
-  const Eigen::Vector3f lips = darker(skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
-  add_part(kHead, true,
-           shape(PrimitiveShape::kSphere, {front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
-                 {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
-  add_part(
-      kHead, true,
-      shape(PrimitiveShape::kSphere, {front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
-            {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f), kFeatureSegments));
-  // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
-  add_part(kJaw, true,
-           shape(PrimitiveShape::kSphere, {front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
-                 {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
+  // What a camera can see of the face: the vertices of every face part (skin and features) not
+  // under the hair, in the head frame; the jaw's twice, with the mouth closed and fully open.
+  std::set<std::array<float, 6>> seen;
+  for (const Part& part : parts_) {
+    if (!part.face || (part.joint != kHead && part.joint != kJaw)) {
+      continue;
+    }
+    const RenderMesh& mesh = part.mesh;
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+      const float* v = &mesh.vertices[i * RenderMesh::kFloatsPerVertex];
+      const Eigen::Vector3d point(v[0], v[1], v[2]);
+      bool covered = false;
+      for (const auto& [centre, diameters] : hair) {
+        covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
+      }
+      if (covered) {
+        continue;
+      }
+      for (const double drop : {0.0, part.joint == kJaw ? kJawDropShare * h : 0.0}) {
+        const std::array<float, 6> key{v[0], v[1], static_cast<float>(v[2] - drop),
+                                       v[3], v[4], v[5]};
+        if (seen.insert(key).second) {
+          face_surface_.push_back({Eigen::Vector3d(key[0], key[1], key[2]),
+                                   Eigen::Vector3d(key[3], key[4], key[5]).normalized()});
+        }
+      }
+    }
+  }
 }
 
 HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const {
@@ -291,9 +325,9 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
   frames[kHead] =
       body * translation(0.0, 0.0, head_centre_z_) *
       Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(head_turn), Eigen::Vector3f::UnitZ()));
-  frames[kJaw] =
-      frames[kHead] *
-      translation(0.0, 0.0, -0.06 * look_.head_height_m * std::clamp(pose.mouth_open, 0.0, 1.0));
+  frames[kJaw] = frames[kHead] * translation(0.0, 0.0,
+                                             -kJawDropShare * look_.head_height_m *
+                                                 std::clamp(pose.mouth_open, 0.0, 1.0));
   const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
   const double phase = pose.gait_phase_rad;
   // Legs swing in antiphase; a knee bends while its leg swings forward. Arms swing against the

@@ -43,50 +43,13 @@ std::vector<Region> regions_of(const cv::Mat& labels, const PeopleFigures& peopl
   return regions;
 }
 
-// The box around the face outline's pixels, clipped to the image; nullopt when a point is
-// behind the camera or nothing is left inside.
-std::optional<PixelBox> face_box_of(const PinholeModel& model,
-                                    const Eigen::Isometry3d& X_optical_head,
-                                    const std::vector<Eigen::Vector3d>& outline) {
-  double min_u = std::numeric_limits<double>::max(), min_v = min_u;
-  double max_u = std::numeric_limits<double>::lowest(), max_v = max_u;
-  for (const Eigen::Vector3d& point : outline) {
-    const std::optional<Eigen::Vector2d> pixel = model.project(X_optical_head * point);
-    if (!pixel) {
-      return std::nullopt;
-    }
-    min_u = std::min(min_u, pixel->x());
-    min_v = std::min(min_v, pixel->y());
-    max_u = std::max(max_u, pixel->x());
-    max_v = std::max(max_v, pixel->y());
-  }
-  const int x0 = std::max(0, static_cast<int>(std::lround(min_u)));
-  const int y0 = std::max(0, static_cast<int>(std::lround(min_v)));
-  const int x1 = std::min(model.width, static_cast<int>(std::lround(max_u)) + 1);
-  const int y1 = std::min(model.height, static_cast<int>(std::lround(max_v)) + 1);
-  if (x1 <= x0 || y1 <= y0) {
-    return std::nullopt;
-  }
-  return PixelBox{x0, y0, x1 - x0, y1 - y0};
-}
-
 }  // namespace
-
-double PixelBox::iou(const PixelBox& other) const {
-  const int x0 = std::max(x, other.x), y0 = std::max(y, other.y);
-  const int x1 = std::min(x + width, other.x + other.width);
-  const int y1 = std::min(y + height, other.y + other.height);
-  const double overlap = std::max(0, x1 - x0) * static_cast<double>(std::max(0, y1 - y0));
-  const double total = area() + other.area() - overlap;
-  return total > 0.0 ? overlap / total : 0.0;
-}
 
 std::vector<PersonLabel> label_people(Renderer& renderer, const PinholeModel& model,
                                       const Eigen::Isometry3d& X_world_optical,
                                       const PeopleFigures& people, const cv::Mat& labels,
                                       const LabelOptions& options) {
   const std::vector<Region> seen = regions_of(labels, people);
-  const Eigen::Isometry3d X_optical_world = X_world_optical.inverse();
   const Eigen::Vector3d camera = X_world_optical.translation();
   std::vector<PersonLabel> out;
   RenderedImage alone;
@@ -121,8 +84,7 @@ std::vector<PersonLabel> label_people(Renderer& renderer, const PinholeModel& mo
         std::acos(std::clamp(X_world_head.linear().col(0).dot(to_camera), -1.0, 1.0)) * 180.0 /
         M_PI;
     if (label.face_yaw_deg < 90.0 && label.face_occlusion <= options.max_face_occlusion) {
-      label.face_box =
-          face_box_of(model, X_optical_world * X_world_head, person.figure->face_outline());
+      label.face_box = face_outline_region(*person.figure, person.pose, model, X_world_optical);
     }
     label.distance_m = (camera.head<2>() - person.pose.body.position).norm();
     label.mask = person.figure->appearance().mask;

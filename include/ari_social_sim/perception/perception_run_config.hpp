@@ -30,6 +30,8 @@ struct PerceptionRunConfig {
   double max_rate_hz{30.0};
   double id_linger_s{1.0};
   double marker_rate_hz{10.0};
+  bool crops{false};
+  int64_t appearance_seed{-1};
 
   template <class V>
   void visit(V& v) {
@@ -57,6 +59,14 @@ struct PerceptionRunConfig {
             core::between(0.0, 60.0));
     v.field("marker_rate", marker_rate_hz, "Hz of ~markers (wall clock)",
             core::Bounds{0.0, 30.0, true});
+    v.field("crops", crops,
+            "3D mode: cut REP-155's face (cropped, aligned) and body (cropped) images from ARI's "
+            "head camera for the tracked faces and bodies; subscribing makes ari_physics_node "
+            "render that camera");
+    v.field("appearance_seed", appearance_seed,
+            "with crops: ari_physics_node's appearance_seed, which sizes the people it draws; -1: "
+            "read /ari_physics_node/appearance_seed, 1 (its default) when unset",
+            core::Bounds{-1.0, 2147483647.0, false});
   }
 
   /// Throws core::ConfigError naming the field outside what visit allows.

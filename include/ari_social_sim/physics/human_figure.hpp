@@ -42,8 +42,22 @@ class HumanFigure {
   Eigen::Isometry3d head_frame(const FigurePose& pose) const;
 
   /// Points of the face in the head frame: hairline, chin and both cheeks. The face's box in an
-  /// image is the box around their images.
+  /// image is the box around their images (the tighter box a face detector draws; what a camera
+  /// sees of the face is face_surface's box, figure_regions.hpp).
   const std::vector<Eigen::Vector3d>& face_outline() const { return face_outline_; }
+
+  /// The face's vertices in the head frame with their outward normals: every face part's (skin,
+  /// eyes, brows, nose, lips, a mask) where the hair does not cover it, the jaw's both closed and
+  /// fully open. Those facing a camera are what it sees of the face (face_label's pixels), so their
+  /// images bound the face's.
+  struct SurfacePoint {
+    Eigen::Vector3d point;
+    Eigen::Vector3d normal;
+  };
+  const std::vector<SurfacePoint>& face_surface() const { return face_surface_; }
+
+  /// The irises' centres in the head frame: the figure's right eye, then its left.
+  const std::array<Eigen::Vector3d, 2>& eyes() const { return eyes_; }
 
  private:
   enum Joint {
@@ -84,6 +98,8 @@ class HumanFigure {
   Eigen::Vector3d head_radii_{Eigen::Vector3d::Zero()};
   std::vector<Part> parts_;
   std::vector<Eigen::Vector3d> face_outline_;
+  std::vector<SurfacePoint> face_surface_;
+  std::array<Eigen::Vector3d, 2> eyes_{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
 };
 
 }  // namespace ari_social_sim::physics

@@ -6,22 +6,11 @@
 #include <vector>
 
 #include "ari_social_sim/physics/camera_model.hpp"
+#include "ari_social_sim/physics/figure_regions.hpp"
 #include "ari_social_sim/physics/people_figures.hpp"
 #include "ari_social_sim/physics/renderer.hpp"
 
 namespace ari_social_sim::physics {
-
-/// A box in pixels: columns [x, x + width), rows [y, y + height).
-struct PixelBox {
-  int x{0};
-  int y{0};
-  int width{0};
-  int height{0};
-
-  double area() const { return static_cast<double>(width) * height; }
-  /// Intersection over union; 0 when either box is empty.
-  double iou(const PixelBox& other) const;
-};
 
 /// What one camera image shows of one person: the ground truth a detector is scored against.
 struct PersonLabel {
