@@ -40,9 +40,10 @@ SCRIPT_PATH = "/usr/bin:" + os.environ.get("PATH", "")
 # Entries of install_deps.sh that the self-test removes one at a time: the check must then fail and
 # name it. libnlopt-dev is the one install_deps.sh once forgot; the others are found by other
 # routes (Box2D's headers and library, yaml-cpp's headers, the screenshot scripts' ImageMagick,
-# the Python module's pybind11 headers, the learning package's numpy import).
+# the Python module's pybind11 headers, the learning package's numpy import, the Haar cascade the
+# detector study names).
 SELF_TEST_REMOVALS = ("libnlopt-dev", "libbox2d-dev", "libyaml-cpp-dev", "imagemagick",
-                      "pybind11-dev", "python3-numpy")
+                      "pybind11-dev", "python3-numpy", "opencv-data")
 
 # Debian package of install_deps.sh -> the rosdep keys that install it (rosdistro's
 # rosdep/base.yaml, debian; octomap and urdfdom are also ROS packages whose package.xml Debian
@@ -431,6 +432,24 @@ def use_ros_package(package, program, launch_file, usage):
         usage.use(path, f"{package}/{program}, run by {launch_file}")
 
 
+# An absolute path to a system data file written in the project's code, e.g. a stock classifier.
+DATA_FILE_LITERAL = re.compile(r"[\"'](/usr/share/[^\"'\s{}]+\.[A-Za-z0-9]+)[\"']")
+
+
+def collect_named_data_files(repo, usage):
+    """Data files the code opens by absolute path at run time (Debian's opencv-data cascades):
+    neither the compiler nor the linker sees them."""
+    for path in project_files(repo):
+        if not path.endswith((".cpp", ".hpp", ".py")):
+            continue
+        for data_file in sorted(set(DATA_FILE_LITERAL.findall(read(path)))):
+            if os.path.exists(data_file):
+                usage.use(data_file, f"named in {os.path.relpath(path, repo)}")
+            else:
+                usage.problems.append(f"{os.path.relpath(path, repo)} names {data_file}, which is "
+                                      f"not installed")
+
+
 def collect_usage(repo, build):
     usage = Usage(repo, build)
     collect_compiler_dependencies(build, usage)
@@ -441,6 +460,7 @@ def collect_usage(repo, build):
     collect_python_imports(repo, usage)
     collect_script_commands(repo, usage)
     collect_launch_programs(repo, usage)
+    collect_named_data_files(repo, usage)
     return usage
 
 
