@@ -142,7 +142,7 @@ void HumanFigure::build_trunk_and_arms() {
   // Chest and seat give the side view its curves: the chest ahead of the waist, the seat behind.
   add_part(kPelvis, false,
            shape(PrimitiveShape::kSphere, {0.015 * s, 0.0, 0.70 * s},
-                 {depth * 1.15, width * 1.02, 0.22 * s}, look_.top, kTrunkSegments));
+                 {depth * 1.15, width * 0.9, 0.22 * s}, look_.top, kTrunkSegments));
   add_part(kPelvis, false,
            shape(PrimitiveShape::kSphere, {-0.02 * s, 0.0, hip_z_ - 0.01 * s},
                  {depth * 1.1, std::max(width, hip_width * 0.9), 0.16 * s}, look_.trousers,

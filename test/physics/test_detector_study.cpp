@@ -29,7 +29,8 @@ constexpr char kFaceCascade[] = "/usr/share/opencv4/haarcascades/haarcascade_fro
 constexpr double kMatchIou = 0.5;
 // HOG runs on the head camera's image scaled by this, so that people 2 to 6 m away are 105 to 315
 // pixels tall and the renderer's hard edges are averaged away (INTER_AREA). Measured with the
-// window stride below: 0.3, 0.35 and 0.5 found 87.9, 89.3 and 85.0 % (docs/cameras.md).
+// window stride below: 0.3, 0.35 and 0.5 found 87.9, 89.3 and 85.0 % of an earlier figure
+// (docs/cameras.md).
 constexpr double kHogScale = 0.35;
 
 // One rendered head camera frame with its labels.
