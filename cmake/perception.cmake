@@ -11,6 +11,7 @@ add_library(ari_perception
   src/perception/expression.cpp
   src/perception/face_tracker.cpp
   src/perception/fformation_dataset.cpp
+  src/perception/fformation_geometry.cpp
   src/perception/field_of_view.cpp
   src/perception/gcff.cpp
   src/perception/grid_raycast.cpp
@@ -78,6 +79,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_engagement.cpp
       test/perception/test_face_tracker.cpp
       test/perception/test_fformation_dataset.cpp
+      test/perception/test_fformation_geometry.cpp
       test/perception/test_field_of_view.cpp
       test/perception/test_gcff.cpp
       test/perception/test_gcff_reference.cpp

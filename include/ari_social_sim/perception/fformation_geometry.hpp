@@ -1,0 +1,38 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "ari_social_sim/perception/gcff.hpp"
+
+// The shape of one conversational group, for comparing the world's groups with recorded ones
+// (docs/perception_gcff.md, "Geometry of recorded groups").
+
+namespace ari_social_sim::perception {
+
+/// Kendon's F-formation arrangements (D6.4 figure 3.5): two people facing each other, at a right
+/// angle, or shoulder to shoulder; three or more around a shared o-space.
+enum class Arrangement { kVisAVis, kLShape, kSideBySide, kCircle };
+
+const char* arrangement_name(Arrangement arrangement);
+
+/// One group's geometry: the o-space centre as GCFF places it (each member's point `stride` ahead
+/// of them, averaged), each member's distance to it and how far their facing turns away from it,
+/// and the distance of every pair of members. Lengths in the members' unit.
+struct FormationGeometry {
+  Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
+  std::vector<double> centre_distances;
+  std::vector<double> facing_offsets_rad;  // in [0, pi]
+  std::vector<double> pair_distances;
+  Arrangement arrangement{Arrangement::kCircle};
+};
+
+/// Precondition: at least two members, stride > 0.
+FormationGeometry formation_geometry(const std::vector<GcffPerson>& members, double stride);
+
+/// Two people: vis-a-vis when their facings are at least 135 degrees apart, side-by-side within
+/// 45 degrees, L-shape between; three or more: a circle.
+Arrangement classify_arrangement(const std::vector<GcffPerson>& members);
+
+}  // namespace ari_social_sim::perception

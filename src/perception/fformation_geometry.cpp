@@ -1,0 +1,64 @@
+#include "ari_social_sim/perception/fformation_geometry.hpp"
+
+#include <cmath>
+
+#include "ari_social_sim/core/angles.hpp"
+
+namespace ari_social_sim::perception {
+namespace {
+
+Eigen::Vector2d position(const GcffPerson& person) {
+  return {person.x, person.y};
+}
+
+Eigen::Vector2d facing(const GcffPerson& person) {
+  return {std::cos(person.theta), std::sin(person.theta)};
+}
+
+}  // namespace
+
+const char* arrangement_name(Arrangement arrangement) {
+  switch (arrangement) {
+    case Arrangement::kVisAVis:
+      return "vis-a-vis";
+    case Arrangement::kLShape:
+      return "l-shape";
+    case Arrangement::kSideBySide:
+      return "side-by-side";
+    case Arrangement::kCircle:
+      break;
+  }
+  return "circle";
+}
+
+Arrangement classify_arrangement(const std::vector<GcffPerson>& members) {
+  if (members.size() != 2) {
+    return Arrangement::kCircle;
+  }
+  const double apart = std::abs(core::angle_difference(members[0].theta, members[1].theta));
+  if (apart >= 0.75 * M_PI) {
+    return Arrangement::kVisAVis;
+  }
+  return apart <= 0.25 * M_PI ? Arrangement::kSideBySide : Arrangement::kLShape;
+}
+
+FormationGeometry formation_geometry(const std::vector<GcffPerson>& members, double stride) {
+  FormationGeometry geometry;
+  for (const GcffPerson& member : members) {
+    geometry.centre += position(member) + stride * facing(member);
+  }
+  geometry.centre /= static_cast<double>(members.size());
+  for (size_t i = 0; i < members.size(); ++i) {
+    const Eigen::Vector2d to_centre = geometry.centre - position(members[i]);
+    geometry.centre_distances.push_back(to_centre.norm());
+    geometry.facing_offsets_rad.push_back(std::abs(
+        core::angle_difference(std::atan2(to_centre.y(), to_centre.x()), members[i].theta)));
+    for (size_t j = i + 1; j < members.size(); ++j) {
+      geometry.pair_distances.push_back((position(members[j]) - position(members[i])).norm());
+    }
+  }
+  geometry.arrangement = classify_arrangement(members);
+  return geometry;
+}
+
+}  // namespace ari_social_sim::perception
