@@ -56,7 +56,8 @@ target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world
 add_library(ari_perceived_persons src/nodes/perceived_persons.cpp)
 target_link_libraries(ari_perceived_persons PUBLIC ari_perception_conversions)
 
-add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
+add_executable(hri_perception_node src/nodes/hri_perception_node.cpp
+  src/nodes/conversions/image.cpp)
 target_link_libraries(hri_perception_node ari_perception_conversions ari_rendering)
 install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 

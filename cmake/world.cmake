@@ -46,6 +46,7 @@ add_library(ari_world_conversions
   src/nodes/conversions/ari_base.cpp
   src/nodes/conversions/marker_builder.cpp
   src/nodes/conversions/world_markers.cpp
+  src/nodes/conversions/transform.cpp
   src/nodes/conversions/world_state.cpp
   src/nodes/input_counters.cpp
   src/nodes/renewing_tf_buffer.cpp

@@ -31,6 +31,7 @@
 #include "camera_interface.hpp"
 #include "conversions/ari_base.hpp"
 #include "conversions/joint_trajectory.hpp"
+#include "conversions/transform.hpp"
 #include "frames.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -331,13 +332,7 @@ class PointHeadInterface {
     try {
       const geometry_msgs::TransformStamped t =
           tf_.buffer().lookupTransform(kBaseFrame, frame, ros::Time(0), ros::Duration(0.1));
-      Eigen::Isometry3d X_base_frame = Eigen::Isometry3d::Identity();
-      X_base_frame.translation() = Eigen::Vector3d(
-          t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
-      X_base_frame.linear() = Eigen::Quaterniond(t.transform.rotation.w, t.transform.rotation.x,
-                                                 t.transform.rotation.y, t.transform.rotation.z)
-                                  .toRotationMatrix();
-      return physics_.frame_pose(kBaseFrame) * X_base_frame;
+      return physics_.frame_pose(kBaseFrame) * isometry_of(t.transform);
     } catch (const tf2::TransformException& e) {
       throw core::RequestError("target.header.frame_id: no transform from '" + frame + "' to " +
                                kBaseFrame + ": " + e.what());

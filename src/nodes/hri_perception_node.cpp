@@ -34,7 +34,9 @@
 #include "ari_social_sim/physics/people_figures.hpp"
 #include "ari_social_sim/physics/region_crops.hpp"
 #include "conversions/hri_messages.hpp"
+#include "conversions/image.hpp"
 #include "conversions/perception_markers.hpp"
+#include "conversions/transform.hpp"
 #include "conversions/world_state.hpp"
 #include "input_counters.hpp"
 #include "per_id_handle.hpp"
@@ -364,15 +366,6 @@ class HriPerceptionNode {
     head_camera_frame_ = msg->header.frame_id;
   }
 
-  static Eigen::Isometry3d isometry_of(const geometry_msgs::Transform& transform) {
-    const geometry_msgs::Quaternion& q = transform.rotation;
-    Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-    X.linear() = Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix();
-    X.translation() =
-        Eigen::Vector3d(transform.translation.x, transform.translation.y, transform.translation.z);
-    return X;
-  }
-
   // Where the camera was at `header`'s stamp; or, when the stamp is not in the buffer, the latest
   // pose if no more than `latest_within_s` away from it (0: the stamp's pose only).
   std::optional<Eigen::Isometry3d> camera_pose(const std_msgs::Header& header,
@@ -424,16 +417,8 @@ class HriPerceptionNode {
   }
 
   static sensor_msgs::Image image_msg(const cv::Mat& bgr, const std_msgs::Header& header) {
-    sensor_msgs::Image msg;
+    sensor_msgs::Image msg = to_image_msg(bgr, "bgr8");
     msg.header = header;
-    msg.height = static_cast<uint32_t>(bgr.rows);
-    msg.width = static_cast<uint32_t>(bgr.cols);
-    msg.encoding = "bgr8";
-    msg.step = static_cast<uint32_t>(bgr.cols * 3);
-    msg.data.resize(static_cast<size_t>(msg.step) * msg.height);
-    for (int row = 0; row < bgr.rows; ++row) {
-      std::copy_n(bgr.ptr<uint8_t>(row), msg.step, msg.data.data() + row * msg.step);
-    }
     return msg;
   }
 

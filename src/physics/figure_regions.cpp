@@ -50,6 +50,13 @@ double PixelBox::iou(const PixelBox& other) const {
   return total > 0.0 ? overlap / total : 0.0;
 }
 
+PixelBox PixelBox::united(const PixelBox& other) const {
+  const int x0 = std::min(x, other.x), y0 = std::min(y, other.y);
+  const int x1 = std::max(x + width, other.x + other.width);
+  const int y1 = std::max(y + height, other.y + other.height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
 std::optional<PixelBox> projected_box(const PinholeModel& model,
                                       const Eigen::Isometry3d& X_optical_frame,
                                       const std::vector<Eigen::Vector3d>& points) {
@@ -123,19 +130,9 @@ std::optional<PixelBox> stride_body_region(const HumanFigure& figure, const Figu
     figure.append_posed(sample, 0.0f, 0.0f, mesh);
     const std::optional<PixelBox> box =
         body_region(mesh, VertexRange{0, mesh.vertex_count()}, model, X_world_optical);
-    if (!box) {
-      continue;
+    if (box) {
+      all = all ? all->united(*box) : *box;
     }
-    if (!all) {
-      all = box;
-      continue;
-    }
-    const int x1 = std::max(all->x + all->width, box->x + box->width);
-    const int y1 = std::max(all->y + all->height, box->y + box->height);
-    all->x = std::min(all->x, box->x);
-    all->y = std::min(all->y, box->y);
-    all->width = x1 - all->x;
-    all->height = y1 - all->y;
   }
   return all;
 }

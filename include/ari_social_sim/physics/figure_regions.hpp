@@ -27,6 +27,8 @@ struct PixelBox {
   bool empty() const { return width <= 0 || height <= 0; }
   /// Intersection over union; 0 when either box is empty.
   double iou(const PixelBox& other) const;
+  /// The smallest box holding both.
+  PixelBox united(const PixelBox& other) const;
   bool contains(int u, int v) const { return u >= x && u < x + width && v >= y && v < y + height; }
 };
 

@@ -12,13 +12,13 @@ constexpr int kJpegQuality = 80;
 
 }  // namespace
 
-sensor_msgs::Image to_image_msg(const cv::Mat& image) {
+sensor_msgs::Image to_image_msg(const cv::Mat& image, const char* colour_encoding) {
   sensor_msgs::Image msg;
   msg.height = static_cast<uint32_t>(image.rows);
   msg.width = static_cast<uint32_t>(image.cols);
   switch (image.type()) {
     case CV_8UC3:
-      msg.encoding = "rgb8";
+      msg.encoding = colour_encoding;
       break;
     case CV_32FC1:
       msg.encoding = "32FC1";

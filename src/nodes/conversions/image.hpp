@@ -10,9 +10,10 @@
 
 namespace ari_social_sim::nodes {
 
-/// A CV_8UC3 RGB image as `rgb8`, a CV_32FC1 depth image as `32FC1` (metres) or a CV_16UC1 one as
-/// `16UC1` (millimetres), REP-118. The header is the caller's.
-sensor_msgs::Image to_image_msg(const cv::Mat& image);
+/// A CV_8UC3 image as `colour_encoding` (its channel order: `rgb8` or `bgr8`), a CV_32FC1 depth
+/// image as `32FC1` (metres) or a CV_16UC1 one as `16UC1` (millimetres), REP-118. The header is
+/// the caller's.
+sensor_msgs::Image to_image_msg(const cv::Mat& image, const char* colour_encoding = "rgb8");
 /// A CV_8UC3 RGB image JPEG-encoded, as image_transport's compressed plugin sends it.
 sensor_msgs::CompressedImage to_compressed_msg(const cv::Mat& rgb);
 sensor_msgs::CameraInfo to_msg(const physics::CameraInfo& info);
