@@ -4,6 +4,7 @@ add_library(ari_world
   src/world/ari.cpp
   src/world/box2d_shapes.cpp
   src/world/differential_drive.cpp
+  src/world/formation_layout.cpp
   src/world/gaze_generator.cpp
   src/world/group_navigation.cpp
   src/world/group_report.cpp

@@ -28,11 +28,13 @@
 #include "ari_social_sim/DialogueOutcome.h"
 #include "ari_social_sim/DialogueUtterance.h"
 #include "ari_social_sim/Group.h"
+#include "ari_social_sim/LeaveGroup.h"
 #include "ari_social_sim/RemoveHuman.h"
 #include "ari_social_sim/Say.h"
 #include "ari_social_sim/ScenarioStatus.h"
 #include "ari_social_sim/SetGazeTargets.h"
 #include "ari_social_sim/SetGoal.h"
+#include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
 #include "ari_social_sim/SpawnHuman.h"
 #include "ari_social_sim/StepSimulation.h"
@@ -265,7 +267,12 @@ class RosCommands : public scenario::Commands {
     service.request.centre.x = spec.centre.x();
     service.request.centre.y = spec.centre.y();
     service.request.ospace_radius = spec.ospace_radius_m;
+    service.request.arrangement = model::to_string(spec.arrangement);
     call("/sim/create_group", service);
+    if (spec.heading_rad) {
+      // The heading is not among create_group's fields: it follows as its own request.
+      set_group_arrangement(service.response.id, spec.arrangement, spec.heading_rad);
+    }
   }
 
   void add_group_members(model::ObjectId group,
@@ -282,6 +289,22 @@ class RosCommands : public scenario::Commands {
     service.request.centre.x = centre.x();
     service.request.centre.y = centre.y();
     call("/sim/set_group_centre", service);
+  }
+
+  void set_group_arrangement(model::ObjectId group, model::Arrangement arrangement,
+                             std::optional<double> heading_rad) override {
+    SetGroupArrangement service;
+    service.request.group_id = group;
+    service.request.arrangement = model::to_string(arrangement);
+    service.request.has_heading = heading_rad.has_value();
+    service.request.heading = heading_rad.value_or(0.0);
+    call("/sim/set_group_arrangement", service);
+  }
+
+  void leave_group(model::ObjectId agent) override {
+    LeaveGroup service;
+    service.request.agent_id = agent;
+    call("/sim/leave_group", service);
   }
 
  private:

@@ -25,10 +25,13 @@
 
 #include "ari_social_sim/AddGroupMembers.h"
 #include "ari_social_sim/CreateGroup.h"
+#include "ari_social_sim/JoinGroup.h"
+#include "ari_social_sim/LeaveGroup.h"
 #include "ari_social_sim/RemoveHuman.h"
 #include "ari_social_sim/Say.h"
 #include "ari_social_sim/SetGazeTargets.h"
 #include "ari_social_sim/SetGoal.h"
+#include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
 #include "ari_social_sim/SetPose.h"
 #include "ari_social_sim/SetVelocity.h"
@@ -132,6 +135,10 @@ class WorldNode {
         nh_.advertiseService("/sim/add_group_members", &WorldNode::add_group_members, this));
     services_.push_back(
         nh_.advertiseService("/sim/set_group_centre", &WorldNode::set_group_centre, this));
+    services_.push_back(nh_.advertiseService("/sim/set_group_arrangement",
+                                             &WorldNode::set_group_arrangement, this));
+    services_.push_back(nh_.advertiseService("/sim/join_group", &WorldNode::join_group, this));
+    services_.push_back(nh_.advertiseService("/sim/leave_group", &WorldNode::leave_group, this));
     services_.push_back(nh_.advertiseService("/sim/say", &WorldNode::say, this));
     services_.push_back(
         nh_.advertiseService("/sim/set_gaze_targets", &WorldNode::set_gaze_targets, this));
@@ -363,6 +370,8 @@ class WorldNode {
       spec.members = req.members;
       spec.centre = {req.centre.x, req.centre.y};
       spec.ospace_radius_m = req.ospace_radius;
+      spec.arrangement =
+          world::requested_arrangement("create_group", req.arrangement, spec.arrangement);
       res.id = simulation_->add_group(spec).id();
     });
   }
@@ -375,6 +384,24 @@ class WorldNode {
     return answer(res, [&] {
       simulation_->set_group_centre(req.group_id, {req.centre.x, req.centre.y});
     });
+  }
+
+  bool set_group_arrangement(SetGroupArrangement::Request& req,
+                             SetGroupArrangement::Response& res) {
+    return answer(res, [&] {
+      const model::Arrangement arrangement = world::requested_arrangement(
+          "set_group_arrangement", req.arrangement, model::Arrangement::kCircle);
+      simulation_->set_group_arrangement(
+          req.group_id, arrangement, req.has_heading ? std::optional(req.heading) : std::nullopt);
+    });
+  }
+
+  bool join_group(JoinGroup::Request& req, JoinGroup::Response& res) {
+    return answer(res, [&] { simulation_->join_group(req.group_id, req.agent_id); });
+  }
+
+  bool leave_group(LeaveGroup::Request& req, LeaveGroup::Response& res) {
+    return answer(res, [&] { simulation_->leave_group(req.agent_id); });
   }
 
   bool say(Say::Request& req, Say::Response& res) {

@@ -17,20 +17,6 @@ Eigen::Vector2d facing(const GcffPerson& person) {
 
 }  // namespace
 
-const char* arrangement_name(Arrangement arrangement) {
-  switch (arrangement) {
-    case Arrangement::kVisAVis:
-      return "vis-a-vis";
-    case Arrangement::kLShape:
-      return "l-shape";
-    case Arrangement::kSideBySide:
-      return "side-by-side";
-    case Arrangement::kCircle:
-      break;
-  }
-  return "circle";
-}
-
 Arrangement classify_arrangement(const std::vector<GcffPerson>& members) {
   if (members.size() != 2) {
     return Arrangement::kCircle;

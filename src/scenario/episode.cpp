@@ -71,6 +71,11 @@ class Episode::InProcessCommands : public Commands {
   void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) override {
     world_.set_group_centre(group, centre);
   }
+  void set_group_arrangement(model::ObjectId group, model::Arrangement arrangement,
+                             std::optional<double> heading_rad) override {
+    world_.set_group_arrangement(group, arrangement, heading_rad);
+  }
+  void leave_group(model::ObjectId agent) override { world_.leave_group(agent); }
 
  private:
   world::Simulation& world_;

@@ -13,10 +13,20 @@ namespace {
 const std::vector<std::string> kConditionTypes = {
     "distance_below",    "distance_above", "speech_finished", "goal_reached",
     "navigation_failed", "time_elapsed",   "perceived_group", "dialogue_finished"};
-const std::vector<std::string> kActionTypes = {
-    "say",       "set_goal",     "approach",     "join_group",        "cancel_navigation",
-    "add_human", "remove_human", "create_group", "add_group_members", "set_group_centre",
-    "converse",  "stop"};
+const std::vector<std::string> kActionTypes = {"say",
+                                               "set_goal",
+                                               "approach",
+                                               "join_group",
+                                               "cancel_navigation",
+                                               "add_human",
+                                               "remove_human",
+                                               "create_group",
+                                               "add_group_members",
+                                               "set_group_centre",
+                                               "leave_group",
+                                               "set_group_arrangement",
+                                               "converse",
+                                               "stop"};
 
 std::string one_of(const std::vector<std::string>& names) {
   std::string text = "one of ";
@@ -275,6 +285,22 @@ class ScriptReader {
     } else if (type == "set_group_centre") {
       action = SetGroupCentreAction{read_group_ref(entry, "group"),
                                     entry.required<Eigen::Vector2d>("centre")};
+    } else if (type == "leave_group") {
+      action = LeaveGroupAction{read_agent(entry, "who")};
+    } else if (type == "set_group_arrangement") {
+      SetGroupArrangementAction a;
+      a.group = read_group_ref(entry, "group");
+      const std::string arrangement = entry.required<std::string>("arrangement");
+      if (!core::names_a_choice(arrangement, model::kArrangements)) {
+        entry.fail("arrangement", core::choice_names(model::kArrangements),
+                   "'" + arrangement + "'");
+      }
+      a.arrangement = core::parse_choice(arrangement, model::kArrangements, "arrangement");
+      if (entry.has("heading")) {
+        a.heading_rad = entry.required<double>(
+            "heading", core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad));
+      }
+      action = a;
     } else {
       action =
           StopAction{entry.required<bool>("success"), entry.optional<std::string>("reason", "")};
@@ -316,7 +342,7 @@ class ScriptReader {
 
   world::GroupSpec read_created_group(const core::YamlMap& entry) {
     for (const char* key : {"min_ospace_radius", "member_spacing", "social_distance",
-                            "spacing_factor", "step_speed"}) {
+                            "spacing_factor", "step_speed", "shoulder_spacing"}) {
       if (entry.has(key)) {
         entry.fail(key, "nothing: groups created during a run take the default " + std::string(key),
                    "a value");

@@ -77,6 +77,11 @@ std::string describe(const Action& action) {
           [](const SetGroupCentreAction& a) {
             return "set_group_centre (" + std::to_string(a.group) + ")";
           },
+          [](const LeaveGroupAction& a) { return "leave_group (" + a.who.describe() + ")"; },
+          [](const SetGroupArrangementAction& a) {
+            return "set_group_arrangement (" + std::to_string(a.group) + ", " +
+                   model::to_string(a.arrangement) + ")";
+          },
           [](const ConverseAction&) { return std::string("converse"); },
           [](const StopAction& a) {
             return std::string(a.success ? "stop (success)" : "stop (failure)");
@@ -270,6 +275,15 @@ bool ScriptRunner::run(const std::vector<Action>& actions, const Observations& o
                 commands.add_group_members(a.group, a.members);
               },
               [&](const SetGroupCentreAction& a) { commands.set_group_centre(a.group, a.centre); },
+              [&](const LeaveGroupAction& a) {
+                // ARI by its world id; none (0) is refused by the world as unknown.
+                const model::ObjectId ari =
+                    observations.world.ari ? observations.world.ari->id : model::kNoObject;
+                commands.leave_group(a.who.is_ari() ? ari : a.who.human_id);
+              },
+              [&](const SetGroupArrangementAction& a) {
+                commands.set_group_arrangement(a.group, a.arrangement, a.heading_rad);
+              },
               [&](const ConverseAction&) { conversation_->start(); },
               [&](const StopAction& a) { end(a.success, a.reason); },
           },

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "ari_social_sim/core/angles.hpp"
@@ -24,7 +25,8 @@ void GroupSpec::validate() const {
   core::check_fields<core::RequestError>(*this, "");
 }
 
-GroupNavigation::GroupNavigation(const GroupSpec& spec) : spec_(spec) {}
+GroupNavigation::GroupNavigation(const GroupSpec& spec)
+    : spec_(spec), arranged_size_(spec.members.size()), heading_rad_(spec.heading_rad) {}
 
 double GroupNavigation::ospace_radius_for(size_t member_count, double spacing_m,
                                           double min_radius_m) {
@@ -35,15 +37,39 @@ double GroupNavigation::ospace_radius_for(size_t member_count, double spacing_m,
   return std::max(min_radius_m, radius);
 }
 
+size_t GroupNavigation::participant_count() const {
+  return spec_.members.size() + (robot_joining_ != model::kNoObject ? 1 : 0);
+}
+
+bool GroupNavigation::kept_as_circle() const {
+  const model::Arrangement configured = spec_.arrangement;
+  const bool dyad_arrangement =
+      configured == model::Arrangement::kVisAVis || configured == model::Arrangement::kLShape;
+  return configured == model::Arrangement::kCircle ||
+         (dyad_arrangement && participant_count() > std::max<size_t>(arranged_size_, 2));
+}
+
+model::Arrangement GroupNavigation::arrangement() const {
+  if (!kept_as_circle()) {
+    return spec_.arrangement;
+  }
+  // Two around a circle face each other across it.
+  return participant_count() == 2 ? model::Arrangement::kVisAVis : model::Arrangement::kCircle;
+}
+
 double GroupNavigation::ospace_radius_m() const {
-  return spec_.ospace_radius_m > 0.0
-             ? spec_.ospace_radius_m
-             : ospace_radius_for(spec_.members.size(), spec_.member_spacing_m,
-                                 spec_.min_ospace_radius_m);
+  if (spec_.ospace_radius_m > 0.0) {
+    return spec_.ospace_radius_m;
+  }
+  if (kept_as_circle()) {
+    return ospace_radius_for(participant_count(), spec_.member_spacing_m,
+                             spec_.min_ospace_radius_m);
+  }
+  return row_distance_for(spec_.arrangement, spec_.member_spacing_m);
 }
 
 double GroupNavigation::member_personal_distance_m() const {
-  const size_t n = spec_.members.size();
+  const size_t n = participant_count();
   if (n < 2) {
     return 0.0;
   }
@@ -52,7 +78,7 @@ double GroupNavigation::member_personal_distance_m() const {
 }
 
 double GroupNavigation::cohesion_radius_m() const {
-  const size_t n = spec_.members.size();
+  const size_t n = participant_count();
   const double s = ospace_radius_m();
   if (n < 2) {
     return s;
@@ -69,43 +95,147 @@ void GroupNavigation::set_centre(const Eigen::Vector2d& centre) {
   spec_.centre = centre;
 }
 
+void GroupNavigation::add_member(model::ObjectId id) {
+  spec_.members.push_back(id);
+  formation_changed();
+}
+
 void GroupNavigation::remove_member(model::ObjectId id) {
   spec_.members.erase(std::remove(spec_.members.begin(), spec_.members.end(), id),
                       spec_.members.end());
+  formation_changed();
+}
+
+void GroupNavigation::set_arrangement(model::Arrangement arrangement,
+                                      std::optional<double> heading_rad) {
+  ARI_DCHECK(!heading_rad || std::isfinite(*heading_rad));
+  spec_.arrangement = arrangement;
+  spec_.heading_rad = heading_rad;
+  heading_rad_ = heading_rad;
+  arranged_size_ = spec_.members.size();
+  formation_changed();
+}
+
+void GroupNavigation::robot_join(model::ObjectId ari_id) {
+  robot_asked_to_join_ = true;
+  robot_asked_to_leave_ = false;
+  if (robot_joining_ != ari_id) {
+    robot_joining_ = ari_id;
+    formation_changed();
+  }
+}
+
+void GroupNavigation::robot_leave() {
+  robot_asked_to_join_ = false;
+  robot_asked_to_leave_ = true;
+  if (robot_joining_ != model::kNoObject) {
+    robot_joining_ = model::kNoObject;
+    formation_changed();
+  }
+}
+
+void GroupNavigation::update_robot_joining(const Simulation& simulation) {
+  const Ari* ari = simulation.ari();
+  model::ObjectId joining = model::kNoObject;
+  if (ari != nullptr) {
+    const Eigen::Vector2d to_centre = spec_.centre - ari->centre();
+    const double beyond_radius = to_centre.norm() - ospace_radius_m();
+    if (robot_asked_to_leave_ && beyond_radius > kRobotLeaveReachM) {
+      robot_asked_to_leave_ = false;
+    }
+    const double facing_off = std::abs(
+        core::angle_difference(std::atan2(to_centre.y(), to_centre.x()), ari->pose().theta));
+    const bool approaching = beyond_radius < kRobotJoinReachM && facing_off < kRobotJoinFacingRad;
+    const bool staying = robot_joining_ != model::kNoObject && beyond_radius < kRobotLeaveReachM;
+    if (robot_asked_to_join_ || (!robot_asked_to_leave_ && (approaching || staying))) {
+      joining = ari->id();
+    }
+  }
+  if (joining != robot_joining_) {
+    robot_joining_ = joining;
+    formation_changed();
+  }
+}
+
+void GroupNavigation::resolve_heading() {
+  // The bearing of where the members stand: the first member for a circle, the members' mean
+  // for rows (so that the rows form on the side they already are).
+  Eigen::Vector2d towards = Eigen::Vector2d::Zero();
+  const size_t used = kept_as_circle() ? 1 : spec_.members.size();
+  for (size_t i = 0; i < used && i < participant_positions_.size(); ++i) {
+    towards += participant_positions_[i] - spec_.centre;
+  }
+  heading_rad_ = towards.squaredNorm() > 1e-6 ? std::atan2(towards.y(), towards.x()) : 0.0;
 }
 
 void GroupNavigation::step(const StepContext& context) {
   Simulation& simulation = context.simulation;
-  member_positions_.clear();
+  update_robot_joining(simulation);
+  participant_positions_.clear();
   for (model::ObjectId id : spec_.members) {
-    member_positions_.push_back(simulation.find_human(id)->pose().position);
+    participant_positions_.push_back(simulation.find_human(id)->pose().position);
   }
+  if (robot_joining_ != model::kNoObject) {
+    participant_positions_.push_back(simulation.ari()->centre());
+  }
+  // Rows are laid out from a bearing; a formation that turns from a circle into rows again
+  // takes it anew from where the members stand, unless the spec fixed it.
+  const bool circle = kept_as_circle();
+  if (!heading_rad_ || (!spec_.heading_rad && !circle && was_circle_)) {
+    resolve_heading();
+  }
+  was_circle_ = circle;
+  if (circle) {
+    step_circle(context);
+  } else {
+    step_rows(context);
+  }
+}
+
+void GroupNavigation::outsiders_of(const Simulation& simulation, const Human& human,
+                                   const Eigen::Vector2d& p) {
+  simulation.agent_centres_near(p, human.spec().motion.personal_distance_m, &human, outsiders_,
+                                spec_.id);
+  if (robot_joining_ != model::kNoObject) {
+    // ARI joining is a participant: it keeps the members' spacing, not a stranger's distance.
+    const Eigen::Vector2d robot = simulation.ari()->centre();
+    outsiders_.erase(std::remove(outsiders_.begin(), outsiders_.end(), robot), outsiders_.end());
+  }
+}
+
+void GroupNavigation::others_than(size_t i) {
+  others_.clear();
+  for (size_t j = 0; j < participant_positions_.size(); ++j) {
+    if (j != i) {
+      others_.push_back(participant_positions_[j]);
+    }
+  }
+}
+
+void GroupNavigation::step_circle(const StepContext& context) {
+  Simulation& simulation = context.simulation;
   const double member_personal_distance = member_personal_distance_m();
-  const int group_size = static_cast<int>(spec_.members.size());
+  const int group_size = static_cast<int>(participant_count());
   const double cohesion_radius = cohesion_radius_m();
 
   for (size_t i = 0; i < spec_.members.size(); ++i) {
     Human& human = *simulation.mutable_human(spec_.members[i]);
     const HumanMotionParams& params = human.spec().motion;
-    const Eigen::Vector2d& p = member_positions_[i];
+    const Eigen::Vector2d& p = participant_positions_[i];
 
-    // Members inside the social space (eq. 3.13), and all other members (eq. 3.18).
+    // Participants inside the social space (eq. 3.13), and all other participants (eq. 3.18).
+    others_than(i);
     social_neighbours_.clear();
-    others_.clear();
-    for (size_t j = 0; j < member_positions_.size(); ++j) {
-      if (j == i) {
-        continue;
-      }
-      others_.push_back(member_positions_[j]);
-      if ((member_positions_[j] - p).norm() < spec_.social_distance_m) {
-        social_neighbours_.push_back(member_positions_[j]);
+    for (const Eigen::Vector2d& other : others_) {
+      if ((other - p).norm() < spec_.social_distance_m) {
+        social_neighbours_.push_back(other);
       }
     }
     // Agents outside the group keep the member's own personal distance.
-    simulation.agent_centres_near(p, params.personal_distance_m, &human, outsiders_, spec_.id);
+    outsiders_of(simulation, human, p);
 
-    // Eq. 3.9: repulsion (members at the group's spacing, others at the personal distance),
-    // equality and cohesion.
+    // Eq. 3.9: repulsion (participants at the group's spacing, others at the personal
+    // distance), equality and cohesion.
     const Eigen::Vector2d force =
         social_forces::repulsion_force(p, others_, member_personal_distance) +
         social_forces::repulsion_force(p, outsiders_, params.personal_distance_m) +
@@ -123,12 +253,66 @@ void GroupNavigation::step(const StepContext& context) {
       const Eigen::Vector2d to_centre = spec_.centre - p;
       turn = core::angle_difference(std::atan2(to_centre.y(), to_centre.x()), human.pose().theta);
     }
-    // Eq. 3.11-3.12.
-    HumanMotionParams group_params = params;
-    group_params.walking_speed_mps = spec_.step_speed_mps;
-    human.plan_motion(step_motion(force, group_params).velocity_mps,
-                      rotation_step(turn, params, context.dt_s));
+    move_member(human, force, turn, context.dt_s);
   }
+}
+
+void GroupNavigation::step_rows(const StepContext& context) {
+  Simulation& simulation = context.simulation;
+  const size_t n = participant_count();
+  FormationShape shape;
+  shape.arrangement = spec_.arrangement;
+  shape.centre = spec_.centre;
+  shape.heading_rad = *heading_rad_;
+  shape.radius_m = ospace_radius_m();
+  shape.shoulder_spacing_m = spec_.shoulder_spacing_m;
+  const std::vector<FormationSlot> slots = formation_slots(shape, n);
+  if (slots_stale_ || slot_of_.size() != n) {
+    std::vector<size_t> fixed;
+    if (robot_joining_ != model::kNoObject) {
+      fixed.push_back(n - 1);  // ARI takes the place nearest to it; the members the others
+    }
+    slot_of_ = assign_slots(participant_positions_, slots, fixed);
+    slots_stale_ = false;
+  }
+  // Members keep clear of one another within most of the closest two places' gap, so that
+  // they pass each other on the way to their places but do not push at them.
+  double closest_places = std::numeric_limits<double>::infinity();
+  for (size_t a = 0; a < slots.size(); ++a) {
+    for (size_t b = a + 1; b < slots.size(); ++b) {
+      closest_places = std::min(closest_places, (slots[a].position - slots[b].position).norm());
+    }
+  }
+  const double member_distance =
+      std::isfinite(closest_places) ? kRowSpacingShare * closest_places : 0.0;
+  for (size_t i = 0; i < spec_.members.size(); ++i) {
+    Human& human = *simulation.mutable_human(spec_.members[i]);
+    const Eigen::Vector2d& p = participant_positions_[i];
+    const FormationSlot& slot = slots[slot_of_[i]];
+    others_than(i);
+    outsiders_of(simulation, human, p);
+    // Cohesion toward the member's place (eq. 3.17 with the place for the o-space ring), and
+    // repulsion as in the circle.
+    const Eigen::Vector2d to_place = slot.position - p;
+    const Eigen::Vector2d force =
+        to_place + social_forces::repulsion_force(p, others_, member_distance) +
+        social_forces::repulsion_force(p, outsiders_, human.spec().motion.personal_distance_m);
+    // Far from the place the member faces where it walks; near it, the o-space.
+    const double facing = to_place.norm() > kFacePlaceWithinM
+                              ? std::atan2(to_place.y(), to_place.x())
+                              : slot.facing_rad;
+    move_member(human, force, core::angle_difference(facing, human.pose().theta), context.dt_s);
+  }
+}
+
+void GroupNavigation::move_member(Human& human, const Eigen::Vector2d& force, double turn_rad,
+                                  double dt_s) const {
+  // Eq. 3.11-3.12.
+  const HumanMotionParams& params = human.spec().motion;
+  HumanMotionParams group_params = params;
+  group_params.walking_speed_mps = spec_.step_speed_mps;
+  human.plan_motion(step_motion(force, group_params).velocity_mps,
+                    rotation_step(turn_rad, params, dt_s));
 }
 
 }  // namespace ari_social_sim::world

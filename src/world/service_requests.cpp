@@ -54,4 +54,11 @@ GazeModel GazeTargetsRequest::model() const {
   return model;
 }
 
+model::Arrangement requested_arrangement(const std::string& request, const std::string& text,
+                                         model::Arrangement unnamed) {
+  model::Arrangement arrangement = unnamed;
+  read_choice(RequestCheck(request), "arrangement", text, model::kArrangements, arrangement);
+  return arrangement;
+}
+
 }  // namespace ari_social_sim::world

@@ -421,6 +421,78 @@ void Simulation::set_group_centre(model::ObjectId group_id, const Eigen::Vector2
   group.set_centre(centre);
 }
 
+void Simulation::set_group_arrangement(model::ObjectId group_id, model::Arrangement arrangement,
+                                       std::optional<double> heading_rad) {
+  const RequestCheck check("set_group_arrangement");
+  GroupNavigation& group = existing_group(check, group_id);
+  if (heading_rad) {
+    check.heading("heading", *heading_rad);
+  }
+  group.set_arrangement(arrangement, heading_rad);
+}
+
+void Simulation::join_group(model::ObjectId group_id, model::ObjectId agent_id) {
+  const RequestCheck check("join_group");
+  GroupNavigation& group = existing_group(check, group_id);
+  Object& agent = existing_agent(check, "agent_id", agent_id);
+  if (agent.kind() == ObjectKind::kHuman) {
+    add_group_members(group_id, {agent_id});
+    return;
+  }
+  // ARI takes part in one formation at a time.
+  for (const std::unique_ptr<GroupNavigation>& other : groups_) {
+    if (other.get() != &group && other->robot_joining() == agent_id) {
+      other->robot_leave();
+    }
+  }
+  group.robot_join(agent_id);
+}
+
+void Simulation::leave_group(model::ObjectId agent_id) {
+  const RequestCheck check("leave_group");
+  Object& agent = existing_agent(check, "agent_id", agent_id);
+  if (agent.kind() == ObjectKind::kAri) {
+    bool joined = false;
+    for (const std::unique_ptr<GroupNavigation>& group : groups_) {
+      if (group->robot_joining() == agent_id) {
+        group->robot_leave();
+        joined = true;
+      }
+    }
+    if (!joined) {
+      check.fail("agent_id", "an agent in a group", "ARI, who is in none");
+    }
+    return;
+  }
+  Human& human = static_cast<Human&>(agent);
+  const GroupNavigation* group = find_group(human.group_id());
+  if (group == nullptr) {
+    check.fail("agent_id", "an agent in a group",
+               "human " + std::to_string(agent_id) + ", who is in none");
+  }
+  const Eigen::Vector2d from_centre = human.pose().position - group->centre();
+  const Eigen::Vector2d outward = from_centre.squaredNorm() > 1e-12
+                                      ? Eigen::Vector2d(from_centre.normalized())
+                                      : Eigen::Vector2d(-human.pose().heading());
+  const core::Pose2 step_out{human.pose().position + kLeaveStepM * outward,
+                             std::atan2(outward.y(), outward.x())};
+  release_from_group(human);
+  // Out of the formation where there is room; a member hemmed in by a wall stays and turns.
+  bool room = world_.contains(step_out.position);
+  if (room) {
+    try {
+      check_placement(*human.body()->GetFixtureList()->GetShape(), step_out, &human, "");
+    } catch (const core::RequestError&) {
+      room = false;
+    }
+  }
+  if (room) {
+    human.set_goal(step_out);
+  } else {
+    human.stop();
+  }
+}
+
 Human& Simulation::existing_human(const RequestCheck& check, model::ObjectId human_id) {
   Human* human = mutable_human(human_id);
   if (human == nullptr) {

@@ -60,8 +60,9 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     snapshot.humans.push_back(std::move(h));
   }
   for (const GroupNavigation* group : simulation.groups()) {
-    snapshot.groups.push_back(
-        {group->id(), group->members(), group->centre(), group->ospace_radius_m()});
+    snapshot.groups.push_back({group->id(), group->members(), group->centre(),
+                               group->ospace_radius_m(), group->arrangement(),
+                               group->heading_rad().value_or(0.0), group->robot_joining()});
   }
   return snapshot;
 }

@@ -195,6 +195,11 @@ class LiveChain {
     void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) override {
       chain_.world_->set_group_centre(group, centre);
     }
+    void set_group_arrangement(model::ObjectId group, model::Arrangement arrangement,
+                               std::optional<double> heading_rad) override {
+      chain_.world_->set_group_arrangement(group, arrangement, heading_rad);
+    }
+    void leave_group(model::ObjectId agent) override { chain_.world_->leave_group(agent); }
 
    private:
     LiveChain& chain_;

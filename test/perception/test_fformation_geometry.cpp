@@ -81,7 +81,7 @@ TEST(FformationGeometry, RecordedGroupsSpreadAsPrinted) {
           members.push_back({id, found->x / 100.0, found->y / 100.0, found->theta});
         }
         const FormationGeometry geometry = formation_geometry(members, set.stride_cm / 100.0);
-        Spread& spread = spreads[{ids.size(), arrangement_name(geometry.arrangement)}];
+        Spread& spread = spreads[{ids.size(), model::to_string(geometry.arrangement)}];
         ++spread.groups;
         spread.centre_m.insert(spread.centre_m.end(), geometry.centre_distances.begin(),
                                geometry.centre_distances.end());

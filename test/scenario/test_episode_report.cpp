@@ -21,6 +21,8 @@ class NoCommands : public Commands {
   void create_group(const world::GroupSpec&) override {}
   void add_group_members(model::ObjectId, const std::vector<model::ObjectId>&) override {}
   void set_group_centre(model::ObjectId, const Eigen::Vector2d&) override {}
+  void set_group_arrangement(model::ObjectId, model::Arrangement, std::optional<double>) override {}
+  void leave_group(model::ObjectId) override {}
 };
 
 // test/integration/scenario_humans.yaml from 2 s of sim time to 5.5 s: Ana walks (state walk).

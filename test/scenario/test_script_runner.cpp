@@ -41,6 +41,11 @@ class RecordingCommands : public Commands {
   void set_group_centre(model::ObjectId group, const Eigen::Vector2d&) override {
     record("centre " + std::to_string(group));
   }
+  void set_group_arrangement(model::ObjectId group, model::Arrangement arrangement,
+                             std::optional<double>) override {
+    record("arrangement " + std::to_string(group) + " " + model::to_string(arrangement));
+  }
+  void leave_group(model::ObjectId agent) override { record("leave " + std::to_string(agent)); }
 
  private:
   void record(const std::string& line) {

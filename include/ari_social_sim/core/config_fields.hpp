@@ -98,6 +98,17 @@ const char* choice_name(E value, const Choices& choices) {
   return "";
 }
 
+/// True when `text` names one of `choices`.
+template <class Choices>
+bool names_a_choice(const std::string& text, const Choices& choices) {
+  for (const auto& choice : choices) {
+    if (text == choice.name) {
+      return true;
+    }
+  }
+  return false;
+}
+
 /// The value `text` names among `choices`. Throws ConfigError naming `field` and the choices.
 template <class Choices>
 auto parse_choice(const std::string& text, const Choices& choices, const std::string& field) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 
 // The shape of one conversational group, for comparing the world's groups with recorded ones
@@ -11,11 +12,7 @@
 
 namespace ari_social_sim::perception {
 
-/// Kendon's F-formation arrangements (D6.4 figure 3.5): two people facing each other, at a right
-/// angle, or shoulder to shoulder; three or more around a shared o-space.
-enum class Arrangement { kVisAVis, kLShape, kSideBySide, kCircle };
-
-const char* arrangement_name(Arrangement arrangement);
+using model::Arrangement;
 
 /// One group's geometry: the o-space centre as GCFF places it (each member's point `stride` ahead
 /// of them, averaged), each member's distance to it and how far their facing turns away from it,

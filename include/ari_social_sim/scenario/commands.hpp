@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ class Commands {
   virtual void add_group_members(model::ObjectId group,
                                  const std::vector<model::ObjectId>& members) = 0;
   virtual void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) = 0;
+  virtual void set_group_arrangement(model::ObjectId group, model::Arrangement arrangement,
+                                     std::optional<double> heading_rad) = 0;
+  /// A human or ARI leaves its group (/sim/leave_group).
+  virtual void leave_group(model::ObjectId agent) = 0;
 };
 
 }  // namespace ari_social_sim::scenario

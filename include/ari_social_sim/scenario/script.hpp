@@ -106,6 +106,19 @@ struct AddGroupMembersAction {
   std::vector<model::ObjectId> members;
 };
 
+/// A human or ARI leaves its group (/sim/leave_group): a human steps out of the formation and the
+/// others close the gap; ARI is no longer counted in it.
+struct LeaveGroupAction {
+  AgentRef who;
+};
+
+/// A group takes another arrangement (/sim/set_group_arrangement).
+struct SetGroupArrangementAction {
+  model::ObjectId group{model::kNoObject};
+  model::Arrangement arrangement{model::Arrangement::kCircle};
+  std::optional<double> heading_rad;
+};
+
 struct SetGroupCentreAction {
   model::ObjectId group{model::kNoObject};
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
@@ -125,7 +138,8 @@ struct StopAction {
 using Action =
     std::variant<SayAction, SetGoalAction, ApproachAction, JoinGroupAction, CancelNavigationAction,
                  AddHumanAction, RemoveHumanAction, CreateGroupAction, AddGroupMembersAction,
-                 SetGroupCentreAction, ConverseAction, StopAction>;
+                 SetGroupCentreAction, LeaveGroupAction, SetGroupArrangementAction, ConverseAction,
+                 StopAction>;
 
 // ---- The state machine ----
 

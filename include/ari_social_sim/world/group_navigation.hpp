@@ -1,12 +1,16 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/number_text.hpp"
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/model/object_id.hpp"
+#include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/object.hpp"
 
 namespace ari_social_sim::world {
@@ -43,6 +47,16 @@ struct GroupSpec {
   /// script's properties). Faster than walking alone, so members settle within ~30 s; each step is
   /// still capped at the member's max_speed.
   double step_speed_mps{2.0};
+  /// Kendon's arrangement the members keep (docs/world.md "Arrangements"). A circle is kept by
+  /// D6.4's forces; the others by a place for each member in rows around the o-space.
+  model::Arrangement arrangement{model::Arrangement::kCircle};
+  /// Bearing (rad, map frame) of the first row from the o-space centre; unset = from where the
+  /// members stand when the group forms.
+  std::optional<double> heading_rad;
+  /// m between neighbours standing shoulder to shoulder in one row (side-by-side, and the rows
+  /// of larger vis-a-vis and L groups). Recorded side-by-side pairs stand 0.40-1.19 m apart,
+  /// median 0.61 (docs/perception_gcff.md).
+  double shoulder_spacing_m{0.65};
 
   /// A group as a scene file's `groups` entry writes it (config_fields.hpp).
   template <class V>
@@ -75,6 +89,15 @@ struct GroupSpec {
            core::number_text(spacing_factor));
     v.field("step_speed", step_speed_mps, "m/s per unit force: the group's step length eta / step",
             core::positive());
+    v.choice("arrangement", arrangement, "F-formation the members keep", model::kArrangements);
+    v.field("heading", heading_rad,
+            "rad, bearing of the first row from the o-space centre; unset = from where the "
+            "members stand",
+            core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad));
+    v.field("shoulder_spacing", shoulder_spacing_m,
+            "m between neighbours side by side in one row (side-by-side, larger vis-a-vis and "
+            "L groups)",
+            {0.0, kMaxOspaceRadiusM, true});
   }
 
   /// True when a human appears twice in `members`.
@@ -87,8 +110,25 @@ struct GroupSpec {
   void validate() const;
 };
 
-/// D6.4 §3.4.1 GroupNavigation script: moves its members with repulsion, equality and cohesion
-/// forces (eq. 3.9-3.18) into a circular F-formation around the o-space centre. The simulation
+/// How near (m) beyond its o-space radius ARI must come, facing the o-space centre, for a group to
+/// open a place for it, and how far beyond it ARI must go again for the group to close it.
+constexpr double kRobotJoinReachM = 1.5;
+constexpr double kRobotLeaveReachM = 2.5;
+/// ARI faces the o-space centre when its heading is within this angle (rad, 45 deg) of it.
+constexpr double kRobotJoinFacingRad = 0.7853981633974483;
+
+/// In rows, members repel one another within this share of the closest two places' distance.
+constexpr double kRowSpacingShare = 0.85;
+/// A member farther than this (m) from its place in a row faces where it walks.
+constexpr double kFacePlaceWithinM = 0.5;
+
+/// D6.4 §3.4.1 GroupNavigation script: moves its members into an F-formation around the o-space
+/// centre and keeps it. A circle is kept with D6.4's repulsion, equality and cohesion forces
+/// (eq. 3.9-3.18); vis-a-vis, l-shape and side-by-side give each member a place in rows
+/// (formation_layout.hpp) that a cohesion force toward the place holds, with the same
+/// repulsion. The formation counts its participants: the members, and ARI while it joins
+/// (when it comes within kRobotJoinReachM of the p-space facing the centre, or when asked to
+/// join), so that the members open a place for it and close it when it leaves. The simulation
 /// steps each group after the sensors (D6.4's scripts).
 class GroupNavigation {
  public:
@@ -99,7 +139,18 @@ class GroupNavigation {
   model::ObjectId id() const { return spec_.id; }
   const std::vector<model::ObjectId>& members() const { return spec_.members; }
   const Eigen::Vector2d& centre() const { return spec_.centre; }
-  /// s (m) in use: the configured radius or the one derived from the member count.
+  /// The arrangement kept now: the configured one, except that a vis-a-vis or L group joined by
+  /// more participants than it was formed with becomes a circle (D6.4 §3.4.2: a third person
+  /// turns an L into a circle), and a circle of two stands vis-a-vis.
+  model::Arrangement arrangement() const;
+  /// Bearing (rad) of the first row from the centre; unset until the group first steps when the
+  /// spec left it to the members' places.
+  const std::optional<double>& heading_rad() const { return heading_rad_; }
+  /// ARI while it takes part in the formation (joining or joined), else kNoObject.
+  model::ObjectId robot_joining() const { return robot_joining_; }
+  /// Members, plus ARI while it joins.
+  size_t participant_count() const;
+  /// s (m) in use: the configured radius or the one derived from the participant count.
   double ospace_radius_m() const;
   /// Delta_p (m) between members: spacing_factor x chord of evenly spaced members on the circle.
   double member_personal_distance_m() const;
@@ -107,18 +158,50 @@ class GroupNavigation {
   /// members' mutual repulsion at even spacing, so that the formation settles on s itself.
   double cohesion_radius_m() const;
 
-  void add_member(model::ObjectId id) { spec_.members.push_back(id); }
+  void add_member(model::ObjectId id);
   void remove_member(model::ObjectId id);
   /// Expects a finite centre: requests are checked by Simulation::set_group_centre.
   void set_centre(const Eigen::Vector2d& centre);
+  /// A new arrangement for the present members; an unset heading is taken again from where
+  /// they stand. Expects a finite heading: requests are checked by Simulation.
+  void set_arrangement(model::Arrangement arrangement, std::optional<double> heading_rad);
+  /// ARI asked to join (kept until robot_leave) or to leave (and not counted again until it has
+  /// gone kRobotLeaveReachM away).
+  void robot_join(model::ObjectId ari_id);
+  void robot_leave();
 
   /// Radius (m) at which `member_count` evenly spaced members stand `spacing_m` apart:
   /// spacing = 2 s sin(pi / n), never below `min_radius_m`.
   static double ospace_radius_for(size_t member_count, double spacing_m, double min_radius_m);
 
  private:
+  // Whether ARI takes part this step: asked to, or near and facing the centre (hysteresis
+  // between kRobotJoinReachM and kRobotLeaveReachM).
+  void update_robot_joining(const Simulation& simulation);
+  void resolve_heading();
+  // True while D6.4's forces keep a circle: configured so, or a dyad's arrangement outgrown.
+  bool kept_as_circle() const;
+  void step_circle(const StepContext& context);
+  void step_rows(const StepContext& context);
+  // Fills others_ with every participant but the i-th, outsiders_ with the agents near `p`
+  // outside the formation.
+  void others_than(size_t i);
+  void outsiders_of(const Simulation& simulation, const Human& human, const Eigen::Vector2d& p);
+  void move_member(Human& human, const Eigen::Vector2d& force, double turn_rad, double dt_s) const;
+  // The participants changed: places are dealt again.
+  void formation_changed() { slots_stale_ = true; }
+
   GroupSpec spec_;
-  std::vector<Eigen::Vector2d> member_positions_;  // scratch
+  // The member count the arrangement was set for (a dyad's arrangement grows into a circle).
+  size_t arranged_size_{0};
+  std::optional<double> heading_rad_;
+  model::ObjectId robot_joining_{model::kNoObject};
+  bool robot_asked_to_join_{false};
+  bool robot_asked_to_leave_{false};
+  bool slots_stale_{true};
+  bool was_circle_{true};
+  std::vector<size_t> slot_of_;                         // per participant (members, then ARI)
+  std::vector<Eigen::Vector2d> participant_positions_;  // scratch
   std::vector<Eigen::Vector2d> social_neighbours_;
   std::vector<Eigen::Vector2d> others_;
   std::vector<Eigen::Vector2d> outsiders_;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/human.hpp"
 
@@ -39,5 +40,12 @@ struct GazeTargetsRequest {
   /// `set_gaze_targets: probabilities: expected one per target (2), got 1`.
   GazeModel model() const;
 };
+
+/// The arrangement a service names in its `arrangement` field (/sim/create_group,
+/// /sim/set_group_arrangement): empty gives `unnamed`. Throws core::RequestError for another
+/// name, e.g. `create_group: arrangement: expected circle, vis-a-vis, l-shape or side-by-side, got
+/// 'line'`.
+model::Arrangement requested_arrangement(const std::string& request, const std::string& text,
+                                         model::Arrangement unnamed);
 
 }  // namespace ari_social_sim::world

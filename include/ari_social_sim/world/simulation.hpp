@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -24,6 +25,8 @@ namespace ari_social_sim::world {
 
 /// Most humans one world may hold (spawn requests beyond it are refused; scene files likewise).
 constexpr size_t kMaxHumans = 1000;
+/// How far (m) a human leaving its group steps back out of the formation.
+constexpr double kLeaveStepM = 1.2;
 /// The smallest id a human spawned without one gets: smaller ones are left to ARI (1) and to the
 /// people of hand-written scenes.
 constexpr model::ObjectId kFirstAutomaticHumanId = 10;
@@ -106,6 +109,19 @@ class Simulation {
   /// Installs or replaces a human's gaze model (/sim/set_gaze_targets). Throws for an unknown id,
   /// an invalid model (GazeModel::validate), or a target that is not another object of the world.
   void set_human_gaze(model::ObjectId human_id, const GazeModel& model);
+  /// Gives a group a new arrangement, its rows at `heading_rad` (unset: from where the members
+  /// stand) (/sim/set_group_arrangement). Throws for an unknown group or a non-finite heading.
+  void set_group_arrangement(model::ObjectId group_id, model::Arrangement arrangement,
+                             std::optional<double> heading_rad);
+  /// A human or ARI joins a group (/sim/join_group): a human becomes a member (leaving any other
+  /// group) and walks to the place the others open; ARI is counted in the formation, so the
+  /// members open a place for it, until it leaves. Throws for an unknown group or agent.
+  void join_group(model::ObjectId group_id, model::ObjectId agent_id);
+  /// A human or ARI leaves its group (/sim/leave_group): a human steps back out of the
+  /// formation (kLeaveStepM farther from the centre, if that place is free; otherwise it stands)
+  /// and the others close the gap; ARI is no longer counted, nor counted again until it has gone
+  /// away. Throws for an unknown agent or one in no group.
+  void leave_group(model::ObjectId agent_id);
   /// Moves a group's o-space centre (/sim/set_group_centre). Throws for an unknown group or a
   /// centre off the floor.
   void set_group_centre(model::ObjectId group_id, const Eigen::Vector2d& centre);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/world/human.hpp"
@@ -65,6 +66,9 @@ struct GroupSnapshot {
   std::vector<model::ObjectId> members;
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
   double ospace_radius_m{0.0};
+  model::Arrangement arrangement{model::Arrangement::kCircle};  // as kept now
+  double heading_rad{0.0};                          // bearing of the first row from the centre
+  model::ObjectId robot_joining{model::kNoObject};  // ARI while the members make room for it
 };
 
 /// Every agent's ground truth after a step, as plain data: what /sim/world_state carries and what

@@ -111,7 +111,9 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
     b.circle("groups/ospace", static_cast<int>(g.id), g.centre.x(), g.centre.y(), 0.02,
              g.ospace_radius_m, 0.03, rgba(1.0f, 0.6f, 0.0f, 0.9f));
     b.text("groups/label", static_cast<int>(g.id), g.centre.x(), g.centre.y(), 0.3,
-           "group " + std::to_string(g.id), 0.15, rgba(1.0f, 0.6f, 0.0f));
+           "group " + std::to_string(g.id) + " (" + model::to_string(g.arrangement) +
+               (g.robot_joining != model::kNoObject ? ", ARI joining)" : ")"),
+           0.15, rgba(1.0f, 0.6f, 0.0f));
   }
   return array;
 }

@@ -99,6 +99,9 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     g.centre.x = group.centre.x();
     g.centre.y = group.centre.y();
     g.ospace_radius = group.ospace_radius_m;
+    g.arrangement = model::to_string(group.arrangement);
+    g.heading = group.heading_rad;
+    g.robot_joining = group.robot_joining;
     msg.groups.push_back(std::move(g));
   }
   return msg;
@@ -158,7 +161,15 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
     snapshot.humans.push_back(std::move(human));
   }
   for (const GroupState& g : msg.groups) {
-    snapshot.groups.push_back({g.id, g.members, {g.centre.x, g.centre.y}, g.ospace_radius});
+    // input_problem refuses an unknown arrangement before a message gets here.
+    snapshot.groups.push_back(
+        {g.id,
+         g.members,
+         {g.centre.x, g.centre.y},
+         g.ospace_radius,
+         core::parse_choice(g.arrangement, model::kArrangements, "arrangement"),
+         g.heading,
+         g.robot_joining});
   }
   return snapshot;
 }
@@ -247,6 +258,11 @@ std::optional<InputProblem> input_problem(const WorldState& msg) {
     check.finite(field + ".centre.x", msg.groups[i].centre.x);
     check.finite(field + ".centre.y", msg.groups[i].centre.y);
     check.finite(field + ".ospace_radius", msg.groups[i].ospace_radius);
+    check.finite(field + ".heading", msg.groups[i].heading);
+    check.that(
+        core::names_a_choice(msg.groups[i].arrangement, model::kArrangements),
+        field + ".arrangement",
+        "'" + msg.groups[i].arrangement + "', not " + core::choice_names(model::kArrangements));
   }
   return check.result();
 }

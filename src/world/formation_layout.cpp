@@ -1,0 +1,155 @@
+#include "ari_social_sim/world/formation_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "ari_social_sim/core/angles.hpp"
+
+namespace ari_social_sim::world {
+namespace {
+
+using model::Arrangement;
+
+// Exhaustive matching is exact and cheap up to this many movable participants (7! orders).
+constexpr size_t kMaxExhaustiveParticipants = 7;
+
+Eigen::Vector2d unit(double angle) {
+  return {std::cos(angle), std::sin(angle)};
+}
+
+// A row at `bearing` from the centre, its members facing back across the o-space. `along` is
+// the direction the row grows in from its first place, `first_offset` (in spacings) where along
+// it the first member stands.
+void add_row(const FormationShape& shape, double bearing, size_t members, double first_offset,
+             const Eigen::Vector2d& along, std::vector<FormationSlot>& slots) {
+  const Eigen::Vector2d row_centre = shape.centre + shape.radius_m * unit(bearing);
+  for (size_t j = 0; j < members; ++j) {
+    const double offset = (first_offset + static_cast<double>(j)) * shape.shoulder_spacing_m;
+    slots.push_back({row_centre + offset * along, core::wrap_angle(bearing + core::kPi)});
+  }
+}
+
+double squared_walk(const Eigen::Vector2d& from, const FormationSlot& slot) {
+  return (slot.position - from).squaredNorm();
+}
+
+}  // namespace
+
+std::vector<FormationSlot> formation_slots(const FormationShape& shape, size_t count) {
+  std::vector<FormationSlot> slots;
+  slots.reserve(count);
+  const double phi = shape.heading_rad;
+  const size_t first_row = (count + 1) / 2;
+  const size_t second_row = count - first_row;
+  // Rows are centred on their bearing, except the L's, which grow away from their shared corner.
+  auto centred = [](size_t members) { return -0.5 * static_cast<double>(members - 1); };
+  switch (shape.arrangement) {
+    case Arrangement::kCircle:
+      for (size_t k = 0; k < count; ++k) {
+        const double bearing = phi + 2.0 * core::kPi * static_cast<double>(k) / count;
+        add_row(shape, bearing, 1, 0.0, Eigen::Vector2d::Zero(), slots);
+      }
+      break;
+    case Arrangement::kVisAVis:
+      add_row(shape, phi, first_row, centred(first_row), unit(phi + core::kPi / 2), slots);
+      if (second_row > 0) {
+        add_row(shape, phi + core::kPi, second_row, centred(second_row), unit(phi + core::kPi / 2),
+                slots);
+      }
+      break;
+    case Arrangement::kLShape:
+      add_row(shape, phi, first_row, 0.0, unit(phi - core::kPi / 2), slots);
+      if (second_row > 0) {
+        add_row(shape, phi + core::kPi / 2, second_row, 0.0, unit(phi + core::kPi), slots);
+      }
+      break;
+    case Arrangement::kSideBySide:
+      add_row(shape, phi, count, centred(count), unit(phi + core::kPi / 2), slots);
+      break;
+  }
+  return slots;
+}
+
+double row_distance_for(Arrangement arrangement, double member_spacing_m) {
+  return arrangement == Arrangement::kLShape ? member_spacing_m / std::sqrt(2.0)
+                                             : 0.5 * member_spacing_m;
+}
+
+std::vector<size_t> assign_slots(const std::vector<Eigen::Vector2d>& positions,
+                                 const std::vector<FormationSlot>& slots,
+                                 const std::vector<size_t>& fixed) {
+  const size_t n = positions.size();
+  std::vector<size_t> slot_of(n, 0);
+  std::vector<bool> slot_taken(slots.size(), false);
+  std::vector<bool> placed(n, false);
+  auto nearest_free = [&](const Eigen::Vector2d& from) {
+    size_t best = slots.size();
+    for (size_t s = 0; s < slots.size(); ++s) {
+      if (!slot_taken[s] && (best == slots.size() ||
+                             squared_walk(from, slots[s]) < squared_walk(from, slots[best]))) {
+        best = s;
+      }
+    }
+    return best;
+  };
+  for (size_t i : fixed) {
+    slot_of[i] = nearest_free(positions[i]);
+    slot_taken[slot_of[i]] = true;
+    placed[i] = true;
+  }
+  std::vector<size_t> movers, free_slots;
+  for (size_t i = 0; i < n; ++i) {
+    if (!placed[i]) {
+      movers.push_back(i);
+    }
+  }
+  for (size_t s = 0; s < slots.size(); ++s) {
+    if (!slot_taken[s]) {
+      free_slots.push_back(s);
+    }
+  }
+  if (movers.size() <= kMaxExhaustiveParticipants) {
+    // Every order of the free slots, the first of equal cost kept: deterministic.
+    std::vector<size_t> order = free_slots;
+    std::vector<size_t> best = order;
+    double best_cost = std::numeric_limits<double>::infinity();
+    do {
+      double cost = 0.0;
+      for (size_t k = 0; k < movers.size(); ++k) {
+        cost += squared_walk(positions[movers[k]], slots[order[k]]);
+      }
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = order;
+      }
+    } while (std::next_permutation(order.begin(), order.end()));
+    for (size_t k = 0; k < movers.size(); ++k) {
+      slot_of[movers[k]] = best[k];
+    }
+    return slot_of;
+  }
+  // Large groups: repeatedly the closest participant and free slot.
+  while (!movers.empty()) {
+    size_t best_mover = 0;
+    size_t best_slot = 0;
+    double best_cost = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < movers.size(); ++k) {
+      for (size_t s : free_slots) {
+        const double cost = squared_walk(positions[movers[k]], slots[s]);
+        if (cost < best_cost) {
+          best_cost = cost;
+          best_mover = k;
+          best_slot = s;
+        }
+      }
+    }
+    slot_of[movers[best_mover]] = best_slot;
+    movers.erase(movers.begin() + best_mover);
+    free_slots.erase(std::find(free_slots.begin(), free_slots.end(), best_slot));
+  }
+  return slot_of;
+}
+
+}  // namespace ari_social_sim::world
