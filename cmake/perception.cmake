@@ -104,6 +104,7 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_track_ids.cpp
       test/perception/test_transient_ids.cpp
       test/perception/test_visibility.cpp
+      test/perception/test_world_formations.cpp
     LIBRARIES ari_perception)
   target_compile_definitions(test_perception PRIVATE
     ARI_FFORMATION_DIR="${ari_fformation_dir}"

@@ -29,6 +29,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_agent_grid.cpp
       test/world/test_crowd_scene.cpp
       test/world/test_gaze_generator.cpp
+      test/world/test_group_arrangements.cpp
       test/world/test_group_navigation.cpp
       test/world/test_map_sensor.cpp
       test/world/test_request_check.cpp

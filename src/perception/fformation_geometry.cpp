@@ -1,5 +1,6 @@
 #include "ari_social_sim/perception/fformation_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ari_social_sim/core/angles.hpp"
@@ -18,14 +19,21 @@ Eigen::Vector2d facing(const GcffPerson& person) {
 }  // namespace
 
 Arrangement classify_arrangement(const std::vector<GcffPerson>& members) {
+  // Shoulder to shoulder: every two facings within 45 degrees.
+  double widest = 0.0;
+  for (size_t i = 0; i < members.size(); ++i) {
+    for (size_t j = i + 1; j < members.size(); ++j) {
+      widest =
+          std::max(widest, std::abs(core::angle_difference(members[i].theta, members[j].theta)));
+    }
+  }
+  if (widest <= 0.25 * M_PI) {
+    return Arrangement::kSideBySide;
+  }
   if (members.size() != 2) {
     return Arrangement::kCircle;
   }
-  const double apart = std::abs(core::angle_difference(members[0].theta, members[1].theta));
-  if (apart >= 0.75 * M_PI) {
-    return Arrangement::kVisAVis;
-  }
-  return apart <= 0.25 * M_PI ? Arrangement::kSideBySide : Arrangement::kLShape;
+  return widest >= 0.75 * M_PI ? Arrangement::kVisAVis : Arrangement::kLShape;
 }
 
 FormationGeometry formation_geometry(const std::vector<GcffPerson>& members, double stride) {

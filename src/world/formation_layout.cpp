@@ -19,15 +19,21 @@ Eigen::Vector2d unit(double angle) {
   return {std::cos(angle), std::sin(angle)};
 }
 
-// A row at `bearing` from the centre, its members facing back across the o-space. `along` is
-// the direction the row grows in from its first place, `first_offset` (in spacings) where along
-// it the first member stands.
+// A row at `bearing` from the centre. `along` is the direction the row grows in from its first
+// place, `first_offset` (in spacings) where along it the first member stands. Members of a
+// side-by-side row face the same way, back across their bearing; in a conversation (vis-a-vis,
+// L) each turns to the o-space centre, as people at the ends of a row do.
 void add_row(const FormationShape& shape, double bearing, size_t members, double first_offset,
              const Eigen::Vector2d& along, std::vector<FormationSlot>& slots) {
   const Eigen::Vector2d row_centre = shape.centre + shape.radius_m * unit(bearing);
   for (size_t j = 0; j < members; ++j) {
     const double offset = (first_offset + static_cast<double>(j)) * shape.shoulder_spacing_m;
-    slots.push_back({row_centre + offset * along, core::wrap_angle(bearing + core::kPi)});
+    const Eigen::Vector2d place = row_centre + offset * along;
+    const Eigen::Vector2d to_centre = shape.centre - place;
+    const double facing = shape.arrangement == model::Arrangement::kSideBySide
+                              ? core::wrap_angle(bearing + core::kPi)
+                              : std::atan2(to_centre.y(), to_centre.x());
+    slots.push_back({place, facing});
   }
 }
 

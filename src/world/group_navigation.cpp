@@ -10,12 +10,20 @@
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
+#include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/social_forces.hpp"
 #include "ari_social_sim/world/step_motion.hpp"
 
 namespace ari_social_sim::world {
+namespace {
+
+// First random stream of the members' stances: far above any object id, which the humans' own
+// streams use.
+constexpr uint64_t kStanceStreams = uint64_t{1} << 48;
+
+}  // namespace
 
 bool GroupSpec::lists_a_member_twice() const {
   return std::set<model::ObjectId>(members.begin(), members.end()).size() != members.size();
@@ -186,6 +194,7 @@ void GroupNavigation::step(const StepContext& context) {
   }
   was_circle_ = circle;
   if (circle) {
+    places_.clear();
     step_circle(context);
   } else {
     step_rows(context);
@@ -246,12 +255,15 @@ void GroupNavigation::step_circle(const StepContext& context) {
     const Eigen::Vector2d facing = social_forces::equality_orientation(p, social_neighbours_) +
                                    social_forces::cohesion_orientation(p, others_);
     double turn = 0.0;
+    const double stance = stance_rad(simulation.config().seed, spec_.members[i]);
     if (facing.squaredNorm() > 1e-12) {
-      turn = core::angle_difference(std::atan2(facing.y(), facing.x()), human.pose().theta);
+      turn =
+          core::angle_difference(std::atan2(facing.y(), facing.x()) + stance, human.pose().theta);
     } else if ((spec_.centre - p).squaredNorm() > 1e-12) {
       // A lone member faces the o-space centre.
       const Eigen::Vector2d to_centre = spec_.centre - p;
-      turn = core::angle_difference(std::atan2(to_centre.y(), to_centre.x()), human.pose().theta);
+      turn = core::angle_difference(std::atan2(to_centre.y(), to_centre.x()) + stance,
+                                    human.pose().theta);
     }
     move_member(human, force, turn, context.dt_s);
   }
@@ -274,6 +286,10 @@ void GroupNavigation::step_rows(const StepContext& context) {
     }
     slot_of_ = assign_slots(participant_positions_, slots, fixed);
     slots_stale_ = false;
+  }
+  places_.clear();
+  for (size_t k = 0; k < n; ++k) {
+    places_.push_back(slots[slot_of_[k]]);
   }
   // Members keep clear of one another within most of the closest two places' gap, so that
   // they pass each other on the way to their places but do not push at them.
@@ -298,11 +314,21 @@ void GroupNavigation::step_rows(const StepContext& context) {
         to_place + social_forces::repulsion_force(p, others_, member_distance) +
         social_forces::repulsion_force(p, outsiders_, human.spec().motion.personal_distance_m);
     // Far from the place the member faces where it walks; near it, the o-space.
-    const double facing = to_place.norm() > kFacePlaceWithinM
-                              ? std::atan2(to_place.y(), to_place.x())
-                              : slot.facing_rad;
+    const double facing =
+        to_place.norm() > kFacePlaceWithinM
+            ? std::atan2(to_place.y(), to_place.x())
+            : slot.facing_rad + stance_rad(simulation.config().seed, spec_.members[i]);
     move_member(human, force, core::angle_difference(facing, human.pose().theta), context.dt_s);
   }
+}
+
+double GroupNavigation::stance_rad(uint64_t seed, model::ObjectId member) const {
+  if (spec_.facing_spread_deg <= 0.0) {
+    return 0.0;
+  }
+  // A stream of its own per (group, member), apart from the humans' own streams (their ids).
+  const uint64_t stream = kStanceStreams + (static_cast<uint64_t>(spec_.id) << 24) + member;
+  return core::Rng::for_stream(seed, stream).normal(0.0, core::deg_to_rad(spec_.facing_spread_deg));
 }
 
 void GroupNavigation::move_member(Human& human, const Eigen::Vector2d& force, double turn_rad,

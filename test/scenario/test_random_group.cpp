@@ -26,7 +26,9 @@ TEST(RandomGroup, MembersStandEvenlyOnTheOspaceCircleFacingTheCentre) {
   const size_t n = g.humans.size();
   ASSERT_GE(n, 2u);
   ASSERT_LE(n, 5u);
-  const double radius_m = world::GroupNavigation::ospace_radius_for(n, 1.1, 0.6);
+  const world::GroupSpec defaults;
+  const double radius_m = world::GroupNavigation::ospace_radius_for(n, defaults.member_spacing_m,
+                                                                    defaults.min_ospace_radius_m);
   for (size_t k = 0; k < n; ++k) {
     const world::HumanSpec& h = g.humans[k];
     EXPECT_EQ(h.id, 20u + k);

@@ -28,8 +28,9 @@ struct FormationGeometry {
 /// Precondition: at least two members, stride > 0.
 FormationGeometry formation_geometry(const std::vector<GcffPerson>& members, double stride);
 
-/// Two people: vis-a-vis when their facings are at least 135 degrees apart, side-by-side within
-/// 45 degrees, L-shape between; three or more: a circle.
+/// Side-by-side when every two members' facings are within 45 degrees; otherwise two people are
+/// vis-a-vis when their facings are at least 135 degrees apart and an L-shape between, and three
+/// or more form a circle.
 Arrangement classify_arrangement(const std::vector<GcffPerson>& members);
 
 }  // namespace ari_social_sim::perception

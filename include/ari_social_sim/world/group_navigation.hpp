@@ -21,6 +21,8 @@ class Human;
 constexpr size_t kMaxGroupMembers = 50;
 /// Largest o-space radius and member spacing (m) a group may be given.
 constexpr double kMaxOspaceRadiusM = 10.0;
+/// Largest facing_spread (deg): beyond it members would no longer face their o-space.
+constexpr double kMaxFacingSpreadDeg = 45.0;
 /// spacing_factor stays below this, under the golden ratio: in a group of five, neighbours two
 /// places apart stand 1.618 chords apart and must not repel each other.
 constexpr double kMaxSpacingFactor = 1.6;
@@ -34,8 +36,8 @@ struct GroupSpec {
   /// s (m); 0 = derived from the member count so that members stand `member_spacing_m` apart
   /// (see ospace_radius_for), at least `min_ospace_radius_m`.
   double ospace_radius_m{0.0};
-  double min_ospace_radius_m{0.6};
-  double member_spacing_m{1.1};
+  double min_ospace_radius_m{0.45};
+  double member_spacing_m{0.9};
   /// Delta_s (m): radius of a member's social space for the equality force (eq. 3.13-3.16).
   double social_distance_m{3.0};
   /// Members repel each other within spacing_factor x the chord between evenly spaced neighbours
@@ -57,6 +59,10 @@ struct GroupSpec {
   /// of larger vis-a-vis and L groups). Recorded side-by-side pairs stand 0.40-1.19 m apart,
   /// median 0.61 (docs/perception_gcff.md).
   double shoulder_spacing_m{0.65};
+  /// deg: standard deviation of each member's stance, the turn of their body off the way the
+  /// formation has them face (seeded per member). People do not face an o-space exactly: recorded
+  /// members turn 3-110 deg off it (10th-90th percentile, docs/world.md).
+  double facing_spread_deg{15.0};
 
   /// A group as a scene file's `groups` entry writes it (config_fields.hpp).
   template <class V>
@@ -94,6 +100,9 @@ struct GroupSpec {
             "rad, bearing of the first row from the o-space centre; unset = from where the "
             "members stand",
             core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad));
+    v.field("facing_spread", facing_spread_deg,
+            "deg, standard deviation of each member's body turn off the formation's facing",
+            core::between(0.0, kMaxFacingSpreadDeg));
     v.field("shoulder_spacing", shoulder_spacing_m,
             "m between neighbours side by side in one row (side-by-side, larger vis-a-vis and "
             "L groups)",
@@ -148,6 +157,9 @@ class GroupNavigation {
   const std::optional<double>& heading_rad() const { return heading_rad_; }
   /// ARI while it takes part in the formation (joining or joined), else kNoObject.
   model::ObjectId robot_joining() const { return robot_joining_; }
+  /// Each participant's place (members in order, then ARI while it joins) as of the last step,
+  /// while rows hold the formation; empty while a circle does.
+  const std::vector<FormationSlot>& places() const { return places_; }
   /// Members, plus ARI while it joins.
   size_t participant_count() const;
   /// s (m) in use: the configured radius or the one derived from the participant count.
@@ -188,6 +200,9 @@ class GroupNavigation {
   void others_than(size_t i);
   void outsiders_of(const Simulation& simulation, const Human& human, const Eigen::Vector2d& p);
   void move_member(Human& human, const Eigen::Vector2d& force, double turn_rad, double dt_s) const;
+  // The member's seeded stance (rad): how far their body stays turned off the formation's
+  // facing; the same for the same simulation seed, group and member.
+  double stance_rad(uint64_t seed, model::ObjectId member) const;
   // The participants changed: places are dealt again.
   void formation_changed() { slots_stale_ = true; }
 
@@ -200,7 +215,8 @@ class GroupNavigation {
   bool robot_asked_to_leave_{false};
   bool slots_stale_{true};
   bool was_circle_{true};
-  std::vector<size_t> slot_of_;                         // per participant (members, then ARI)
+  std::vector<size_t> slot_of_;  // per participant (members, then ARI)
+  std::vector<FormationSlot> places_;
   std::vector<Eigen::Vector2d> participant_positions_;  // scratch
   std::vector<Eigen::Vector2d> social_neighbours_;
   std::vector<Eigen::Vector2d> others_;
