@@ -13,6 +13,7 @@ add_library(ari_world
   src/world/map_sensor.cpp
   src/world/object.cpp
   src/world/request_check.cpp
+  src/world/robot_reaction.cpp
   src/world/scene.cpp
   src/world/service_requests.cpp
   src/world/simulation.cpp
