@@ -32,6 +32,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_group_navigation.cpp
       test/world/test_map_sensor.cpp
       test/world/test_request_check.cpp
+      test/world/test_robot_reaction.cpp
       test/world/test_scene.cpp
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp
