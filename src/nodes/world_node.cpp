@@ -136,8 +136,7 @@ class WorldNode {
     services_.push_back(nh_.advertiseService("/sim/say", &WorldNode::say, this));
     services_.push_back(
         nh_.advertiseService("/sim/set_gaze_targets", &WorldNode::set_gaze_targets, this));
-    services_.push_back(
-        nh_.advertiseService("/sim/set_reaction", &WorldNode::set_reaction, this));
+    services_.push_back(nh_.advertiseService("/sim/set_reaction", &WorldNode::set_reaction, this));
     services_.push_back(nh_.advertiseService("/sim/reset", &WorldNode::reset, this));
     services_.push_back(nh_.advertiseService("/sim/pause", &WorldNode::pause, this));
     services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));

@@ -389,8 +389,8 @@ void RobotReaction::plan_avoid(const Object& owner, const StepContext& context,
       const int k = (i + 1) / 2 * (i % 2 == 0 ? 1 : -1);  // 0, -1, 1, -2, 2, ...
       const double angle = wanted + 2.0 * core::kPi * k / kAvoidDirections;
       const Eigen::Vector2d candidate(std::cos(angle), std::sin(angle));
-      const double score = candidate.dot(away);
-      if (score > best_score && score > -0.2 &&
+      const double score = candidate.dot(direction);
+      if (score > best_score && candidate.dot(away) > -0.2 &&
           way_is_free(context.simulation, p, p + 0.4 * candidate, radius)) {
         best_score = score;
         best = candidate;

@@ -348,6 +348,14 @@ TEST(RobotReaction, AnAvoidingGroupMemberShiftsAwayABitAndStaysAMember) {
   EXPECT_LT(run.gaze_share, 0.6);  // member 10 ignores ARI: no gaze override
 }
 
+TEST(RobotReaction, AYieldingGroupMemberInAriSWaySidestepsABitAndStaysAMember) {
+  // Member 10 stands 0.6 m south of ARI's path line: in its corridor while ARI drives.
+  const PairRun run = pair_meets_ari(ReactionProfile::kYield, ReactionProfile::kIgnore);
+  EXPECT_EQ(run.group[0], 1u);
+  EXPECT_GT(run.moved[0], 0.1);
+  EXPECT_LT(run.moved[0], 0.45);
+}
+
 // FNV-1a over the people's poses and gaze: equal hashes mean equal runs.
 uint64_t hash_of(const WorldSnapshot& s) {
   uint64_t h = 1469598103934665603ULL;
