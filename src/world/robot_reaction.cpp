@@ -229,8 +229,9 @@ Eigen::Vector2d RobotReaction::aside_target(const Object& owner, const StepConte
   const PathOffset offset = path_offset(robot, p);
   // 0.1 m beyond the corridor's edge, so the person is out of it once there.
   const double clear = robot.footprint.half_width_m + params_.corridor_margin_m + 0.1;
-  // The side the person already leans to first; then the other; then each moved further ahead of
-  // ARI (a wall beside the path, as in a doorway, shuts one side near it but not further on).
+  // The nearer side (the one the person stands on) if free, else the other; then each moved
+  // further along ARI's path (a wall beside the path, as by a doorway, shuts a side near it but
+  // not further on).
   const double first = offset.lateral_m >= 0.0 ? 1.0 : -1.0;
   Eigen::Vector2d best = p;
   double best_length = std::numeric_limits<double>::infinity();

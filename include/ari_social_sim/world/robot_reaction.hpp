@@ -218,8 +218,10 @@ class RobotReaction : public Component {
   void plan_avoid(const Object& owner, const StepContext& context, const RobotView& robot,
                   bool noticed);
   void plan_block(const Object& owner, const RobotView& robot, bool noticed);
-  // Where a person at `from` steps to get out of ARI's corridor: the nearest free place beside
-  // the path (probed against walls and furniture), moving ahead along it if both sides are shut.
+  // Where the person steps to get out of ARI's corridor: the nearest free place beside the path
+  // (probed against walls and furniture), which is on their own side unless that is shut; further
+  // along the path if both sides are shut. (Crossing to a roomier far side while the near one is
+  // free put more of ARI's pass inside their personal space in the doorway episodes.)
   Eigen::Vector2d aside_target(const Object& owner, const StepContext& context,
                                const RobotView& robot) const;
 
