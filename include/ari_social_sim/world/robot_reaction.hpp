@@ -43,14 +43,15 @@ struct ReactionParams {
   /// m/s: ARI faster than this is driving and may need to pass (yield, block).
   double moving_speed_mps{0.05};
   /// s and m: the corridor ARI needs ahead of its front is corridor_time x speed + corridor_extra
-  /// long, 1.5 s at 0.5 m/s plus 2 m: about 3 s of warning at ARI's cruising speeds.
+  /// long: 2.75 m at 0.5 m/s, 3.5 m at ARI's top 1 m/s, so 3.5 s or more of warning, enough for a
+  /// sidestep of 1-1.5 s.
   double corridor_time_s{1.5};
   double corridor_extra_m{2.0};
   /// m: a person counts as in ARI's way when their centre is within ARI's half width plus this
   /// of ARI's path line (a personal distance, D6.4's 0.8 m), and steps aside to 0.1 m beyond it.
   double corridor_margin_m{0.8};
-  /// m: ARI this far beyond a yielding person (its rear past them), or this far from them
-  /// altogether, has passed; the person then goes back or walks on.
+  /// m: ARI's rear this far beyond a yielding person (and its outline this far from them) has
+  /// passed; the person then goes back, or walks on, once ARI is also clear of their place.
   double passed_distance_m{1.0};
   /// s: the longest a yielding person waits for ARI to pass (ARI may have stopped for good).
   double yield_max_wait_s{15.0};
