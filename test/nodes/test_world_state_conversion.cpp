@@ -53,7 +53,8 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
     EXPECT_EQ(b.speech.start_s, a.speech.start_s);
   }
   EXPECT_TRUE(back.humans[2].speech.is_speaking);  // human 20
-  EXPECT_EQ(back.humans[3].reaction, world::ReactionProfile::kAvoid);  // human 21
+  // Human 21 avoids ARI.
+  EXPECT_EQ(back.humans[3].reaction, world::ReactionProfile::kAvoid);
   ASSERT_EQ(back.groups.size(), truth.groups.size());
   EXPECT_EQ(back.groups[1].members, truth.groups[1].members);
 
