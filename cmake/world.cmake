@@ -14,6 +14,7 @@ add_library(ari_world
   src/world/map_sensor.cpp
   src/world/object.cpp
   src/world/request_check.cpp
+  src/world/robot_reaction.cpp
   src/world/scene.cpp
   src/world/service_requests.cpp
   src/world/simulation.cpp
@@ -33,6 +34,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_group_navigation.cpp
       test/world/test_map_sensor.cpp
       test/world/test_request_check.cpp
+      test/world/test_robot_reaction.cpp
       test/world/test_scene.cpp
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp

@@ -36,6 +36,7 @@
 #include "ari_social_sim/SetGoal.h"
 #include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
+#include "ari_social_sim/SetReaction.h"
 #include "ari_social_sim/SpawnHuman.h"
 #include "ari_social_sim/StepSimulation.h"
 #include "ari_social_sim/TtsAction.h"
@@ -251,6 +252,12 @@ class RosCommands : public scenario::Commands {
       }
       gaze.request.mean_duration = spec.gaze->mean_duration_s;
       call("/sim/set_gaze_targets", gaze);
+    }
+    if (spec.reaction != world::ReactionProfile::kIgnore) {
+      SetReaction reaction;
+      reaction.request.id = spec.id;
+      reaction.request.profile = world::reaction_name(spec.reaction);
+      call("/sim/set_reaction", reaction);
     }
   }
 

@@ -34,6 +34,7 @@
 #include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
 #include "ari_social_sim/SetPose.h"
+#include "ari_social_sim/SetReaction.h"
 #include "ari_social_sim/SetVelocity.h"
 #include "ari_social_sim/SpawnHuman.h"
 #include "ari_social_sim/StepSimulation.h"
@@ -142,6 +143,7 @@ class WorldNode {
     services_.push_back(nh_.advertiseService("/sim/say", &WorldNode::say, this));
     services_.push_back(
         nh_.advertiseService("/sim/set_gaze_targets", &WorldNode::set_gaze_targets, this));
+    services_.push_back(nh_.advertiseService("/sim/set_reaction", &WorldNode::set_reaction, this));
     services_.push_back(nh_.advertiseService("/sim/reset", &WorldNode::reset, this));
     services_.push_back(nh_.advertiseService("/sim/pause", &WorldNode::pause, this));
     services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));
@@ -414,6 +416,10 @@ class WorldNode {
       const world::GazeTargetsRequest request{req.targets, req.probabilities, req.mean_duration};
       simulation_->set_human_gaze(req.id, request.model());
     });
+  }
+
+  bool set_reaction(SetReaction::Request& req, SetReaction::Response& res) {
+    return answer(res, [&] { simulation_->set_human_reaction(req.id, req.profile); });
   }
 
   bool reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {

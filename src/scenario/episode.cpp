@@ -49,16 +49,20 @@ class Episode::InProcessCommands : public Commands {
   void cancel_navigation() override { navigation_.cancel(); }
 
   void add_human(const world::HumanSpec& spec) override {
-    // As /sim/spawn_human, then /sim/set_goal and /sim/set_gaze_targets.
+    // As /sim/spawn_human, then /sim/set_goal, /sim/set_gaze_targets and /sim/set_reaction.
     world::HumanSpec spawned = spec;
     spawned.goal.reset();
     spawned.gaze.reset();
+    spawned.reaction = world::ReactionProfile::kIgnore;
     const model::ObjectId id = world_.add_human(spawned).id();
     if (spec.goal) {
       world_.set_human_goal(id, *spec.goal);
     }
     if (spec.gaze) {
       world_.set_human_gaze(id, *spec.gaze);
+    }
+    if (spec.reaction != world::ReactionProfile::kIgnore) {
+      world_.set_human_reaction(id, spec.reaction);
     }
   }
 

@@ -310,9 +310,9 @@ class ScriptReader {
   }
 
   // A human added during the run goes through the world's spawn service, which takes the
-  // profile and pose only; a goal and gaze targets follow as their own requests.
+  // profile and pose only; a goal, gaze targets and a reaction follow as their own requests.
   world::HumanSpec read_added_human(const core::YamlMap& entry) {
-    for (const char* key : {"motion", "words_per_minute"}) {
+    for (const char* key : {"motion", "words_per_minute", "reaction_params"}) {
       if (entry.has(key)) {
         entry.fail(key, "nothing: humans added during a run take the default " + std::string(key),
                    "a value");

@@ -9,6 +9,7 @@
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/human_navigation.hpp"
+#include "ari_social_sim/world/step_motion.hpp"
 
 namespace ari_social_sim::world {
 
@@ -16,8 +17,11 @@ void HumanSpec::validate() const {
   core::check_fields<core::RequestError>(*this, "");
 }
 
-Human::Human(const HumanSpec& spec, core::Rng gaze_rng)
-    : Object(spec.id, ObjectKind::kHuman), spec_(spec), gaze_rng_(gaze_rng) {
+Human::Human(const HumanSpec& spec, core::Rng gaze_rng, core::Rng reaction_rng)
+    : Object(spec.id, ObjectKind::kHuman),
+      spec_(spec),
+      gaze_rng_(gaze_rng),
+      reaction_rng_(reaction_rng) {
   pose_ = spec.pose;
   navigation_ = &add_component(std::make_unique<HumanNavigation>());
   speech_ = &add_component(std::make_unique<SpeechGenerator>(spec.words_per_minute));
@@ -26,6 +30,20 @@ Human::Human(const HumanSpec& spec, core::Rng gaze_rng)
   }
   if (spec.goal) {
     set_goal(*spec.goal);
+  }
+  set_reaction(spec.reaction);
+}
+
+void Human::set_reaction(ReactionProfile profile) {
+  spec_.reaction = profile;
+  if (reaction_ != nullptr) {
+    reaction_->set_profile(profile);
+    return;
+  }
+  // Nothing for kIgnore: a human that never reacts steps exactly as before reactions existed.
+  if (profile != ReactionProfile::kIgnore) {
+    reaction_ = &add_component(std::make_unique<RobotReaction>(
+        profile, spec_.reaction_params.value_or(ReactionParams{}), reaction_rng_));
   }
 }
 
@@ -102,10 +120,37 @@ void Human::apply_motion(const StepContext& context) {
       rotation = planned_rotation_;
       break;
   }
+  if (reaction_ != nullptr && mode_ != MotionMode::kDirect) {
+    apply_reaction(reaction_->motion(), context.dt_s, velocity, rotation);
+  }
   body()->SetLinearVelocity(
       b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
   pose_.theta = core::wrap_angle(pose_.theta + rotation);
   angular_velocity_ = rotation / context.dt_s;
+}
+
+void Human::apply_reaction(const ReactionMotion& reaction, double dt_s, Eigen::Vector2d& velocity,
+                           double& rotation) const {
+  switch (reaction.kind) {
+    case ReactionMotion::Kind::kNone:
+      return;
+    case ReactionMotion::Kind::kReplace:
+      velocity = reaction.velocity_mps;
+      rotation = 0.0;
+      break;
+    case ReactionMotion::Kind::kAdd:
+      velocity += reaction.velocity_mps;
+      break;
+  }
+  // Nobody runs, whatever the sum (as step_motion caps a plan).
+  const double speed = velocity.norm();
+  if (speed > spec_.motion.max_speed_mps) {
+    velocity *= spec_.motion.max_speed_mps / speed;
+  }
+  if (reaction.face_rad) {
+    rotation =
+        rotation_step(core::angle_difference(*reaction.face_rad, pose_.theta), spec_.motion, dt_s);
+  }
 }
 
 void Human::sync_from_body(double dt_s) {

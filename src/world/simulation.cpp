@@ -26,6 +26,8 @@ constexpr float kHumanMassKg = 70.0f;
 constexpr model::ObjectId kFirstAutomaticGroupId = 1;
 // About one personal distance: a neighbour query then visits a 3 x 3 block of cells.
 constexpr double kAgentGridCellM = 1.0;
+// Random streams of the reactions to ARI: this plus the human's id.
+constexpr uint64_t kReactionStream = uint64_t{1} << 32;
 
 b2Vec2 to_b2(const Eigen::Vector2d& v) {
   return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
@@ -231,7 +233,10 @@ const Human& Simulation::add_human(HumanSpec spec) {
                   what + " at (" + std::to_string(spec.pose.position.x()) + ", " +
                       std::to_string(spec.pose.position.y()) + ")");
 
-  auto human = std::make_unique<Human>(spec, core::Rng::for_stream(config_.seed, spec.id));
+  // The reaction's draws get a stream of their own, past every gaze stream (ids are 32-bit).
+  auto human =
+      std::make_unique<Human>(spec, core::Rng::for_stream(config_.seed, spec.id),
+                              core::Rng::for_stream(config_.seed, kReactionStream + spec.id));
   b2Body* body = make_agent_body(*physics_, spec.pose, *human);
   body->SetFixedRotation(true);
   // Continuous collision between people: two walkers meeting head on must not sink into each other.
@@ -393,6 +398,23 @@ void Simulation::set_human_velocity(model::ObjectId human_id, const Eigen::Vecto
                  core::between(-kMaxHumanTurnRateRps, kMaxHumanTurnRateRps), "rad/s");
   release_from_group(human);
   human.set_velocity(velocity_mps, angular_velocity_rps);
+}
+
+void Simulation::set_human_reaction(model::ObjectId human_id, const std::string& profile) {
+  const RequestCheck check("set_reaction");
+  existing_human(check, human_id);
+  for (const auto& choice : kReactionProfiles) {
+    if (profile == choice.name) {
+      set_human_reaction(human_id, choice.value);
+      return;
+    }
+  }
+  check.fail("profile", core::choice_names(kReactionProfiles), "'" + profile + "'");
+}
+
+void Simulation::set_human_reaction(model::ObjectId human_id, ReactionProfile profile) {
+  Human& human = existing_human(RequestCheck("set_reaction"), human_id);
+  human.set_reaction(profile);
 }
 
 void Simulation::set_human_gaze(model::ObjectId human_id, const GazeModel& model) {
@@ -645,6 +667,34 @@ double Simulation::static_penetration_m(const Object& agent) const {
     deepest = std::max(deepest, extent - static_cast<double>(output.distance));
   }
   return deepest;
+}
+
+double Simulation::static_clearance_m(const Eigen::Vector2d& point, double radius_m) const {
+  // The floor's edge first: the fence is no object, and beyond it nobody can stand.
+  const Eigen::Vector2d low = world_.origin;
+  const Eigen::Vector2d high = world_.origin + world_.size;
+  double clearance = std::min({point.x() - low.x(), high.x() - point.x(), point.y() - low.y(),
+                               high.y() - point.y()}) -
+                     radius_m;
+  b2CircleShape probe;
+  probe.m_radius = 0.0f;  // a point: the radius is subtracted below, in double
+  b2Transform at;
+  at.Set(to_b2(point), 0.0f);
+  for (const std::unique_ptr<Object>& object : statics_) {
+    const b2Fixture* fixture = object->body()->GetFixtureList();
+    b2DistanceInput input;
+    input.proxyA.Set(&probe, 0);
+    input.proxyB.Set(fixture->GetShape(), 0);
+    input.transformA = at;
+    input.transformB = object->body()->GetTransform();
+    input.useRadii = true;  // the obstacles' own skin counts as part of them
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput output;
+    b2Distance(&output, &cache, &input);
+    clearance = std::min(clearance, static_cast<double>(output.distance) - radius_m);
+  }
+  return clearance;
 }
 
 void Simulation::step() {

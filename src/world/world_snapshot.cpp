@@ -51,7 +51,13 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     h.motion_mode = human->motion_mode();
     h.goal = human->goal();
     h.group_id = human->group_id();
-    if (const GazeGenerator* gaze = human->gaze()) {
+    h.reaction = human->reaction_profile();
+    const RobotReaction* reaction = human->reaction();
+    if (reaction != nullptr && reaction->gaze()) {
+      // The reaction to ARI overrides the person's own gaze while it lasts.
+      const ReactionGaze& gaze = *reaction->gaze();
+      h.gaze = {gaze.target, gaze.direction_rad, gaze.since_s};
+    } else if (const GazeGenerator* gaze = human->gaze()) {
       h.gaze = {gaze->target(), gaze->direction_rad(), gaze->since_s()};
     } else {
       h.gaze.direction_rad = human->pose().theta;

@@ -37,7 +37,7 @@ from ari_social_sim.msg import (ApproachAction, ApproachGoal, Group, IdsList, Tt
                                 WorldState)
 from ari_social_sim.srv import (AddGroupMembers, CreateGroup, DialogueReset, DialogueStep,
                                 RemoveHuman, Say, SetGazeTargets, SetGoal, SetGroupCentre, SetPose,
-                                SetVelocity, SpawnHuman, StepSimulation)
+                                SetReaction, SetVelocity, SpawnHuman, StepSimulation)
 
 SEED = 20261124
 SERVICE_REQUESTS = 1100
@@ -171,6 +171,8 @@ def baselines(rng, world):
         "/sim/set_gaze_targets": (SetGazeTargets, dict(id=human, targets=humans[:2],
                                                        probabilities=[0.5, 0.5],
                                                        mean_duration=1.0)),
+        "/sim/set_reaction": (SetReaction, dict(id=human, profile=rng.choice(
+            ["ignore", "yield", "curious", "avoid", "block"]))),
         "/sim/step": (StepSimulation, dict(steps=1)),
         "/sim/dialogue/reset": (DialogueReset, dict(seed=rng.randint(1, 100))),
         "/sim/dialogue/step": (DialogueStep, dict(acts=["greet()"], addressees=[], text="")),

@@ -16,8 +16,8 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import WorldState
 from ari_social_sim.srv import (AddGroupMembers, CreateGroup, RemoveHuman, Say, SetGazeTargets,
-                                SetGoal, SetGroupCentre, SetPose, SetVelocity, SpawnHuman,
-                                StepSimulation)
+                                SetGoal, SetGroupCentre, SetPose, SetReaction, SetVelocity,
+                                SpawnHuman, StepSimulation)
 
 STEP_S = 0.05  # world_node's default step
 NAN = float("nan")
@@ -99,7 +99,7 @@ class WorldNodeContract(unittest.TestCase):
         cls.diagnostics = LatestDiagnostics()
         for name in ["spawn_human", "remove_human", "set_goal", "set_velocity", "set_pose",
                      "create_group", "add_group_members", "set_group_centre", "say",
-                     "set_gaze_targets", "reset", "pause", "step"]:
+                     "set_gaze_targets", "set_reaction", "reset", "pause", "step"]:
             rospy.wait_for_service("/sim/" + name, timeout=30)
         cls.call = {
             "spawn": rospy.ServiceProxy("/sim/spawn_human", SpawnHuman),
@@ -112,6 +112,7 @@ class WorldNodeContract(unittest.TestCase):
             "centre": rospy.ServiceProxy("/sim/set_group_centre", SetGroupCentre),
             "say": rospy.ServiceProxy("/sim/say", Say),
             "gaze": rospy.ServiceProxy("/sim/set_gaze_targets", SetGazeTargets),
+            "reaction": rospy.ServiceProxy("/sim/set_reaction", SetReaction),
             "reset": rospy.ServiceProxy("/sim/reset", Trigger),
             "pause": rospy.ServiceProxy("/sim/pause", SetBool),
             "step": rospy.ServiceProxy("/sim/step", StepSimulation),
@@ -381,6 +382,21 @@ class WorldNodeContract(unittest.TestCase):
         rospy.loginfo("%.2f s of sim time in %.2f s of wall time after a reset", latest, elapsed)
         self.assertLess(latest, 4.0 * elapsed + 0.5)
         self.assertGreater(latest, 4.0 * 1.0 - 1.0)
+
+    def test_12_set_reaction_shows_in_the_world_state(self):
+        self.state.wait(lambda m: human(m, 10).reaction == "ignore")  # the scene's default
+        made = self.call["reaction"](id=10, profile="curious")
+        self.assertTrue(made.success, made.message)
+        self.state.wait(lambda m: human(m, 10).reaction == "curious")
+        unknown = self.call["reaction"](id=10, profile="shy")
+        self.assertFalse(unknown.success)
+        self.assertIn("set_reaction: profile: expected ignore, yield, curious, avoid or block, "
+                      "got 'shy'", unknown.message)
+        nobody = self.call["reaction"](id=999, profile="yield")
+        self.assertFalse(nobody.success)
+        self.assertIn("set_reaction: id: no human with id 999", nobody.message)
+        # The refusals changed nothing.
+        self.assertEqual(human(self.state.wait(), 10).reaction, "curious")
 
 
 if __name__ == "__main__":

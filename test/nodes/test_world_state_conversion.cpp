@@ -18,6 +18,7 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
       world::load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/waiting_room.yaml");
   auto simulation = world::build_simulation(scene, world::SimulationConfig{});
   simulation->say(20, "INFORM", "over there by the window");
+  simulation->set_human_reaction(21, world::ReactionProfile::kAvoid);
   for (int i = 0; i < 30; ++i) {
     simulation->step();
   }
@@ -43,6 +44,7 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
     EXPECT_EQ(b.emotion, a.emotion);
     EXPECT_EQ(b.goal.has_value(), a.goal.has_value());
     EXPECT_EQ(b.group_id, a.group_id);
+    EXPECT_EQ(b.reaction, a.reaction);
     EXPECT_EQ(b.gaze.target, a.gaze.target);
     EXPECT_EQ(b.gaze.direction_rad, a.gaze.direction_rad);
     EXPECT_EQ(b.speech.content, a.speech.content);
@@ -51,6 +53,8 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
     EXPECT_EQ(b.speech.start_s, a.speech.start_s);
   }
   EXPECT_TRUE(back.humans[2].speech.is_speaking);  // human 20
+  // Human 21 avoids ARI.
+  EXPECT_EQ(back.humans[3].reaction, world::ReactionProfile::kAvoid);
   ASSERT_EQ(back.groups.size(), truth.groups.size());
   EXPECT_EQ(back.groups[1].members, truth.groups[1].members);
 
@@ -116,6 +120,8 @@ TEST(WorldStateInput, EveryNumberTheConsumersUseMustBeFiniteAndEnumsKnown) {
        "humans[1].motion_mode: 200, not one of 0..3"},
       {[&](WorldState& m) { m.humans[0].gaze.direction = nan; },
        "humans[0].gaze.direction: nan, not a finite number"},
+      {[&](WorldState& m) { m.humans[1].reaction = "shy"; },
+       "humans[1].reaction: 'shy', not one of ignore, yield, curious, avoid or block"},
       {[&](WorldState& m) { m.groups.at(0).ospace_radius = nan; },
        "groups[0].ospace_radius: nan, not a finite number"},
       {[&](WorldState& m) { m.humans.resize(world::kMaxHumans + 1, m.humans[0]); },

@@ -16,8 +16,9 @@ constexpr uint64_t kSeed = 5;
 constexpr int kSteps = 200;  // 10 s
 
 // room_6x6 with ARI, Ana (10) and Luc (11) in group 1; on entering its only state the script
-// spawns Zoe (12, walking, looking at Ana) and Max (13), moves Max and Luc into a new group 2,
-// sends Ana walking (which drops group 1), lets her speak, and spawns and removes Eve (14).
+// spawns Zoe (12, walking, looking at Ana) and Max (13, curious about ARI), moves Max and Luc into
+// a new group 2, sends Ana walking (which drops group 1), lets her speak, and spawns and removes
+// Eve (14).
 Scenario requests_scenario() {
   const std::string text =
       "world: " + kSource +
@@ -35,7 +36,7 @@ Scenario requests_scenario() {
       "      enter:\n"
       "        - {type: add_human, human: {id: 12, position: [1, 1], goal: {position: [5, 1]}, "
       "gaze: {mean_duration: 2, targets: [{id: 10, probability: 1.0}]}}}\n"
-      "        - {type: add_human, human: {id: 13, position: [5, 5]}}\n"
+      "        - {type: add_human, human: {id: 13, position: [5, 5], reaction: curious}}\n"
       "        - {type: create_group, group: {id: 2, members: [13], centre: [4.5, 4.5]}}\n"
       "        - {type: add_group_members, group: 2, members: [11]}\n"
       "        - {type: set_group_centre, group: 2, centre: [4, 4.5]}\n"
@@ -47,7 +48,8 @@ Scenario requests_scenario() {
 }
 
 // The same requests through the world's API, in the order scenario_node sends them to
-// world_node's services (a spawn's goal and gaze follow as set_goal and set_gaze_targets).
+// world_node's services (a spawn's goal, gaze and reaction follow as set_goal, set_gaze_targets
+// and set_reaction).
 void send_requests(world::Simulation& world) {
   world::HumanSpec zoe;
   zoe.id = 12;
@@ -62,6 +64,7 @@ void send_requests(world::Simulation& world) {
   max.id = 13;
   max.pose.position = {5.0, 5.0};
   world.add_human(max);
+  world.set_human_reaction(13, world::ReactionProfile::kCurious);
   world::GroupSpec group;
   group.id = 2;
   group.members = {13};
@@ -110,6 +113,7 @@ TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
     EXPECT_EQ(a.motion_mode, b.motion_mode) << "human " << b.id;
     EXPECT_EQ(a.group_id, b.group_id) << "human " << b.id;
     EXPECT_EQ(a.gaze.target, b.gaze.target) << "human " << b.id;
+    EXPECT_EQ(a.reaction, b.reaction) << "human " << b.id;
     EXPECT_EQ(a.speech.previous_act, b.speech.previous_act) << "human " << b.id;
   }
   // Zoe walked her 4 m east and looks at Ana; Ana walked north out of group 1, which was dropped;
@@ -118,6 +122,7 @@ TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
   EXPECT_EQ(direct.humans[2].gaze.target, 10u);
   EXPECT_NEAR(direct.humans[0].pose.position.y(), 4.5, 0.1);
   EXPECT_EQ(direct.humans[0].speech.previous_act, "INFORM");
+  EXPECT_EQ(direct.humans[3].reaction, world::ReactionProfile::kCurious);
   ASSERT_EQ(in_process.groups.size(), 1u);
   EXPECT_EQ(in_process.groups[0].id, 2u);
   EXPECT_EQ(in_process.groups[0].members, (std::vector<model::ObjectId>{13, 11}));

@@ -228,6 +228,11 @@ TEST(Scenario, ActionErrorsNameTheAction) {
   expect_rejected(
       enter("{type: add_human, human: {id: 12, position: [5, 5], motion: {max_speed: 2}}}"),
       {at + ".human.motion", "default motion"});
+  expect_rejected(enter("{type: add_human, human: {id: 12, position: [5, 5], reaction: avoid, "
+                        "reaction_params: {avoid_distance: 3}}}"),
+                  {at + ".human.reaction_params", "default reaction_params"});
+  expect_rejected(enter("{type: add_human, human: {id: 12, position: [5, 5], reaction: shy}}"),
+                  {at + ".human.reaction", "ignore, yield, curious, avoid or block", "'shy'"});
   expect_rejected(enter("{type: add_human, human: {id: 12, position: [5, 5], gaze: "
                         "{mean_duration: 1, directions: {distribution: normal, mean: 0, "
                         "stddev: 1}}}}"),

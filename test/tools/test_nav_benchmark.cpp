@@ -38,6 +38,8 @@ TEST(NavBenchmark, BadOptionsExitWithTwoBeforeAnyEpisode) {
            {"--csv " + dir, "--csv: " + dir + ": expected a file name, got a directory"},
            {"--csv /proc/nav.csv", "--csv: /proc/nav.csv: cannot write in /proc"},
            {"--overwrite", "--overwrite: expected --csv too"},
+           {"--profile shy",
+            "--profile: expected ignore, yield, curious, avoid or block, got 'shy'"},
            {"--episodes", "--episodes: expected an integer in [1, 10000], got '--types'"}}) {
     const ProgramRun result = run(arguments + " --types pose --controllers social");
     expect_refused(result, fragment);
@@ -61,6 +63,8 @@ TEST(NavBenchmark, AnExistingCsvIsReplacedOnlyWithOverwrite) {
   const std::string rows = read_all(csv);
   EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 2);  // header and one episode
   EXPECT_EQ(rows.find("pose,0,"), rows.find('\n') + 1);
+  EXPECT_EQ(rows.find("type,episode,seed,controller,profile,success,"), 0u);
+  EXPECT_NE(rows.find(",social,ignore,"), std::string::npos);  // the default profile
   EXPECT_FALSE(fs::exists(csv + ".part"));
 }
 

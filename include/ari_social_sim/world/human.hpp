@@ -6,6 +6,7 @@
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/object.hpp"
+#include "ari_social_sim/world/robot_reaction.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
 
 namespace ari_social_sim::world {
@@ -68,6 +69,10 @@ struct HumanSpec {
   std::optional<GazeModel> gaze;
   /// When set, the human walks there with HumanNavigation from the start.
   std::optional<core::Pose2> goal;
+  /// How the human reacts to ARI (robot_reaction.hpp); kIgnore: as if ARI were anyone else.
+  ReactionProfile reaction{ReactionProfile::kIgnore};
+  /// The reaction's distances, times and shares; none: ReactionParams' defaults.
+  std::optional<ReactionParams> reaction_params;
 
   /// A human as a scene file's `humans` entry writes it (config_fields.hpp).
   template <class V>
@@ -85,6 +90,10 @@ struct HumanSpec {
     v.section("motion", motion, "social-force movement (docs/world.md)");
     v.section("goal", goal, "a pose (position, orientation) the human walks to from the start");
     v.section("gaze", gaze, "where the human looks: targets or directions");
+    v.choice("reaction", reaction, "how the human reacts to ARI (docs/world.md, section 10)",
+             kReactionProfiles);
+    v.section("reaction_params", reaction_params,
+              "distances, times and gaze shares of the reaction to ARI");
   }
 
   /// Throws core::RequestError naming the first field outside what visit allows, its value and
@@ -103,7 +112,9 @@ class HumanNavigation;
 /// (the body does not rotate) and changed only by the movement model.
 class Human : public Object {
  public:
-  explicit Human(const HumanSpec& spec, core::Rng gaze_rng);
+  /// `gaze_rng` and `reaction_rng` are the human's own streams (Simulation derives them from its
+  /// seed and the id).
+  Human(const HumanSpec& spec, core::Rng gaze_rng, core::Rng reaction_rng);
 
   const HumanSpec& spec() const { return spec_; }
   MotionMode motion_mode() const { return mode_; }
@@ -136,11 +147,22 @@ class Human : public Object {
   /// Installs or replaces the gaze model. Expects a valid model: requests are checked by
   /// Simulation::set_human_gaze.
   void set_gaze_model(GazeModel model);
+  /// Sets the reaction to ARI, keeping the spec's reaction parameters: the first profile other
+  /// than kIgnore installs a RobotReaction (after the other components, so it sees navigation's
+  /// plan), kIgnore makes it inert. Requests are checked by Simulation::set_human_reaction.
+  void set_reaction(ReactionProfile profile);
+  ReactionProfile reaction_profile() const { return spec_.reaction; }
+  /// Null until a profile other than kIgnore was set.
+  const RobotReaction* reaction() const { return reaction_; }
 
   void apply_motion(const StepContext& context) override;
   void sync_from_body(double dt_s) override;
 
  private:
+  // The reaction's velocity and turn in place of, or on top of, what was planned.
+  void apply_reaction(const ReactionMotion& reaction, double dt_s, Eigen::Vector2d& velocity,
+                      double& rotation) const;
+
   HumanSpec spec_;
   MotionMode mode_{MotionMode::kIdle};
   model::ObjectId group_id_{model::kNoObject};
@@ -149,7 +171,9 @@ class Human : public Object {
   Eigen::Vector2d planned_velocity_{Eigen::Vector2d::Zero()};
   double planned_rotation_{0.0};
   core::Rng gaze_rng_;
+  core::Rng reaction_rng_;
   HumanNavigation* navigation_{nullptr};
+  RobotReaction* reaction_{nullptr};
   SpeechGenerator* speech_{nullptr};
   GazeGenerator* gaze_{nullptr};
 };

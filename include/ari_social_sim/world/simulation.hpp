@@ -106,6 +106,12 @@ class Simulation {
   /// human's max_speed or a turn rate beyond +-kMaxHumanTurnRateRps.
   void set_human_velocity(model::ObjectId human_id, const Eigen::Vector2d& velocity_mps,
                           double angular_velocity_rps);
+  /// Sets how a human reacts to ARI (/sim/set_reaction, robot_reaction.hpp), keeping its
+  /// reaction parameters. `profile` is a name of kReactionProfiles. Throws for an unknown id, e.g.
+  /// `set_reaction: id: no human with id 99`, or an unknown profile, e.g.
+  /// `set_reaction: profile: expected ignore, yield, curious, avoid or block, got 'shy'`.
+  void set_human_reaction(model::ObjectId human_id, const std::string& profile);
+  void set_human_reaction(model::ObjectId human_id, ReactionProfile profile);
   /// Installs or replaces a human's gaze model (/sim/set_gaze_targets). Throws for an unknown id,
   /// an invalid model (GazeModel::validate), or a target that is not another object of the world.
   void set_human_gaze(model::ObjectId human_id, const GazeModel& model);
@@ -178,6 +184,10 @@ class Simulation {
                           model::ObjectId exclude_group = model::kNoObject) const;
   /// How deep (m) an agent's body reaches into walls or furniture; <= 0 when clear.
   double static_penetration_m(const Object& agent) const;
+  /// The free-space probe of the reactions to ARI: how far (m) a disc of `radius_m` at `point`
+  /// keeps from the nearest wall, piece of furniture or edge of the floor; negative when it
+  /// reaches into one. Agents are not obstacles here.
+  double static_clearance_m(const Eigen::Vector2d& point, double radius_m) const;
 
  private:
   // The group script moves its members each step (D6.4 §3.4.1): the one writer from outside.

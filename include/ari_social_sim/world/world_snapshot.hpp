@@ -47,6 +47,7 @@ struct HumanSnapshot {
   MotionMode motion_mode{MotionMode::kIdle};
   std::optional<core::Pose2> goal;
   model::ObjectId group_id{model::kNoObject};
+  ReactionProfile reaction{ReactionProfile::kIgnore};
   GazeSnapshot gaze;
   SpeechSnapshot speech;
 };

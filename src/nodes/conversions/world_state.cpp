@@ -86,6 +86,7 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
       h.goal = to_msg(*human.goal);
     }
     h.group_id = human.group_id;
+    h.reaction = world::reaction_name(human.reaction);
     h.gaze.target_id = human.gaze.target;
     h.gaze.direction = human.gaze.direction_rad;
     h.gaze.since = human.gaze.since_s;
@@ -156,6 +157,12 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
       human.goal = from_msg(h.goal);
     }
     human.group_id = h.group_id;
+    // input_problem refuses other names; an empty one (an older publisher) is ignore.
+    for (const auto& choice : world::kReactionProfiles) {
+      if (h.reaction == choice.name) {
+        human.reaction = choice.value;
+      }
+    }
     human.gaze = {h.gaze.target_id, h.gaze.direction, h.gaze.since};
     human.speech = from_msg(h.speech);
     snapshot.humans.push_back(std::move(human));
@@ -252,6 +259,12 @@ std::optional<InputProblem> input_problem(const WorldState& msg) {
       check.pose(field + ".goal", h.goal);
     }
     check.finite(field + ".gaze.direction", h.gaze.direction);
+    bool known_reaction = h.reaction.empty();
+    for (const auto& choice : world::kReactionProfiles) {
+      known_reaction = known_reaction || h.reaction == choice.name;
+    }
+    check.that(known_reaction, field + ".reaction",
+               "'" + h.reaction + "', not one of " + core::choice_names(world::kReactionProfiles));
   }
   for (size_t i = 0; i < msg.groups.size(); ++i) {
     const std::string field = "groups[" + std::to_string(i) + "]";

@@ -32,8 +32,9 @@ model::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
 /// What makes a received message unusable, as `field` and `what` ("humans[2].pose.x", "nan, not
 /// a finite number"); nullopt when it is fine. A /sim/world_state needs finite numbers where the
 /// consumers compute (stamp, poses, velocities, ages, head pan, gaze direction), known enum
-/// values and at most world::kMaxHumans humans; a /map a finite resolution > 0, a finite origin,
-/// width x height cells (at most world::kMaxMapCells) and that many values.
+/// values and reaction names (or none) and at most world::kMaxHumans humans; a /map a finite
+/// resolution > 0, a finite origin, width x height cells (at most world::kMaxMapCells) and that
+/// many values.
 struct InputProblem {
   std::string field;
   std::string what;

@@ -44,7 +44,7 @@ std::string usage() {
   return R"(Usage:
   nav_benchmark [--episodes N] [--seed S] [--types T1,T2,...] [--controllers social,baseline]
                 [--solver lbfgs|slsqp|mppi] [--config FILE] [--csv FILE [--overwrite]]
-                [--worlds DIR] [--trace]
+                [--worlds DIR] [--profile ignore|yield|curious|avoid|block] [--trace]
 
 Runs N seeded episodes of each type with each controller, on the world core in one process,
 with ground-truth perception, and prints a summary table per type and controller. Solve times
@@ -66,6 +66,9 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
   --csv FILE        writes one row per episode (default: no CSV); checked before the first
                     episode, refused if it exists unless --overwrite, written when all have run
   --worlds DIR      folder of the shipped worlds (default: the package's worlds/)
+  --profile NAME    how every person of every episode reacts to ARI: ignore (default, the
+                    episodes as they always were), yield, curious, avoid or block
+                    (docs/world.md, section 10)
   --trace           print every replanning cycle (pose, goal, command, cost by term) to stderr
   --help            print this text
 
@@ -83,6 +86,7 @@ struct Options {
   std::string config{std::string(ARI_SOURCE_DIR) + "/config/social_mpc.yaml"};
   std::string csv;
   std::string worlds{std::string(ARI_SOURCE_DIR) + "/worlds"};
+  world::ReactionProfile profile{world::ReactionProfile::kIgnore};
   bool trace{false};
   bool overwrite{false};
 };
@@ -162,6 +166,8 @@ Options parse(int argc, char** argv) {
       options.csv = value;
     } else if (arg == "--worlds") {
       options.worlds = value;
+    } else if (arg == "--profile") {
+      options.profile = core::parse_choice(value, world::kReactionProfiles, arg);
     } else {
       throw core::ConfigError(arg + ": unknown option (see --help)");
     }
@@ -200,7 +206,7 @@ navigation::NavigationConfig controller_config(const Options& options,
 }
 
 struct EpisodeRecord {
-  std::string type, controller, outcome, reason;
+  std::string type, controller, profile, outcome, reason;
   int index{0};
   uint64_t seed{0};
   bool success{false};
@@ -224,6 +230,22 @@ double percentile(std::vector<double> values, double q) {
   return values[index];
 }
 
+const char* reaction_phase_name(world::RobotReaction::Phase phase) {
+  switch (phase) {
+    case world::RobotReaction::Phase::kIdle:
+      return "";
+    case world::RobotReaction::Phase::kSteppingAside:
+      return ":aside";
+    case world::RobotReaction::Phase::kWaiting:
+      return ":waiting";
+    case world::RobotReaction::Phase::kReturning:
+      return ":returning";
+    case world::RobotReaction::Phase::kEngaged:
+      return ":engaged";
+  }
+  return "";
+}
+
 // One line per replanning cycle: time, ARI's pose and speeds, whether ARI is inside someone's
 // personal space (as scored), the goal, the command, the plan's cost by term (--trace, for tuning).
 void print_trace(const world::Simulation& sim, const navigation::Navigator& navigator,
@@ -241,15 +263,29 @@ void print_trace(const world::Simulation& sim, const navigation::Navigator& navi
   for (const navigation::TermCost& term : navigator.plan().terms) {
     std::fprintf(stderr, " %s=%.3f", term.name, term.cost);
   }
+  for (const auto& human : sim.humans()) {
+    const world::RobotReaction* reaction = human->reaction();
+    std::fprintf(stderr, " human%u=(%.2f,%.2f,%.2f)%s", human->id(), human->pose().position.x(),
+                 human->pose().position.y(), human->pose().theta,
+                 reaction == nullptr ? "" : reaction_phase_name(reaction->phase_state()));
+  }
   std::fprintf(stderr, "\n");
 }
 
 EpisodeRecord run_episode(NavigationEpisode episode, const navigation::NavigationConfig& config,
-                          const std::string& controller, bool trace) {
+                          const std::string& controller, world::ReactionProfile profile,
+                          bool trace) {
   world::Simulation& sim = *episode.simulation;
+  // Every person reacts alike; with kIgnore nothing is set, so the episodes stay as they were.
+  if (profile != world::ReactionProfile::kIgnore) {
+    for (const auto& human : sim.humans()) {
+      sim.set_human_reaction(human->id(), profile);
+    }
+  }
   EpisodeRecord record;
   record.type = learning::type_name(episode.type);
   record.controller = controller;
+  record.profile = world::reaction_name(profile);
   record.index = episode.index;
   record.seed = episode.seed;
   const double stride = config.scene.group_stride_m;
@@ -351,7 +387,7 @@ EpisodeRecord run_episode(NavigationEpisode episode, const navigation::Navigatio
 void write_csv(const std::string& path, const std::vector<EpisodeRecord>& records) {
   core::OutputFile file("--csv", path);
   std::ostream& out = file.stream();
-  out << "type,episode,seed,controller,success,outcome,time_to_goal_s,path_length_m,"
+  out << "type,episode,seed,controller,profile,success,outcome,time_to_goal_s,path_length_m,"
          "path_length_ratio,person_collisions,static_collisions,min_person_distance_m,"
          "personal_space_share,ospace_intrusions,final_position_error_m,"
          "final_heading_error_rad,gcff_includes_ari,mean_abs_jerk,solve_cpu_median_ms,solve_cpu_"
@@ -363,11 +399,11 @@ void write_csv(const std::string& path, const std::vector<EpisodeRecord>& record
     std::replace(reason.begin(), reason.end(), '"', '\'');
     char line[1024];
     std::snprintf(line, sizeof(line),
-                  "%s,%d,%llu,%s,%d,%s,%.2f,%.3f,%.3f,%d,%d,%.3f,%.4f,%d,%.3f,%.3f,%d,%.3f,%.3f,"
+                  "%s,%d,%llu,%s,%s,%d,%s,%.2f,%.3f,%.3f,%d,%d,%.3f,%.4f,%d,%.3f,%.3f,%d,%.3f,%.3f,"
                   "%.3f,%zu,\"%s\"\n",
                   r.type.c_str(), r.index, static_cast<unsigned long long>(r.seed),
-                  r.controller.c_str(), r.success ? 1 : 0, r.outcome.c_str(), r.time_to_goal_s,
-                  r.score.path_length_m, ratio, r.score.person_collisions,
+                  r.controller.c_str(), r.profile.c_str(), r.success ? 1 : 0, r.outcome.c_str(),
+                  r.time_to_goal_s, r.score.path_length_m, ratio, r.score.person_collisions,
                   r.score.static_collisions, r.score.min_person_distance_m,
                   r.score.personal_space_share, r.score.ospace_intrusions, r.final_position_error_m,
                   r.final_heading_error_rad, r.gcff_includes_ari, r.score.mean_abs_jerk,
@@ -388,11 +424,11 @@ double mean_of(const std::vector<double>& values) {
 
 void print_summary(const std::vector<EpisodeRecord>& records, const Options& options) {
   std::printf(
-      "| type | controller | episodes | success | collisions (people/static) | episodes with "
-      "o-space intrusion | personal-space time | min distance to people (min / mean) | time to "
-      "goal | path ratio | final position / heading error | GCFF includes ARI | mean abs jerk "
+      "| type | controller | profile | episodes | success | collisions (people/static) | episodes "
+      "with o-space intrusion | personal-space time | min distance to people (min / mean) | time "
+      "to goal | path ratio | final position / heading error | GCFF includes ARI | mean abs jerk "
       "| solve p50 / p99 (CPU) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<double> all_solves, all_wall;
   for (EpisodeType type : options.types) {
     for (const std::string& controller : options.controllers) {
@@ -448,10 +484,11 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
         std::snprintf(gcff, sizeof(gcff), "%.0f %%", 100.0 * gcff_yes / gcff_count);
       }
       std::printf(
-          "| %s | %s | %zu | %.0f %% | %d / %d | %d | %.2f %% | %.2f / %.2f m | %.1f s | %.2f | %s "
-          "| %s | %.2f m/s^3 | %.1f / %.1f ms |\n",
-          learning::type_name(type), controller.c_str(), rows.size(), 100.0 * successes / n,
-          person_hits, static_hits, intruding, 100.0 * mean_of(shares),
+          "| %s | %s | %s | %zu | %.0f %% | %d / %d | %d | %.2f %% | %.2f / %.2f m | %.1f s | %.2f "
+          "| %s | %s | %.2f m/s^3 | %.1f / %.1f ms |\n",
+          learning::type_name(type), controller.c_str(), world::reaction_name(options.profile),
+          rows.size(), 100.0 * successes / n, person_hits, static_hits, intruding,
+          100.0 * mean_of(shares),
           minima.empty() ? 0.0 : *std::min_element(minima.begin(), minima.end()), mean_of(minima),
           mean_of(times), mean_of(ratios), placement, gcff, mean_of(jerks),
           1e3 * percentile(solves, 0.5), 1e3 * percentile(solves, 0.99));
@@ -491,7 +528,8 @@ int main(int argc, char** argv) {
       for (const std::string& controller : options.controllers) {
         try {
           records.push_back(run_episode(learning::make_episode(type, i, options.seed, worlds),
-                                        configs.at(controller), controller, options.trace));
+                                        configs.at(controller), controller, options.profile,
+                                        options.trace));
         } catch (const core::Error& e) {
           std::cerr << "nav_benchmark: " << learning::type_name(type) << " episode " << i << ": "
                     << e.what() << "\n";
