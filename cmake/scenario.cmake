@@ -17,10 +17,12 @@ add_library(ari_scenario
   src/scenario/in_process_navigation.cpp
   src/scenario/episode_report.cpp
   src/scenario/group_memory.cpp
+  src/scenario/group_streams.cpp
   src/scenario/progress_bar.cpp
   src/scenario/observations.cpp
   src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
+  src/scenario/random_group_scene.cpp
   src/scenario/scenario.cpp
   src/scenario/run_watchdog.cpp
   src/scenario/scenario_run_config.cpp
@@ -66,6 +68,14 @@ if(CATKIN_ENABLE_TESTING)
     ARI_EXPORT_DATASET_BIN="$<TARGET_FILE:export_dataset>")
   add_dependencies(test_export_dataset export_dataset)
 endif()
+
+# export_group_streams: what perception reports of random group scenes, as the CSV files of an
+# F-formation data set for detect_groups (docs/perception_gcff.md, "GCFF on perceived streams").
+add_executable(export_group_streams src/tools/export_group_streams.cpp)
+target_link_libraries(export_group_streams ari_scenario)
+target_compile_definitions(export_group_streams PRIVATE
+  ARI_WORLD_DIR="${CMAKE_CURRENT_SOURCE_DIR}/worlds"
+  ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
