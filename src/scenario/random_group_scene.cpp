@@ -59,6 +59,13 @@ double nearest(const Eigen::Vector2d& p, const std::vector<Eigen::Vector2d>& poi
   return d;
 }
 
+// An adult of either gender, as RandomGroup draws them: the age in whole years, as scene files
+// give ages.
+void draw_looks(world::HumanSpec& human, core::Rng& rng) {
+  human.age_years = std::floor(rng.uniform(18.0, 81.0));
+  human.gender = rng.bernoulli(0.5) ? model::Gender::kFemale : model::Gender::kMale;
+}
+
 [[noreturn]] void no_place(const RandomGroupSceneSpec& spec, const std::string& what) {
   throw core::ConfigError("random group scene in " + spec.world_path + ": no free place for " +
                           what + " in " + std::to_string(kMaxDraws) + " draws");
@@ -95,9 +102,7 @@ void add_group(Scenario& scenario, const RandomGroupSceneSpec& spec, core::Rng& 
                                                                  std::sin(jitter_bearing)),
                       core::wrap_angle(slot.facing_rad + rng.uniform(-spec.heading_jitter_rad,
                                                                      spec.heading_jitter_rad)));
-    // Whole years, as scene files give them (RandomGroup does the same).
-    human.age_years = std::floor(rng.uniform(18.0, 81.0));
-    human.gender = rng.bernoulli(0.5) ? model::Gender::kFemale : model::Gender::kMale;
+    draw_looks(human, rng);
     group.members.push_back(human.id);
     scenario.scene.humans.push_back(human);
   }
@@ -255,8 +260,7 @@ Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed
     human.id = next_human++;
     const std::string what = "person " + std::to_string(human.id);
     human.pose = pose(free_place(spec, rng, centres, others, what), rng.uniform(-kPi, kPi));
-    human.age_years = std::floor(rng.uniform(18.0, 81.0));
-    human.gender = rng.bernoulli(0.5) ? model::Gender::kFemale : model::Gender::kMale;
+    draw_looks(human, rng);
     if (rng.bernoulli(0.5)) {
       const Eigen::Vector2d to = free_place(spec, rng, centres, {}, what + "'s goal");
       const Eigen::Vector2d way = to - human.pose.position;

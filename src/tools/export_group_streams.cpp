@@ -224,6 +224,10 @@ void write_file(const std::string& path, const std::string& text) {
 void export_scenes(const Export& run) {
   const Options& options = run.options;
   scenario::GroupStreams streams;
+  // How much ARI moved among the groups, for the summary.
+  double path_m = 0.0;
+  int goals = 0;
+  int failed_goals = 0;
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
   for (uint64_t i = 0; i < options.scenes; ++i) {
@@ -244,6 +248,9 @@ void export_scenes(const Export& run) {
         sample_due = false;
       }
     }
+    path_m += episode->metrics().ari_path_length_m;
+    goals += episode->metrics().navigation_goals;
+    failed_goals += episode->metrics().navigation_failures;
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cerr << (terminal ? "\r" : "") << scenario::progress_line(i + 1, options.scenes, elapsed_s)
@@ -259,6 +266,8 @@ void export_scenes(const Export& run) {
       "%zu (two or more members perceived), in %s\n",
       static_cast<unsigned long long>(options.scenes), counts.frames, counts.feature_rows,
       counts.truth_groups, counts.world_groups, options.out.c_str());
+  std::printf("ARI: %.1f m driven per scene, %d navigation goals, %d of them failed\n",
+              path_m / static_cast<double>(options.scenes), goals, failed_goals);
 }
 
 }  // namespace

@@ -98,6 +98,15 @@ TEST(ExportGroupStreams, FilesParseCountAndRepeatByteForByte) {
             std::string::npos)
       << first.out;
   EXPECT_GT(groups, 80u);  // at least one group seen in most frames
+  // ARI moves among the groups: at 0.3 m/s or more for most of 2 x 20 s, a goal every 10 s or so.
+  double path_m = 0.0;
+  int goals = 0;
+  ASSERT_EQ(std::sscanf(first.out.c_str() + first.out.find("ARI: "),
+                        "ARI: %lf m driven per scene, %d navigation goals", &path_m, &goals),
+            2)
+      << first.out;
+  EXPECT_GT(path_m, 6.0);
+  EXPECT_GE(goals, 4);
 
   const std::string features_bytes = read_all(out + "/features.csv");
   const std::string truth_bytes = read_all(out + "/groundtruth.csv");

@@ -18,7 +18,8 @@ struct RandomGroupSceneSpec {
   /// An empty room (worlds/room_12x12.yaml); nothing but its walls is avoided.
   model::WorldDescription world;
   std::string world_path;  // for messages
-  /// The box (m, map frame) that holds the o-space centres, the lone people and ARI's route.
+  /// The box (m, map frame) that holds the o-space centres, the lone people and ARI's start; ARI's
+  /// waypoints may lie up to 1 m outside it (validate() wants that margin inside the floor).
   Eigen::Vector2d area_min{2.0, 2.0};
   Eigen::Vector2d area_max{10.0, 10.0};
   unsigned min_groups{3};
