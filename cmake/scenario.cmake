@@ -17,10 +17,12 @@ add_library(ari_scenario
   src/scenario/in_process_navigation.cpp
   src/scenario/episode_report.cpp
   src/scenario/group_memory.cpp
+  src/scenario/group_streams.cpp
   src/scenario/progress_bar.cpp
   src/scenario/observations.cpp
   src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
+  src/scenario/random_group_scene.cpp
   src/scenario/scenario.cpp
   src/scenario/run_watchdog.cpp
   src/scenario/scenario_run_config.cpp
@@ -67,6 +69,23 @@ if(CATKIN_ENABLE_TESTING)
   add_dependencies(test_export_dataset export_dataset)
 endif()
 
+# export_group_streams: what perception reports of random group scenes, as the CSV files of an
+# F-formation data set for detect_groups (docs/perception_gcff.md, "GCFF on perceived streams").
+add_executable(export_group_streams src/tools/export_group_streams.cpp)
+target_link_libraries(export_group_streams ari_scenario)
+target_compile_definitions(export_group_streams PRIVATE
+  ARI_WORLD_DIR="${CMAKE_CURRENT_SOURCE_DIR}/worlds"
+  ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
+if(CATKIN_ENABLE_TESTING)
+  # The program run as a user would, its files read with detect_groups' readers and scored.
+  ari_add_gtest(test_export_group_streams
+    SOURCES test/tools/test_export_group_streams.cpp
+    LIBRARIES ari_perception)
+  target_compile_definitions(test_export_group_streams PRIVATE
+    ARI_EXPORT_GROUP_STREAMS_BIN="$<TARGET_FILE:export_group_streams>")
+  add_dependencies(test_export_group_streams export_group_streams)
+endif()
+
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_scenario
     SOURCES
@@ -80,9 +99,11 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_episode_requests.cpp
       test/scenario/test_observations.cpp
       test/scenario/test_group_memory.cpp
+      test/scenario/test_group_streams.cpp
       test/scenario/test_person_identities.cpp
       test/scenario/test_progress_bar.cpp
       test/scenario/test_random_group.cpp
+      test/scenario/test_random_group_scene.cpp
       test/scenario/test_scenario.cpp
       test/scenario/test_run_watchdog.cpp
       test/scenario/test_scenario_run_config.cpp

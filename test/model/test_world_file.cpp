@@ -145,7 +145,7 @@ TEST(WorldFile, DirectoriesAndOversizedFilesAreRefusedBeforeReading) {
 }
 
 TEST(WorldFile, ShippedWorldsLoad) {
-  for (const char* name : {"room_6x6", "two_room_flat", "hospital_waiting_room"}) {
+  for (const char* name : {"room_6x6", "room_12x12", "two_room_flat", "hospital_waiting_room"}) {
     const WorldDescription world =
         load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/" + name + ".yaml");
     EXPECT_EQ(world.name, name);

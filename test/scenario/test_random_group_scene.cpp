@@ -1,0 +1,174 @@
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/model/world_file.hpp"
+#include "ari_social_sim/scenario/random_group_scene.hpp"
+#include "ari_social_sim/world/formation_layout.hpp"
+#include "ari_social_sim/world/scene.hpp"
+#include "expect_config_error.hpp"
+
+namespace ari_social_sim::scenario {
+namespace {
+
+const std::string kWorld = std::string(ARI_SOURCE_DIR) + "/worlds/room_12x12.yaml";
+
+RandomGroupSceneSpec spec() {
+  RandomGroupSceneSpec spec;
+  spec.world = model::load_world_file(kWorld);
+  spec.world_path = kWorld;
+  return spec;
+}
+
+// Everything a scene's draws decide, as text.
+std::string describe(const Scenario& s) {
+  std::string text;
+  for (const world::HumanSpec& h : s.scene.humans) {
+    text += std::to_string(h.id) + " " + std::to_string(h.pose.position.x()) + " " +
+            std::to_string(h.pose.position.y()) + " " + std::to_string(h.pose.theta) + "\n";
+  }
+  for (const world::GroupSpec& g : s.scene.groups) {
+    text +=
+        model::to_string(g.arrangement) + std::string(" ") + std::to_string(*g.heading_rad) + "\n";
+  }
+  text += std::to_string(s.scene.ari->pose.position.x()) + " " +
+          std::to_string(s.script.states.size()) + "\n";
+  return text;
+}
+
+TEST(RandomGroupScene, SameSeedSameSceneOtherSeedOtherScene) {
+  EXPECT_EQ(describe(make_random_group_scene(spec(), 4)),
+            describe(make_random_group_scene(spec(), 4)));
+  EXPECT_NE(describe(make_random_group_scene(spec(), 4)),
+            describe(make_random_group_scene(spec(), 5)));
+}
+
+// Over 200 seeds: 3 to 5 groups, sizes by arrangement, centres in the area 3 m apart, members at
+// their places within the jitter, every arrangement drawn, and the world accepts every scene.
+TEST(RandomGroupScene, GroupsAreDrawnAsSpecifiedAndTheWorldTakesThem) {
+  const RandomGroupSceneSpec s = spec();
+  std::map<model::Arrangement, int> arrangements;
+  std::set<size_t> lone_counts;
+  for (uint64_t seed = 1; seed <= 200; ++seed) {
+    const Scenario scene = make_random_group_scene(s, seed);
+    const auto& groups = scene.scene.groups;
+    ASSERT_GE(groups.size(), 3u);
+    ASSERT_LE(groups.size(), 5u);
+    std::map<model::ObjectId, const world::HumanSpec*> humans;
+    for (const world::HumanSpec& h : scene.scene.humans) {
+      humans[h.id] = &h;
+    }
+    size_t members = 0;
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const world::GroupSpec& group = groups[g];
+      ++arrangements[group.arrangement];
+      const GroupSizeRange sizes = group_sizes_of(group.arrangement);
+      EXPECT_GE(group.members.size(), sizes.min);
+      EXPECT_LE(group.members.size(), sizes.max);
+      EXPECT_TRUE((group.centre.array() >= 2.0).all() && (group.centre.array() <= 10.0).all());
+      for (size_t h = 0; h < g; ++h) {
+        EXPECT_GE((group.centre - groups[h].centre).norm(), 3.0) << "seed " << seed;
+      }
+      // Each member within 0.1 m of a place and turned from its facing by at most 0.2 rad.
+      world::FormationShape shape;
+      shape.arrangement = group.arrangement;
+      shape.centre = group.centre;
+      shape.heading_rad = *group.heading_rad;
+      shape.radius_m =
+          group.arrangement == model::Arrangement::kCircle
+              ? world::GroupNavigation::ospace_radius_for(group.members.size(), 1.1, 0.6)
+              : world::row_distance_for(group.arrangement, 1.1);
+      const auto slots = world::formation_slots(shape, group.members.size());
+      for (size_t m = 0; m < group.members.size(); ++m) {
+        const world::HumanSpec& member = *humans.at(group.members[m]);
+        EXPECT_LE((member.pose.position - slots[m].position).norm(), 0.1 + 1e-9);
+        EXPECT_LE(std::abs(core::angle_difference(member.pose.theta, slots[m].facing_rad)),
+                  0.2 + 1e-9);
+      }
+      members += group.members.size();
+    }
+    lone_counts.insert(scene.scene.humans.size() - members);
+    EXPECT_LE(scene.scene.humans.size() - members, 2u);
+    EXPECT_GE(scene.script.states.size(), 1u);
+    EXPECT_NO_THROW(world::build_simulation(scene.scene, world::SimulationConfig{}))
+        << "seed " << seed;
+  }
+  // 200 seeds x 4 groups on average over 4 arrangements: each about 200 times.
+  ASSERT_EQ(arrangements.size(), 4u);
+  for (const auto& [arrangement, count] : arrangements) {
+    EXPECT_GT(count, 100) << model::to_string(arrangement);
+  }
+  EXPECT_EQ(lone_counts, (std::set<size_t>{0, 1, 2}));
+}
+
+TEST(RandomGroupScene, OnlyTheArrangementsAskedForAreDrawn) {
+  RandomGroupSceneSpec s = spec();
+  s.arrangements = {model::Arrangement::kSideBySide};
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    for (const world::GroupSpec& group : make_random_group_scene(s, seed).scene.groups) {
+      EXPECT_EQ(group.arrangement, model::Arrangement::kSideBySide);
+      EXPECT_LE(group.members.size(), 3u);
+    }
+  }
+}
+
+// ARI's route: one state per waypoint, each sending ARI 2.8 m from a group's centre facing it,
+// and moving on to the next state on success, failure or after 20 s.
+TEST(RandomGroupScene, AriVisitsTheGroupsInTurn) {
+  const Scenario scene = make_random_group_scene(spec(), 7);
+  const Script& script = scene.script;
+  EXPECT_EQ(script.time_limit_s, 60.0);
+  ASSERT_GE(script.states.size(), 1u);
+  for (size_t k = 0; k < script.states.size(); ++k) {
+    const State& state = script.states[k];
+    ASSERT_EQ(state.on_enter.size(), 1u);
+    const auto* goal = std::get_if<SetGoalAction>(&state.on_enter[0]);
+    ASSERT_NE(goal, nullptr);
+    EXPECT_TRUE(goal->who.is_ari());
+    double nearest_m = 1e9;
+    const world::GroupSpec* looked_at = nullptr;
+    for (const world::GroupSpec& group : scene.scene.groups) {
+      const double d = (group.centre - goal->goal.position).norm();
+      if (d < nearest_m) {
+        nearest_m = d;
+        looked_at = &group;
+      }
+    }
+    EXPECT_NEAR(nearest_m, 2.8, 1e-9);
+    const Eigen::Vector2d to_centre = looked_at->centre - goal->goal.position;
+    EXPECT_NEAR(core::angle_difference(std::atan2(to_centre.y(), to_centre.x()), goal->goal.theta),
+                0.0, 1e-9);
+    ASSERT_EQ(state.transitions.size(), 3u);
+    for (const Transition& transition : state.transitions) {
+      EXPECT_EQ(transition.next, script.states[(k + 1) % script.states.size()].name);
+    }
+  }
+}
+
+TEST(RandomGroupScene, ASpecThatCannotGiveASceneIsRefused) {
+  RandomGroupSceneSpec none = spec();
+  none.arrangements.clear();
+  world::test::expect_config_error([&] { make_random_group_scene(none, 1); }, "arrangements",
+                                   {"at least one arrangement"});
+  RandomGroupSceneSpec inverted = spec();
+  inverted.min_groups = 6;
+  world::test::expect_config_error([&] { inverted.validate(); }, "min_groups",
+                                   {"min_groups <= max_groups (5)", "got 6"});
+  RandomGroupSceneSpec outside = spec();
+  outside.area_max = {11.5, 10.0};  // the route may go 1 m beyond: past the floor's 12.2
+  world::test::expect_config_error([&] { outside.validate(); }, "area_min",
+                                   {"1 m inside the floor"});
+  // Five groups 3 m apart do not fit in a 2 m square.
+  RandomGroupSceneSpec crowded = spec();
+  crowded.area_min = {5.0, 5.0};
+  crowded.area_max = {7.0, 7.0};
+  crowded.min_groups = 5;
+  world::test::expect_config_error([&] { make_random_group_scene(crowded, 1); }, "room_12x12",
+                                   {"no free place for group"});
+}
+
+}  // namespace
+}  // namespace ari_social_sim::scenario
