@@ -50,11 +50,10 @@ size_t GroupNavigation::participant_count() const {
 }
 
 bool GroupNavigation::kept_as_circle() const {
-  const model::Arrangement configured = spec_.arrangement;
-  const bool dyad_arrangement =
-      configured == model::Arrangement::kVisAVis || configured == model::Arrangement::kLShape;
-  return configured == model::Arrangement::kCircle ||
-         (dyad_arrangement && participant_count() > std::max<size_t>(arranged_size_, 2));
+  // Someone joining rows turns them into a circle, so that the newcomer takes part: as D6.4
+  // §3.4.2's L-shaped pair opens into a circle when a third person arrives.
+  return spec_.arrangement == model::Arrangement::kCircle ||
+         participant_count() > std::max<size_t>(arranged_size_, 2);
 }
 
 model::Arrangement GroupNavigation::arrangement() const {
@@ -193,11 +192,47 @@ void GroupNavigation::step(const StepContext& context) {
     resolve_heading();
   }
   was_circle_ = circle;
+  deal_places(circle);
   if (circle) {
-    places_.clear();
     step_circle(context);
   } else {
     step_rows(context);
+  }
+}
+
+void GroupNavigation::deal_places(bool circle) {
+  const size_t n = participant_count();
+  if (circle && spec_.place_gain <= 0.0) {
+    places_.clear();
+    return;
+  }
+  const bool redeal = slots_stale_ || slot_of_.size() != n;
+  if (circle && redeal) {
+    // A circle opens its places toward its newest participant: ARI joining, or the member who
+    // joined last.
+    const Eigen::Vector2d towards = participant_positions_.back() - spec_.centre;
+    if (towards.squaredNorm() > 1e-12) {
+      circle_heading_rad_ = std::atan2(towards.y(), towards.x());
+    }
+  }
+  FormationShape shape;
+  shape.arrangement = circle ? model::Arrangement::kCircle : spec_.arrangement;
+  shape.centre = spec_.centre;
+  shape.heading_rad = circle ? circle_heading_rad_ : *heading_rad_;
+  shape.radius_m = ospace_radius_m();
+  shape.shoulder_spacing_m = spec_.shoulder_spacing_m;
+  const std::vector<FormationSlot> slots = formation_slots(shape, n);
+  if (redeal) {
+    std::vector<size_t> fixed;
+    if (robot_joining_ != model::kNoObject) {
+      fixed.push_back(n - 1);  // ARI takes the place nearest to it; the members the others
+    }
+    slot_of_ = assign_slots(participant_positions_, slots, fixed);
+    slots_stale_ = false;
+  }
+  places_.clear();
+  for (size_t k = 0; k < n; ++k) {
+    places_.push_back(slots[slot_of_[k]]);
   }
 }
 
@@ -244,8 +279,12 @@ void GroupNavigation::step_circle(const StepContext& context) {
     outsiders_of(simulation, human, p);
 
     // Eq. 3.9: repulsion (participants at the group's spacing, others at the personal
-    // distance), equality and cohesion.
+    // distance), equality and cohesion; and the pull to the member's place on the circle, which
+    // D6.4's forces alone do not share out evenly (a newcomer can settle inside the ring).
+    const Eigen::Vector2d to_place =
+        places_.empty() ? Eigen::Vector2d::Zero() : Eigen::Vector2d(places_[i].position - p);
     const Eigen::Vector2d force =
+        spec_.place_gain * to_place +
         social_forces::repulsion_force(p, others_, member_personal_distance) +
         social_forces::repulsion_force(p, outsiders_, params.personal_distance_m) +
         social_forces::equality_force(p, social_neighbours_) +
@@ -271,32 +310,12 @@ void GroupNavigation::step_circle(const StepContext& context) {
 
 void GroupNavigation::step_rows(const StepContext& context) {
   Simulation& simulation = context.simulation;
-  const size_t n = participant_count();
-  FormationShape shape;
-  shape.arrangement = spec_.arrangement;
-  shape.centre = spec_.centre;
-  shape.heading_rad = *heading_rad_;
-  shape.radius_m = ospace_radius_m();
-  shape.shoulder_spacing_m = spec_.shoulder_spacing_m;
-  const std::vector<FormationSlot> slots = formation_slots(shape, n);
-  if (slots_stale_ || slot_of_.size() != n) {
-    std::vector<size_t> fixed;
-    if (robot_joining_ != model::kNoObject) {
-      fixed.push_back(n - 1);  // ARI takes the place nearest to it; the members the others
-    }
-    slot_of_ = assign_slots(participant_positions_, slots, fixed);
-    slots_stale_ = false;
-  }
-  places_.clear();
-  for (size_t k = 0; k < n; ++k) {
-    places_.push_back(slots[slot_of_[k]]);
-  }
   // Members keep clear of one another within most of the closest two places' gap, so that
   // they pass each other on the way to their places but do not push at them.
   double closest_places = std::numeric_limits<double>::infinity();
-  for (size_t a = 0; a < slots.size(); ++a) {
-    for (size_t b = a + 1; b < slots.size(); ++b) {
-      closest_places = std::min(closest_places, (slots[a].position - slots[b].position).norm());
+  for (size_t a = 0; a < places_.size(); ++a) {
+    for (size_t b = a + 1; b < places_.size(); ++b) {
+      closest_places = std::min(closest_places, (places_[a].position - places_[b].position).norm());
     }
   }
   const double member_distance =
@@ -304,7 +323,7 @@ void GroupNavigation::step_rows(const StepContext& context) {
   for (size_t i = 0; i < spec_.members.size(); ++i) {
     Human& human = *simulation.mutable_human(spec_.members[i]);
     const Eigen::Vector2d& p = participant_positions_[i];
-    const FormationSlot& slot = slots[slot_of_[i]];
+    const FormationSlot& slot = places_[i];
     others_than(i);
     outsiders_of(simulation, human, p);
     // Cohesion toward the member's place (eq. 3.17 with the place for the o-space ring), and

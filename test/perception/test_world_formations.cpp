@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/perception/gcff.hpp"
+#include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "recorded_formations.hpp"
@@ -23,6 +25,7 @@ using model::Arrangement;
 constexpr double kPerceptionStrideM = 0.6;
 constexpr int kSeedsPerCase = 6;
 constexpr double kSettleS = 30.0;
+constexpr double kJoinS = 30.0;
 
 // A walled 8 x 8 m room.
 model::WorldDescription room() {
@@ -164,6 +167,110 @@ TEST(WorldFormations, FallWithinTheRecordedSpread) {
       };
       within(world.offset_deg, reference.offset_deg, "facing off the centre");
     }
+  }
+}
+
+// A human joining a group of 2, 3 or 4 (/sim/join_group) from 3-5 m away, with another group
+// of three standing 3.5-4.5 m from the first: after 20 s GCFF on the ground truth (perception's
+// stride and MDL) puts the newcomer with every member, in at least 98 of 100 seeded episodes per
+// size, and the newcomer never enters the other group's o-space.
+TEST(WorldFormations, AHumanJoiningIsCountedInTheGroup) {
+  constexpr int kEpisodes = 100;
+  GcffParams params;
+  params.stride = kPerceptionStrideM;
+  params.mdl = 0.8;
+  GcffDetector detector(params);
+  for (int size = 2; size <= 4; ++size) {
+    int counted = 0;
+    int intrusions = 0;
+    for (int episode = 0; episode < kEpisodes; ++episode) {
+      const uint64_t seed = 1000 * size + episode;
+      world::Simulation simulation(room(), world::SimulationConfig{0.05, seed, 0.05});
+      core::Rng rng(seed);
+      const Arrangement arrangements[] = {Arrangement::kCircle, Arrangement::kVisAVis,
+                                          Arrangement::kLShape, Arrangement::kSideBySide};
+      // Two groups at their places: the one joined, and another to keep out of.
+      auto place_group = [&](model::ObjectId id, model::ObjectId first, int members,
+                             const Eigen::Vector2d& centre, Arrangement arrangement) {
+        world::GroupSpec spec;
+        spec.id = id;
+        spec.centre = centre;
+        spec.arrangement = arrangement;
+        spec.heading_rad = rng.uniform(-M_PI, M_PI);
+        world::FormationShape shape;
+        shape.arrangement = arrangement;
+        shape.centre = centre;
+        shape.heading_rad = *spec.heading_rad;
+        shape.radius_m = arrangement == Arrangement::kCircle
+                             ? world::GroupNavigation::ospace_radius_for(
+                                   members, spec.member_spacing_m, spec.min_ospace_radius_m)
+                             : world::row_distance_for(arrangement, spec.member_spacing_m);
+        shape.shoulder_spacing_m = spec.shoulder_spacing_m;
+        const std::vector<world::FormationSlot> slots = world::formation_slots(shape, members);
+        for (int k = 0; k < members; ++k) {
+          world::HumanSpec human;
+          human.id = first + static_cast<model::ObjectId>(k);
+          human.pose = {slots[k].position, slots[k].facing_rad};
+          simulation.add_human(human);
+          spec.members.push_back(human.id);
+        }
+        simulation.add_group(spec);
+        return spec;
+      };
+      const Eigen::Vector2d centre(rng.uniform(3.0, 5.0), rng.uniform(3.0, 5.0));
+      const world::GroupSpec joined =
+          place_group(1, 10, size, centre, arrangements[rng.uniform_index(4)]);
+      const double other_bearing = rng.uniform(-M_PI, M_PI);
+      const Eigen::Vector2d other_centre =
+          centre +
+          rng.uniform(3.5, 4.5) * Eigen::Vector2d(std::cos(other_bearing), std::sin(other_bearing));
+      const bool other_fits =
+          (other_centre.array() > 1.2).all() && (other_centre.array() < 6.8).all();
+      if (other_fits) {
+        place_group(2, 20, 3, other_centre, Arrangement::kCircle);
+      }
+      // The newcomer, 3-5 m from the centre on the side away from the other group.
+      world::HumanSpec newcomer;
+      newcomer.id = 30;
+      for (int draw = 0; draw < 100; ++draw) {
+        const double bearing = other_bearing + M_PI + rng.uniform(-1.2, 1.2);
+        const Eigen::Vector2d at =
+            centre + rng.uniform(3.0, 5.0) * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+        newcomer.pose = {at, rng.uniform(-M_PI, M_PI)};
+        if ((at.array() > 0.5).all() && (at.array() < 7.5).all()) {
+          break;
+        }
+      }
+      simulation.add_human(newcomer);
+      simulation.join_group(1, 30);
+      const double other_radius = world::GroupNavigation::ospace_radius_for(3, 0.9, 0.45);
+      bool intruded = false;
+      while (simulation.time_s() < kJoinS - 1e-9) {
+        simulation.step();
+        const Eigen::Vector2d p = simulation.find_human(30)->pose().position;
+        intruded = intruded || (other_fits && (p - other_centre).norm() < other_radius);
+      }
+      intrusions += intruded ? 1 : 0;
+      std::vector<GcffPerson> people;
+      for (const world::Human* human : simulation.humans()) {
+        people.push_back({std::to_string(human->id()), human->pose().position.x(),
+                          human->pose().position.y(), human->pose().theta});
+      }
+      const GcffResult result = detector.detect(people);
+      // People are listed by id: the members 10.., then the other group 20.., then 30 last.
+      const int newcomer_label = result.labels.back();
+      bool together = true;
+      for (size_t k = 0; k < joined.members.size(); ++k) {
+        together = together && result.labels[k] == newcomer_label;
+      }
+      counted += together ? 1 : 0;
+    }
+    std::printf(
+        "a human joining a group of %d: GCFF counts them in %d of %d, %d entered the "
+        "other group's o-space\n",
+        size, counted, kEpisodes, intrusions);
+    EXPECT_GE(counted, 98) << "groups of " << size;
+    EXPECT_EQ(intrusions, 0) << "groups of " << size;
   }
 }
 

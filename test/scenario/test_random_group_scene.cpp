@@ -79,8 +79,9 @@ TEST(RandomGroupScene, GroupsAreDrawnAsSpecifiedAndTheWorldTakesThem) {
       shape.heading_rad = *group.heading_rad;
       shape.radius_m =
           group.arrangement == model::Arrangement::kCircle
-              ? world::GroupNavigation::ospace_radius_for(group.members.size(), 1.1, 0.6)
-              : world::row_distance_for(group.arrangement, 1.1);
+              ? world::GroupNavigation::ospace_radius_for(
+                    group.members.size(), group.member_spacing_m, group.min_ospace_radius_m)
+              : world::row_distance_for(group.arrangement, group.member_spacing_m);
       const auto slots = world::formation_slots(shape, group.members.size());
       for (size_t m = 0; m < group.members.size(); ++m) {
         const world::HumanSpec& member = *humans.at(group.members[m]);

@@ -278,7 +278,9 @@ TEST(GroupArrangements, ARIPassingByOrFacingAwayIsNotCounted) {
   EXPECT_EQ(group.robot_joining(), ari.id);
 }
 
-TEST(GroupArrangements, SideBySideRowsGrowAndShrinkWithoutChangingArrangement) {
+// A third person joining a side-by-side pair turns it to face them: a circle of three. When they
+// leave, the pair stands side by side again, each at a place of the row.
+TEST(GroupArrangements, RowsJoinedBecomeACircleAndFormAgainWhenLeft) {
   Formed formed = form(Arrangement::kSideBySide, 2, 19);
   Simulation& simulation = *formed.simulation;
   HumanSpec newcomer;
@@ -286,10 +288,20 @@ TEST(GroupArrangements, SideBySideRowsGrowAndShrinkWithoutChangingArrangement) {
   newcomer.pose = {{6.0, 6.0}, 0.0};
   simulation.add_human(newcomer);
   simulation.add_group_members(formed.group, {30});
+  const GroupNavigation& group = *simulation.find_group(formed.group);
+  EXPECT_EQ(group.arrangement(), Arrangement::kCircle);
   for (int k = 0; k < 600; ++k) {
     simulation.step();
   }
-  const GroupNavigation& group = *simulation.find_group(formed.group);
+  const double radius = GroupNavigation::ospace_radius_for(3, 0.9, 0.45);
+  for (model::ObjectId id : group.members()) {
+    const Eigen::Vector2d p = simulation.find_human(id)->pose().position;
+    EXPECT_NEAR((p - group.centre()).norm(), radius, 0.12) << "human " << id;
+  }
+  simulation.leave_group(30);
+  for (int k = 0; k < 600; ++k) {
+    simulation.step();
+  }
   EXPECT_EQ(group.arrangement(), Arrangement::kSideBySide);
   for (size_t i = 0; i < group.members().size(); ++i) {
     EXPECT_LT(

@@ -50,6 +50,7 @@ TEST(GroupNavigation, Eq3_9To3_12OneStepOfIsolatedMembers) {
   group.centre = {5.0, 5.0};
   group.ospace_radius_m = 1.0;
   group.facing_spread_deg = 0.0;  // D6.4's equations alone
+  group.place_gain = 0.0;
   simulation.add_group(group);
   // Scripts run at the end of the step; the plan is applied in the next one.
   simulation.step();
@@ -86,6 +87,7 @@ TEST(GroupNavigation, GroupsOf2To5FormCircularFformationsFromRandomStarts) {
       group.members = test::add_random_humans(simulation, size, kSide, 0.4, rng);
       group.centre = {rng.uniform(2.0, 4.0), rng.uniform(2.0, 4.0)};
       group.facing_spread_deg = 0.0;  // D6.4's forces alone, facing the centre
+      group.place_gain = 0.0;
       const GroupNavigation& script = simulation.add_group(group);
 
       double deepest_into_wall = -1.0;

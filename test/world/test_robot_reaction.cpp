@@ -298,9 +298,12 @@ struct PairRun {
   model::ObjectId group[2]{0, 0};
 };
 
-PairRun pair_meets_ari(ReactionProfile south, ReactionProfile north) {
+// ARI drives east along y = `ari_y` toward (or, off y = 6, past) a pair standing north and south
+// of (6, 6). Straight at the pair, ARI ends within reach of its o-space, facing it: the pair then
+// opens a place for it (docs/world.md section 4.6).
+PairRun pair_meets_ari(ReactionProfile south, ReactionProfile north, double ari_y = 6.0) {
   auto sim = room();
-  add_ari(*sim, 2.0, 6.0, 0.0);
+  add_ari(*sim, 2.0, ari_y, 0.0);
   HumanSpec a = person(6.0, 5.4, core::kPi / 2, south);
   HumanSpec b = person(6.0, 6.6, -core::kPi / 2, north);
   b.id = 11;
@@ -332,7 +335,8 @@ PairRun pair_meets_ari(ReactionProfile south, ReactionProfile north) {
 }
 
 TEST(RobotReaction, CuriousGroupMembersLookAtAriWithoutLeavingTheirPlace) {
-  const PairRun run = pair_meets_ari(ReactionProfile::kCurious, ReactionProfile::kCurious);
+  // ARI passes 2 m south of the pair's centre, in their sight, without joining them.
+  const PairRun run = pair_meets_ari(ReactionProfile::kCurious, ReactionProfile::kCurious, 4.0);
   EXPECT_EQ(run.group[0], 1u);
   EXPECT_EQ(run.group[1], 1u);
   EXPECT_GE(run.gaze_share, 0.6);

@@ -21,6 +21,8 @@ class Human;
 constexpr size_t kMaxGroupMembers = 50;
 /// Largest o-space radius and member spacing (m) a group may be given.
 constexpr double kMaxOspaceRadiusM = 10.0;
+/// Largest place_gain (m/s per m): a stiffer pull would overshoot within one 0.05 s step.
+constexpr double kMaxPlaceGain = 10.0;
 /// Largest facing_spread (deg): beyond it members would no longer face their o-space.
 constexpr double kMaxFacingSpreadDeg = 45.0;
 /// spacing_factor stays below this, under the golden ratio: in a group of five, neighbours two
@@ -63,6 +65,10 @@ struct GroupSpec {
   /// formation has them face (seeded per member). People do not face an o-space exactly: recorded
   /// members turn 3-110 deg off it (10th-90th percentile, docs/world.md).
   double facing_spread_deg{15.0};
+  /// m/s per m: how strongly each member of a circle is pulled to its evenly spaced place (0:
+  /// D6.4's forces alone, under which a newcomer can settle inside the ring and the others
+  /// bunch). Rows always hold their members to their places.
+  double place_gain{1.0};
 
   /// A group as a scene file's `groups` entry writes it (config_fields.hpp).
   template <class V>
@@ -103,6 +109,10 @@ struct GroupSpec {
     v.field("facing_spread", facing_spread_deg,
             "deg, standard deviation of each member's body turn off the formation's facing",
             core::between(0.0, kMaxFacingSpreadDeg));
+    v.field("place_gain", place_gain,
+            "m/s per m: pull of each member of a circle to its evenly spaced place; 0 = D6.4's "
+            "forces alone",
+            core::between(0.0, kMaxPlaceGain));
     v.field("shoulder_spacing", shoulder_spacing_m,
             "m between neighbours side by side in one row (side-by-side, larger vis-a-vis and "
             "L groups)",
@@ -148,17 +158,18 @@ class GroupNavigation {
   model::ObjectId id() const { return spec_.id; }
   const std::vector<model::ObjectId>& members() const { return spec_.members; }
   const Eigen::Vector2d& centre() const { return spec_.centre; }
-  /// The arrangement kept now: the configured one, except that a vis-a-vis or L group joined by
-  /// more participants than it was formed with becomes a circle (D6.4 §3.4.2: a third person
-  /// turns an L into a circle), and a circle of two stands vis-a-vis.
+  /// The arrangement kept now: the configured one, except that rows (vis-a-vis, l-shape,
+  /// side-by-side) joined by more participants than they were formed with become a circle
+  /// (D6.4 §3.4.2: a third person turns an L into a circle), and a circle of two stands
+  /// vis-a-vis.
   model::Arrangement arrangement() const;
   /// Bearing (rad) of the first row from the centre; unset until the group first steps when the
   /// spec left it to the members' places.
   const std::optional<double>& heading_rad() const { return heading_rad_; }
   /// ARI while it takes part in the formation (joining or joined), else kNoObject.
   model::ObjectId robot_joining() const { return robot_joining_; }
-  /// Each participant's place (members in order, then ARI while it joins) as of the last step,
-  /// while rows hold the formation; empty while a circle does.
+  /// Each participant's place (members in order, then ARI while it joins) as of the last step;
+  /// empty for a circle with place_gain 0.
   const std::vector<FormationSlot>& places() const { return places_; }
   /// Members, plus ARI while it joins.
   size_t participant_count() const;
@@ -191,8 +202,11 @@ class GroupNavigation {
   // between kRobotJoinReachM and kRobotLeaveReachM).
   void update_robot_joining(const Simulation& simulation);
   void resolve_heading();
-  // True while D6.4's forces keep a circle: configured so, or a dyad's arrangement outgrown.
+  // True while D6.4's forces keep a circle: configured so, or rows outgrown by joining.
   bool kept_as_circle() const;
+  // Deals the participants their places (after a change of participants or arrangement) and
+  // moves the places with the centre; a circle without place_gain has none.
+  void deal_places(bool circle);
   void step_circle(const StepContext& context);
   void step_rows(const StepContext& context);
   // Fills others_ with every participant but the i-th, outsiders_ with the agents near `p`
@@ -210,6 +224,7 @@ class GroupNavigation {
   // The member count the arrangement was set for (a dyad's arrangement grows into a circle).
   size_t arranged_size_{0};
   std::optional<double> heading_rad_;
+  double circle_heading_rad_{0.0};
   model::ObjectId robot_joining_{model::kNoObject};
   bool robot_asked_to_join_{false};
   bool robot_asked_to_leave_{false};
