@@ -20,8 +20,9 @@ constexpr double kClearancePenalty = 3.0;
 constexpr double kSnapRadiusM = 0.5;
 // Cells averaged on either side of a route point: the grid's 45-degree steps become a line.
 constexpr int kSmoothingCells = 3;
-// Half the chord (m) the walking direction is measured over.
-constexpr double kHeadingChordM = 0.5;
+// Half the chord (m) the walking direction is measured over: a row of four, 2.25 m long, turns
+// with the grid's single-cell steps by a few degrees only.
+constexpr double kHeadingChordM = 1.0;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The occupancy grid with each cell's clearance (m) from the nearest occupied cell or the floor's

@@ -149,6 +149,47 @@ TEST_P(AbreastInTheOpen, KeepsItsSpacingAndReachesTheGoalInTime) {
 
 INSTANTIATE_TEST_SUITE_P(TwoToFour, AbreastInTheOpen, ::testing::Values(2, 3, 4));
 
+TEST(WalkingGroup, FormsTheRowFromAScatteredStart) {
+  // Four people standing anyhow within 1.5 m of (3, 10) set off for (17, 10) together.
+  Simulation simulation(test::square_room(20.0), SimulationConfig{});
+  const std::vector<Eigen::Vector2d> starts = {{3.0, 9.2}, {2.2, 10.6}, {3.6, 10.9}, {2.5, 9.9}};
+  std::vector<model::ObjectId> ids;
+  for (size_t i = 0; i < starts.size(); ++i) {
+    HumanSpec spec;
+    spec.id = static_cast<model::ObjectId>(10 + i);
+    spec.pose = {starts[i], 1.0 * i};
+    simulation.add_human(spec);
+    ids.push_back(spec.id);
+  }
+  const WalkingGroup& group = simulation.add_walking_group(walking(ids, {17.0, 10.0}));
+  double worst_gap_error = 0.0;
+  double worst_along = 0.0;
+  while (!group.has_arrived() && simulation.time_s() < 30.0) {
+    simulation.step();
+    // Forming the row: one 0.8 m behind its place closes up at 1.3 - 1.05 = 0.25 m/s.
+    if (simulation.time_s() < 5.0) {
+      continue;
+    }
+    const std::vector<Eigen::Vector2d> p = positions_of(simulation, ids);
+    std::vector<double> y;
+    for (const Eigen::Vector2d& q : p) {
+      y.push_back(q.y());
+    }
+    std::sort(y.begin(), y.end());
+    for (size_t i = 1; i < y.size(); ++i) {
+      worst_gap_error = std::max(worst_gap_error, std::abs(y[i] - y[i - 1] - 0.75));
+    }
+    worst_along = std::max(worst_along, spread_along(p, {1.0, 0.0}));
+  }
+  EXPECT_TRUE(group.has_arrived());
+  EXPECT_LT(worst_gap_error, 0.3);
+  EXPECT_LT(worst_along, 0.3);
+  std::printf(
+      "4 from a scattered start: after 5 s worst gap error %.3f m, along spread %.3f m; "
+      "arrived after %.2f s\n",
+      worst_gap_error, worst_along, simulation.time_s());
+}
+
 TEST(WalkingGroup, LineWalksOneBehindTheOther) {
   Simulation simulation(test::square_room(20.0), SimulationConfig{});
   const std::vector<model::ObjectId> ids = add_row(simulation, 3, {2.0, 10.0}, 0.75);

@@ -30,7 +30,7 @@ class WalkingRoute {
   double length_m() const { return arc_m_.back(); }
   /// The point `s_m` along the route, clamped to [0, length].
   Eigen::Vector2d point_at(double s_m) const;
-  /// Walking direction (rad, map frame) at `s_m`: along the chord over +-half a metre, which
+  /// Walking direction (rad, map frame) at `s_m`: along the chord over +-1 m, which
   /// smooths the grid's steps.
   double heading_at(double s_m) const;
   /// Least clearance (m) to walls, furniture and the floor's edge on the route between s0 and s1.
