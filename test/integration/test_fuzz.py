@@ -35,8 +35,8 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import (ApproachAction, ApproachGoal, Group, IdsList, TtsAction, TtsGoal,
                                 WorldState)
-from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, DialogueReset,
-                                DialogueStep, RemoveHuman, Say, SetGazeTargets, SetGoal, SetGroupCentre, SetPose,
+from ari_social_sim.srv import (AddGroupMembers, CreateGroup, DialogueReset, DialogueStep,
+                                RemoveHuman, Say, SetGazeTargets, SetGoal, SetGroupCentre, SetPose,
                                 SetVelocity, SpawnHuman, StepSimulation)
 
 SEED = 20261124
@@ -163,9 +163,6 @@ def baselines(rng, world):
         "/sim/set_pose": (SetPose, dict(id=human, pose=pose)),
         "/sim/create_group": (CreateGroup, dict(id=0, members=humans[:2],
                                                 centre=pose_point(pose), ospace_radius=0.6)),
-        "/sim/create_walking_group": (CreateWalkingGroup, dict(
-            id=0, members=humans[:2], formation="side-by-side", goal=pose, speed=1.0,
-            spacing=0.75, on_arrival="converse", arrangement="circle")),
         "/sim/add_group_members": (AddGroupMembers, dict(group_id=rng.choice(groups),
                                                          members=[human])),
         "/sim/set_group_centre": (SetGroupCentre, dict(group_id=rng.choice(groups),
