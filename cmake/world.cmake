@@ -20,6 +20,8 @@ add_library(ari_world
   src/world/simulation.cpp
   src/world/social_forces.cpp
   src/world/speech_generator.cpp
+  src/world/walking_group.cpp
+  src/world/walking_route.cpp
   src/world/world_run_config.cpp
   src/world/world_snapshot.cpp)
 target_link_libraries(ari_world PUBLIC ari_model box2d::box2d)
@@ -39,6 +41,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_simulation.cpp
       test/world/test_social_forces.cpp
       test/world/test_speech_generator.cpp
+      test/world/test_walking_group.cpp
       test/world/test_world_requests.cpp
       test/world/test_world_run_config.cpp
     LIBRARIES ari_world)

@@ -25,6 +25,7 @@
 #include "ari_social_sim/AddGroupMembers.h"
 #include "ari_social_sim/ApproachAction.h"
 #include "ari_social_sim/CreateGroup.h"
+#include "ari_social_sim/CreateWalkingGroup.h"
 #include "ari_social_sim/DialogueOutcome.h"
 #include "ari_social_sim/DialogueUtterance.h"
 #include "ari_social_sim/Group.h"
@@ -280,6 +281,21 @@ class RosCommands : public scenario::Commands {
       // The heading is not among create_group's fields: it follows as its own request.
       set_group_arrangement(service.response.id, spec.arrangement, spec.heading_rad);
     }
+  }
+
+  // The script refuses the spec's fields the service does not carry (line_spacing,
+  // wait_distance), so the request is the whole spec.
+  void create_walking_group(const world::WalkingGroupSpec& spec) override {
+    CreateWalkingGroup service;
+    service.request.id = spec.id;
+    service.request.members = spec.members;
+    service.request.formation = world::to_string(spec.formation);
+    service.request.goal = to_msg(spec.goal);
+    service.request.speed = spec.speed_mps;
+    service.request.spacing = spec.spacing_m;
+    service.request.on_arrival = world::to_string(spec.on_arrival);
+    service.request.arrangement = model::to_string(spec.arrangement);
+    call("/sim/create_walking_group", service);
   }
 
   void add_group_members(model::ObjectId group,

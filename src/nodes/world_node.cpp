@@ -25,6 +25,7 @@
 
 #include "ari_social_sim/AddGroupMembers.h"
 #include "ari_social_sim/CreateGroup.h"
+#include "ari_social_sim/CreateWalkingGroup.h"
 #include "ari_social_sim/JoinGroup.h"
 #include "ari_social_sim/LeaveGroup.h"
 #include "ari_social_sim/RemoveHuman.h"
@@ -132,6 +133,8 @@ class WorldNode {
     services_.push_back(nh_.advertiseService("/sim/set_velocity", &WorldNode::set_velocity, this));
     services_.push_back(nh_.advertiseService("/sim/set_pose", &WorldNode::set_pose, this));
     services_.push_back(nh_.advertiseService("/sim/create_group", &WorldNode::create_group, this));
+    services_.push_back(
+        nh_.advertiseService("/sim/create_walking_group", &WorldNode::create_walking_group, this));
     services_.push_back(
         nh_.advertiseService("/sim/add_group_members", &WorldNode::add_group_members, this));
     services_.push_back(
@@ -375,6 +378,21 @@ class WorldNode {
       spec.arrangement =
           world::requested_arrangement("create_group", req.arrangement, spec.arrangement);
       res.id = simulation_->add_group(spec).id();
+    });
+  }
+
+  bool create_walking_group(CreateWalkingGroup::Request& req, CreateWalkingGroup::Response& res) {
+    return answer(res, [&] {
+      world::WalkingGroupRequest request;
+      request.id = req.id;
+      request.members = req.members;
+      request.formation = req.formation;
+      request.goal = from_msg(req.goal);
+      request.speed_mps = req.speed;
+      request.spacing_m = req.spacing;
+      request.on_arrival = req.on_arrival;
+      request.arrangement = req.arrangement;
+      res.id = simulation_->add_walking_group(request.spec()).id();
     });
   }
 

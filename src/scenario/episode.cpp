@@ -68,6 +68,9 @@ class Episode::InProcessCommands : public Commands {
 
   void remove_human(model::ObjectId human) override { world_.remove_human(human); }
   void create_group(const world::GroupSpec& spec) override { world_.add_group(spec); }
+  void create_walking_group(const world::WalkingGroupSpec& spec) override {
+    world_.add_walking_group(spec);
+  }
   void add_group_members(model::ObjectId group,
                          const std::vector<model::ObjectId>& members) override {
     world_.add_group_members(group, members);

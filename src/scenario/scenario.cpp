@@ -21,6 +21,7 @@ const std::vector<std::string> kActionTypes = {"say",
                                                "add_human",
                                                "remove_human",
                                                "create_group",
+                                               "create_walking_group",
                                                "add_group_members",
                                                "set_group_centre",
                                                "leave_group",
@@ -97,6 +98,9 @@ class ScriptReader {
       known_.humans.insert(human.id);
     }
     for (const world::GroupSpec& group : scene.groups) {
+      known_.groups.insert(group.id);
+    }
+    for (const world::WalkingGroupSpec& group : scene.walking_groups) {
       known_.groups.insert(group.id);
     }
   }
@@ -271,6 +275,8 @@ class ScriptReader {
       action = RemoveHumanAction{read_human(entry, "human")};
     } else if (type == "create_group") {
       action = CreateGroupAction{read_created_group(entry.map("group"))};
+    } else if (type == "create_walking_group") {
+      action = CreateWalkingGroupAction{read_created_walking_group(entry.map("group"))};
     } else if (type == "add_group_members") {
       AddGroupMembersAction a;
       a.group = read_group_ref(entry, "group");
@@ -349,6 +355,27 @@ class ScriptReader {
       }
     }
     const world::GroupSpec spec = world::parse_group(entry);
+    if (!known_.groups.insert(spec.id).second) {
+      entry.fail("id", "a group id used by no other group of the scenario",
+                 std::to_string(spec.id));
+    }
+    for (model::ObjectId id : spec.members) {
+      check_agent(AgentRef::human(id), entry.field_name("members"));
+    }
+    return spec;
+  }
+
+  // A walking group takes what /sim/create_walking_group carries.
+  world::WalkingGroupSpec read_created_walking_group(const core::YamlMap& entry) {
+    for (const char* key : {"line_spacing", "wait_distance"}) {
+      if (entry.has(key)) {
+        entry.fail(
+            key,
+            "nothing: walking groups created during a run take the default " + std::string(key),
+            "a value");
+      }
+    }
+    const world::WalkingGroupSpec spec = world::parse_walking_group(entry);
     if (!known_.groups.insert(spec.id).second) {
       entry.fail("id", "a group id used by no other group of the scenario",
                  std::to_string(spec.id));

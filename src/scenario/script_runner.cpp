@@ -71,6 +71,9 @@ std::string describe(const Action& action) {
           [](const CreateGroupAction& a) {
             return "create_group (" + std::to_string(a.group.id) + ")";
           },
+          [](const CreateWalkingGroupAction& a) {
+            return "create_walking_group (" + std::to_string(a.group.id) + ")";
+          },
           [](const AddGroupMembersAction& a) {
             return "add_group_members (" + std::to_string(a.group) + ")";
           },
@@ -271,6 +274,7 @@ bool ScriptRunner::run(const std::vector<Action>& actions, const Observations& o
               [&](const AddHumanAction& a) { commands.add_human(a.human); },
               [&](const RemoveHumanAction& a) { commands.remove_human(a.human); },
               [&](const CreateGroupAction& a) { commands.create_group(a.group); },
+              [&](const CreateWalkingGroupAction& a) { commands.create_walking_group(a.group); },
               [&](const AddGroupMembersAction& a) {
                 commands.add_group_members(a.group, a.members);
               },

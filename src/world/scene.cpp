@@ -17,6 +17,10 @@ GroupSpec parse_group(const core::YamlMap& entry) {
   return core::read_fields<GroupSpec>(entry);
 }
 
+WalkingGroupSpec parse_walking_group(const core::YamlMap& entry) {
+  return core::read_fields<WalkingGroupSpec>(entry);
+}
+
 Scene parse_scene(const core::YamlMap& root, const std::string& base_dir) {
   const SceneFile file = core::read_fields<SceneFile>(root);
   Scene scene;
@@ -34,11 +38,16 @@ Scene parse_scene(const core::YamlMap& root, const std::string& base_dir) {
   scene.ari = file.ari;
   scene.humans = file.humans;
   scene.groups = file.groups;
+  scene.walking_groups = file.walking_groups;
   for (size_t i = 0; i < scene.humans.size(); ++i) {
     scene.human_fields.push_back(root.field_name("humans[" + std::to_string(i) + "]"));
   }
   for (size_t i = 0; i < scene.groups.size(); ++i) {
     scene.group_fields.push_back(root.field_name("groups[" + std::to_string(i) + "]"));
+  }
+  for (size_t i = 0; i < scene.walking_groups.size(); ++i) {
+    scene.walking_group_fields.push_back(
+        root.field_name("walking_groups[" + std::to_string(i) + "]"));
   }
   return scene;
 }
@@ -74,6 +83,13 @@ std::unique_ptr<Simulation> build_simulation(const Scene& scene, SimulationConfi
       simulation->add_group(scene.groups[i]);
     } catch (const core::RequestError& e) {
       throw core::ConfigError(scene.group_fields[i] + ": " + e.what());
+    }
+  }
+  for (size_t i = 0; i < scene.walking_groups.size(); ++i) {
+    try {
+      simulation->add_walking_group(scene.walking_groups[i]);
+    } catch (const core::RequestError& e) {
+      throw core::ConfigError(scene.walking_group_fields[i] + ": " + e.what());
     }
   }
   for (size_t i = 0; i < scene.humans.size(); ++i) {

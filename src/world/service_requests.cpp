@@ -54,6 +54,24 @@ GazeModel GazeTargetsRequest::model() const {
   return model;
 }
 
+WalkingGroupSpec WalkingGroupRequest::spec() const {
+  const RequestCheck check("create_walking_group");
+  WalkingGroupSpec spec;
+  spec.id = id;
+  spec.members = members;
+  read_choice(check, "formation", formation, kWalkingFormations, spec.formation);
+  spec.goal = goal;
+  if (speed_mps != 0.0) {
+    spec.speed_mps = speed_mps;
+  }
+  if (spacing_m != 0.0) {
+    spec.spacing_m = spacing_m;
+  }
+  read_choice(check, "on_arrival", on_arrival, kArrivalActions, spec.on_arrival);
+  read_choice(check, "arrangement", arrangement, model::kArrangements, spec.arrangement);
+  return spec;
+}
+
 model::Arrangement requested_arrangement(const std::string& request, const std::string& text,
                                          model::Arrangement unnamed) {
   model::Arrangement arrangement = unnamed;

@@ -297,17 +297,18 @@ const Ari& Simulation::add_ari(const AriSpec& spec) {
 
 const GroupNavigation& Simulation::add_group(GroupSpec spec) {
   if (spec.id == model::kNoObject) {
-    spec.id = groups_.empty() ? kFirstAutomaticGroupId : groups_.back()->id() + 1;
+    spec.id = next_group_id();
   }
   const RequestCheck check("create_group");
   check.on_floor("centre", spec.centre, world_);
   check.valid(spec);
-  if (find_group(spec.id) != nullptr) {
+  if (find_group(spec.id) != nullptr || find_walking_group(spec.id) != nullptr) {
     check.fail("id", "an id no other group uses", std::to_string(spec.id));
   }
   check_members(check, spec.members);
   for (model::ObjectId member : spec.members) {
     Human& human = *mutable_human(member);
+    leave_walking_group(human);
     if (GroupNavigation* previous = mutable_group(human.group_id())) {
       previous->remove_member(member);
     }
@@ -346,6 +347,7 @@ void Simulation::add_group_members(model::ObjectId group_id,
     if (human.group_id() == group_id) {
       continue;
     }
+    leave_walking_group(human);
     if (GroupNavigation* previous = mutable_group(human.group_id())) {
       previous->remove_member(member);
     }
@@ -369,6 +371,115 @@ void Simulation::drop_empty_groups() {
                     groups_.begin(), groups_.end(),
                     [](const std::unique_ptr<GroupNavigation>& g) { return g->members().empty(); }),
                 groups_.end());
+  walking_groups_.erase(
+      std::remove_if(walking_groups_.begin(), walking_groups_.end(),
+                     [](const std::unique_ptr<WalkingGroup>& g) { return g->members().empty(); }),
+      walking_groups_.end());
+}
+
+model::ObjectId Simulation::next_group_id() const {
+  model::ObjectId highest = kFirstAutomaticGroupId - 1;
+  if (!groups_.empty()) {
+    highest = std::max(highest, groups_.back()->id());
+  }
+  if (!walking_groups_.empty()) {
+    highest = std::max(highest, walking_groups_.back()->id());
+  }
+  return highest + 1;
+}
+
+const WalkingGroup* Simulation::find_walking_group(model::ObjectId id) const {
+  return find_sorted(walking_groups_, id);
+}
+
+WalkingGroup* Simulation::mutable_walking_group(model::ObjectId id) {
+  return find_sorted(walking_groups_, id);
+}
+
+const WalkingGroup& Simulation::add_walking_group(WalkingGroupSpec spec) {
+  if (spec.id == model::kNoObject) {
+    spec.id = next_group_id();
+  }
+  const RequestCheck check("create_walking_group");
+  check.pose_on_floor("goal", spec.goal, world_);
+  check.valid(spec);
+  if (find_group(spec.id) != nullptr || find_walking_group(spec.id) != nullptr) {
+    check.fail("id", "an id no other group (walking or conversing) uses", std::to_string(spec.id));
+  }
+  check_members(check, spec.members);
+  // Members keep their own max_speed: a group faster than its slowest member would leave it
+  // behind and wait for it for ever.
+  double slowest = std::numeric_limits<double>::infinity();
+  double widest = 0.0;
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  std::vector<Eigen::Vector2d> positions;
+  for (model::ObjectId member : spec.members) {
+    const Human& human = *find_human(member);
+    slowest = std::min(slowest, human.spec().motion.max_speed_mps);
+    widest = std::max(widest, human.spec().motion.body_radius_m);
+    positions.push_back(human.pose().position);
+    centroid += human.pose().position;
+  }
+  centroid /= static_cast<double>(spec.members.size());
+  if (spec.speed_mps > slowest) {
+    check.fail("speed",
+               "at most the slowest member's max_speed (" + core::number_text(slowest) + " m/s)",
+               core::number_text(spec.speed_mps));
+  }
+  // A conversation on arrival must be a group the world accepts.
+  if (spec.on_arrival == ArrivalAction::kConverse) {
+    GroupSpec conversation;
+    conversation.id = spec.id;
+    conversation.members = spec.members;
+    conversation.centre = spec.goal.position;
+    conversation.arrangement = spec.arrangement;
+    check.valid(conversation);
+  }
+  std::optional<WalkingRoute> route =
+      WalkingRoute::plan(world_, centroid, spec.goal.position, widest + kWalkingWallMarginM);
+  if (!route) {
+    check.fail("goal",
+               "a goal the members can walk to from their centroid (" +
+                   core::number_text(centroid.x()) + ", " + core::number_text(centroid.y()) +
+                   ") keeping " + core::number_text(widest + kWalkingWallMarginM) +
+                   " m from walls and furniture",
+               "(" + core::number_text(spec.goal.position.x()) + ", " +
+                   core::number_text(spec.goal.position.y()) + ")");
+  }
+  for (model::ObjectId member : spec.members) {
+    Human& human = *mutable_human(member);
+    release_from_group(human);
+    human.join_group(spec.id);
+  }
+  auto group = std::make_unique<WalkingGroup>(spec, std::move(*route), widest, positions);
+  WalkingGroup& ref = *group;
+  insert_sorted(walking_groups_, std::move(group));
+  return ref;
+}
+
+void Simulation::leave_walking_group(Human& human) {
+  if (WalkingGroup* walking = mutable_walking_group(human.group_id())) {
+    walking->remove_member(human.id());
+    human.leave_group();
+    drop_empty_groups();
+  }
+}
+
+void Simulation::converse_on_arrival() {
+  std::vector<GroupSpec> conversations;
+  for (const std::unique_ptr<WalkingGroup>& walking : walking_groups_) {
+    if (walking->has_arrived() && walking->spec().on_arrival == ArrivalAction::kConverse) {
+      conversations.push_back(walking->conversation());
+    }
+  }
+  for (const GroupSpec& conversation : conversations) {
+    // Checked when the walking group was created, and its id is kept for it: add_group cannot
+    // refuse it once the walking group is gone.
+    for (model::ObjectId member : conversation.members) {
+      leave_walking_group(*mutable_human(member));
+    }
+    add_group(conversation);
+  }
 }
 
 void Simulation::set_human_goal(model::ObjectId human_id, const core::Pose2& goal) {
@@ -487,6 +598,11 @@ void Simulation::leave_group(model::ObjectId agent_id) {
     return;
   }
   Human& human = static_cast<Human&>(agent);
+  // A walker stops where it is; the others walk on.
+  if (find_walking_group(human.group_id()) != nullptr) {
+    leave_walking_group(human);
+    return;
+  }
   const GroupNavigation* group = find_group(human.group_id());
   if (group == nullptr) {
     check.fail("agent_id", "an agent in a group",
@@ -551,6 +667,7 @@ double Simulation::say(model::ObjectId speaker_id, const std::string& act,
 }
 
 void Simulation::release_from_group(Human& human) {
+  leave_walking_group(human);
   if (GroupNavigation* group = mutable_group(human.group_id())) {
     group->remove_member(human.id());
     human.leave_group();
@@ -736,6 +853,10 @@ void Simulation::step() {
   for (const std::unique_ptr<GroupNavigation>& group : groups_) {
     group->step(context);
   }
+  for (const std::unique_ptr<WalkingGroup>& walking : walking_groups_) {
+    walking->step(context);
+  }
+  converse_on_arrival();
   ++step_count_;
 }
 

@@ -70,6 +70,12 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
                                group->ospace_radius_m(), group->arrangement(),
                                group->heading_rad().value_or(0.0), group->robot_joining()});
   }
+  for (const WalkingGroup* walking : simulation.walking_groups()) {
+    snapshot.walking_groups.push_back({walking->id(), walking->members(), walking->formation(),
+                                       walking->leader(), walking->heading_rad(),
+                                       walking->spec().goal, walking->spec().on_arrival,
+                                       walking->is_waiting(), walking->has_arrived()});
+  }
   return snapshot;
 }
 

@@ -15,8 +15,9 @@ from std_srvs.srv import SetBool, Trigger
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import WorldState
-from ari_social_sim.srv import (AddGroupMembers, CreateGroup, RemoveHuman, Say, SetGazeTargets,
-                                SetGoal, SetGroupCentre, SetPose, SetReaction, SetVelocity,
+from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, RemoveHuman,
+                                Say, SetGazeTargets, SetGoal, SetGroupCentre, SetPose, SetReaction,
+                                SetVelocity,
                                 SpawnHuman, StepSimulation)
 
 STEP_S = 0.05  # world_node's default step
@@ -99,7 +100,8 @@ class WorldNodeContract(unittest.TestCase):
         cls.diagnostics = LatestDiagnostics()
         for name in ["spawn_human", "remove_human", "set_goal", "set_velocity", "set_pose",
                      "create_group", "add_group_members", "set_group_centre", "say",
-                     "set_gaze_targets", "set_reaction", "reset", "pause", "step"]:
+                     "set_gaze_targets", "set_reaction", "reset", "pause", "step",
+                     "create_walking_group"]:
             rospy.wait_for_service("/sim/" + name, timeout=30)
         cls.call = {
             "spawn": rospy.ServiceProxy("/sim/spawn_human", SpawnHuman),
@@ -116,6 +118,7 @@ class WorldNodeContract(unittest.TestCase):
             "reset": rospy.ServiceProxy("/sim/reset", Trigger),
             "pause": rospy.ServiceProxy("/sim/pause", SetBool),
             "step": rospy.ServiceProxy("/sim/step", StepSimulation),
+            "walk": rospy.ServiceProxy("/sim/create_walking_group", CreateWalkingGroup),
         }
 
     def setUp(self):
@@ -397,6 +400,29 @@ class WorldNodeContract(unittest.TestCase):
         self.assertIn("set_reaction: id: no human with id 999", nobody.message)
         # The refusals changed nothing.
         self.assertEqual(human(self.state.wait(), 10).reaction, "curious")
+
+    def test_13_walking_groups(self):
+        # Paul and Irene leave the visitors' group 2 and walk abreast to the middle of the room.
+        bad = self.call["walk"](id=0, members=[20, 21], formation="abreast",
+                                goal=Pose2D(6.0, 3.0, 0.0))
+        self.assertFalse(bad.success)
+        self.assertEqual(bad.message, "create_walking_group: formation: expected side-by-side or "
+                                      "line, got 'abreast'")
+        bad = self.call["walk"](id=0, members=[20, 21], goal=Pose2D(NAN, 3.0, 0.0))
+        self.assertFalse(bad.success)
+        self.assertIn("create_walking_group: goal.x: expected", bad.message)
+        made = self.call["walk"](id=0, members=[20, 21], goal=Pose2D(6.0, 3.0, 0.0))
+        self.assertTrue(made.success, made.message)
+        self.assertEqual(made.id, 3)  # one past the scene's groups 1 and 2
+        state = self.state.wait(lambda m: any(w.id == made.id for w in m.walking_groups))
+        walking = next(w for w in state.walking_groups if w.id == made.id)
+        self.assertEqual(list(walking.members), [20, 21])
+        self.assertEqual(walking.formation, "side-by-side")
+        self.assertEqual(walking.on_arrival, "stop")
+        self.assertEqual(human(state, 20).group_id, made.id)
+        self.assertEqual(list(next(g for g in state.groups if g.id == 2).members), [22])
+        # 4.3 m at 1.05 m/s: arrived within 10 s of sim time.
+        self.state.wait(lambda m: any(w.id == made.id and w.arrived for w in m.walking_groups))
 
 
 if __name__ == "__main__":

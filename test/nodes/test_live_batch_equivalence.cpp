@@ -188,6 +188,9 @@ class LiveChain {
     }
     void remove_human(model::ObjectId human) override { chain_.world_->remove_human(human); }
     void create_group(const world::GroupSpec& spec) override { chain_.world_->add_group(spec); }
+    void create_walking_group(const world::WalkingGroupSpec& spec) override {
+      chain_.world_->add_walking_group(spec);
+    }
     void add_group_members(model::ObjectId group,
                            const std::vector<model::ObjectId>& members) override {
       chain_.world_->add_group_members(group, members);

@@ -19,6 +19,7 @@ class NoCommands : public Commands {
   void add_human(const world::HumanSpec&) override {}
   void remove_human(model::ObjectId) override {}
   void create_group(const world::GroupSpec&) override {}
+  void create_walking_group(const world::WalkingGroupSpec&) override {}
   void add_group_members(model::ObjectId, const std::vector<model::ObjectId>&) override {}
   void set_group_centre(model::ObjectId, const Eigen::Vector2d&) override {}
   void set_group_arrangement(model::ObjectId, model::Arrangement, std::optional<double>) override {}

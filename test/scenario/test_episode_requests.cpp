@@ -129,5 +129,58 @@ TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
   EXPECT_DOUBLE_EQ(in_process.groups[0].centre.x(), 4.0);
 }
 
+// A script's create_walking_group is the world's add_walking_group: Ana (10) and Luc (11) walk
+// abreast across room_6x6 and form a vis-a-vis conversation group at the goal, step for step as
+// in a twin world given the request directly.
+TEST(EpisodeRequests, AWalkingGroupWalksAsTheWorldsApiMakesIt) {
+  const std::string text =
+      "world: " + kSource +
+      "/worlds/room_6x6.yaml\nseed: 1\n"
+      "humans:\n"
+      "  - {id: 10, name: Ana, position: [1, 1.6]}\n"
+      "  - {id: 11, name: Luc, position: [1, 0.85]}\n"
+      "script:\n"
+      "  time_limit: 60\n"
+      "  start: s\n"
+      "  states:\n"
+      "    - name: s\n"
+      "      enter:\n"
+      "        - {type: create_walking_group, group: {id: 2, members: [10, 11], goal: {position: "
+      "[4.5, 4.5]}, on_arrival: converse, arrangement: vis-a-vis}}\n";
+  const Scenario scenario =
+      parse_scenario(core::YamlMap::parse(text, "inline.yaml"), kSource, "walking");
+  static const EpisodeConfig config = EpisodeConfig::load(kSource + "/config");
+  Episode episode(scenario, kSeed, config);
+  world::Scene scene = scenario.scene;
+  scene.seed = kSeed;
+  auto twin = world::build_simulation(scene, config.simulation);
+  twin->step();
+  episode.step();
+  world::WalkingGroupSpec walking;
+  walking.id = 2;
+  walking.members = {10, 11};
+  walking.goal.position = {4.5, 4.5};
+  walking.on_arrival = world::ArrivalAction::kConverse;
+  walking.arrangement = model::Arrangement::kVisAVis;
+  twin->add_walking_group(walking);
+  for (int i = 1; i < kSteps; ++i) {
+    twin->step();
+    episode.step();
+  }
+  const world::WorldSnapshot in_process = world::WorldSnapshot::of(episode.simulation());
+  const world::WorldSnapshot direct = world::WorldSnapshot::of(*twin);
+  ASSERT_EQ(in_process.humans.size(), 2u);
+  for (size_t i = 0; i < direct.humans.size(); ++i) {
+    EXPECT_EQ(in_process.humans[i].pose.position, direct.humans[i].pose.position);
+    EXPECT_EQ(in_process.humans[i].pose.theta, direct.humans[i].pose.theta);
+    EXPECT_EQ(in_process.humans[i].group_id, 2u);
+  }
+  // About 4.9 m at 1.05 m/s: after 10 s the walking group has become conversation group 2.
+  EXPECT_TRUE(in_process.walking_groups.empty());
+  ASSERT_EQ(in_process.groups.size(), 1u);
+  EXPECT_EQ(in_process.groups[0].id, 2u);
+  EXPECT_EQ(in_process.groups[0].arrangement, model::Arrangement::kVisAVis);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::scenario

@@ -241,6 +241,18 @@ TEST(Scenario, ActionErrorsNameTheAction) {
                   {at + ".human.age", "[0, 130]", "300"});
   expect_rejected(enter("{type: create_group, group: {id: 1, members: [10], centre: [1, 1]}}"),
                   {at + ".group.id", "used by no other group", "1"});
+  expect_rejected(enter("{type: create_walking_group, group: {id: 1, members: [10, 11], goal: "
+                        "{position: [1, 1]}}}"),
+                  {at + ".group.id", "used by no other group", "1"});
+  expect_rejected(enter("{type: create_walking_group, group: {id: 4, members: [10, 12], goal: "
+                        "{position: [1, 1]}}}"),
+                  {at + ".group.members", "a human of the scene", "12"});
+  expect_rejected(enter("{type: create_walking_group, group: {id: 4, members: [10, 11], goal: "
+                        "{position: [1, 1]}, wait_distance: 2}}"),
+                  {at + ".group.wait_distance", "default wait_distance"});
+  expect_rejected(enter("{type: create_walking_group, group: {id: 4, members: [10], goal: "
+                        "{position: [1, 1]}}}"),
+                  {at + ".group.members", "2 to 4 humans", "1"});
   expect_rejected(enter("{type: stop, reason: why}"), {at + ".success", "required"});
 }
 

@@ -35,6 +35,10 @@ class RecordingCommands : public Commands {
   void create_group(const world::GroupSpec& spec) override {
     record("group " + std::to_string(spec.id) + " of " + std::to_string(spec.members.size()));
   }
+  void create_walking_group(const world::WalkingGroupSpec& spec) override {
+    record("walking group " + std::to_string(spec.id) + " of " +
+           std::to_string(spec.members.size()));
+  }
   void add_group_members(model::ObjectId group, const std::vector<model::ObjectId>&) override {
     record("members " + std::to_string(group));
   }

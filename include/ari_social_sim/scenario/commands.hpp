@@ -9,6 +9,7 @@
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::scenario {
 
@@ -39,6 +40,8 @@ class Commands {
   virtual void add_human(const world::HumanSpec& spec) = 0;
   virtual void remove_human(model::ObjectId human) = 0;
   virtual void create_group(const world::GroupSpec& spec) = 0;
+  /// People walk together to a goal (/sim/create_walking_group).
+  virtual void create_walking_group(const world::WalkingGroupSpec& spec) = 0;
   virtual void add_group_members(model::ObjectId group,
                                  const std::vector<model::ObjectId>& members) = 0;
   virtual void set_group_centre(model::ObjectId group, const Eigen::Vector2d& centre) = 0;

@@ -11,6 +11,7 @@
 #include "ari_social_sim/scenario/random_group.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::scenario {
 
@@ -101,6 +102,11 @@ struct CreateGroupAction {
   world::GroupSpec group;
 };
 
+/// People walk together to a goal (/sim/create_walking_group, docs/world.md "Walking groups").
+struct CreateWalkingGroupAction {
+  world::WalkingGroupSpec group;
+};
+
 struct AddGroupMembersAction {
   model::ObjectId group{model::kNoObject};
   std::vector<model::ObjectId> members;
@@ -139,7 +145,7 @@ using Action =
     std::variant<SayAction, SetGoalAction, ApproachAction, JoinGroupAction, CancelNavigationAction,
                  AddHumanAction, RemoveHumanAction, CreateGroupAction, AddGroupMembersAction,
                  SetGroupCentreAction, LeaveGroupAction, SetGroupArrangementAction, ConverseAction,
-                 StopAction>;
+                 StopAction, CreateWalkingGroupAction>;
 
 // ---- The state machine ----
 

@@ -25,6 +25,7 @@ struct SceneFile {
   std::optional<AriSpec> ari;
   std::vector<HumanSpec> humans;
   std::vector<GroupSpec> groups;
+  std::vector<WalkingGroupSpec> walking_groups;
   std::optional<core::YamlMap> script;
 
   template <class V>
@@ -36,6 +37,7 @@ struct SceneFile {
     v.section("ari", ari, "ARI, when the scene has it");
     v.list("humans", humans, "the people at the start", kMaxHumans);
     v.list("groups", groups, "conversation groups of those people", kMaxSceneGroups);
+    v.list("walking_groups", walking_groups, "people walking together to a goal", kMaxSceneGroups);
     v.field("script", script, "a scenario's script (docs/scenario.md); scene files have none");
   }
 };
@@ -52,9 +54,11 @@ struct Scene {
   std::optional<AriSpec> ari;
   std::vector<HumanSpec> humans;
   std::vector<GroupSpec> groups;
+  std::vector<WalkingGroupSpec> walking_groups;
   /// Where each human and group was written (`scene.yaml: humans[2]`), for errors found later.
   std::vector<std::string> human_fields;
   std::vector<std::string> group_fields;
+  std::vector<std::string> walking_group_fields;
 };
 
 /// Reads a scene file; `world:` is resolved relative to the scene file's folder. Throws
@@ -70,6 +74,8 @@ Scene parse_scene(const core::YamlMap& root, const std::string& base_dir);
 HumanSpec parse_human(const core::YamlMap& entry);
 /// The same for one `groups[i]` entry (section 3.6).
 GroupSpec parse_group(const core::YamlMap& entry);
+/// The same for one `walking_groups[i]` entry (docs/world.md "Walking groups").
+WalkingGroupSpec parse_walking_group(const core::YamlMap& entry);
 
 /// Builds the simulation a scene describes. Errors found only when placing bodies (overlapping
 /// spawn positions, unknown group members, ids used twice) throw core::ConfigError naming the

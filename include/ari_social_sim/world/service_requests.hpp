@@ -7,6 +7,7 @@
 #include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::world {
 
@@ -39,6 +40,24 @@ struct GazeTargetsRequest {
   /// there is one probability per target, e.g.
   /// `set_gaze_targets: probabilities: expected one per target (2), got 1`.
   GazeModel model() const;
+};
+
+/// /sim/create_walking_group's fields as the service carries them (srv/CreateWalkingGroup.srv):
+/// zero and empty values stand for the defaults, choices are text.
+struct WalkingGroupRequest {
+  model::ObjectId id{model::kNoObject};  // kNoObject: the next free group id
+  std::vector<model::ObjectId> members;
+  std::string formation;  // a name of kWalkingFormations; empty: side-by-side
+  core::Pose2 goal;
+  double speed_mps{0.0};    // 0: WalkingGroupSpec's default
+  double spacing_m{0.0};    // 0: WalkingGroupSpec's default
+  std::string on_arrival;   // a name of kArrivalActions; empty: stop
+  std::string arrangement;  // a name of model::kArrangements; empty: circle
+
+  /// The walking group asked for, for Simulation::add_walking_group. Throws core::RequestError
+  /// for a text it does not know, e.g.
+  /// `create_walking_group: formation: expected side-by-side or line, got 'abreast'`.
+  WalkingGroupSpec spec() const;
 };
 
 /// The arrangement a service names in its `arrangement` field (/sim/create_group,

@@ -17,6 +17,7 @@
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/request_check.hpp"
+#include "ari_social_sim/world/walking_group.hpp"
 
 class b2World;
 class b2Shape;
@@ -95,6 +96,15 @@ class Simulation {
   /// Throws if the spec is invalid (GroupSpec::validate), its centre is off the floor, the id is
   /// taken or a member does not exist.
   const GroupNavigation& add_group(GroupSpec spec);
+  /// Sends existing humans walking together to a goal (/sim/create_walking_group, docs/world.md
+  /// "Walking groups"). Walking and conversation groups share one id space: a spec without an id
+  /// gets one past the highest group id of either kind. Members in another group (walking or
+  /// conversing) leave it, as create_group's do. Throws if the spec is invalid
+  /// (WalkingGroupSpec::validate), its goal is off the floor, the id is taken by a group of either
+  /// kind, a member does not exist, the speed exceeds the slowest member's max_speed, or no route
+  /// keeping the members' body radius plus kWalkingWallMarginM clear of walls and furniture leads
+  /// from the members' centroid to the goal.
+  const WalkingGroup& add_walking_group(WalkingGroupSpec spec);
   /// Moves existing humans into a group (/sim/add_group_members). Throws for an unknown group or
   /// human, or when the group would have more than kMaxGroupMembers members.
   void add_group_members(model::ObjectId group_id, const std::vector<model::ObjectId>& members);
@@ -169,12 +179,19 @@ class Simulation {
   const Object* find_object(model::ObjectId id) const;
   const Human* find_human(model::ObjectId id) const;
   const GroupNavigation* find_group(model::ObjectId id) const;
+  const WalkingGroup* find_walking_group(model::ObjectId id) const;
   const Ari* ari() const { return ari_.get(); }
   /// Humans ordered by id.
   core::ConstPointerView<Human> humans() const { return core::ConstPointerView<Human>(humans_); }
   /// Groups ordered by id.
   core::ConstPointerView<GroupNavigation> groups() const {
     return core::ConstPointerView<GroupNavigation>(groups_);
+  }
+
+  /// Walking groups ordered by id; one arriving with `converse` becomes a conversation group of
+  /// the same id (groups()) in the step it arrives.
+  core::ConstPointerView<WalkingGroup> walking_groups() const {
+    return core::ConstPointerView<WalkingGroup>(walking_groups_);
   }
 
   /// Fills `out` with the centres of agents (humans and ARI) closer than `radius_m` to `point`,
@@ -192,11 +209,19 @@ class Simulation {
  private:
   // The group script moves its members each step (D6.4 §3.4.1): the one writer from outside.
   friend class GroupNavigation;
+  friend class WalkingGroup;
 
   // The objects behind the const lookups, for the requests and the group script to change.
   Object* mutable_object(model::ObjectId id);
   Human* mutable_human(model::ObjectId id);
   GroupNavigation* mutable_group(model::ObjectId id);
+  WalkingGroup* mutable_walking_group(model::ObjectId id);
+  /// One past the highest id of any group, walking or conversing (1 for the first group).
+  model::ObjectId next_group_id() const;
+  /// Takes a human out of its walking group, if any (a group left without members is dropped).
+  void leave_walking_group(Human& human);
+  /// Walking groups that arrived with `converse` become conversation groups.
+  void converse_on_arrival();
   // The object a request names, or its refusal `<request>: <field>: no human with id 99` (field
   // `id`, `group_id`, or as given).
   Human& existing_human(const RequestCheck& check, model::ObjectId human_id);
@@ -222,6 +247,7 @@ class Simulation {
   std::vector<std::unique_ptr<Human>> humans_;
   std::unique_ptr<Ari> ari_;
   std::vector<std::unique_ptr<GroupNavigation>> groups_;
+  std::vector<std::unique_ptr<WalkingGroup>> walking_groups_;
   std::unordered_map<model::ObjectId, Object*> objects_by_id_;
   uint64_t step_count_{0};
   StepDiagnostics diagnostics_;

@@ -10,6 +10,7 @@
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::world {
 
@@ -72,6 +73,18 @@ struct GroupSnapshot {
   model::ObjectId robot_joining{model::kNoObject};  // ARI while the members make room for it
 };
 
+struct WalkingGroupSnapshot {
+  model::ObjectId id{model::kNoObject};
+  std::vector<model::ObjectId> members;
+  WalkingFormation formation{WalkingFormation::kSideBySide};  // walked now
+  Eigen::Vector2d leader{Eigen::Vector2d::Zero()};            // the virtual leader on the route
+  double heading_rad{0.0};                                    // walking direction
+  core::Pose2 goal;
+  ArrivalAction on_arrival{ArrivalAction::kStop};
+  bool waiting{false};  // for a member who fell behind
+  bool arrived{false};
+};
+
 /// Every agent's ground truth after a step, as plain data: what /sim/world_state carries and what
 /// tests and the batch tool read.
 struct WorldSnapshot {
@@ -80,6 +93,8 @@ struct WorldSnapshot {
   std::optional<AriSnapshot> ari;
   std::vector<HumanSnapshot> humans;  // ordered by id
   std::vector<GroupSnapshot> groups;  // ordered by id
+  // Ordered by id.
+  std::vector<WalkingGroupSnapshot> walking_groups;
 
   static WorldSnapshot of(const Simulation& simulation);
 };

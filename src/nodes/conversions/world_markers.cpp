@@ -115,6 +115,20 @@ visualization_msgs::MarkerArray world_markers(const world::WorldSnapshot& snapsh
                (g.robot_joining != model::kNoObject ? ", ARI joining)" : ")"),
            0.15, rgba(1.0f, 0.6f, 0.0f));
   }
+  // Walking groups: the leader's walking direction, the goal and what the group is doing.
+  for (const world::WalkingGroupSnapshot& w : snapshot.walking_groups) {
+    const int id = static_cast<int>(w.id);
+    const std_msgs::ColorRGBA colour = rgba(0.2f, 0.8f, 0.4f);
+    b.arrow("walking_groups/heading", id, w.leader.x(), w.leader.y(), 0.05, w.heading_rad, 0.6,
+            colour);
+    b.circle("walking_groups/goal", id, w.goal.position.x(), w.goal.position.y(), 0.02, 0.5, 0.03,
+             colour);
+    const char* doing = w.arrived ? ", arrived" : w.waiting ? ", waiting" : "";
+    b.text("walking_groups/label", id, w.leader.x(), w.leader.y(), 2.1,
+           "walking group " + std::to_string(w.id) + " (" + world::to_string(w.formation) + doing +
+               ")",
+           0.15, colour);
+  }
   return array;
 }
 

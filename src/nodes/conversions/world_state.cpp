@@ -105,6 +105,20 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     g.robot_joining = group.robot_joining;
     msg.groups.push_back(std::move(g));
   }
+  for (const world::WalkingGroupSnapshot& walking : snapshot.walking_groups) {
+    WalkingGroupState w;
+    w.id = walking.id;
+    w.members = walking.members;
+    w.formation = world::to_string(walking.formation);
+    w.leader.x = walking.leader.x();
+    w.leader.y = walking.leader.y();
+    w.heading = walking.heading_rad;
+    w.goal = to_msg(walking.goal);
+    w.on_arrival = world::to_string(walking.on_arrival);
+    w.waiting = walking.waiting;
+    w.arrived = walking.arrived;
+    msg.walking_groups.push_back(std::move(w));
+  }
   return msg;
 }
 
@@ -177,6 +191,19 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
          core::parse_choice(g.arrangement, model::kArrangements, "arrangement"),
          g.heading,
          g.robot_joining});
+  }
+  for (const WalkingGroupState& w : msg.walking_groups) {
+    // input_problem refuses an unknown formation or arrival before a message gets here.
+    snapshot.walking_groups.push_back(
+        {w.id,
+         w.members,
+         core::parse_choice(w.formation, world::kWalkingFormations, "formation"),
+         {w.leader.x, w.leader.y},
+         w.heading,
+         from_msg(w.goal),
+         core::parse_choice(w.on_arrival, world::kArrivalActions, "on_arrival"),
+         w.waiting,
+         w.arrived});
   }
   return snapshot;
 }
@@ -276,6 +303,18 @@ std::optional<InputProblem> input_problem(const WorldState& msg) {
         core::names_a_choice(msg.groups[i].arrangement, model::kArrangements),
         field + ".arrangement",
         "'" + msg.groups[i].arrangement + "', not " + core::choice_names(model::kArrangements));
+  }
+  for (size_t i = 0; i < msg.walking_groups.size(); ++i) {
+    const WalkingGroupState& w = msg.walking_groups[i];
+    const std::string field = "walking_groups[" + std::to_string(i) + "]";
+    check.finite(field + ".leader.x", w.leader.x);
+    check.finite(field + ".leader.y", w.leader.y);
+    check.finite(field + ".heading", w.heading);
+    check.pose(field + ".goal", w.goal);
+    check.that(core::names_a_choice(w.formation, world::kWalkingFormations), field + ".formation",
+               "'" + w.formation + "', not " + core::choice_names(world::kWalkingFormations));
+    check.that(core::names_a_choice(w.on_arrival, world::kArrivalActions), field + ".on_arrival",
+               "'" + w.on_arrival + "', not " + core::choice_names(world::kArrivalActions));
   }
   return check.result();
 }
