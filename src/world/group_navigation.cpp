@@ -206,7 +206,12 @@ void GroupNavigation::deal_places(bool circle) {
     places_.clear();
     return;
   }
-  const bool redeal = slots_stale_ || slot_of_.size() != n;
+  // While ARI comes to a circle, the gap follows it round: people make room where it comes.
+  // Once ARI is at the ring the places stay, so that the place it aims at stops moving.
+  const bool robot_coming =
+      circle && robot_joining_ != model::kNoObject &&
+      (participant_positions_.back() - spec_.centre).norm() > ospace_radius_m() + kRobotSettledM;
+  const bool redeal = slots_stale_ || slot_of_.size() != n || robot_coming;
   if (circle && redeal) {
     // A circle opens its places toward its newest participant: ARI joining, or the member who
     // joined last.

@@ -15,8 +15,9 @@ from std_srvs.srv import SetBool, Trigger
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import WorldState
-from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, RemoveHuman,
-                                Say, SetGazeTargets, SetGoal, SetGroupCentre, SetPose, SetReaction,
+from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, JoinGroup,
+                                LeaveGroup, RemoveHuman, Say, SetGazeTargets, SetGoal,
+                                SetGroupArrangement, SetGroupCentre, SetPose, SetReaction,
                                 SetVelocity,
                                 SpawnHuman, StepSimulation)
 
@@ -101,7 +102,8 @@ class WorldNodeContract(unittest.TestCase):
         for name in ["spawn_human", "remove_human", "set_goal", "set_velocity", "set_pose",
                      "create_group", "add_group_members", "set_group_centre", "say",
                      "set_gaze_targets", "set_reaction", "reset", "pause", "step",
-                     "create_walking_group"]:
+                     "create_walking_group", "set_group_arrangement", "join_group",
+                     "leave_group"]:
             rospy.wait_for_service("/sim/" + name, timeout=30)
         cls.call = {
             "spawn": rospy.ServiceProxy("/sim/spawn_human", SpawnHuman),
@@ -119,6 +121,9 @@ class WorldNodeContract(unittest.TestCase):
             "pause": rospy.ServiceProxy("/sim/pause", SetBool),
             "step": rospy.ServiceProxy("/sim/step", StepSimulation),
             "walk": rospy.ServiceProxy("/sim/create_walking_group", CreateWalkingGroup),
+            "arrange": rospy.ServiceProxy("/sim/set_group_arrangement", SetGroupArrangement),
+            "join": rospy.ServiceProxy("/sim/join_group", JoinGroup),
+            "leave": rospy.ServiceProxy("/sim/leave_group", LeaveGroup),
         }
 
     def setUp(self):
@@ -423,6 +428,36 @@ class WorldNodeContract(unittest.TestCase):
         self.assertEqual(list(next(g for g in state.groups if g.id == 2).members), [22])
         # 4.3 m at 1.05 m/s: arrived within 10 s of sim time.
         self.state.wait(lambda m: any(w.id == made.id and w.arrived for w in m.walking_groups))
+
+    def test_14_arrangements_joining_and_leaving(self):
+        # Group 1 (humans 10 and 11) stands side by side; ARI joining turns it into a circle of
+        # three, and leaving gives the row back.
+        made = self.call["arrange"](group_id=1, arrangement="side-by-side", has_heading=True,
+                                    heading=0.5)
+        self.assertTrue(made.success, made.message)
+        state = self.state.wait(lambda m: any(g.id == 1 and g.arrangement == "side-by-side"
+                                              for g in m.groups))
+        self.assertAlmostEqual(next(g for g in state.groups if g.id == 1).heading, 0.5)
+        joined = self.call["join"](group_id=1, agent_id=1)
+        self.assertTrue(joined.success, joined.message)
+        self.state.wait(lambda m: any(g.id == 1 and g.robot_joining == 1
+                                      and g.arrangement == "circle" for g in m.groups))
+        left = self.call["leave"](agent_id=1)
+        self.assertTrue(left.success, left.message)
+        self.state.wait(lambda m: any(g.id == 1 and g.robot_joining == 0
+                                      and g.arrangement == "side-by-side" for g in m.groups))
+        bad = self.call["arrange"](group_id=1, arrangement="triangle", has_heading=False,
+                                   heading=0.0)
+        self.assertFalse(bad.success)
+        self.assertEqual(bad.message, "set_group_arrangement: arrangement: expected circle, "
+                                      "vis-a-vis, l-shape or side-by-side, got 'triangle'")
+        bad = self.call["leave"](agent_id=999)
+        self.assertFalse(bad.success)
+        self.assertEqual(bad.message, "leave_group: agent_id: no human or ARI with id 999")
+        bad = self.call["group"](id=0, members=[10], centre=Point(2.0, 2.0, 0.0),
+                                 ospace_radius=0.0, arrangement="line")
+        self.assertFalse(bad.success)
+        self.assertIn("create_group: arrangement: expected circle", bad.message)
 
 
 if __name__ == "__main__":

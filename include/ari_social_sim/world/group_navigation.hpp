@@ -133,6 +133,8 @@ struct GroupSpec {
 /// open a place for it, and how far beyond it ARI must go again for the group to close it.
 constexpr double kRobotJoinReachM = 1.5;
 constexpr double kRobotLeaveReachM = 2.5;
+/// Within this distance (m) of a circle's ring, ARI's place stops following it round.
+constexpr double kRobotSettledM = 0.6;
 /// ARI faces the o-space centre when its heading is within this angle (rad, 45 deg) of it.
 constexpr double kRobotJoinFacingRad = 0.7853981633974483;
 
