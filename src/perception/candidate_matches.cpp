@@ -2,20 +2,9 @@
 
 #include <algorithm>
 
+#include "ari_social_sim/perception/observations_by_human.hpp"
+
 namespace ari_social_sim::perception {
-namespace {
-
-// The observation of `human` in a list ordered by human id, or null.
-template <class Observation>
-const Observation* observation_of(const std::vector<Observation>& observations,
-                                  model::ObjectId human) {
-  const auto it = std::lower_bound(
-      observations.begin(), observations.end(), human,
-      [](const Observation& observation, model::ObjectId id) { return observation.human < id; });
-  return it != observations.end() && it->human == human ? &*it : nullptr;
-}
-
-}  // namespace
 
 std::vector<CandidateMatch> person_links(const PerceptionFrame& frame) {
   std::vector<CandidateMatch> matches;
@@ -51,6 +40,7 @@ std::vector<CandidateMatch> CandidateMatcher::update(const PerceptionFrame& fram
     it = age_s > kVerdictMemory_s || age_s < 0.0 ? recognised_.erase(it) : std::next(it);
   }
   std::vector<CandidateMatch> matches;
+  const auto bodies = observations_by_human(frame.bodies);
   for (const PerceivedFace& face : frame.faces) {
     auto [verdict, is_new] = recognised_.try_emplace(face.face_id);
     if (is_new) {
@@ -61,13 +51,13 @@ std::vector<CandidateMatch> CandidateMatcher::update(const PerceptionFrame& fram
       send(matches, {face.person_id, IdKind::kPerson, face.face_id, IdKind::kFace,
                      noisy(config_.recognition_confidence)});
     }
-    if (const PerceivedBody* body = observation_of(frame.bodies, face.human)) {
+    if (const PerceivedBody* body = observation_of(bodies, face.human)) {
       send(matches, {body->body_id, IdKind::kBody, face.face_id, IdKind::kFace,
                      noisy(config_.face_body_confidence)});
     }
   }
   for (const PerceivedVoice& voice : frame.voices) {
-    if (const PerceivedBody* body = observation_of(frame.bodies, voice.human)) {
+    if (const PerceivedBody* body = observation_of(bodies, voice.human)) {
       send(matches, {body->body_id, IdKind::kBody, voice.voice_id, IdKind::kVoice,
                      noisy(config_.voice_body_confidence)});
     }

@@ -2,17 +2,10 @@
 
 #include <algorithm>
 
+#include "ari_social_sim/perception/observations_by_human.hpp"
+
 namespace ari_social_sim::perception {
 namespace {
-
-// The observation of `human` in a list ordered by human id, or null.
-template <class Observation>
-const Observation* find_of(const std::vector<Observation>& observations, model::ObjectId human) {
-  const auto it = std::lower_bound(
-      observations.begin(), observations.end(), human,
-      [](const Observation& observation, model::ObjectId id) { return observation.human < id; });
-  return it != observations.end() && it->human == human ? &*it : nullptr;
-}
 
 ProxemicSpace zone_of(const PersonConfig& config, double distance_m) {
   if (distance_m <= config.personal_distance_m) {
@@ -82,10 +75,13 @@ void PersonRegistry::update(const world::WorldSnapshot& snapshot, const AriSenso
   for (auto& [human, person] : persons_) {
     person.report.tracked = false;
   }
+  const auto bodies_by_human = observations_by_human(bodies);
+  const auto faces_by_human = observations_by_human(faces);
+  const auto voices_by_human = observations_by_human(voices);
   for (const world::HumanSnapshot& human : snapshot.humans) {
-    const PerceivedBody* body = find_of(bodies, human.id);
-    const PerceivedFace* face = find_of(faces, human.id);
-    const PerceivedVoice* voice = find_of(voices, human.id);
+    const PerceivedBody* body = observation_of(bodies_by_human, human.id);
+    const PerceivedFace* face = observation_of(faces_by_human, human.id);
+    const PerceivedVoice* voice = observation_of(voices_by_human, human.id);
     if (body == nullptr && face == nullptr && voice == nullptr) {
       continue;
     }

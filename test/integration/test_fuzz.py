@@ -35,9 +35,10 @@ from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import (ApproachAction, ApproachGoal, Group, IdsList, TtsAction, TtsGoal,
                                 WorldState)
-from ari_social_sim.srv import (AddGroupMembers, CreateGroup, DialogueReset, DialogueStep,
-                                RemoveHuman, Say, SetGazeTargets, SetGoal, SetGroupCentre, SetPose,
-                                SetReaction, SetVelocity, SpawnHuman, StepSimulation)
+from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, DialogueReset,
+                                DialogueStep, JoinGroup, LeaveGroup, RemoveHuman, Say,
+                                SetGazeTargets, SetGoal, SetGroupArrangement, SetGroupCentre,
+                                SetPose, SetReaction, SetVelocity, SpawnHuman, StepSimulation)
 
 SEED = 20261124
 SERVICE_REQUESTS = 1100
@@ -163,6 +164,14 @@ def baselines(rng, world):
         "/sim/set_pose": (SetPose, dict(id=human, pose=pose)),
         "/sim/create_group": (CreateGroup, dict(id=0, members=humans[:2],
                                                 centre=pose_point(pose), ospace_radius=0.6)),
+        "/sim/create_walking_group": (CreateWalkingGroup, dict(
+            id=0, members=humans[:2], formation="side-by-side", goal=pose, speed=1.0,
+            spacing=0.75, on_arrival="converse", arrangement="circle")),
+        "/sim/set_group_arrangement": (SetGroupArrangement, dict(
+            group_id=rng.choice(groups), arrangement="l-shape", has_heading=True,
+            heading=pose.theta)),
+        "/sim/join_group": (JoinGroup, dict(group_id=rng.choice(groups), agent_id=human)),
+        "/sim/leave_group": (LeaveGroup, dict(agent_id=human)),
         "/sim/add_group_members": (AddGroupMembers, dict(group_id=rng.choice(groups),
                                                          members=[human])),
         "/sim/set_group_centre": (SetGroupCentre, dict(group_id=rng.choice(groups),

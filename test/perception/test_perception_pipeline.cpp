@@ -76,6 +76,26 @@ std::vector<std::string> run_waiting_room(const PerceptionConfig& config, double
   return frames;
 }
 
+// A /sim/world_state from another publisher may list its humans in any order: every human seen is
+// still a person, linked to its body (the person manager once searched the observations as if
+// sorted by id, missed some, and hri_perception_node aborted on linking them).
+TEST(PerceptionPipeline, HumansListedOutOfOrderAreAllPersons) {
+  PerceptionPipeline pipeline(test::config_without_errors());
+  world::WorldSnapshot snapshot = snapshot_with_ari(1.0);
+  snapshot.humans = {human_facing(14, 3.0, 0.5, 0.0, 0.0), human_facing(11, 2.0, -0.5, 0.0, 0.0),
+                     human_facing(13, 2.5, 0.0, 0.0, 0.0), human_facing(12, 1.5, 0.6, 0.0, 0.0)};
+  const PerceptionFrame& frame = pipeline.update(snapshot);
+  ASSERT_EQ(frame.bodies.size(), 4u);
+  for (const PerceivedBody& body : frame.bodies) {
+    EXPECT_EQ(body.person_id, "human" + std::to_string(body.human));
+  }
+  size_t tracked = 0;
+  for (const PersonReport& person : frame.persons) {
+    tracked += person.tracked ? 1 : 0;
+  }
+  EXPECT_EQ(tracked, 4u);
+}
+
 TEST(PerceptionPipeline, WithoutErrorsTheFrameIsTheGroundTruth) {
   PerceptionPipeline pipeline(test::config_without_errors());
   world::WorldSnapshot snapshot = snapshot_with_ari(3.0);
