@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "../world/scene_builders.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
@@ -27,32 +28,11 @@ constexpr int kSeedsPerCase = 6;
 constexpr double kSettleS = 30.0;
 constexpr double kJoinS = 30.0;
 
-// A walled 8 x 8 m room.
-model::WorldDescription room() {
-  model::WorldDescription world;
-  world.name = "room";
-  world.origin = {-0.2, -0.2};
-  world.size = {8.4, 8.4};
-  auto wall = [&](model::ObjectId id, double x, double y, double length, double theta) {
-    model::StaticObject object;
-    object.id = id;
-    object.type = model::ShapeType::kWall;
-    object.pose.position = {x, y};
-    object.pose.theta = theta;
-    object.size = {length, 0.1};
-    world.objects.push_back(object);
-  };
-  wall(1001, 4.0, 0.0, 8.1, 0.0);
-  wall(1002, 4.0, 8.0, 8.1, 0.0);
-  wall(1003, 0.0, 4.0, 7.9, M_PI / 2);
-  wall(1004, 8.0, 4.0, 7.9, M_PI / 2);
-  return world;
-}
-
 // One settled group of `size` in `arrangement`, members started at random 0.5-2.5 m from the
 // centre, with the world's default spacing and stances.
 FormationGeometry settled_group(Arrangement arrangement, int size, uint64_t seed) {
-  world::Simulation simulation(room(), world::SimulationConfig{0.05, seed, 0.05});
+  world::Simulation simulation(world::test::square_room(8.0),
+                               world::SimulationConfig{0.05, seed, 0.05});
   core::Rng rng(seed);
   world::GroupSpec spec;
   spec.id = 1;
@@ -185,7 +165,8 @@ TEST(WorldFormations, AHumanJoiningIsCountedInTheGroup) {
     int intrusions = 0;
     for (int episode = 0; episode < kEpisodes; ++episode) {
       const uint64_t seed = 1000 * size + episode;
-      world::Simulation simulation(room(), world::SimulationConfig{0.05, seed, 0.05});
+      world::Simulation simulation(world::test::square_room(8.0),
+                                   world::SimulationConfig{0.05, seed, 0.05});
       core::Rng rng(seed);
       const Arrangement arrangements[] = {Arrangement::kCircle, Arrangement::kVisAVis,
                                           Arrangement::kLShape, Arrangement::kSideBySide};
