@@ -211,7 +211,7 @@ TEST(GroupArrangements, MembersOpenAPlaceForARIApproachingAndCloseItAfter) {
   Formed formed = form(Arrangement::kCircle, 3, 13);
   Simulation& simulation = *formed.simulation;
   const GroupNavigation& group = *simulation.find_group(formed.group);
-  // Where a fourth would stand, 1.7 m out from the centre, facing it, away from every member.
+  // Where a fourth would stand, 1.0 m out from the centre, facing it, away from every member.
   double bearing = 0.0;
   double best_gap = -1.0;
   for (int k = 0; k < 72; ++k) {
@@ -228,7 +228,7 @@ TEST(GroupArrangements, MembersOpenAPlaceForARIApproachingAndCloseItAfter) {
   }
   const Eigen::Vector2d outward(std::cos(bearing), std::sin(bearing));
   AriSpec ari;
-  ari.pose = {group.centre() + 1.7 * outward, bearing + core::kPi};
+  ari.pose = {group.centre() + 1.0 * outward, bearing + core::kPi};
   simulation.add_ari(ari);
   simulation.step();
   EXPECT_EQ(group.robot_joining(), ari.id);

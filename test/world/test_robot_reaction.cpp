@@ -353,10 +353,12 @@ TEST(RobotReaction, AnAvoidingGroupMemberShiftsAwayABitAndStaysAMember) {
 }
 
 TEST(RobotReaction, AYieldingGroupMemberInAriSWaySidestepsABitAndStaysAMember) {
-  // Member 10 stands 0.6 m south of ARI's path line: in its corridor while ARI drives.
+  // Member 10 stands 0.6 m south of ARI's path line: in its corridor while ARI drives. ARI stops
+  // short of joining (docs/world.md section 4.6), so the step is the reaction's alone, held back
+  // by the group's cohesion.
   const PairRun run = pair_meets_ari(ReactionProfile::kYield, ReactionProfile::kIgnore);
   EXPECT_EQ(run.group[0], 1u);
-  EXPECT_GT(run.moved[0], 0.1);
+  EXPECT_GT(run.moved[0], 0.05);
   EXPECT_LT(run.moved[0], 0.45);
 }
 
