@@ -55,6 +55,11 @@ double Rng::uniform(double low, double high) {
   return low + (high - low) * uniform();
 }
 
+Eigen::Vector2d Rng::uniform_point(const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
+  // A braced list is evaluated in order: x is drawn first.
+  return {uniform(low.x(), high.x()), uniform(low.y(), high.y())};
+}
+
 uint64_t Rng::uniform_index(uint64_t count) {
   ARI_CHECK(count > 0);
   // Rejection keeps the draw unbiased for counts that do not divide 2^64.

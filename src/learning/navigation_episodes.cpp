@@ -51,11 +51,6 @@ core::Pose2 pose(const Eigen::Vector2d& position, double theta) {
   return p;
 }
 
-Eigen::Vector2d uniform_point(core::Rng& rng, const Eigen::Vector2d& low,
-                              const Eigen::Vector2d& high) {
-  return {rng.uniform(low.x(), high.x()), rng.uniform(low.y(), high.y())};
-}
-
 // Places ARI at random within the box until the simulation accepts it (no overlap) and
 // `accept` agrees.
 template <class Accept>
@@ -64,7 +59,7 @@ void place_ari(world::Simulation& sim, core::Rng& rng, const Eigen::Vector2d& lo
   for (int draw = 0; draw < kMaxDraws; ++draw) {
     world::AriSpec spec;
     spec.id = 1;
-    spec.pose = pose(uniform_point(rng, low, high), rng.uniform(-kPi, kPi));
+    spec.pose = pose(rng.uniform_point(low, high), rng.uniform(-kPi, kPi));
     if (!accept(spec.pose)) {
       continue;
     }
@@ -84,7 +79,7 @@ ObjectId place_person(world::Simulation& sim, core::Rng& rng, ObjectId id,
   for (int draw = 0; draw < kMaxDraws; ++draw) {
     world::HumanSpec spec;
     spec.id = id;
-    spec.pose = pose(uniform_point(rng, low, high), rng.uniform(-kPi, kPi));
+    spec.pose = pose(rng.uniform_point(low, high), rng.uniform(-kPi, kPi));
     if (!accept(spec.pose)) {
       continue;
     }
@@ -132,7 +127,7 @@ void add_tables(model::WorldDescription& world, core::Rng& rng, int count,
                 const std::vector<Eigen::Vector2d>& keep_clear, double clearance) {
   ObjectId id = 2000;
   for (int draw = 0; draw < kMaxDraws && count > 0; ++draw) {
-    const Eigen::Vector2d at = uniform_point(rng, low, high);
+    const Eigen::Vector2d at = rng.uniform_point(low, high);
     bool clear = true;
     for (const Eigen::Vector2d& point : keep_clear) {
       clear = clear && (point - at).norm() > clearance;
@@ -189,7 +184,7 @@ core::Pose2 flat_goal(const world::Simulation& sim, const navigation::GridField&
                       core::Rng& rng, const Eigen::Vector2d& low, const Eigen::Vector2d& high,
                       Accept accept) {
   for (int draw = 0; draw < kMaxDraws; ++draw) {
-    const core::Pose2 goal = pose(uniform_point(rng, low, high), rng.uniform(-kPi, kPi));
+    const core::Pose2 goal = pose(rng.uniform_point(low, high), rng.uniform(-kPi, kPi));
     bool far_from_people = true;
     for (const auto& human : sim.humans()) {
       far_from_people = far_from_people && (human->pose().position - goal.position).norm() > 1.5;
@@ -312,7 +307,7 @@ NavigationEpisode crossing_episode(NavigationEpisode e, core::Rng& rng) {
 NavigationEpisode approach_episode(NavigationEpisode e, core::Rng& rng) {
   // An 8 x 8 m room with a few tables; ARI approaches one of three standing people.
   model::WorldDescription world = walled_room("room", {8.0, 8.0});
-  const Eigen::Vector2d target_at = uniform_point(rng, {2.0, 2.0}, {6.0, 6.0});
+  const Eigen::Vector2d target_at = rng.uniform_point({2.0, 2.0}, {6.0, 6.0});
   add_tables(world, rng, 3, {1.0, 1.0}, {7.0, 7.0}, {target_at}, 2.2);
   e.simulation = simulation_of(std::move(world), e.seed);
   world::Simulation& sim = *e.simulation;
@@ -344,10 +339,10 @@ NavigationEpisode approach_episode(NavigationEpisode e, core::Rng& rng) {
 NavigationEpisode join_episode(NavigationEpisode e, core::Rng& rng, int size) {
   // A 10 x 10 m room with a few tables, the group to join and another group of 2 or 3.
   model::WorldDescription world = walled_room("room", {10.0, 10.0});
-  const Eigen::Vector2d target_centre = uniform_point(rng, {2.5, 2.5}, {7.5, 7.5});
+  const Eigen::Vector2d target_centre = rng.uniform_point({2.5, 2.5}, {7.5, 7.5});
   Eigen::Vector2d other_centre;
   for (int draw = 0;; ++draw) {
-    other_centre = uniform_point(rng, {1.8, 1.8}, {8.2, 8.2});
+    other_centre = rng.uniform_point({1.8, 1.8}, {8.2, 8.2});
     if ((other_centre - target_centre).norm() > 3.5 || draw > kMaxDraws) {
       break;
     }
@@ -435,7 +430,7 @@ void keep_walking(NavigationEpisode& episode, core::Rng& rng) {
     if (human->id() < kFirstWalker || human->goal()) {
       continue;
     }
-    const Eigen::Vector2d to = uniform_point(rng, episode.floor_low, episode.floor_high);
+    const Eigen::Vector2d to = rng.uniform_point(episode.floor_low, episode.floor_high);
     const Eigen::Vector2d way = to - human->pose().position;
     sim.set_human_goal(human->id(), pose(to, std::atan2(way.y(), way.x())));
   }

@@ -34,18 +34,6 @@ constexpr double kRouteMarginM = 1.0;
 // Bearings tried around a group for ARI's waypoint.
 constexpr int kWaypointBearings = 16;
 
-core::Pose2 pose(const Eigen::Vector2d& position, double theta) {
-  core::Pose2 p;
-  p.position = position;
-  p.theta = theta;
-  return p;
-}
-
-Eigen::Vector2d uniform_point(core::Rng& rng, const Eigen::Vector2d& low,
-                              const Eigen::Vector2d& high) {
-  return {rng.uniform(low.x(), high.x()), rng.uniform(low.y(), high.y())};
-}
-
 bool inside(const Eigen::Vector2d& p, const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
   return (p.array() >= low.array()).all() && (p.array() <= high.array()).all();
 }
@@ -98,10 +86,11 @@ void add_group(Scenario& scenario, const RandomGroupSceneSpec& spec, core::Rng& 
     human.id = next_human++;
     const double jitter_bearing = rng.uniform(-kPi, kPi);
     const double jitter_m = spec.position_jitter_m * std::sqrt(rng.uniform());  // uniform in a disc
-    human.pose = pose(slot.position + jitter_m * Eigen::Vector2d(std::cos(jitter_bearing),
-                                                                 std::sin(jitter_bearing)),
-                      core::wrap_angle(slot.facing_rad + rng.uniform(-spec.heading_jitter_rad,
-                                                                     spec.heading_jitter_rad)));
+    human.pose =
+        core::Pose2{slot.position + jitter_m * Eigen::Vector2d(std::cos(jitter_bearing),
+                                                               std::sin(jitter_bearing)),
+                    core::wrap_angle(slot.facing_rad + rng.uniform(-spec.heading_jitter_rad,
+                                                                   spec.heading_jitter_rad))};
     draw_looks(human, rng);
     group.members.push_back(human.id);
     scenario.scene.humans.push_back(human);
@@ -114,7 +103,7 @@ Eigen::Vector2d free_place(const RandomGroupSceneSpec& spec, core::Rng& rng,
                            const std::vector<Eigen::Vector2d>& centres,
                            const std::vector<Eigen::Vector2d>& others, const std::string& what) {
   for (int draw = 0; draw < kMaxDraws; ++draw) {
-    const Eigen::Vector2d p = uniform_point(rng, spec.area_min, spec.area_max);
+    const Eigen::Vector2d p = rng.uniform_point(spec.area_min, spec.area_max);
     if (nearest(p, centres) >= kGroupClearanceM && nearest(p, others) >= kPersonClearanceM) {
       return p;
     }
@@ -136,7 +125,7 @@ std::optional<core::Pose2> waypoint_by(const RandomGroupSceneSpec& spec, core::R
         centre + spec.waypoint_distance_m * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
     if (inside(p, spec.area_min - margin, spec.area_max + margin) &&
         nearest(p, centres) >= spec.waypoint_distance_m - 1e-9) {
-      return pose(p, core::wrap_angle(bearing + kPi));
+      return core::Pose2{p, core::wrap_angle(bearing + kPi)};
     }
   }
   return std::nullopt;
@@ -246,7 +235,7 @@ Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed
       if (++draw > kMaxDraws) {
         no_place(spec, "group " + std::to_string(g + 1));
       }
-      centre = uniform_point(rng, spec.area_min, spec.area_max);
+      centre = rng.uniform_point(spec.area_min, spec.area_max);
     } while (nearest(centre, centres) < spec.min_centre_distance_m);
     centres.push_back(centre);
     add_group(scenario, spec, rng, g + 1, centre, next_human);
@@ -259,12 +248,14 @@ Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed
     world::HumanSpec human;
     human.id = next_human++;
     const std::string what = "person " + std::to_string(human.id);
-    human.pose = pose(free_place(spec, rng, centres, others, what), rng.uniform(-kPi, kPi));
+    // The heading is drawn before the place, as the seeded scenes of docs/perception_gcff.md were.
+    const double heading = rng.uniform(-kPi, kPi);
+    human.pose = core::Pose2{free_place(spec, rng, centres, others, what), heading};
     draw_looks(human, rng);
     if (rng.bernoulli(0.5)) {
       const Eigen::Vector2d to = free_place(spec, rng, centres, {}, what + "'s goal");
       const Eigen::Vector2d way = to - human.pose.position;
-      human.goal = pose(to, std::atan2(way.y(), way.x()));
+      human.goal = core::Pose2{to, std::atan2(way.y(), way.x())};
     }
     others.push_back(human.pose.position);
     scenario.scene.humans.push_back(human);
@@ -272,7 +263,8 @@ Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed
 
   // ARI, and its route past the groups in a random order.
   world::AriSpec ari;
-  ari.pose = pose(free_place(spec, rng, centres, others, "ARI"), rng.uniform(-kPi, kPi));
+  const double ari_heading = rng.uniform(-kPi, kPi);
+  ari.pose = core::Pose2{free_place(spec, rng, centres, others, "ARI"), ari_heading};
   scenario.scene.ari = ari;
   std::vector<size_t> order(centres.size());
   for (size_t i = 0; i < order.size(); ++i) {

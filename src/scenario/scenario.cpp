@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
 #include <set>
 #include <sstream>
 
@@ -346,36 +347,34 @@ class ScriptReader {
     return spec;
   }
 
+  // A group created during the run goes through the world's service, which carries only some of
+  // the spec: the rest would silently take its default live and not in process, so it is refused.
   world::GroupSpec read_created_group(const core::YamlMap& entry) {
-    for (const char* key : {"min_ospace_radius", "member_spacing", "social_distance",
-                            "spacing_factor", "step_speed", "shoulder_spacing"}) {
-      if (entry.has(key)) {
-        entry.fail(key, "nothing: groups created during a run take the default " + std::string(key),
-                   "a value");
-      }
-    }
-    const world::GroupSpec spec = world::parse_group(entry);
-    if (!known_.groups.insert(spec.id).second) {
-      entry.fail("id", "a group id used by no other group of the scenario",
-                 std::to_string(spec.id));
-    }
-    for (model::ObjectId id : spec.members) {
-      check_agent(AgentRef::human(id), entry.field_name("members"));
-    }
-    return spec;
+    return read_created(entry,
+                        {"min_ospace_radius", "member_spacing", "social_distance", "spacing_factor",
+                         "step_speed", "shoulder_spacing", "facing_spread", "place_gain"},
+                        "groups", world::parse_group);
   }
 
   // A walking group takes what /sim/create_walking_group carries.
   world::WalkingGroupSpec read_created_walking_group(const core::YamlMap& entry) {
-    for (const char* key : {"line_spacing", "wait_distance"}) {
+    return read_created(entry, {"line_spacing", "wait_distance"}, "walking groups",
+                        world::parse_walking_group);
+  }
+
+  // A group spec of a create action: refuses the keys its service does not carry, an id another
+  // group of the scenario uses, and members that are not humans of it.
+  template <class Spec>
+  Spec read_created(const core::YamlMap& entry, std::initializer_list<const char*> not_carried,
+                    const std::string& kind, Spec (*parse)(const core::YamlMap&)) {
+    for (const char* key : not_carried) {
       if (entry.has(key)) {
         entry.fail(
-            key,
-            "nothing: walking groups created during a run take the default " + std::string(key),
+            key, "nothing: " + kind + " created during a run take the default " + std::string(key),
             "a value");
       }
     }
-    const world::WalkingGroupSpec spec = world::parse_walking_group(entry);
+    const Spec spec = parse(entry);
     if (!known_.groups.insert(spec.id).second) {
       entry.fail("id", "a group id used by no other group of the scenario",
                  std::to_string(spec.id));

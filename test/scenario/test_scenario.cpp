@@ -241,6 +241,10 @@ TEST(Scenario, ActionErrorsNameTheAction) {
                   {at + ".human.age", "[0, 130]", "300"});
   expect_rejected(enter("{type: create_group, group: {id: 1, members: [10], centre: [1, 1]}}"),
                   {at + ".group.id", "used by no other group", "1"});
+  // /sim/create_group does not carry the stance: live it would take the default.
+  expect_rejected(enter("{type: create_group, group: {id: 4, members: [10], centre: [1, 1], "
+                        "facing_spread: 5}}"),
+                  {at + ".group.facing_spread", "default facing_spread"});
   expect_rejected(enter("{type: create_walking_group, group: {id: 1, members: [10, 11], goal: "
                         "{position: [1, 1]}}}"),
                   {at + ".group.id", "used by no other group", "1"});

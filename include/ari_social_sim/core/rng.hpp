@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -22,6 +23,8 @@ class Rng {
   double uniform();
   /// Uniform in [low, high).
   double uniform(double low, double high);
+  /// Uniform in the axis-aligned box [low, high) (x drawn first, then y).
+  Eigen::Vector2d uniform_point(const Eigen::Vector2d& low, const Eigen::Vector2d& high);
   /// Uniform integer in [0, count). Precondition: count > 0.
   uint64_t uniform_index(uint64_t count);
   /// Exponential with the given mean (> 0).
