@@ -72,15 +72,7 @@ void add_group(Scenario& scenario, const RandomGroupSceneSpec& spec, core::Rng& 
       sizes.min + static_cast<unsigned>(rng.uniform_index(sizes.max - sizes.min + 1));
   group.heading_rad = rng.uniform(-kPi, kPi);
 
-  world::FormationShape shape;
-  shape.arrangement = group.arrangement;
-  shape.centre = centre;
-  shape.heading_rad = *group.heading_rad;
-  shape.radius_m = group.arrangement == model::Arrangement::kCircle
-                       ? world::GroupNavigation::ospace_radius_for(size, group.member_spacing_m,
-                                                                   group.min_ospace_radius_m)
-                       : world::row_distance_for(group.arrangement, group.member_spacing_m);
-  shape.shoulder_spacing_m = group.shoulder_spacing_m;
+  const world::FormationShape shape = world::GroupNavigation::settled_shape(group, size);
   for (const world::FormationSlot& slot : world::formation_slots(shape, size)) {
     world::HumanSpec human;
     human.id = next_human++;

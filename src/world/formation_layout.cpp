@@ -19,15 +19,16 @@ Eigen::Vector2d unit(double angle) {
   return {std::cos(angle), std::sin(angle)};
 }
 
-// A row at `bearing` from the centre. `along` is the direction the row grows in from its first
-// place, `first_offset` (in spacings) where along it the first member stands. Members of a
-// side-by-side row face the same way, back across their bearing; in a conversation (vis-a-vis,
-// L) each turns to the o-space centre, as people at the ends of a row do.
-void add_row(const FormationShape& shape, double bearing, size_t members, double first_offset,
-             const Eigen::Vector2d& along, std::vector<FormationSlot>& slots) {
+// A row of `members` centred at `bearing` from the centre, laid out across the bearing. Members
+// of a side-by-side row face the same way, back across their bearing; in a conversation
+// (vis-a-vis, L) each turns to the o-space centre, as people at the ends of a row do.
+void add_row(const FormationShape& shape, double bearing, size_t members,
+             std::vector<FormationSlot>& slots) {
   const Eigen::Vector2d row_centre = shape.centre + shape.radius_m * unit(bearing);
+  const Eigen::Vector2d along = unit(bearing + core::kPi / 2);
   for (size_t j = 0; j < members; ++j) {
-    const double offset = (first_offset + static_cast<double>(j)) * shape.shoulder_spacing_m;
+    const double offset = (static_cast<double>(j) - 0.5 * static_cast<double>(members - 1)) *
+                          shape.shoulder_spacing_m;
     const Eigen::Vector2d place = row_centre + offset * along;
     const Eigen::Vector2d to_centre = shape.centre - place;
     const double facing = shape.arrangement == model::Arrangement::kSideBySide
@@ -49,38 +50,42 @@ std::vector<FormationSlot> formation_slots(const FormationShape& shape, size_t c
   const double phi = shape.heading_rad;
   const size_t first_row = (count + 1) / 2;
   const size_t second_row = count - first_row;
-  // Rows are centred on their bearing, except the L's, which grow away from their shared corner.
-  auto centred = [](size_t members) { return -0.5 * static_cast<double>(members - 1); };
   switch (shape.arrangement) {
     case Arrangement::kCircle:
       for (size_t k = 0; k < count; ++k) {
-        const double bearing = phi + 2.0 * core::kPi * static_cast<double>(k) / count;
-        add_row(shape, bearing, 1, 0.0, Eigen::Vector2d::Zero(), slots);
+        add_row(shape, phi + 2.0 * core::kPi * static_cast<double>(k) / count, 1, slots);
       }
       break;
     case Arrangement::kVisAVis:
-      add_row(shape, phi, first_row, centred(first_row), unit(phi + core::kPi / 2), slots);
+    case Arrangement::kLShape: {
+      const double second_bearing =
+          phi + (shape.arrangement == Arrangement::kVisAVis ? core::kPi : core::kPi / 2);
+      add_row(shape, phi, first_row, slots);
       if (second_row > 0) {
-        add_row(shape, phi + core::kPi, second_row, centred(second_row), unit(phi + core::kPi / 2),
-                slots);
+        add_row(shape, second_bearing, second_row, slots);
       }
       break;
-    case Arrangement::kLShape:
-      add_row(shape, phi, first_row, 0.0, unit(phi - core::kPi / 2), slots);
-      if (second_row > 0) {
-        add_row(shape, phi + core::kPi / 2, second_row, 0.0, unit(phi + core::kPi), slots);
-      }
-      break;
+    }
     case Arrangement::kSideBySide:
-      add_row(shape, phi, count, centred(count), unit(phi + core::kPi / 2), slots);
+      add_row(shape, phi, count, slots);
       break;
   }
   return slots;
 }
 
-double row_distance_for(Arrangement arrangement, double member_spacing_m) {
-  return arrangement == Arrangement::kLShape ? member_spacing_m / std::sqrt(2.0)
-                                             : 0.5 * member_spacing_m;
+double row_distance_for(Arrangement arrangement, size_t count, double member_spacing_m,
+                        double shoulder_spacing_m) {
+  if (arrangement != Arrangement::kLShape) {
+    return 0.5 * member_spacing_m;
+  }
+  // The rows' ends nearest the corner stand a and b off their bearings, so at r from the centre
+  // they are sqrt((r - a)^2 + (r - b)^2) apart: at least a shoulder spacing s from
+  // r = (a + b + sqrt(2 s^2 - (a - b)^2)) / 2.
+  const double s = shoulder_spacing_m;
+  const double a = 0.5 * static_cast<double>((count + 1) / 2 - 1) * s;
+  const double b = 0.5 * static_cast<double>(count / 2 > 0 ? count / 2 - 1 : 0) * s;
+  const double corner_clear = 0.5 * (a + b + std::sqrt(2.0 * s * s - (a - b) * (a - b)));
+  return std::max(member_spacing_m / std::sqrt(2.0), corner_clear);
 }
 
 std::vector<size_t> assign_slots(const std::vector<Eigen::Vector2d>& positions,

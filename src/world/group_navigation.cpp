@@ -64,15 +64,32 @@ model::Arrangement GroupNavigation::arrangement() const {
   return participant_count() == 2 ? model::Arrangement::kVisAVis : model::Arrangement::kCircle;
 }
 
+double GroupNavigation::formation_radius_for(const GroupSpec& spec, model::Arrangement arrangement,
+                                             size_t participants) {
+  if (spec.ospace_radius_m > 0.0) {
+    return spec.ospace_radius_m;
+  }
+  if (arrangement == model::Arrangement::kCircle) {
+    return ospace_radius_for(participants, spec.member_spacing_m, spec.min_ospace_radius_m);
+  }
+  return row_distance_for(arrangement, participants, spec.member_spacing_m,
+                          spec.shoulder_spacing_m);
+}
+
+FormationShape GroupNavigation::settled_shape(const GroupSpec& spec, size_t participants) {
+  FormationShape shape;
+  shape.arrangement = spec.arrangement;
+  shape.centre = spec.centre;
+  shape.heading_rad = spec.heading_rad.value_or(0.0);
+  shape.radius_m = formation_radius_for(spec, spec.arrangement, participants);
+  shape.shoulder_spacing_m = spec.shoulder_spacing_m;
+  return shape;
+}
+
 double GroupNavigation::ospace_radius_m() const {
-  if (spec_.ospace_radius_m > 0.0) {
-    return spec_.ospace_radius_m;
-  }
-  if (kept_as_circle()) {
-    return ospace_radius_for(participant_count(), spec_.member_spacing_m,
-                             spec_.min_ospace_radius_m);
-  }
-  return row_distance_for(spec_.arrangement, spec_.member_spacing_m);
+  return formation_radius_for(spec_,
+                              kept_as_circle() ? model::Arrangement::kCircle : spec_.arrangement,
+                              participant_count());
 }
 
 double GroupNavigation::member_personal_distance_m() const {

@@ -1,8 +1,8 @@
 #pragma once
 
 // The geometry of the recorded conversational groups (Synth, CoffeeBreak 1 and 2; positions in
-// metres, each set's published stride) by size and arrangement: the spread the world's groups are
-// compared with (docs/perception_gcff.md, docs/world.md).
+// metres) by size and arrangement: the spread the world's groups are compared with
+// (docs/perception_gcff.md, docs/world.md).
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +15,13 @@
 #include "ari_social_sim/perception/fformation_geometry.hpp"
 
 namespace ari_social_sim::perception::test {
+
+/// The stride both the recorded and the world's groups are measured with: perception's
+/// (config/perception.yaml groups.stride). A group's distance to its o-space centre grows with the
+/// stride (a row facing one way stands a stride from it), so groups measured with different
+/// strides would compare the strides rather than the people; the sets' own published strides
+/// (0.2-0.5 m) were tuned for detection, not for measuring.
+constexpr double kComparisonStrideM = 0.6;
 
 /// Every member's distance to the centre, every pair's distance and every facing offset (deg) of
 /// the groups of one size and arrangement.
@@ -45,14 +52,9 @@ inline double percentile(std::vector<double> values, double p) {
 /// The recorded groups of 2 to 4, classified by classify_arrangement. Throws if a set cannot be
 /// read; a member missing from its frame's features is skipped with its group.
 inline std::map<SpreadKey, FormationSpread> recorded_formation_spreads() {
-  struct Set {
-    const char* name;
-    double stride_cm;
-  };
-  const Set sets[] = {{"Synth", 30.0}, {"CoffeeBreak_Seq1", 50.0}, {"CoffeeBreak_Seq2", 20.0}};
   std::map<SpreadKey, FormationSpread> spreads;
-  for (const Set& set : sets) {
-    const std::string stem = std::string(ARI_FFORMATION_DIR) + "/" + set.name;
+  for (const char* set : {"Synth", "CoffeeBreak_Seq1", "CoffeeBreak_Seq2"}) {
+    const std::string stem = std::string(ARI_FFORMATION_DIR) + "/" + set;
     const FeatureTable features = read_fformation_features(stem + "_features.csv");
     const GroupTable groups = read_fformation_groups(stem + "_groups.csv");
     for (const auto& [frame, grouping] : groups) {
@@ -72,7 +74,7 @@ inline std::map<SpreadKey, FormationSpread> recorded_formation_spreads() {
         if (members.size() != ids.size()) {
           continue;
         }
-        const FormationGeometry geometry = formation_geometry(members, set.stride_cm / 100.0);
+        const FormationGeometry geometry = formation_geometry(members, kComparisonStrideM);
         spreads[{ids.size(), model::to_string(geometry.arrangement)}].add(geometry);
       }
     }

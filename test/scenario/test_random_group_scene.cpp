@@ -73,15 +73,8 @@ TEST(RandomGroupScene, GroupsAreDrawnAsSpecifiedAndTheWorldTakesThem) {
         EXPECT_GE((group.centre - groups[h].centre).norm(), 3.0) << "seed " << seed;
       }
       // Each member within 0.1 m of a place and turned from its facing by at most 0.2 rad.
-      world::FormationShape shape;
-      shape.arrangement = group.arrangement;
-      shape.centre = group.centre;
-      shape.heading_rad = *group.heading_rad;
-      shape.radius_m =
-          group.arrangement == model::Arrangement::kCircle
-              ? world::GroupNavigation::ospace_radius_for(
-                    group.members.size(), group.member_spacing_m, group.min_ospace_radius_m)
-              : world::row_distance_for(group.arrangement, group.member_spacing_m);
+      const world::FormationShape shape =
+          world::GroupNavigation::settled_shape(group, group.members.size());
       const auto slots = world::formation_slots(shape, group.members.size());
       for (size_t m = 0; m < group.members.size(); ++m) {
         const world::HumanSpec& member = *humans.at(group.members[m]);

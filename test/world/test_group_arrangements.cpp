@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -63,16 +64,18 @@ TEST(FormationLayout, RowsFaceTheOspaceAcrossTheirBearing) {
   // Four vis-a-vis: two pairs 0.6 m apart across the o-space.
   slots = formation_slots(shape, 4);
   EXPECT_NEAR((slots[0].position - slots[1].position).norm(), 0.6, 1e-12);
-  EXPECT_NEAR((slots[0].position - slots[2].position).norm(), 1.0, 1e-12);
-  // L of two: at right angles, 0.5 sqrt 2 apart; a third extends the first row away from the
-  // corner.
+  EXPECT_NEAR((slots[0].position - slots[3].position).norm(), 1.0, 1e-12);
+  // L of two: at right angles, 0.5 sqrt 2 apart; with a third, the first row is a pair centred
+  // on its bearing.
   shape.arrangement = Arrangement::kLShape;
   slots = formation_slots(shape, 2);
   EXPECT_TRUE(slots[1].position.isApprox(Eigen::Vector2d(1.0, 2.5)));
   EXPECT_NEAR(core::angle_difference(slots[1].facing_rad, slots[0].facing_rad), core::kPi / 2,
               1e-12);
   slots = formation_slots(shape, 3);
-  EXPECT_TRUE(slots[1].position.isApprox(Eigen::Vector2d(1.5, 1.4)));
+  EXPECT_TRUE(slots[0].position.isApprox(Eigen::Vector2d(1.5, 1.7)));
+  EXPECT_TRUE(slots[1].position.isApprox(Eigen::Vector2d(1.5, 2.3)));
+  EXPECT_TRUE(slots[2].position.isApprox(Eigen::Vector2d(1.0, 2.5)));
   // Side-by-side of three: one row facing the same way, 0.6 m apart.
   shape.arrangement = Arrangement::kSideBySide;
   slots = formation_slots(shape, 3);
@@ -81,6 +84,30 @@ TEST(FormationLayout, RowsFaceTheOspaceAcrossTheirBearing) {
     EXPECT_NEAR(std::abs(slot.facing_rad), core::kPi, 1e-12);
   }
   EXPECT_NEAR(slots[2].position.y() - slots[0].position.y(), 1.2, 1e-12);
+}
+
+// An L's rows stand member_spacing / sqrt(2) from the centre unless their nearest ends would come
+// closer than a shoulder spacing across the corner: rows of two and one keep 0.9 / sqrt(2), two
+// rows of two stand 0.3 + 0.6 / sqrt(2) m out, their corner members exactly 0.6 m apart.
+TEST(FormationLayout, LRowsKeepTheirCornerClear) {
+  EXPECT_NEAR(row_distance_for(Arrangement::kLShape, 2, 0.9, 0.6), 0.9 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(row_distance_for(Arrangement::kLShape, 3, 0.9, 0.6), 0.9 / std::sqrt(2.0), 1e-12);
+  const double four = row_distance_for(Arrangement::kLShape, 4, 0.9, 0.6);
+  EXPECT_NEAR(four, 0.3 + 0.6 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(row_distance_for(Arrangement::kVisAVis, 4, 0.9, 0.6), 0.45, 1e-12);
+  EXPECT_NEAR(row_distance_for(Arrangement::kSideBySide, 4, 0.9, 0.6), 0.45, 1e-12);
+  FormationShape shape;
+  shape.arrangement = Arrangement::kLShape;
+  shape.radius_m = four;
+  shape.shoulder_spacing_m = 0.6;
+  const std::vector<FormationSlot> slots = formation_slots(shape, 4);
+  double closest = std::numeric_limits<double>::infinity();
+  for (size_t a = 0; a < slots.size(); ++a) {
+    for (size_t b = a + 1; b < slots.size(); ++b) {
+      closest = std::min(closest, (slots[a].position - slots[b].position).norm());
+    }
+  }
+  EXPECT_NEAR(closest, 0.6, 1e-12);
 }
 
 TEST(FormationLayout, SlotsGoToTheNearestParticipantsAndFixedOnesFirst) {

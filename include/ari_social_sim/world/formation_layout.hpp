@@ -26,20 +26,23 @@ struct FormationShape {
   /// Distance (m) of the rows, or of the circle, from the o-space centre.
   double radius_m{0.55};
   /// Distance (m) between neighbours standing shoulder to shoulder in one row.
-  double shoulder_spacing_m{0.65};
+  double shoulder_spacing_m{0.6};
 };
 
 /// The places of `count` participants. A circle spreads them evenly at radius_m, facing the
-/// centre. The others stand in rows that face the o-space across their bearing: vis-a-vis in two
-/// rows on opposite sides (the first has the odd participant), l-shape in two rows at a right
-/// angle that grow away from their corner, side-by-side in one row. Slots are ordered row by row.
+/// centre. The others stand in rows centred on their bearing, facing the o-space across it:
+/// vis-a-vis in two rows on opposite sides (the first has the odd participant), l-shape in two
+/// rows at a right angle (the first has the odd participant), side-by-side in one row. Slots are
+/// ordered row by row.
 std::vector<FormationSlot> formation_slots(const FormationShape& shape, size_t count);
 
-/// The arrangement's automatic row distance (m) for members `member_spacing_m` apart across the
-/// o-space: half of it face to face and in a side-by-side row's o-space, 1/sqrt(2) of it at a
-/// right angle (so the two of an L stand member_spacing_m apart). Circles use
-/// GroupNavigation::ospace_radius_for.
-double row_distance_for(model::Arrangement arrangement, double member_spacing_m);
+/// The arrangement's automatic row distance (m) for `count` participants, `member_spacing_m`
+/// apart across the o-space and `shoulder_spacing_m` along a row: half of member_spacing_m face
+/// to face and in a side-by-side row's o-space; at a right angle 1/sqrt(2) of it (so the two of an
+/// L stand member_spacing_m apart), or further when the rows' nearest ends would stand closer
+/// than shoulder_spacing_m. Circles use GroupNavigation::ospace_radius_for.
+double row_distance_for(model::Arrangement arrangement, size_t count, double member_spacing_m,
+                        double shoulder_spacing_m);
 
 /// The slot each participant takes: slot_of[i] for participant i, a permutation of the slots
 /// that keeps the sum of squared walks smallest (exhaustively for up to 7 participants, then

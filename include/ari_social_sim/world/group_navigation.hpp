@@ -58,9 +58,9 @@ struct GroupSpec {
   /// members stand when the group forms.
   std::optional<double> heading_rad;
   /// m between neighbours standing shoulder to shoulder in one row (side-by-side, and the rows
-  /// of larger vis-a-vis and L groups). Recorded side-by-side pairs stand 0.40-1.19 m apart,
-  /// median 0.61 (docs/perception_gcff.md).
-  double shoulder_spacing_m{0.65};
+  /// of larger vis-a-vis and L groups): the median of the recorded side-by-side pairs (0.61 m,
+  /// 10th-90th percentile 0.40-1.19, docs/perception_gcff.md).
+  double shoulder_spacing_m{0.6};
   /// deg: standard deviation of each member's stance, the turn of their body off the way the
   /// formation has them face (seeded per member). People do not face an o-space exactly: recorded
   /// members turn 3-110 deg off it (10th-90th percentile, docs/world.md).
@@ -201,6 +201,16 @@ class GroupNavigation {
   /// Radius (m) at which `member_count` evenly spaced members stand `spacing_m` apart:
   /// spacing = 2 s sin(pi / n), never below `min_radius_m`.
   static double ospace_radius_for(size_t member_count, double spacing_m, double min_radius_m);
+
+  /// Radius (m) of the circle, or distance of the rows from the centre, that `participants` keep
+  /// in `arrangement`: the spec's ospace_radius when set, else ospace_radius_for a circle and
+  /// row_distance_for rows.
+  static double formation_radius_for(const GroupSpec& spec, model::Arrangement arrangement,
+                                     size_t participants);
+
+  /// Where `participants` stand once settled in the spec's arrangement around its centre, rows
+  /// laid out from its heading (0 when unset): scene builders spawn members at these places.
+  static FormationShape settled_shape(const GroupSpec& spec, size_t participants);
 
  private:
   // Whether ARI takes part this step: asked to, or near and facing the centre (hysteresis
