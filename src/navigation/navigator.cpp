@@ -164,11 +164,22 @@ Navigator::FieldSearch Navigator::field_to(const Goal& goal, const core::Pose2& 
 
 std::optional<GoalFailure> Navigator::adopt_goal(const Goal& goal, const core::Pose2& robot,
                                                  const PerceivedScene& scene) {
-  std::vector<CostDisc> discs = cost_discs(scene, goal);
-  if ((goal.pose.position - geodesic_->goal()).norm() > config_.navigator.goal_update_distance_m ||
-      discs_changed(discs)) {
+  // A goal that shifts by less than goal_update_distance and goal_update_angle keeps the pose
+  // aimed at: the members of a group settling around ARI move its place by a few centimetres at
+  // a time, and a pose that followed them would drift away from the geodesic field's goal, to
+  // which the MPC's progress term leads; ARI then stalled short of the pose judged for arrival.
+  const bool moved = (goal.pose.position - goal_->pose.position).norm() >
+                         config_.navigator.goal_update_distance_m ||
+                     std::abs(core::angle_difference(goal.pose.theta, goal_->pose.theta)) >
+                         config_.navigator.goal_update_angle;
+  Goal adopted = goal;
+  if (!moved) {
+    adopted.pose = goal_->pose;
+  }
+  std::vector<CostDisc> discs = cost_discs(scene, adopted);
+  if (moved || discs_changed(discs)) {
     const double distance_before = geodesic_->cost(robot.position);
-    FieldSearch field = field_to(goal, robot, discs);
+    FieldSearch field = field_to(adopted, robot, discs);
     if (auto* failure = std::get_if<GoalFailure>(&field)) {
       return std::move(*failure);
     }
@@ -181,7 +192,7 @@ std::optional<GoalFailure> Navigator::adopt_goal(const Goal& goal, const core::P
     // it back and forth and never counts as progress.
     best_distance_m_ += geodesic_->cost(robot.position) - distance_before;
   }
-  goal_ = goal;
+  goal_ = std::move(adopted);
   return std::nullopt;
 }
 
@@ -251,14 +262,13 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   }
 
   // Arrival, judged on base_footprint against the goal pose.
-  const double position_error = (robot.pose.position - goal_->pose.position).norm();
   const double heading_error =
       std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
+  const bool at_position = at_goal_position(robot.pose);
   step.distance_to_goal_m = geodesic_->cost(robot.pose.position);
   // Arriving where the target was last seen counts: a member hidden behind another as ARI
   // steps into the gap is still there.
-  if (position_error <= config_.navigator.goal_tolerance_m &&
-      heading_error <= config_.navigator.yaw_tolerance) {
+  if (at_position && heading_error <= config_.navigator.yaw_tolerance) {
     NavigatorStep done = finish(NavigationState::kSucceeded, "");
     done.distance_to_goal_m = step.distance_to_goal_m;
     done.command.pan_rad = robot.pan_rad;
@@ -272,7 +282,7 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
     if (patience(time_s) == 1.0 || !inside_bystander_space(robot.pose, scene)) {
       patience_clock_s_ = time_s;
     }
-  } else if (position_error > config_.navigator.goal_tolerance_m &&
+  } else if (!at_position &&
              time_s - best_distance_time_s_ > config_.navigator.progress_timeout_s) {
     return finish(NavigationState::kAborted,
                   "no progress toward " + describe(*target_) + " for " +
@@ -287,6 +297,19 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
   step.command = {plan_.linear_mps(), plan_.angular_rps(), plan_.pan_target()};
   step.phase = !target_visible ? "waiting for the target" : aligning_ ? "aligning" : "approaching";
   return step;
+}
+
+bool Navigator::at_goal_position(const core::Pose2& robot) const {
+  const Eigen::Vector2d to_goal = goal_->pose.position - robot.position;
+  if (to_goal.norm() > config_.navigator.goal_tolerance_m) {
+    return false;
+  }
+  // A join's goal faces the o-space centre with ARI's body on the participants' ring: stopping
+  // short of it along that heading leaves ARI outside the ring, where F-formation detection
+  // (GCFF, whose o-space point lies a stride ahead of each body) no longer counts it a member,
+  // so the ring side of the tolerance is tighter.
+  return goal_->group_id.empty() ||
+         to_goal.dot(goal_->pose.heading()) <= config_.navigator.join_shortfall_tolerance_m;
 }
 
 double Navigator::patience(double time_s) const {
@@ -322,7 +345,7 @@ void Navigator::build_problem(double time_s, const RobotObservation& robot,
   const double heading_error =
       std::abs(core::angle_difference(goal_->pose.theta, robot.pose.theta));
   const double tolerance = config_.navigator.goal_tolerance_m;
-  if (position_error <= tolerance) {
+  if (at_goal_position(robot.pose)) {
     aligning_ = true;
   } else if (position_error > 2.0 * tolerance || heading_error <= config_.navigator.yaw_tolerance) {
     aligning_ = false;

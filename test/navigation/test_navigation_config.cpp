@@ -75,6 +75,10 @@ TEST(NavigationConfig, EachBadFieldIsNamedWithItsExpectation) {
                       {"controller.rate", "[1, 100]"});
   expect_config_error([] { parse("geodesic: {inscribed_radius: 0.5, preferred_clearance: 0.3}"); },
                       "social_mpc.yaml", {"geodesic.preferred_clearance", ">= inscribed_radius"});
+  expect_config_error(
+      [] { parse("controller: {goal_tolerance: 0.1, join_shortfall_tolerance: 0.12}"); },
+      "social_mpc.yaml",
+      {"controller.join_shortfall_tolerance", "<= goal_tolerance (0.1)", "0.12"});
   expect_config_error([] { parse("perception_input: {group_timeout: 0}"); }, "social_mpc.yaml",
                       {"perception_input.group_timeout", "> 0"});
   expect_config_error([] { parse("navigation: {}"); }, "social_mpc.yaml",

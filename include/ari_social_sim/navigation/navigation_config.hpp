@@ -4,6 +4,7 @@
 #include <string>
 
 #include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/model/ari_limits.hpp"
 #include "ari_social_sim/navigation/geodesic_field.hpp"
@@ -193,10 +194,12 @@ struct NavigatorConfig {
   double rate_hz{10.0};
   double goal_tolerance_m{0.15};
   double yaw_tolerance{0.15};
+  double join_shortfall_tolerance_m{0.1};
   double target_lost_timeout_s{5.0};
   double progress_timeout_s{20.0};
   double progress_distance_m{0.3};
   double goal_update_distance_m{0.1};
+  double goal_update_angle{0.1};
   double goal_switch_distance_m{0.5};
   double goal_switch_time_s{1.0};
   double patience_s{4.0};
@@ -212,6 +215,13 @@ struct NavigatorConfig {
             core::Bounds{0.0, 2.0, true});
     v.field("yaw_tolerance", yaw_tolerance, "rad: and the heading this close to the goal's",
             core::Bounds{0.0, 3.1416, true});
+    v.field("join_shortfall_tolerance", join_shortfall_tolerance_m,
+            "m: joining a group, base_footprint also at most this far short of the goal along "
+            "its heading (outside the participants' ring)",
+            core::between(0.0, 2.0));
+    v.rule("join_shortfall_tolerance", join_shortfall_tolerance_m <= goal_tolerance_m,
+           "a value <= goal_tolerance (" + core::number_text(goal_tolerance_m) + ")",
+           core::number_text(join_shortfall_tolerance_m));
     v.field("target_lost_timeout", target_lost_timeout_s,
             "s: abort when the target is unseen this long", core::positive());
     v.field("progress_timeout", progress_timeout_s,
@@ -219,7 +229,10 @@ struct NavigatorConfig {
             core::positive());
     v.field("progress_distance", progress_distance_m, "m", core::positive());
     v.field("goal_update_distance", goal_update_distance_m,
-            "m: recompute the geodesic field when the goal moves more", core::positive());
+            "m: a goal found again moves (and its geodesic field is recomputed) only when it "
+            "shifts more, or turns more than goal_update_angle",
+            core::positive());
+    v.field("goal_update_angle", goal_update_angle, "rad", core::between(0.0, 3.1416));
     v.field("goal_switch_distance", goal_switch_distance_m,
             "m: a goal jumping farther at once (another gap) is followed only once it has held "
             "goal_switch_time",

@@ -60,7 +60,8 @@ class Navigator : public GoalController {
   /// The geodesic field to `goal`, or a kUnreachable failure when the goal or ARI cannot reach it.
   FieldSearch field_to(const Goal& goal, const core::Pose2& robot,
                        const std::vector<CostDisc>& discs) const;
-  /// Sets goal_, rebuilding the geodesic field when the goal or the people moved; a failure
+  /// Sets goal_, rebuilding the geodesic field when the goal or the people moved; a goal within
+  /// goal_update_distance and goal_update_angle of goal_ keeps goal_'s pose. A failure
   /// (kUnreachable) leaves the goal and its field as they were.
   std::optional<GoalFailure> adopt_goal(const Goal& goal, const core::Pose2& robot,
                                         const PerceivedScene& scene);
@@ -73,6 +74,9 @@ class Navigator : public GoalController {
   /// the most of its last members (at least two): group detection gives a group a new id when
   /// its membership changes for a moment (a member hidden from ARI), and the group is still there.
   void follow_relabelled_group(const PerceivedScene& scene);
+  /// True when base_footprint at `robot` is within goal_tolerance of the goal, and, for a join,
+  /// at most join_shortfall_tolerance short of it along the goal's heading (toward the centre).
+  bool at_goal_position(const core::Pose2& robot) const;
   /// Weight factor of personal spaces, 1 until ARI has been stalled for the patience time.
   double patience(double time_s) const;
   /// True when ARI's footprint at `robot` is inside the personal space of someone other than the
