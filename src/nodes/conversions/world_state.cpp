@@ -202,8 +202,8 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
          w.heading,
          from_msg(w.goal),
          core::parse_choice(w.on_arrival, world::kArrivalActions, "on_arrival"),
-         w.waiting,
-         w.arrived});
+         w.waiting != 0,
+         w.arrived != 0});
   }
   return snapshot;
 }
