@@ -128,19 +128,23 @@ TEST(WorldFormations, FallWithinTheRecordedSpread) {
                   cell(world.centre_m, reference.centre_m, "%.2f in %.2f-%.2f").c_str(),
                   cell(world.pair_m, reference.pair_m, "%.2f in %.2f-%.2f").c_str(),
                   cell(world.offset_deg, reference.offset_deg, "%.0f in %.0f-%.0f").c_str());
-      // Asserted for every case but a side-by-side row of four: no recorded side-by-side group is
-      // longer than three, and a row of four is wider than any of them (docs/world.md says by
-      // how much).
-      const bool comparable = !(size == 4 && name == "side-by-side");
+      // Within the recorded 10th-90th percentile, but for a side-by-side row of four: no
+      // recorded side-by-side group is longer than three, and a row of four is wider than most of
+      // them, so it is held to the whole recorded range (docs/world.md says by how much).
+      const bool row_of_four = size == 4 && name == "side-by-side";
+      const double low = row_of_four ? 0.0 : 0.1;
+      const double high = row_of_four ? 1.0 : 0.9;
       auto within = [&](const std::vector<double>& world_values,
                         const std::vector<double>& recorded_values, const char* what) {
-        if (!comparable) {
-          return;
-        }
         const double median = test::percentile(world_values, 0.5);
-        EXPECT_GE(median, test::percentile(recorded_values, 0.1))
+        if (row_of_four) {
+          std::printf("  row of four, %s: %.2f in the recorded range %.2f-%.2f\n", what, median,
+                      test::percentile(recorded_values, low),
+                      test::percentile(recorded_values, high));
+        }
+        EXPECT_GE(median, test::percentile(recorded_values, low))
             << size << " " << model::to_string(arrangement) << ": " << what;
-        EXPECT_LE(median, test::percentile(recorded_values, 0.9))
+        EXPECT_LE(median, test::percentile(recorded_values, high))
             << size << " " << model::to_string(arrangement) << ": " << what;
       };
       within(world.centre_m, reference.centre_m, "distance to the o-space centre");
