@@ -201,21 +201,24 @@ void RobotReaction::plan_alone(const Object& owner, const StepContext& context,
   // An engaged reaction lasts until ARI is kHysteresisM beyond the distance that started it.
   const bool noticed =
       distance < params_.notice_distance_m + (phase_ == Phase::kEngaged ? kHysteresisM : 0.0);
-  switch (profile_) {
-    case ReactionProfile::kIgnore:
-      break;
-    case ReactionProfile::kYield:
-      plan_yield(owner, context, robot);
-      break;
-    case ReactionProfile::kCurious:
-      plan_curious(owner, robot, noticed);
-      break;
-    case ReactionProfile::kAvoid:
-      plan_avoid(owner, context, robot, noticed);
-      break;
-    case ReactionProfile::kBlock:
-      plan_block(owner, robot, noticed);
-      break;
+  if (profile_ == ReactionProfile::kIgnore) {
+    return;
+  }
+  if (profile_ == ReactionProfile::kYield) {
+    plan_yield(owner, context, robot);  // yields to ARI's path, however far ARI is
+    return;
+  }
+  // The others react only while ARI is near.
+  if (!noticed) {
+    reset();
+    return;
+  }
+  if (profile_ == ReactionProfile::kCurious) {
+    plan_curious(owner, robot);
+  } else if (profile_ == ReactionProfile::kAvoid) {
+    plan_avoid(owner, context, robot);
+  } else {
+    plan_block(owner, robot);
   }
 }
 
@@ -330,11 +333,7 @@ void RobotReaction::plan_yield(const Object& owner, const StepContext& context,
   }
 }
 
-void RobotReaction::plan_curious(const Object& owner, const RobotView& robot, bool noticed) {
-  if (!noticed) {
-    reset();
-    return;
-  }
+void RobotReaction::plan_curious(const Object& owner, const RobotView& robot) {
   if (phase_ != Phase::kEngaged) {
     phase_ = Phase::kEngaged;
     origin_ = owner.pose();
@@ -357,11 +356,7 @@ void RobotReaction::plan_curious(const Object& owner, const RobotView& robot, bo
 }
 
 void RobotReaction::plan_avoid(const Object& owner, const StepContext& context,
-                               const RobotView& robot, bool noticed) {
-  if (!noticed) {
-    reset();
-    return;
-  }
+                               const RobotView& robot) {
   phase_ = Phase::kEngaged;
   const auto& human = static_cast<const Human&>(owner);
   const HumanMotionParams& motion = human.spec().motion;
@@ -409,11 +404,7 @@ void RobotReaction::plan_avoid(const Object& owner, const StepContext& context,
   }
 }
 
-void RobotReaction::plan_block(const Object& owner, const RobotView& robot, bool noticed) {
-  if (!noticed) {
-    reset();
-    return;
-  }
+void RobotReaction::plan_block(const Object& owner, const RobotView& robot) {
   phase_ = Phase::kEngaged;
   const auto& human = static_cast<const Human&>(owner);
   const HumanMotionParams& motion = human.spec().motion;

@@ -296,15 +296,10 @@ const Ari& Simulation::add_ari(const AriSpec& spec) {
 }
 
 const GroupNavigation& Simulation::add_group(GroupSpec spec) {
-  if (spec.id == model::kNoObject) {
-    spec.id = next_group_id();
-  }
   const RequestCheck check("create_group");
+  spec.id = new_group_id(spec.id, check, "an id no other group uses");
   check.on_floor("centre", spec.centre, world_);
   check.valid(spec);
-  if (find_group(spec.id) != nullptr || find_walking_group(spec.id) != nullptr) {
-    check.fail("id", "an id no other group uses", std::to_string(spec.id));
-  }
   check_members(check, spec.members);
   for (model::ObjectId member : spec.members) {
     Human& human = *mutable_human(member);
@@ -377,7 +372,14 @@ void Simulation::drop_empty_groups() {
       walking_groups_.end());
 }
 
-model::ObjectId Simulation::next_group_id() const {
+model::ObjectId Simulation::new_group_id(model::ObjectId requested, const RequestCheck& check,
+                                         const std::string& expected) const {
+  if (requested != model::kNoObject) {
+    if (find_group(requested) != nullptr || find_walking_group(requested) != nullptr) {
+      check.fail("id", expected, std::to_string(requested));
+    }
+    return requested;
+  }
   model::ObjectId highest = kFirstAutomaticGroupId - 1;
   if (!groups_.empty()) {
     highest = std::max(highest, groups_.back()->id());
@@ -397,15 +399,10 @@ WalkingGroup* Simulation::mutable_walking_group(model::ObjectId id) {
 }
 
 const WalkingGroup& Simulation::add_walking_group(WalkingGroupSpec spec) {
-  if (spec.id == model::kNoObject) {
-    spec.id = next_group_id();
-  }
   const RequestCheck check("create_walking_group");
+  spec.id = new_group_id(spec.id, check, "an id no other group (walking or conversing) uses");
   check.pose_on_floor("goal", spec.goal, world_);
   check.valid(spec);
-  if (find_group(spec.id) != nullptr || find_walking_group(spec.id) != nullptr) {
-    check.fail("id", "an id no other group (walking or conversing) uses", std::to_string(spec.id));
-  }
   check_members(check, spec.members);
   // Members keep their own max_speed: a group faster than its slowest member would leave it
   // behind and wait for it for ever.

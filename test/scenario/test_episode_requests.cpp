@@ -3,6 +3,9 @@
 // requests sent to a twin world through Simulation, as world_node's services send them.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <memory>
+
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
 #include "ari_social_sim/world/scene.hpp"
@@ -81,25 +84,37 @@ void send_requests(world::Simulation& world) {
   world.remove_human(14);
 }
 
-TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
-  const Scenario scenario = requests_scenario();
-  static const EpisodeConfig config = EpisodeConfig::load(kSource + "/config");
-  Episode episode(scenario, kSeed, config);
+// The episode of `scenario` and a twin world built from its scene with the same seed, run side by
+// side for kSteps. The script enters its first state after the first step: `send_requests` then
+// gives the twin what the script asks for on entering it.
+struct SideBySide {
+  std::unique_ptr<Episode> episode;
+  std::unique_ptr<world::Simulation> twin;
+};
 
+SideBySide run_side_by_side(const Scenario& scenario,
+                            const std::function<void(world::Simulation&)>& send_requests) {
+  static const EpisodeConfig config = EpisodeConfig::load(kSource + "/config");
+  SideBySide run;
+  run.episode = std::make_unique<Episode>(scenario, kSeed, config);
   world::Scene scene = scenario.scene;
   scene.seed = kSeed;
-  auto twin = world::build_simulation(scene, config.simulation);
-  // The script enters its first state after the first step.
-  twin->step();
-  episode.step();
-  send_requests(*twin);
+  run.twin = world::build_simulation(scene, config.simulation);
+  run.twin->step();
+  run.episode->step();
+  send_requests(*run.twin);
   for (int i = 1; i < kSteps; ++i) {
-    twin->step();
-    episode.step();
+    run.twin->step();
+    run.episode->step();
   }
+  return run;
+}
 
-  const world::WorldSnapshot in_process = world::WorldSnapshot::of(episode.simulation());
-  const world::WorldSnapshot direct = world::WorldSnapshot::of(*twin);
+TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
+  const Scenario scenario = requests_scenario();
+  const SideBySide run = run_side_by_side(scenario, send_requests);
+  const world::WorldSnapshot in_process = world::WorldSnapshot::of(run.episode->simulation());
+  const world::WorldSnapshot direct = world::WorldSnapshot::of(*run.twin);
   EXPECT_DOUBLE_EQ(in_process.time_s, 10.0);
   ASSERT_EQ(in_process.humans.size(), 4u);  // 10-13: Eve came and went
   ASSERT_EQ(direct.humans.size(), 4u);
@@ -149,26 +164,17 @@ TEST(EpisodeRequests, AWalkingGroupWalksAsTheWorldsApiMakesIt) {
       "[4.5, 4.5]}, on_arrival: converse, arrangement: vis-a-vis}}\n";
   const Scenario scenario =
       parse_scenario(core::YamlMap::parse(text, "inline.yaml"), kSource, "walking");
-  static const EpisodeConfig config = EpisodeConfig::load(kSource + "/config");
-  Episode episode(scenario, kSeed, config);
-  world::Scene scene = scenario.scene;
-  scene.seed = kSeed;
-  auto twin = world::build_simulation(scene, config.simulation);
-  twin->step();
-  episode.step();
-  world::WalkingGroupSpec walking;
-  walking.id = 2;
-  walking.members = {10, 11};
-  walking.goal.position = {4.5, 4.5};
-  walking.on_arrival = world::ArrivalAction::kConverse;
-  walking.arrangement = model::Arrangement::kVisAVis;
-  twin->add_walking_group(walking);
-  for (int i = 1; i < kSteps; ++i) {
-    twin->step();
-    episode.step();
-  }
-  const world::WorldSnapshot in_process = world::WorldSnapshot::of(episode.simulation());
-  const world::WorldSnapshot direct = world::WorldSnapshot::of(*twin);
+  const SideBySide run = run_side_by_side(scenario, [](world::Simulation& twin) {
+    world::WalkingGroupSpec walking;
+    walking.id = 2;
+    walking.members = {10, 11};
+    walking.goal.position = {4.5, 4.5};
+    walking.on_arrival = world::ArrivalAction::kConverse;
+    walking.arrangement = model::Arrangement::kVisAVis;
+    twin.add_walking_group(walking);
+  });
+  const world::WorldSnapshot in_process = world::WorldSnapshot::of(run.episode->simulation());
+  const world::WorldSnapshot direct = world::WorldSnapshot::of(*run.twin);
   ASSERT_EQ(in_process.humans.size(), 2u);
   for (size_t i = 0; i < direct.humans.size(); ++i) {
     EXPECT_EQ(in_process.humans[i].pose.position, direct.humans[i].pose.position);

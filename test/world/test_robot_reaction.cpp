@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <limits>
 
@@ -17,6 +16,7 @@
 #include "expect_config_error.hpp"
 #include "refusal_text.hpp"
 #include "scene_builders.hpp"
+#include "snapshot_hash.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -362,26 +362,6 @@ TEST(RobotReaction, AYieldingGroupMemberInAriSWaySidestepsABitAndStaysAMember) {
   EXPECT_LT(run.moved[0], 0.45);
 }
 
-// FNV-1a over the people's poses and gaze: equal hashes mean equal runs.
-uint64_t hash_of(const WorldSnapshot& s) {
-  uint64_t h = 1469598103934665603ULL;
-  auto mix = [&h](double value) {
-    uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int i = 0; i < 8; ++i) {
-      h = (h ^ ((bits >> (8 * i)) & 0xff)) * 1099511628211ULL;
-    }
-  };
-  for (const HumanSnapshot& human : s.humans) {
-    mix(human.pose.position.x());
-    mix(human.pose.position.y());
-    mix(human.pose.theta);
-    mix(human.gaze.target);
-    mix(human.gaze.direction_rad);
-  }
-  return h;
-}
-
 std::unique_ptr<Simulation> reacting_crowd(uint64_t seed, bool set_back_to_ignore = false) {
   auto sim = room(12.0, seed);
   add_ari(*sim, 2.0, 6.0, 0.0);
@@ -410,9 +390,9 @@ TEST(RobotReaction, SameSeedSameRunOtherSeedOtherRun) {
       sim->command_ari_twist(0.4, 0.1);
       sim->step();
     }
-    const uint64_t ha = hash_of(WorldSnapshot::of(*a));
-    ASSERT_EQ(ha, hash_of(WorldSnapshot::of(*b))) << "step " << i;
-    differs = differs || ha != hash_of(WorldSnapshot::of(*c));
+    const uint64_t ha = test::hash_of(WorldSnapshot::of(*a));
+    ASSERT_EQ(ha, test::hash_of(WorldSnapshot::of(*b))) << "step " << i;
+    differs = differs || ha != test::hash_of(WorldSnapshot::of(*c));
   }
   EXPECT_TRUE(differs);  // gaze events and the curious person's approach draw from the seed
 }
@@ -432,7 +412,8 @@ TEST(RobotReaction, IgnoreIsTheWorldWithoutReactions) {
       sim->command_ari_twist(0.4, 0.1);
       sim->step();
     }
-    ASSERT_EQ(hash_of(WorldSnapshot::of(*never)), hash_of(WorldSnapshot::of(*reset))) << i;
+    ASSERT_EQ(test::hash_of(WorldSnapshot::of(*never)), test::hash_of(WorldSnapshot::of(*reset)))
+        << i;
   }
   EXPECT_EQ(never->find_human(10)->reaction(), nullptr);  // no component at all
   EXPECT_EQ(WorldSnapshot::of(*reset).humans[0].reaction, ReactionProfile::kIgnore);

@@ -10,6 +10,7 @@
 #include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 #include "scene_builders.hpp"
+#include "snapshot_hash.hpp"
 
 namespace ari_social_sim::world {
 namespace {
@@ -19,27 +20,6 @@ HumanSpec person(model::ObjectId id, double x, double y, double theta = 0.0) {
   spec.id = id;
   spec.pose = {{x, y}, theta};
   return spec;
-}
-
-// FNV-1a over every number of a snapshot: equal hashes mean equal runs.
-uint64_t hash_of(const WorldSnapshot& s) {
-  uint64_t h = 1469598103934665603ULL;
-  auto mix = [&h](double value) {
-    uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    for (int i = 0; i < 8; ++i) {
-      h = (h ^ ((bits >> (8 * i)) & 0xff)) * 1099511628211ULL;
-    }
-  };
-  for (const HumanSnapshot& human : s.humans) {
-    mix(human.pose.position.x());
-    mix(human.pose.position.y());
-    mix(human.pose.theta);
-    mix(human.gaze.target);
-    mix(human.gaze.direction_rad);
-    mix(human.gaze.since_s);
-  }
-  return h;
 }
 
 std::unique_ptr<Simulation> crowd(uint64_t seed) {
@@ -70,9 +50,9 @@ TEST(Simulation, SameSeedSameRunOtherSeedOtherRun) {
     a->step();
     b->step();
     c->step();
-    const uint64_t ha = hash_of(WorldSnapshot::of(*a));
-    ASSERT_EQ(ha, hash_of(WorldSnapshot::of(*b))) << "step " << i;
-    differs = differs || ha != hash_of(WorldSnapshot::of(*c));
+    const uint64_t ha = test::hash_of(WorldSnapshot::of(*a));
+    ASSERT_EQ(ha, test::hash_of(WorldSnapshot::of(*b))) << "step " << i;
+    differs = differs || ha != test::hash_of(WorldSnapshot::of(*c));
   }
   EXPECT_TRUE(differs);
 }
@@ -248,7 +228,7 @@ std::unique_ptr<Simulation> request_world() {
 
 // Every number of the ground truth, plus the modes, goals and groups: equal hashes, equal worlds.
 uint64_t full_hash(const WorldSnapshot& s) {
-  uint64_t h = hash_of(s);
+  uint64_t h = test::hash_of(s);
   auto mix = [&h](double value) {
     uint64_t bits;
     std::memcpy(&bits, &value, sizeof bits);

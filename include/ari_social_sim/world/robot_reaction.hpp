@@ -215,10 +215,9 @@ class RobotReaction : public Component {
   void plan_alone(const Object& owner, const StepContext& context, const RobotView& robot);
   void plan_member(const Object& owner, const RobotView& robot);
   void plan_yield(const Object& owner, const StepContext& context, const RobotView& robot);
-  void plan_curious(const Object& owner, const RobotView& robot, bool noticed);
-  void plan_avoid(const Object& owner, const StepContext& context, const RobotView& robot,
-                  bool noticed);
-  void plan_block(const Object& owner, const RobotView& robot, bool noticed);
+  void plan_curious(const Object& owner, const RobotView& robot);
+  void plan_avoid(const Object& owner, const StepContext& context, const RobotView& robot);
+  void plan_block(const Object& owner, const RobotView& robot);
   // Where the person steps to get out of ARI's corridor: the nearest free place beside the path
   // (probed against walls and furniture), which is on their own side unless that is shut; further
   // along the path if both sides are shut. (Crossing to a roomier far side while the near one is

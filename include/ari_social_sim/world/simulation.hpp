@@ -216,8 +216,11 @@ class Simulation {
   Human* mutable_human(model::ObjectId id);
   GroupNavigation* mutable_group(model::ObjectId id);
   WalkingGroup* mutable_walking_group(model::ObjectId id);
-  /// One past the highest id of any group, walking or conversing (1 for the first group).
-  model::ObjectId next_group_id() const;
+  /// The id a new group, walking or conversing, takes: `requested`, or one past the highest id of
+  /// any group when it is model::kNoObject (1 for the first group). Refused as `expected` when
+  /// another group has it.
+  model::ObjectId new_group_id(model::ObjectId requested, const RequestCheck& check,
+                               const std::string& expected) const;
   /// Takes a human out of its walking group, if any (a group left without members is dropped).
   void leave_walking_group(Human& human);
   /// Walking groups that arrived with `converse` become conversation groups.
