@@ -263,13 +263,10 @@ void RobotReaction::plan_yield(const Object& owner, const StepContext& context,
 
   if (in_robot_corridor(robot, p, params_)) {
     // In ARI's way (again): step aside, remembering where the encounter found the person.
-    if (phase_ == Phase::kIdle || phase_ == Phase::kReturning) {
+    if (phase_ == Phase::kIdle || phase_ == Phase::kReturning || phase_ == Phase::kWaiting) {
       if (phase_ == Phase::kIdle) {
         origin_ = owner.pose();
       }
-      aside_target_ = aside_target(owner, context, robot);
-      phase_ = Phase::kSteppingAside;
-    } else if (phase_ == Phase::kWaiting) {
       aside_target_ = aside_target(owner, context, robot);
       phase_ = Phase::kSteppingAside;
     }
