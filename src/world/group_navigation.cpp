@@ -116,6 +116,10 @@ double GroupNavigation::cohesion_radius_m() const {
 
 void GroupNavigation::set_centre(const Eigen::Vector2d& centre) {
   ARI_DCHECK(centre.allFinite());
+  // The formation moves with its centre, each place by the same offset.
+  for (FormationSlot& place : places_) {
+    place.position += centre - spec_.centre;
+  }
   spec_.centre = centre;
 }
 
@@ -221,6 +225,7 @@ void GroupNavigation::deal_places(bool circle) {
   const size_t n = participant_count();
   if (circle && spec_.place_gain <= 0.0) {
     places_.clear();
+    slot_of_.clear();  // places are dealt afresh should the group stand in rows again
     return;
   }
   // While ARI comes to a circle, the gap follows it round: people make room where it comes.
@@ -229,7 +234,10 @@ void GroupNavigation::deal_places(bool circle) {
       circle && robot_joining_ != model::kNoObject &&
       (participant_positions_.back() - spec_.centre).norm() > ospace_radius_m() + kRobotSettledM;
   const bool redeal = slots_stale_ || slot_of_.size() != n || robot_coming;
-  if (circle && redeal) {
+  if (!redeal) {
+    return;  // the shape changes only with a redeal (set_centre moves the places it has)
+  }
+  if (circle) {
     // A circle opens its places toward its newest participant: ARI joining, or the member who
     // joined last.
     const Eigen::Vector2d towards = participant_positions_.back() - spec_.centre;
@@ -244,14 +252,12 @@ void GroupNavigation::deal_places(bool circle) {
   shape.radius_m = ospace_radius_m();
   shape.shoulder_spacing_m = spec_.shoulder_spacing_m;
   const std::vector<FormationSlot> slots = formation_slots(shape, n);
-  if (redeal) {
-    std::vector<size_t> fixed;
-    if (robot_joining_ != model::kNoObject) {
-      fixed.push_back(n - 1);  // ARI takes the place nearest to it; the members the others
-    }
-    slot_of_ = assign_slots(participant_positions_, slots, fixed);
-    slots_stale_ = false;
+  std::vector<size_t> fixed;
+  if (robot_joining_ != model::kNoObject) {
+    fixed.push_back(n - 1);  // ARI takes the place nearest to it; the members the others
   }
+  slot_of_ = assign_slots(participant_positions_, slots, fixed);
+  slots_stale_ = false;
   places_.clear();
   for (size_t k = 0; k < n; ++k) {
     places_.push_back(slots[slot_of_[k]]);
