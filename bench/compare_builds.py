@@ -9,8 +9,9 @@ also get a row "... per sim s": CPU time per simulated second, which stays compa
 change makes the episodes longer or shorter, and are judged by it.
 
 Usage:
-  git worktree add /tmp/old REV && (cd /tmp/old && bash scripts/build.sh --target benchmarks)
-  bench/compare_builds.py /tmp/old/_build/bench _build/bench \\
+  old=$(mktemp -d) && git worktree add "$old" REV
+  (cd "$old" && bash scripts/build.sh --target benchmarks)
+  bench/compare_builds.py "$old/_build/bench" _build/bench \\
       [--programs bench_world,bench_perception,bench_navigation,bench_scenario] \\
       [--filter REGEX] [--rounds 3] [--cpu 0] [--tolerance 5]
 """

@@ -67,9 +67,8 @@ target_link_libraries(group_detection_node ari_perceived_persons)
 install(TARGETS group_detection_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
-  # The F-formation data sets as CSV (docs/perception_gcff.md) are not part of the repository:
-  # by default the tests read them where CI provides them, beside the checkout.
-  set(ari_fformation_dir ${CMAKE_CURRENT_SOURCE_DIR}/../shared/fformation)
+  # The tests that read the F-formation data sets (docs/data.md) find them at run time in
+  # $ARI_DATA_DIR/fformation and are skipped, with the reason, without them.
   ari_add_gtest(test_perception
     SOURCES
       test/perception/test_ari_sensors.cpp
@@ -107,7 +106,6 @@ if(CATKIN_ENABLE_TESTING)
       test/perception/test_world_formations.cpp
     LIBRARIES ari_perception)
   target_compile_definitions(test_perception PRIVATE
-    ARI_FFORMATION_DIR="${ari_fformation_dir}"
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
   add_rostest(test/integration/hri_wire.test DEPENDENCIES world_node hri_perception_node)
@@ -125,7 +123,6 @@ if(CATKIN_ENABLE_TESTING)
 
   ari_add_gtest(test_detect_groups SOURCES test/tools/test_detect_groups.cpp)
   target_compile_definitions(test_detect_groups PRIVATE
-    ARI_FFORMATION_DIR="${ari_fformation_dir}"
     ARI_DETECT_GROUPS_BIN="$<TARGET_FILE:detect_groups>")
   add_dependencies(test_detect_groups detect_groups)
 endif()

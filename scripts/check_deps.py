@@ -62,6 +62,8 @@ ROSDEP_KEYS = {
     "pybind11-dev": ("pybind11-dev",),
     "python3-numpy": ("python3-numpy",),
     "python3-pytest": ("python3-pytest",),
+    "python3-scipy": ("python3-scipy",),
+    "curl": ("curl",),
 }
 PACKAGE_XML_DEPENDS = ("buildtool_depend", "depend", "build_depend", "exec_depend", "test_depend")
 

@@ -17,10 +17,8 @@ another entry of docs/references.md). Files a document shows how to create are d
 
 The same citation rules hold for every tracked source, config, message, launch, URDF, build and
 test file (SOURCE_SUFFIXES; `git ls-files`, or every file outside NOT_ROOTS without git), this
-script excepted, as it spells the patterns out. The one exemption is the CMake line that sets the
-build-time default of a data folder the repository does not ship (DATA_FOLDER_DEFAULT): CI
-provides the data beside the checkout, and users point the build elsewhere (docs/dialogue.md,
-docs/perception_gcff.md).
+script excepted, as it spells the patterns out. There is no exemption: public data sets are found
+at run time (docs/data.md), never through a folder the build names.
 
 Each problem is printed as `FILE:LINE: <target> does not exist` (or names the forbidden mention),
 then a one-line count summary. Exit status 1 on any problem, 0 otherwise. Standard library only.
@@ -66,9 +64,6 @@ SOURCE_SUFFIXES = (".cpp", ".hpp", ".h", ".py", ".yaml", ".msg", ".srv", ".actio
                    ".test", ".cmake", ".txt", ".sh", ".xml", ".urdf", ".rviz")
 SOURCE_NAMES = ("CMakeLists.txt", ".ci/run")
 THIS_SCRIPT = "scripts/check_docs.py"
-# The build-time default of a data folder the repository does not ship (the MPGT corpus, the
-# F-formation data sets): where CI provides it, beside the checkout.
-DATA_FOLDER_DEFAULT = re.compile(r"^\s*set\((?:ARI_MPGT_DIR|ari_fformation_dir)\s")
 
 FENCE = re.compile(r"^\s*(```|~~~)\s*([\w+-]*)")
 # Fenced blocks without a language (or marked text) hold program output, which may quote files of
@@ -318,8 +313,6 @@ class Checker:
         except (OSError, UnicodeDecodeError):
             return  # deleted but still listed, or not text
         for number, line in enumerate(lines, 1):
-            if name.endswith(".cmake") and DATA_FOLDER_DEFAULT.match(line):
-                continue
             for pattern, what in FORBIDDEN:
                 if pattern.search(line):
                     problem = "%s:%d: mentions %s" % (name, number, what)
@@ -363,9 +356,9 @@ def write(root, relative, text):
 def self_test():
     """A small tree with one broken link, one broken anchor, one missing path and one `../shared`
     mention in the documents, and private citations in a document, a source file, a message, a
-    CMake file and a test, beside correct ones (the random seed, a public citation, the data
-    folder's default, this script's own patterns, a build folder): each problem must be reported,
-    and nothing else."""
+    CMake file (a data folder beside the checkout) and a test, beside correct ones (the random
+    seed, a public citation, this script's own patterns, a build folder): each problem must be
+    reported, and nothing else."""
     with tempfile.TemporaryDirectory() as root:
         write(root, "src/core/rng.cpp", "\n".join([
             "// Walkers (D6.4 §3.3.1); Rng rng(seed); run --seed 3 (seed 7); \"seed: 1\"",
@@ -411,6 +404,7 @@ def self_test():
         "src/core/rng.cpp:3: mentions 'specs/' (a specification outside the repository)",
         "msg/State.msg:1: mentions 'the seed's' (cite docs/references.md instead)",
         "msg/State.msg:2: mentions '(seed: ...)' (cite docs/references.md instead)",
+        "cmake/data.cmake:1: mentions '../shared' (a folder outside the repository)",
         "cmake/data.cmake:2: mentions 'shared/' (a folder outside the repository)",
         "test/test_groups.py:1: mentions a private specification (cite docs/references.md "
         "instead)",

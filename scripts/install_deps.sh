@@ -25,6 +25,9 @@ packages=(
   pybind11-dev python3-dev python3-numpy
   # tests and benchmarks; opencv-data holds the stock Haar cascades the detector study runs
   python3-pytest opencv-data
+  # scripts/fetch_data.sh: downloads the public data sets and reads the F-formation recordings'
+  # MATLAB files (docs/data.md)
+  curl python3-scipy
   libgtest-dev googletest libbenchmark-dev
   # inspection
   rviz xvfb xauth imagemagick

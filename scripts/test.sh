@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, checks that install_deps.sh installs every Debian package the
-# build and the tests use, runs every test (gtest for the cores, rostest for the nodes) and prints a
-# summary. Exits non-zero if the dependency or documentation check fails, any test fails or none
-# ran.
+# build and the tests use, runs every test (gtest for the cores, rostest for the nodes, pytest,
+# and the main job on the repository alone) and prints a summary that names every skipped test
+# and why. Exits non-zero if the dependency, documentation or path check fails, any test fails or
+# none ran. Tests that need a public data set run when it is in $ARI_DATA_DIR (docs/data.md).
 set -euo pipefail
 source "$(dirname "$0")/prepare.sh"
 rm -rf _build/test_results
@@ -22,6 +23,20 @@ cmake --build _build --target benchmarks -j"$(nproc)"
 # set -e does not stop the script when the left side of && fails.
 /usr/bin/python3 scripts/check_docs.py --self-test
 /usr/bin/python3 scripts/check_docs.py
+# No tracked file names a path outside the repository (a folder beside the checkout, a home or
+# build folder); the self-test first shows each kind is caught.
+/usr/bin/python3 scripts/check_paths.py --self-test
+# Which public data sets are here (docs/data.md): tests that need a missing one are skipped and
+# named in the summary; CI (ARI_REQUIRE_DATA_SETS=1) has them all and refuses such skips.
+bash scripts/fetch_data.sh --check || true
 # run_tests keeps going past failures; the summary below decides.
 cmake --build _build --target run_tests -j1 || true
-exec /usr/bin/python3 scripts/test_summary.py _build/test_results
+# The README's main job on the repository alone (no folder beside it, no data set), after its
+# self-test shows that a path beside the repository is hidden; a JUnit result the summary counts.
+/usr/bin/python3 scripts/check_alone.py --build _build \
+  --junit _build/test_results/ari_social_sim/repository-alone.xml || true
+summary_options=()
+if [[ "${ARI_REQUIRE_DATA_SETS:-0}" == 1 ]]; then
+  summary_options+=(--refuse-data-skips)
+fi
+exec /usr/bin/python3 scripts/test_summary.py "${summary_options[@]}" _build/test_results

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "ari_social_sim/core/data_sets.hpp"
 #include "ari_social_sim/perception/fformation_dataset.hpp"
 #include "ari_social_sim/perception/fformation_geometry.hpp"
 
@@ -49,12 +50,12 @@ inline double percentile(std::vector<double> values, double p) {
   return values[rank];
 }
 
-/// The recorded groups of 2 to 4, classified by classify_arrangement. Throws if a set cannot be
-/// read; a member missing from its frame's features is skipped with its group.
+/// The recorded groups of 2 to 4, classified by classify_arrangement, from the F-formation data
+/// set (callers skip without it: ARI_SKIP_WITHOUT_DATA_SET). Throws if a set cannot be read; a member missing from its frame's features is skipped with its group.
 inline std::map<SpreadKey, FormationSpread> recorded_formation_spreads() {
   std::map<SpreadKey, FormationSpread> spreads;
   for (const char* set : {"Synth", "CoffeeBreak_Seq1", "CoffeeBreak_Seq2"}) {
-    const std::string stem = std::string(ARI_FFORMATION_DIR) + "/" + set;
+    const std::string stem = core::data_set_dir("fformation") + "/" + set;
     const FeatureTable features = read_fformation_features(stem + "_features.csv");
     const GroupTable groups = read_fformation_groups(stem + "_groups.csv");
     for (const auto& [frame, grouping] : groups) {

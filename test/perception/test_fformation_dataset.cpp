@@ -6,6 +6,7 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/fformation_dataset.hpp"
+#include "../common/data_sets.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
@@ -68,7 +69,8 @@ TEST(FformationDataset, ReadsFramesInFileOrder) {
 }
 
 TEST(FformationDataset, ReadsTheSharedSynthSet) {
-  const std::string base = std::string(ARI_FFORMATION_DIR) + "/Synth_";
+  ARI_SKIP_WITHOUT_DATA_SET("fformation");
+  const std::string base = core::data_set_dir("fformation") + "/Synth_";
   const FeatureTable features = read_fformation_features(base + "features.csv");
   const std::vector<FrameId> frames = read_fformation_frames(base + "frames.csv");
   EXPECT_EQ(frames.size(), 100u);

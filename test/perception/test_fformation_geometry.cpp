@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ari_social_sim/perception/fformation_geometry.hpp"
+#include "../common/data_sets.hpp"
 #include "recorded_formations.hpp"
 
 namespace ari_social_sim::perception {
@@ -46,6 +47,7 @@ TEST(FformationGeometry, TwoPeopleAreClassifiedByHowTheirFacingsMeet) {
 // The recorded spread by size and arrangement, printed for docs/perception_gcff.md: what the
 // world's groups are compared with (issue 17, test_world_formations.cpp).
 TEST(FformationGeometry, RecordedGroupsSpreadAsPrinted) {
+  ARI_SKIP_WITHOUT_DATA_SET("fformation");
   const std::map<test::SpreadKey, test::FormationSpread> spreads =
       test::recorded_formation_spreads();
   std::printf(

@@ -9,6 +9,7 @@
 #include "ari_social_sim/perception/fformation_dataset.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/perception/group_evaluation.hpp"
+#include "../common/data_sets.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
@@ -38,7 +39,7 @@ const ReferenceSet kCoffeeBreak2{"CoffeeBreak_Seq2",   20.0, 7000.0, 74, {0.913,
                                  {0.711, 0.753, 0.731}};
 
 std::string data_file(const ReferenceSet& set, const std::string& kind) {
-  return std::string(ARI_FFORMATION_DIR) + "/" + set.name + "_" + kind + ".csv";
+  return core::data_set_dir("fformation") + "/" + set.name + "_" + kind + ".csv";
 }
 
 // Detections and ground truth of one set, read once.
@@ -71,6 +72,7 @@ void expect_scores(const EvaluationScore& score, const Scores& expected) {
 }
 
 TEST(GcffReference, EachSetAtBothThresholds) {
+  ARI_SKIP_WITHOUT_DATA_SET("fformation");
   for (const ReferenceSet& set : {kSynth, kCoffeeBreak1, kCoffeeBreak2}) {
     SCOPED_TRACE(set.name);
     const LoadedSet loaded = load_and_detect(set);
@@ -85,6 +87,7 @@ TEST(GcffReference, EachSetAtBothThresholds) {
 // Both sequences as one set of 119 frames: per-frame means weighted by frame count, F1 from them.
 // The published GCFF result is 0.85 / 0.91 / 0.88 (T = 2/3).
 TEST(GcffReference, CoffeeBreakBothSequences) {
+  ARI_SKIP_WITHOUT_DATA_SET("fformation");
   const LoadedSet first = load_and_detect(kCoffeeBreak1);
   const LoadedSet second = load_and_detect(kCoffeeBreak2);
   for (const auto& [threshold, expected] :

@@ -11,6 +11,7 @@
 #include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/simulation.hpp"
+#include "../common/data_sets.hpp"
 #include "recorded_formations.hpp"
 
 // The world's groups of 2, 3 and 4 in each arrangement against the recorded F-formations (issue
@@ -89,6 +90,7 @@ std::string reference_of(const std::map<test::SpreadKey, test::FormationSpread>&
 }
 
 TEST(WorldFormations, FallWithinTheRecordedSpread) {
+  ARI_SKIP_WITHOUT_DATA_SET("fformation");
   const std::map<test::SpreadKey, test::FormationSpread> recorded =
       test::recorded_formation_spreads();
   std::printf(

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "../common/data_sets.hpp"
 #include "program_run.hpp"
 
 namespace {
@@ -21,7 +22,24 @@ ProgramRun run(const std::string& arguments) {
 }
 
 std::string data_file(const std::string& name) {
-  return std::string(ARI_FFORMATION_DIR) + "/" + name;
+  return ari_social_sim::core::data_set_dir("fformation") + "/" + name;
+}
+
+// A features table and a ground-truth table of two frames, written here, for the tests that need
+// well-formed input but not the recorded data set.
+std::string small_table(const std::string& name, const std::string& text) {
+  const std::string path = temp_path(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string small_features() {
+  return small_table("small_features.csv",
+                     "frame,person_id,x,y,theta\n1,a,0,0,0\n1,b,120,0,3.141593\n2,c,0,0,0\n");
+}
+
+std::string small_groups() {
+  return small_table("small_groups.csv", "frame,group,person_id\n1,0,a\n1,0,b\n");
 }
 
 TEST(DetectGroups, HelpDocumentsTheOptions) {
@@ -44,6 +62,7 @@ TEST(DetectGroups, WritesGroupsAsCsv) {
 }
 
 TEST(DetectGroups, EvaluatesAgainstGroundTruth) {
+  ARI_SKIP_WITHOUT_DATA_SET("fformation");
   const std::string arguments =
       "--features " + data_file("Synth_features.csv") + " --stride 30 --mdl 6000 --evaluate " +
       data_file("Synth_groups.csv") + " --frames " + data_file("Synth_frames.csv");
@@ -55,7 +74,7 @@ TEST(DetectGroups, EvaluatesAgainstGroundTruth) {
 }
 
 TEST(DetectGroups, BadArgumentsExitWithTwo) {
-  const std::string features = data_file("Synth_features.csv");
+  const std::string features = small_features();
   const auto expect_usage_error = [](const ProgramRun& result, const std::string& fragment) {
     EXPECT_EQ(result.status, 2);
     EXPECT_TRUE(result.out.empty());
@@ -85,15 +104,15 @@ TEST(DetectGroups, BadArgumentsExitWithTwo) {
                          " --frames /nonexistent_frames.csv"),
                      "--frames: /nonexistent_frames.csv: cannot open");
   // Ground truth given as features: the header is wrong, named with file, line and column.
-  expect_usage_error(run("--features " + data_file("Synth_groups.csv") + " --stride 30 --mdl 1"),
-                     "Synth_groups.csv:1:1:");
+  expect_usage_error(run("--features " + small_groups() + " --stride 30 --mdl 1"),
+                     "small_groups.csv:1:1:");
 }
 
 TEST(DetectGroups, AFailedWriteExitsWithOne) {
   // /dev/full takes the open and refuses the bytes, as a full disk does.
   const ProgramRun full = ari_social_sim::tools::test::run_program(
       ARI_DETECT_GROUPS_BIN,
-      "--features " + data_file("Synth_features.csv") + " --stride 30 --mdl 6000", "/dev/full");
+      "--features " + small_features() + " --stride 30 --mdl 6000", "/dev/full");
   EXPECT_EQ(full.status, 1);
   EXPECT_NE(full.err.find("standard output: writing the groups failed"), std::string::npos)
       << full.err;
