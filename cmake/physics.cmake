@@ -19,6 +19,7 @@ add_library(ari_physics
   src/physics/robot_model.cpp
   src/physics/static_scene.cpp
   src/physics/trajectory_controller.cpp
+  src/physics/trajectory_request_check.cpp
   src/physics/wheel_odometry.cpp)
 target_include_directories(ari_physics PUBLIC include)
 target_include_directories(ari_physics SYSTEM PRIVATE /usr/include/bullet ${urdfdom_INCLUDE_DIRS})
@@ -47,6 +48,7 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_multibody_layout.cpp
       test/physics/test_joint_trajectory.cpp
       test/physics/test_trajectory_controller.cpp
+      test/physics/test_trajectory_request_check.cpp
       test/physics/test_diff_drive_controller.cpp
       test/physics/test_wheel_odometry.cpp
       test/physics/test_imu_model.cpp

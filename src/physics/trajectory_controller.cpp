@@ -5,16 +5,13 @@
 
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/format_text.hpp"
+#include "ari_social_sim/physics/trajectory_request_check.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
 
 std::string number(double value) {
   return core::format_text("%.4g", value);
-}
-
-bool all_finite(const std::vector<double>& values) {
-  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
 
 }  // namespace
@@ -56,56 +53,29 @@ std::vector<int> TrajectoryController::joint_permutation(
   return permutation;
 }
 
-void TrajectoryController::validate(const TrajectoryRequest& request, double start_s,
-                                    double now_s) const {
-  const size_t joints = spec_.joints.size();
-  double previous_time = -1.0;
-  for (size_t p = 0; p < request.points.size(); ++p) {
-    const TrajectoryPoint& point = request.points[p];
-    const std::string where = spec_.name + ": points[" + std::to_string(p) + "]";
-    if (point.positions.size() != joints) {
-      throw TrajectoryRejected(TrajectoryErrorCode::kInvalidGoal,
-                               where + ": expected " + std::to_string(joints) + " positions, got " +
-                                   std::to_string(point.positions.size()));
-    }
-    if ((!point.velocities.empty() && point.velocities.size() != joints) ||
-        (!point.accelerations.empty() && point.accelerations.size() != joints)) {
-      throw TrajectoryRejected(TrajectoryErrorCode::kInvalidGoal,
-                               where + ": velocities and accelerations must be empty or give " +
-                                   std::to_string(joints) + " values");
-    }
-    if (!all_finite(point.positions) || !all_finite(point.velocities) ||
-        !all_finite(point.accelerations) || !std::isfinite(point.time_from_start_s)) {
-      throw TrajectoryRejected(TrajectoryErrorCode::kInvalidGoal,
-                               where + ": values must be finite");
-    }
-    if (point.time_from_start_s < 0.0 || point.time_from_start_s <= previous_time) {
-      throw TrajectoryRejected(TrajectoryErrorCode::kInvalidGoal,
-                               where +
-                                   ": time_from_start must be >= 0 and increase strictly, got " +
-                                   number(point.time_from_start_s) + " s");
-    }
-    previous_time = point.time_from_start_s;
+std::vector<JointBounds> TrajectoryController::bounds_by_column(
+    const std::vector<int>& permutation) const {
+  std::vector<JointBounds> bounds(permutation.size());
+  for (size_t joint = 0; joint < permutation.size(); ++joint) {
+    bounds[static_cast<size_t>(permutation[joint])] = bounds_[joint];
   }
-  // Limits are checked on the controller's own order (positions were permuted by the caller).
-  for (size_t p = 0; p < request.points.size(); ++p) {
-    for (size_t j = 0; j < joints; ++j) {
-      const double q = request.points[p].positions[j];
-      const JointBounds& b = bounds_[j];
-      if (q < b.lower_rad || q > b.upper_rad) {
-        throw TrajectoryRejected(TrajectoryErrorCode::kInvalidGoal,
-                                 spec_.name + ": points[" + std::to_string(p) +
-                                     "]: " + spec_.joints[j] + " = " + number(q) +
-                                     " rad is beyond its limits [" + number(b.lower_rad) + ", " +
-                                     number(b.upper_rad) + "]");
-      }
-    }
+  return bounds;
+}
+
+void TrajectoryController::check_timing(const TrajectoryRequest& request, double start_s,
+                                        double now_s, const std::string& trajectory_field) const {
+  // A start far ahead would hold the goal open for good, as a long time_from_start would.
+  if (start_s > now_s + kMaxTrajectoryTimeS) {
+    throw TrajectoryRejected(TrajectoryErrorCode::kInvalidGoal,
+                             spec_.name + ": " + trajectory_field +
+                                 "header.stamp: expected 0 (now) or at most " +
+                                 number(kMaxTrajectoryTimeS) + " s after now (" + number(now_s) +
+                                 " s), got " + number(start_s) + " s");
   }
-  if (request.start_time_s > 0.0 && !request.points.empty() &&
-      start_s + request.points.back().time_from_start_s < now_s) {
+  const double end_s = start_s + request.points.back().time_from_start_s;
+  if (request.start_time_s > 0.0 && end_s < now_s) {
     throw TrajectoryRejected(TrajectoryErrorCode::kOldHeaderTimestamp,
-                             spec_.name + ": the trajectory ended at " +
-                                 number(start_s + request.points.back().time_from_start_s) +
+                             spec_.name + ": the trajectory ended at " + number(end_s) +
                                  " s, before now (" + number(now_s) + " s)");
   }
 }
@@ -132,8 +102,12 @@ uint64_t TrajectoryController::follow(const TrajectoryRequest& request, double n
     cancel(goal_.goal_id, now_s);
     return 0;
   }
-  // Reorder every point into the controller's joint order before checking values.
+  // Joint names first (INVALID_JOINTS), then every value in the request's own order, so errors
+  // name the request's columns; then reorder into the controller's joint order.
   const std::vector<int> permutation = joint_permutation(request.joint_names);
+  const std::string trajectory_field = monitored ? "trajectory." : "";
+  check_trajectory_request(request, spec_, bounds_by_column(permutation), trajectory_field);
+  check_timing(request, start_s, now_s, trajectory_field);
   TrajectoryRequest ordered = request;
   for (TrajectoryPoint& point : ordered.points) {
     const TrajectoryPoint original = point;
@@ -150,7 +124,6 @@ uint64_t TrajectoryController::follow(const TrajectoryRequest& request, double n
       }
     }
   }
-  validate(ordered, start_s, now_s);
 
   // Splice onto where the joint servos are heading now, so the motion continues smoothly.
   JointSetpoint from = trajectory_.sample(now_s);

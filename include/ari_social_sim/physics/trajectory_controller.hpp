@@ -90,8 +90,8 @@ class TrajectoryController {
 
   /// Replaces the current trajectory at sim time `now_s`. A monitored request (an action goal)
   /// gets a goal id whose outcome goal() reports; an earlier monitored goal is preempted.
-  /// Throws TrajectoryRejected (INVALID_JOINTS, INVALID_GOAL or OLD_HEADER_TIMESTAMP) and then
-  /// leaves the current trajectory running.
+  /// Throws TrajectoryRejected (INVALID_JOINTS, INVALID_GOAL: check_trajectory_request, or
+  /// OLD_HEADER_TIMESTAMP) and then leaves the current trajectory running.
   uint64_t follow(const TrajectoryRequest& request, double now_s, bool monitored);
   /// Cancels the monitored goal `goal_id` (if it is the active one) and holds position.
   void cancel(uint64_t goal_id, double now_s);
@@ -110,8 +110,13 @@ class TrajectoryController {
   const GoalOutcome& goal() const { return goal_; }
 
  private:
-  void validate(const TrajectoryRequest& request, double start_s, double now_s) const;
   std::vector<int> joint_permutation(const std::vector<std::string>& names) const;
+  /// The limits of each column of a request whose joints are permuted by `permutation`.
+  std::vector<JointBounds> bounds_by_column(const std::vector<int>& permutation) const;
+  /// Throws INVALID_GOAL for a start more than kMaxTrajectoryTimeS ahead of `now_s`, and
+  /// OLD_HEADER_TIMESTAMP for a stamped request whose last point is before `now_s`.
+  void check_timing(const TrajectoryRequest& request, double start_s, double now_s,
+                    const std::string& trajectory_field) const;
   double tolerance_for(const std::vector<JointTolerance>& tolerances, size_t joint,
                        double fallback) const;
 
