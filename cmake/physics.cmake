@@ -16,6 +16,7 @@ add_library(ari_physics
   src/physics/physics_config.cpp
   src/physics/physics_run_config.cpp
   src/physics/point_head.cpp
+  src/physics/point_head_goal.cpp
   src/physics/robot_model.cpp
   src/physics/static_scene.cpp
   src/physics/trajectory_controller.cpp
@@ -53,6 +54,7 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_wheel_odometry.cpp
       test/physics/test_imu_model.cpp
       test/physics/test_point_head.cpp
+      test/physics/test_point_head_goal.cpp
       test/physics/test_static_scene.cpp
       test/physics/test_physics_config.cpp
       test/physics/test_ari_physics.cpp

@@ -23,10 +23,12 @@
 #include "ari_social_sim/QueryTrajectoryState.h"
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
 #include "ari_social_sim/physics/point_head.hpp"
+#include "ari_social_sim/physics/point_head_goal.hpp"
 #include "ari_social_sim/world/scene.hpp"
 #include "camera_interface.hpp"
 #include "conversions/ari_base.hpp"
@@ -47,6 +49,10 @@ constexpr double kActionMonitorRateHz = 20.0;
 // PAL's head_action: success_angle_threshold (rad) and its default pointing frame.
 constexpr double kPointingThresholdRad = 0.01;
 constexpr char kDefaultPointingFrame[] = "head_front_camera_color_optical_frame";
+// How long a point-head goal waits for tf to know its target frame, and how old the frame's
+// newest transform may grow while the goal runs (wall and sim seconds): a goal on a person who
+// left fails well within a second, and live frames (10-50 Hz) come far more often.
+constexpr double kTfWaitS = 0.5;
 // Covariance diagonal of mobile_base_controller's pose and twist (ari_robot's controller
 // configuration).
 constexpr double kOdomCovariance[6] = {0.001, 0.001, 1e6, 1e6, 1e6, 1000.0};
@@ -259,6 +265,10 @@ class ControllerInterface {
 
 /// /head_controller/point_head_action as PAL's head_action serves it: solve pan and tilt for the
 /// target, send them to head_controller, report the pointing error until it is below 0.01 rad.
+/// A target in a tf frame (a person, perception's frames) is looked up without waiting, as this
+/// runs in the thread that makes sim time: a goal whose frame tf does not know yet is accepted
+/// and waits kTfWaitS of wall time for it; a frame that stops coming while the goal runs aborts
+/// it. Either way the error names the frame.
 class PointHeadInterface {
  public:
   using Server = actionlib::ActionServer<PointHeadAction>;
@@ -277,7 +287,7 @@ class PointHeadInterface {
   }
 
   void update_goal() {
-    if (!active_) {
+    if (!active_ || (is_tf_frame(goal_.target_frame) && !target_still_in_tf()) || !moving_) {
       return;
     }
     const physics::GoalOutcome& outcome = head_.goal();
@@ -304,6 +314,27 @@ class PointHeadInterface {
   }
 
  private:
+  /// The head's trajectory for a goal, with what it aims at.
+  struct HeadMove {
+    physics::TrajectoryRequest trajectory;
+    double duration_s{0.0};
+    Eigen::Vector3d target_base{Eigen::Vector3d::Zero()};
+  };
+
+  static physics::PointHeadGoal goal_of(const PointHeadGoal& msg) {
+    physics::PointHeadGoal goal;
+    goal.target_frame =
+        msg.target.header.frame_id.empty() ? std::string(kBaseFrame) : msg.target.header.frame_id;
+    goal.target_point = {msg.target.point.x, msg.target.point.y, msg.target.point.z};
+    goal.pointing_axis = {msg.pointing_axis.x, msg.pointing_axis.y, msg.pointing_axis.z};
+    goal.pointing_frame = msg.pointing_frame.empty() ? kDefaultPointingFrame : msg.pointing_frame;
+    goal.min_duration_s = msg.min_duration.toSec();
+    goal.max_velocity_rps = msg.max_velocity;
+    return goal;
+  }
+
+  static double wall_now_s() { return ros::WallTime::now().toSec(); }
+
   std::unordered_map<std::string, double> joint_positions() const {
     std::unordered_map<std::string, double> q;
     const std::vector<double> positions = physics_.joint_positions();
@@ -314,83 +345,161 @@ class PointHeadInterface {
   }
 
   double error_now() const {
-    return solver_.pointing_error(target_base_, axis_, frame_, joint_positions());
+    return solver_.pointing_error(target_base_, goal_.pointing_axis, goal_.pointing_frame,
+                                  joint_positions());
   }
 
-  // The target's frame in the map frame: ARI's own frames, map and odom from the physics; any
-  // other frame (people, perception) through tf.
-  Eigen::Isometry3d frame_in_map(const std::string& frame) const {
-    if (frame == kMapFrame) {
-      return Eigen::Isometry3d::Identity();
-    }
-    if (frame == kOdomFrame) {
-      return planar(odom_in_map(physics_));
-    }
-    if (physics_.model().link_index(frame) >= 0) {
-      return physics_.frame_pose(frame);
-    }
+  double max_velocity_rps(const char* joint) const {
+    return physics_.model().joint(joint).max_velocity_rps;
+  }
+
+  // ARI's own frames, map and odom come from the physics; any other frame through tf.
+  bool is_tf_frame(const std::string& frame) const {
+    return frame != kMapFrame && frame != kOdomFrame && physics_.model().link_index(frame) < 0;
+  }
+
+  // The newest transform from `frame` to base_footprint, without waiting; nothing (and the
+  // reason in `error`) when tf cannot give one.
+  std::optional<geometry_msgs::TransformStamped> latest_tf(const std::string& frame,
+                                                           std::string* error) const {
     try {
-      const geometry_msgs::TransformStamped t =
-          tf_.buffer().lookupTransform(kBaseFrame, frame, ros::Time(0), ros::Duration(0.1));
-      return physics_.frame_pose(kBaseFrame) * isometry_of(t.transform);
+      return tf_.buffer().lookupTransform(kBaseFrame, frame, ros::Time(0));
     } catch (const tf2::TransformException& e) {
-      throw core::RequestError("target.header.frame_id: no transform from '" + frame + "' to " +
-                               kBaseFrame + ": " + e.what());
+      *error = e.what();
+      return std::nullopt;
     }
+  }
+
+  // The target in base_footprint; nothing while tf does not know its frame.
+  std::optional<Eigen::Vector3d> target_in_base(const physics::PointHeadGoal& goal) const {
+    if (!is_tf_frame(goal.target_frame)) {
+      const Eigen::Isometry3d X_map_frame =
+          goal.target_frame == kMapFrame    ? Eigen::Isometry3d::Identity()
+          : goal.target_frame == kOdomFrame ? planar(odom_in_map(physics_))
+                                            : physics_.frame_pose(goal.target_frame);
+      return physics_.frame_pose(kBaseFrame).inverse() * X_map_frame * goal.target_point;
+    }
+    std::string error;
+    const std::optional<geometry_msgs::TransformStamped> t = latest_tf(goal.target_frame, &error);
+    if (!t) {
+      return std::nullopt;
+    }
+    return isometry_of(t->transform) * goal.target_point;
+  }
+
+  // Pan and tilt for the target, timed as PAL's head_action times them; throws core::RequestError
+  // for a target out of reach or a move too slow.
+  HeadMove plan_move(const physics::PointHeadGoal& goal, const Eigen::Vector3d& target_base) const {
+    const std::unordered_map<std::string, double> q = joint_positions();
+    const physics::HeadAim aim =
+        solver_.solve(target_base, goal.pointing_axis, goal.pointing_frame, q);
+    if (aim.error_rad > kPointingThresholdRad) {
+      throw core::RequestError("target out of the head's reach: the pan and tilt limits leave " +
+                               std::to_string(aim.error_rad) + " rad of error");
+    }
+    HeadMove move;
+    move.target_base = target_base;
+    move.duration_s = physics::point_head_duration(
+        goal, std::abs(aim.pan_rad - q.at("head_1_joint")),
+        std::abs(aim.tilt_rad - q.at("head_2_joint")), max_velocity_rps("head_1_joint"),
+        max_velocity_rps("head_2_joint"));
+    move.trajectory.joint_names = {"head_1_joint", "head_2_joint"};
+    move.trajectory.points = {{{aim.pan_rad, aim.tilt_rad}, {0.0, 0.0}, {}, move.duration_s}};
+    return move;
+  }
+
+  void start_move(const HeadMove& move) {
+    try {
+      head_goal_id_ = head_.follow(move.trajectory, physics_.time_s(), true);
+    } catch (const core::Error& e) {
+      abort(e.what());
+      return;
+    }
+    target_base_ = move.target_base;
+    settle_deadline_s_ = clock_.now_s() + move.duration_s + head_.spec().goal_time_s;
+    moving_ = true;
+  }
+
+  void abort(const std::string& message) {
+    if (moving_) {
+      head_.cancel(head_goal_id_, physics_.time_s());
+    }
+    ROS_WARN("point_head_action: %s", message.c_str());
+    active_->setAborted(PointHeadResult(), message);
+    active_.reset();
+  }
+
+  // Watches the active goal's tf frame: starts the move once the frame is there, aborts the
+  // goal when it never comes or stops coming. True while the goal goes on with its frame.
+  bool target_still_in_tf() {
+    std::string error;
+    const std::string& frame = goal_.target_frame;
+    const std::optional<geometry_msgs::TransformStamped> t = latest_tf(frame, &error);
+    const std::optional<double> stamp_s =
+        t ? std::optional<double>(t->header.stamp.toSec()) : std::nullopt;
+    switch (watch_.look(stamp_s, wall_now_s(), clock_.now_s())) {
+      case physics::FrameWatch::Status::kWaiting:
+        return false;
+      case physics::FrameWatch::Status::kNeverSeen:
+        abort(
+            core::format_text("target.header.frame_id: no transform from '%s' to %s within "
+                              "%.1f s (wall clock): %s",
+                              frame.c_str(), kBaseFrame, kTfWaitS, error.c_str()));
+        return false;
+      case physics::FrameWatch::Status::kStale:
+        abort(core::format_text(
+            "target.header.frame_id: '%s' left tf: its newest transform is %.2f s old (sim "
+            "time) and none came for %.1f s (wall clock)",
+            frame.c_str(), clock_.now_s() - watch_.newest_stamp_s().value_or(0.0), kTfWaitS));
+        return false;
+      case physics::FrameWatch::Status::kFresh:
+        break;
+    }
+    if (!moving_) {
+      try {
+        start_move(plan_move(goal_, isometry_of(t->transform) * goal_.target_point));
+      } catch (const core::Error& e) {
+        abort(e.what());
+      }
+    }
+    return active_.has_value();
   }
 
   void on_goal(Server::GoalHandle goal) {
-    const PointHeadGoal& request = *goal.getGoal();
+    const physics::PointHeadGoal request = goal_of(*goal.getGoal());
+    std::optional<HeadMove> move;
     try {
-      frame_ = request.pointing_frame.empty() ? kDefaultPointingFrame : request.pointing_frame;
-      axis_ = Eigen::Vector3d(request.pointing_axis.x, request.pointing_axis.y,
-                              request.pointing_axis.z);
-      if (request.max_velocity < 0.0 || !std::isfinite(request.max_velocity)) {
-        throw core::RequestError("max_velocity: expected a number >= 0 (0 = the joints' limits)");
+      physics::check_point_head_goal(
+          request, std::min(max_velocity_rps("head_1_joint"), max_velocity_rps("head_2_joint")));
+      if (const std::optional<Eigen::Vector3d> target = target_in_base(request)) {
+        move = plan_move(request, *target);
       }
-      const Eigen::Vector3d point(request.target.point.x, request.target.point.y,
-                                  request.target.point.z);
-      target_base_ =
-          physics_.frame_pose(kBaseFrame).inverse() *
-          frame_in_map(request.target.header.frame_id.empty() ? std::string(kBaseFrame)
-                                                              : request.target.header.frame_id) *
-          point;
-      const std::unordered_map<std::string, double> q = joint_positions();
-      const physics::HeadAim aim = solver_.solve(target_base_, axis_, frame_, q);
-      if (aim.error_rad > kPointingThresholdRad) {
-        throw core::RequestError("target out of the head's reach: the pan and tilt limits leave " +
-                                 std::to_string(aim.error_rad) + " rad of error");
-      }
-      // As fast as the slower joint allows (or max_velocity), never quicker than min_duration.
-      const double pan_move = std::abs(aim.pan_rad - q.at("head_1_joint"));
-      const double tilt_move = std::abs(aim.tilt_rad - q.at("head_2_joint"));
-      const double pan_speed = request.max_velocity > 0.0
-                                   ? request.max_velocity
-                                   : physics_.model().joint("head_1_joint").max_velocity_rps;
-      const double tilt_speed = request.max_velocity > 0.0
-                                    ? request.max_velocity
-                                    : physics_.model().joint("head_2_joint").max_velocity_rps;
-      const double duration = std::max(
-          {request.min_duration.toSec(), pan_move / pan_speed, tilt_move / tilt_speed, 0.05});
-      physics::TrajectoryRequest trajectory;
-      trajectory.joint_names = {"head_1_joint", "head_2_joint"};
-      trajectory.points = {{{aim.pan_rad, aim.tilt_rad}, {0.0, 0.0}, {}, duration}};
-      head_goal_id_ = head_.follow(trajectory, physics_.time_s(), true);
-      if (active_) {
-        active_->setCanceled(PointHeadResult(), "preempted by a newer goal");
-      }
-      goal.setAccepted();
-      active_ = goal;
-      settle_deadline_s_ = clock_.now_s() + duration + head_.spec().goal_time_s;
     } catch (const core::Error& e) {
       ROS_WARN("point_head_action: %s", e.what());
       goal.setRejected(PointHeadResult(), e.what());
+      return;
+    }
+    if (active_) {
+      if (moving_) {
+        head_.cancel(head_goal_id_, physics_.time_s());
+      }
+      active_->setCanceled(PointHeadResult(), "preempted by a newer goal");
+    }
+    goal.setAccepted();
+    active_ = goal;
+    goal_ = request;
+    moving_ = false;
+    watch_.start(wall_now_s());
+    if (move) {
+      start_move(*move);
     }
   }
 
   void on_cancel(Server::GoalHandle goal) {
     if (active_ && *active_ == goal) {
-      head_.cancel(head_goal_id_, physics_.time_s());
+      if (moving_) {
+        head_.cancel(head_goal_id_, physics_.time_s());
+      }
       active_->setCanceled();
       active_.reset();
     }
@@ -403,11 +512,12 @@ class PointHeadInterface {
   physics::TrajectoryController& head_;
   Server server_;
   std::optional<Server::GoalHandle> active_;
+  physics::PointHeadGoal goal_;  // the active goal's, defaults filled in
+  bool moving_{false};           // the head's trajectory for the active goal was sent
+  physics::FrameWatch watch_{kTfWaitS};
   uint64_t head_goal_id_{0};
   double settle_deadline_s_{0.0};
   Eigen::Vector3d target_base_{Eigen::Vector3d::Zero()};
-  Eigen::Vector3d axis_{Eigen::Vector3d::UnitZ()};
-  std::string frame_;
 };
 
 class PhysicsNode {
