@@ -121,7 +121,7 @@ if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/person_manager_standin.test
     DEPENDENCIES world_node hri_perception_node)
 
-  ari_add_gtest(test_detect_groups SOURCES test/tools/test_detect_groups.cpp)
+  ari_add_gtest(test_detect_groups SOURCES test/tools/test_detect_groups.cpp LIBRARIES ari_core)
   target_compile_definitions(test_detect_groups PRIVATE
     ARI_DETECT_GROUPS_BIN="$<TARGET_FILE:detect_groups>")
   add_dependencies(test_detect_groups detect_groups)
