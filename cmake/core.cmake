@@ -8,8 +8,10 @@ add_library(ari_core
   src/core/json_string.cpp
   src/core/output_file.cpp
   src/core/parameter_table.cpp
+  src/core/progress_journal.cpp
   src/core/rng.cpp
   src/core/sim_timer.cpp
+  src/core/stop_signal.cpp
   src/core/text_file.cpp
   src/core/yaml_map.cpp)
 target_include_directories(ari_core PUBLIC include)
@@ -20,7 +22,8 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES test/core/test_command_line.cpp test/core/test_config_fields.cpp
       test/core/test_const_pointer_view.cpp test/core/test_format_text.cpp
       test/core/test_json_string.cpp test/core/test_output_file.cpp test/core/test_pose2.cpp
-      test/core/test_rng.cpp test/core/test_sim_timer.cpp test/core/test_text_file.cpp
-      test/core/test_yaml_map.cpp
+      test/core/test_progress_journal.cpp
+      test/core/test_rng.cpp test/core/test_sim_timer.cpp test/core/test_stop_signal.cpp
+      test/core/test_text_file.cpp test/core/test_yaml_map.cpp
     LIBRARIES ari_core)
 endif()

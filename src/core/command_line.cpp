@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -86,6 +87,17 @@ std::string option_value(int argc, char** argv, int& i) {
   return value;
 }
 
+void check_known_option(const std::string& option, const std::vector<std::string>& known) {
+  if (std::find(known.begin(), known.end(), option) != known.end()) {
+    return;
+  }
+  std::string list;
+  for (const std::string& name : known) {
+    list += (list.empty() ? "" : ", ") + name;
+  }
+  fail(option.c_str(), "unknown option, expected one of " + list);
+}
+
 void check_input_file(const char* option, const std::string& path) {
   std::error_code error;
   if (fs::is_directory(path, error)) {
@@ -93,7 +105,8 @@ void check_input_file(const char* option, const std::string& path) {
   }
   std::ifstream in(path);
   if (!in) {
-    fail(option, path + ": cannot open the file (" + std::strerror(errno) + ")");
+    fail(option, path + ": cannot open the file (" +
+                     (errno == ELOOP ? "a symbolic link loop" : std::strerror(errno)) + ")");
   }
 }
 
@@ -111,6 +124,9 @@ void check_output_file(const char* option, const std::string& path, bool replace
   }
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
+  if (error == std::errc::too_many_symbolic_link_levels) {
+    fail(option, path + ": expected a file name, got a symbolic link loop");
+  }
   if (fs::is_directory(status)) {
     fail(option, path + ": expected a file name, got a directory");
   }

@@ -14,6 +14,10 @@ std::uintmax_t check_text_file(const std::string& path, const std::string& what,
   namespace fs = std::filesystem;
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
+  if (error == std::errc::too_many_symbolic_link_levels) {
+    // fs::status reports a loop as a file not found.
+    throw ConfigError(path + ": cannot open the file (a symbolic link loop)");
+  }
   if (!fs::exists(status)) {
     throw ConfigError(path + ": cannot open the file (it does not exist)");
   }

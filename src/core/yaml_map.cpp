@@ -77,6 +77,7 @@ struct Reader;
 template <>
 struct Reader<double> {
   static constexpr const char* kWhat = "a number";
+  static constexpr const char* kWhatMany = "numbers";  // in "a list of ..."
   static bool read(const YAML::Node& n, double& out) {
     if (!is_scalar(n)) {
       return false;
@@ -94,6 +95,7 @@ struct Reader<double> {
 template <>
 struct Reader<int> {
   static constexpr const char* kWhat = "an integer";
+  static constexpr const char* kWhatMany = "integers";  // in "a list of ..."
   static bool read(const YAML::Node& n, int& out) {
     if (!is_scalar(n)) {
       return false;
@@ -111,6 +113,7 @@ struct Reader<int> {
 template <>
 struct Reader<unsigned> {
   static constexpr const char* kWhat = "a non-negative integer";
+  static constexpr const char* kWhatMany = "non-negative integers";  // in "a list of ..."
   static bool read(const YAML::Node& n, unsigned& out) {
     int value = 0;
     if (!Reader<int>::read(n, value) || value < 0) {
@@ -141,6 +144,7 @@ struct Reader<bool> {
 template <>
 struct Reader<std::string> {
   static constexpr const char* kWhat = "a string";
+  static constexpr const char* kWhatMany = "strings";  // in "a list of ..."
   static bool read(const YAML::Node& n, std::string& out) {
     if (!is_scalar(n)) {
       return false;
@@ -215,7 +219,7 @@ T YamlMap::required(const std::string& key, const Bounds& bounds) const {
     }
     if (!ok || !in_bounds) {
       fail(key,
-           std::string("a list of ") + Reader<Item>::kWhat + "s" +
+           std::string("a list of ") + Reader<Item>::kWhatMany +
                (range.empty() ? "" : ", each " + range),
            render(n));
     }

@@ -1,7 +1,9 @@
 #include "ari_social_sim/scenario/batch_plan.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <utility>
@@ -203,6 +205,18 @@ std::vector<std::string> BatchSettings::differences(const BatchSettings& now) co
                     (now.bags ? "bags" : "no bags") + " now");
   }
   return lines;
+}
+
+std::vector<std::string> files_under(const std::string& dir, const std::string& extension) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == extension) {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 std::string digest_files(const std::vector<std::string>& paths) {

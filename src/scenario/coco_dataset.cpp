@@ -1,5 +1,8 @@
 #include "ari_social_sim/scenario/coco_dataset.hpp"
 
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
 #include <utility>
 
 #include "ari_social_sim/core/error.hpp"
@@ -47,6 +50,22 @@ std::string annotation_json(uint64_t id, uint64_t image_id, int category,
              fixed4(occlusion).c_str(), bool_text(truncated).c_str(),
              fixed4(label.distance_m).c_str()) +
          face_fields + ", \"mask\": " + bool_text(label.mask) + "}";
+}
+
+// The line prefixes of entries_since.
+constexpr const char* kImagePrefix = "image ";
+constexpr const char* kAnnotationPrefix = "annotation ";
+
+// The id an entry line starts with, `PREFIX{"id": N, ...`; false when it does not.
+bool read_id(const std::string& line, const char* prefix, uint64_t& id) {
+  const std::string start = std::string(prefix) + "{\"id\": ";
+  if (line.rfind(start, 0) != 0 || line.back() != '}') {
+    return false;
+  }
+  const char* digits = line.c_str() + start.size();
+  char* end = nullptr;
+  id = std::strtoull(digits, &end, 10);
+  return end != digits && *end == ',';
 }
 
 }  // namespace
@@ -100,29 +119,46 @@ void CocoDataset::add(const DatasetImage& image, const std::vector<physics::Pers
   }
 }
 
+std::string CocoDataset::entries_since(const Mark& mark) const {
+  std::string lines;
+  for (size_t i = mark.images; i < images_.size(); ++i) {
+    lines += kImagePrefix + images_[i] + "\n";
+  }
+  for (size_t i = mark.annotations; i < annotations_.size(); ++i) {
+    lines += kAnnotationPrefix + annotations_[i] + "\n";
+  }
+  return lines;
+}
+
+void CocoDataset::add_entries(const std::string& lines, const std::string& source) {
+  std::istringstream in(lines);
+  size_t number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    const std::string where = source + ": line " + std::to_string(number) + " of the entries";
+    uint64_t id = 0;
+    if (line.rfind(kImagePrefix, 0) == 0 && read_id(line, kImagePrefix, id)) {
+      if (!image_ids_.insert(id).second) {
+        throw core::ConfigError(where + ": image id " + std::to_string(id) +
+                                " given twice: expected a new one");
+      }
+      images_.push_back(line.substr(std::strlen(kImagePrefix)));
+    } else if (line.rfind(kAnnotationPrefix, 0) == 0 && read_id(line, kAnnotationPrefix, id)) {
+      annotations_.push_back(line.substr(std::strlen(kAnnotationPrefix)));
+      const bool face =
+          line.find(core::format_text("\"category_id\": %d,", kFaceCategory)) != std::string::npos;
+      ++(face ? faces_ : persons_);
+    } else {
+      throw core::ConfigError(where +
+                              ": expected `image {\"id\": ...}` or `annotation {\"id\": "
+                              "...}`, got '" +
+                              line.substr(0, 40) + "'");
+    }
+  }
+}
+
 std::string CocoDataset::to_json() const {
-  const DatasetSettings& s = settings_;
-  std::vector<uint64_t> seeds;
-  for (uint64_t episode : s.plan.episode_indices()) {
-    seeds.push_back(s.plan.seed_of(episode));
-  }
-  std::string rates = "{";
-  for (size_t i = 0; i < s.cameras.size(); ++i) {
-    rates += (i > 0 ? ", " : "") + json_string(s.cameras[i]) + ": " + fixed4(s.frame_rate_hz[i]);
-  }
-  rates += "}";
-  std::string out = "{\n\"info\": {";
-  out += "\"description\": " +
-         json_string("ari_social_sim export_dataset: scenario " + s.scenario +
-                     ", ARI's cameras with people labels") +
-         ", \"scenario\": " + json_string(s.scenario) +
-         ", \"episodes\": " + std::to_string(s.plan.episodes) +
-         ", \"first_seed\": " + std::to_string(s.plan.first_seed) +
-         ", \"shard\": " + json_string(s.plan.shard_text()) +
-         ", \"seeds\": " + json_list(seeds, [](uint64_t seed) { return std::to_string(seed); }) +
-         ", \"cameras\": " + json_list(s.cameras, json_string) +
-         ", \"every_s\": " + (s.every_s ? fixed4(*s.every_s) : "null") +
-         ", \"frame_rate_hz\": " + rates + "},\n";
+  std::string out = "{\n\"info\": " + info_json() + ",\n";
   const auto lines = [](const std::vector<std::string>& objects) {
     std::string text;
     for (size_t i = 0; i < objects.size(); ++i) {
@@ -139,6 +175,30 @@ std::string CocoDataset::to_json() const {
       "]\n}\n",
       kPersonCategory, kFaceCategory);
   return out;
+}
+
+std::string CocoDataset::info_json() const {
+  const DatasetSettings& s = settings_;
+  std::vector<uint64_t> seeds;
+  for (uint64_t episode : s.plan.episode_indices()) {
+    seeds.push_back(s.plan.seed_of(episode));
+  }
+  std::string rates = "{";
+  for (size_t i = 0; i < s.cameras.size(); ++i) {
+    rates += (i > 0 ? ", " : "") + json_string(s.cameras[i]) + ": " + fixed4(s.frame_rate_hz[i]);
+  }
+  rates += "}";
+  return "{\"description\": " +
+         json_string("ari_social_sim export_dataset: scenario " + s.scenario +
+                     ", ARI's cameras with people labels") +
+         ", \"scenario\": " + json_string(s.scenario) +
+         ", \"episodes\": " + std::to_string(s.plan.episodes) +
+         ", \"first_seed\": " + std::to_string(s.plan.first_seed) +
+         ", \"shard\": " + json_string(s.plan.shard_text()) +
+         ", \"seeds\": " + json_list(seeds, [](uint64_t seed) { return std::to_string(seed); }) +
+         ", \"cameras\": " + json_list(s.cameras, json_string) +
+         ", \"every_s\": " + (s.every_s ? fixed4(*s.every_s) : "null") +
+         ", \"frame_rate_hz\": " + rates + "}";
 }
 
 }  // namespace ari_social_sim::scenario

@@ -72,6 +72,8 @@ Options parse_options(int argc, char** argv) {
       options.overwrite = true;
       continue;
     }
+    core::check_known_option(arg, {"--dialogues", "--seed", "--out", "--config", "--corpus",
+                                   "--compare", "--nlg", "--report", "--overwrite"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--dialogues") {
       options.dialogues = kDialogues.parse(value);
@@ -87,10 +89,8 @@ Options parse_options(int argc, char** argv) {
       options.corpus = value;
     } else if (arg == "--nlg") {
       options.nlg = value;
-    } else if (arg == "--report") {
-      options.report = value;
     } else {
-      throw core::ConfigError("unknown option " + arg);
+      options.report = value;  // --report
     }
   }
   if (!have_dialogues || !have_seed || (options.out.empty() && !options.compare)) {

@@ -1,20 +1,24 @@
 // export_dataset: labelled images of ARI's cameras from a scenario's episodes, as a COCO dataset.
 //
 //   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] --cameras head,torso
-//                  --out DIR [--every SECONDS] [--overwrite]
+//                  --out DIR [--every SECONDS] [--overwrite | --resume]
 //
 // The episodes are run_episodes' (episode i with seed S + i, S defaulting to the scenario's seed;
 // --shard K/N takes the episodes with i % N == K - 1). At each frame due (each camera's rate, or
 // every --every seconds of sim time) the chosen cameras render the people from ARI's pose, and
 // each image is written as DIR/images/CAMERA/NAME_SEED_FRAME.png with its labels in
-// DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard). Exit code 2 on bad input,
-// 1 when rendering or writing fails (docs/cameras.md, "Labelled datasets").
+// DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard), which is written when every
+// episode is done: until then the labels of the finished episodes are in annotations.json.active
+// (core::ProgressJournal), from which --resume goes on. SIGINT or SIGTERM stops between two steps,
+// drops the episode under way (its images deleted) and exits with 128 + the signal's number. Exit
+// code 2 on bad input, 1 when rendering or writing fails (docs/cameras.md, "Labelled datasets").
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
@@ -22,6 +26,7 @@
 #include <optional>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,6 +34,8 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/core/progress_journal.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/physics/snapshot_cameras.hpp"
 #include "ari_social_sim/scenario/batch_plan.hpp"
@@ -59,7 +66,8 @@ const std::vector<int> kPngParameters{cv::IMWRITE_PNG_COMPRESSION, 3, cv::IMWRIT
 
 constexpr const char* kUsage =
     "usage: export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
-    "                      --cameras head,torso --out DIR [--every SECONDS] [--overwrite]\n";
+    "                      --cameras head,torso --out DIR [--every SECONDS]\n"
+    "                      [--overwrite | --resume]\n";
 
 constexpr const char* kHelp = R"(
 Runs a scenario's episodes as run_episodes does (episode i with seed S + i, S defaulting to the
@@ -70,8 +78,16 @@ DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard). NAME is on
 package's scenarios or a scenario file; N in [1, 1000000]; seeds in [0, 2147483647]; SECONDS in
 [0.01, 86400]. Output of these seeds already in DIR is replaced only with --overwrite.
 
+Until every episode is done, the labels of the finished ones are kept in
+DIR/annotations.json.active; DIR/annotations.json appears, complete, at the end. SIGINT (Ctrl-C)
+or SIGTERM stops the export between two steps: the episode under way is dropped (its images
+deleted), the finished ones are kept, and the same command with --resume finishes the export,
+running only the missing episodes (refused unless the options and the scenario and configuration
+files are those of the earlier run). The result is byte for byte that of an uninterrupted run,
+after a SIGKILL or a crash too. A second Ctrl-C kills at once.
+
 Exit status: 0 on success, 2 on bad input (checked before any episode runs), 1 when rendering or
-writing fails.
+writing fails, 130 after SIGINT and 143 after SIGTERM.
 )";
 
 struct Options {
@@ -82,6 +98,7 @@ struct Options {
   std::string out;
   std::optional<double> every_s;
   bool overwrite{false};
+  bool resume{false};
 };
 
 // `head,torso` as rig names; each name once.
@@ -114,14 +131,15 @@ Options parse_options(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--overwrite") {
-      options.overwrite = true;
+    if (arg == "--overwrite" || arg == "--resume") {
+      (arg == "--overwrite" ? options.overwrite : options.resume) = true;
       continue;
     }
+    core::check_known_option(arg, {"--scenario", "--episodes", "--seed", "--shard", "--cameras",
+                                   "--out", "--every", "--overwrite", "--resume"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
-    } else if (scenario::read_plan_option(arg, value, options.plan, options.given)) {
     } else if (arg == "--cameras") {
       options.cameras = parse_cameras(value);
     } else if (arg == "--out") {
@@ -129,14 +147,15 @@ Options parse_options(int argc, char** argv) {
     } else if (arg == "--every") {
       options.every_s = kEvery.parse(value);
     } else {
-      throw core::ConfigError(arg +
-                              ": expected one of --scenario, --episodes, --seed, --shard, "
-                              "--cameras, --out, --every, --overwrite");
+      scenario::read_plan_option(arg, value, options.plan, options.given);
     }
   }
   if (options.scenario.empty() || !options.given.episodes || options.cameras.empty() ||
       options.out.empty()) {
     throw core::ConfigError("expected --scenario, --episodes, --cameras and --out");
+  }
+  if (options.overwrite && options.resume) {
+    throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
   }
   return options;
 }
@@ -147,6 +166,8 @@ struct OutputPaths {
   std::string scenario;
   std::string annotations;
 
+  // The labels of the finished episodes until `annotations` is written.
+  std::string progress() const { return annotations + ".active"; }
   std::string image_dir(const std::string& camera) const { return "images/" + camera; }
   // Relative to dir, as the COCO file names it.
   std::string image(const std::string& camera, uint64_t seed, uint64_t frame) const {
@@ -187,10 +208,103 @@ std::vector<fs::path> earlier_images(const OutputPaths& paths, const Options& op
 struct Export {
   Options options;
   scenario::Scenario scenario;
+  std::string scenario_file;
   scenario::EpisodeConfig config;
   OutputPaths paths;
   physics::CameraRigConfig rig;
+  std::optional<core::ProgressJournal> journal;  // unset when the export is complete already
 };
+
+// What the COCO file's "info" says of the export, from the cameras the rig will render.
+scenario::DatasetSettings dataset_settings(const Export& run) {
+  scenario::DatasetSettings settings;
+  settings.scenario = run.scenario.name;
+  settings.plan = run.options.plan;
+  settings.every_s = run.options.every_s;
+  for (const physics::CameraSpec& spec : run.rig.cameras) {
+    if (spec.enabled) {
+      settings.cameras.push_back(spec.name);
+      settings.frame_rate_hz.push_back(spec.rate_hz);
+    }
+  }
+  return settings;
+}
+
+// The first line of the progress file: the COCO "info" and the digests of the scenario and
+// configuration files, so that --resume adds only episodes made the same way.
+std::string progress_settings(const Export& run) {
+  return "export_dataset " + scenario::CocoDataset(dataset_settings(run)).info_json() +
+         " scenario_digest " +
+         scenario::digest_files({run.scenario_file, run.scenario.scene.world_path}) +
+         " config_digest " + scenario::digest_files(scenario::files_under(ARI_CONFIG_DIR, ".yaml"));
+}
+
+// --resume of an export whose annotations are written: nothing to run if they were made with these
+// options. Throws core::ConfigError otherwise.
+void check_complete_export(const Export& run) {
+  const std::string info =
+      "\n\"info\": " + scenario::CocoDataset(dataset_settings(run)).info_json() + ",\n";
+  std::ifstream in(run.paths.annotations, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (text.str().find(info) == std::string::npos) {
+    throw core::ConfigError("--resume: " + run.paths.annotations +
+                            " is complete and was made with other options: pass the same "
+                            "options, --overwrite to replace it, or another --out");
+  }
+}
+
+// The earlier output of these seeds: resumed, replaced, or a reason to stop. Sets run.journal when
+// resuming from it.
+void deal_with_earlier_output(Export& run) {
+  const Options& options = run.options;
+  const OutputPaths& paths = run.paths;
+  const std::vector<fs::path> images = earlier_images(paths, options);
+  const bool annotations_there = fs::exists(paths.annotations);
+  const bool progress_there = fs::exists(paths.progress());
+  if (options.resume && progress_there) {
+    run.journal =
+        core::ProgressJournal::resume("--resume", paths.progress(), progress_settings(run));
+    if (run.journal->was_cut_short()) {
+      std::cerr << "--resume: " << paths.progress()
+                << " ended in an episode cut short (a run killed while writing it): removed it\n";
+    }
+    for (const fs::path& image : images) {
+      if (image.extension() == ".part") {
+        fs::remove(image);  // left by a killed run; its episode runs again
+      }
+    }
+    return;
+  }
+  if (options.resume && annotations_there) {
+    check_complete_export(run);
+    return;
+  }
+  const bool found = annotations_there || progress_there || !images.empty();
+  if (found && !options.overwrite && !options.resume) {
+    std::string what = annotations_there ? paths.annotations : "";
+    what += progress_there ? (what.empty() ? "" : ", ") + paths.progress() : "";
+    what += images.empty() ? ""
+                           : (what.empty() ? "" : ", ") + std::to_string(images.size()) +
+                                 " images of its seeds";
+    throw core::ConfigError("--out: " + options.out + " holds this run's output already (" + what +
+                            "): pass --overwrite to replace it, or --resume to finish it");
+  }
+  // --overwrite (or --resume with nothing to resume): the earlier annotations and the images of
+  // these seeds go first, so that neither a finished run nor a failed one leaves images and
+  // annotations that do not match.
+  for (const fs::path& image : images) {
+    fs::remove(image);
+  }
+  fs::remove(paths.annotations);
+  fs::remove(paths.progress());
+  if (options.resume) {
+    std::cerr << "--resume: " << paths.progress() << " not found: starting the export\n";
+  } else if (found) {
+    std::cerr << "--overwrite: removed " << (annotations_there ? paths.annotations + " and " : "")
+              << images.size() << " images of the earlier run\n";
+  }
+}
 
 // Checks everything the user gave and deals with the earlier output before the first episode, so
 // that a bad option or path costs no run. Throws core::ConfigError (or std::filesystem_error).
@@ -198,11 +312,11 @@ Export prepare(int argc, char** argv) {
   Export run;
   Options& options = run.options;
   options = parse_options(argc, argv);
-  const std::string scenario_file = scenario::scenario_file_of(options.scenario, ARI_SCENARIO_DIR);
-  core::check_input_file("--scenario", scenario_file);
-  run.scenario = scenario::load_scenario_file(scenario_file);
+  run.scenario_file = scenario::scenario_file_of(options.scenario, ARI_SCENARIO_DIR);
+  core::check_input_file("--scenario", run.scenario_file);
+  run.scenario = scenario::load_scenario_file(run.scenario_file);
   if (!run.scenario.scene.ari) {
-    throw core::ConfigError("--scenario: " + scenario_file +
+    throw core::ConfigError("--scenario: " + run.scenario_file +
                             ": expected a scenario with ARI (the cameras are ARI's), got none");
   }
   run.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
@@ -233,30 +347,20 @@ Export prepare(int argc, char** argv) {
                                           std::to_string(options.plan.shard_count)
                                     : "") +
       ".json";
-  const std::vector<fs::path> images = earlier_images(paths, options);
-  const bool annotations_there = fs::exists(paths.annotations);
-  if (!options.overwrite && (annotations_there || !images.empty())) {
-    throw core::ConfigError(
-        "--out: " + options.out + " holds this run's output already (" +
-        (annotations_there ? paths.annotations + (images.empty() ? "" : ", ") : "") +
-        (images.empty() ? "" : std::to_string(images.size()) + " images of its seeds") +
-        "): pass --overwrite to replace it");
-  }
-  // --overwrite: the earlier annotations and the images of these seeds go first, so that neither
-  // a finished run nor a failed one leaves images and annotations that do not match.
-  for (const fs::path& image : images) {
-    fs::remove(image);
-  }
-  fs::remove(paths.annotations);
-  if (annotations_there || !images.empty()) {
-    std::cerr << "--overwrite: removed " << (annotations_there ? paths.annotations + " and " : "")
-              << images.size() << " images of the earlier run\n";
+  const bool complete_already =
+      options.resume && !fs::exists(paths.progress()) && fs::exists(paths.annotations);
+  deal_with_earlier_output(run);
+  if (complete_already) {
+    return run;
   }
   core::prepare_output_directory("--out", options.out);
   for (const std::string& camera : options.cameras) {
     core::prepare_output_directory("--out", options.out + "/" + paths.image_dir(camera));
   }
   core::check_output_file("--out", paths.annotations, /*replace=*/true);
+  if (!run.journal) {
+    run.journal = core::ProgressJournal::start("--out", paths.progress(), progress_settings(run));
+  }
   return run;
 }
 
@@ -299,67 +403,118 @@ std::unique_ptr<scenario::Episode> start_episode(const Export& run, uint64_t ind
   }
 }
 
-// Runs every episode of the plan, writing each image as it is rendered and the annotations at the
-// end. Throws BadEpisode, or core::Error when rendering or writing fails.
-void export_episodes(Export& run) {
-  const Options& options = run.options;
+// Renders one episode's frames due, writing each image as it is made (its path added to
+// `written`), until the episode ends (true) or a stop signal comes (false). Throws BadEpisode, or
+// core::Error when rendering or writing fails.
+bool export_episode(const Export& run, physics::CameraRig& rig, scenario::CocoDataset& dataset,
+                    uint64_t index, std::vector<std::string>& written) {
+  const uint64_t seed = run.options.plan.seed_of(index);
+  const std::unique_ptr<scenario::Episode> episode = start_episode(run, index, seed);
+  // The looks vary from episode to episode and come back with the seed.
+  physics::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
+  std::vector<uint64_t> frames(rig.cameras().size(), 0);  // per camera, for the file names
+  uint64_t ordinal = 0;                                   // images of the episode, for the ids
+  // The initial state first (frame 0 at time 0), then after every step.
+  while (true) {
+    for (physics::LabelledImage& image : cameras.render_due(episode->snapshot())) {
+      const std::string& camera = rig.cameras()[image.camera].name;
+      scenario::DatasetImage entry;
+      entry.id = scenario::DatasetIds::image(index, ordinal++);
+      entry.file_name = run.paths.image(camera, seed, frames[image.camera]++);
+      entry.width = image.colour.cols;
+      entry.height = image.colour.rows;
+      entry.camera = camera;
+      entry.episode_seed = seed;
+      entry.time_s = image.time_s;
+      written.push_back(run.paths.dir + "/" + entry.file_name);
+      write_png(written.back(), image.colour);
+      dataset.add(entry, image.labels);
+    }
+    if (episode->finished()) {
+      return true;
+    }
+    if (core::g_stop_signal != 0) {
+      return false;
+    }
+    episode->step();
+  }
+}
+
+// After a stop signal: what is kept, and how to go on. Returns the exit code.
+int report_stop(const Export& run, size_t done, size_t planned, size_t images,
+                std::optional<uint64_t> dropped_seed, size_t dropped_images) {
+  const int signal = core::g_stop_signal;
+  std::cerr << "export_dataset: interrupted by " << core::stop_signal_name(signal) << " after "
+            << done << " of " << planned << " episodes: their " << images << " images are in "
+            << run.paths.dir << "/images, their labels in " << run.paths.progress() << " ("
+            << run.paths.annotations << " is written once every episode is done)";
+  if (dropped_seed) {
+    std::cerr << "; the episode under way (seed " << *dropped_seed << ") was dropped, its "
+              << dropped_images << " images deleted";
+  }
+  std::cerr << "; rerun the same command with --resume to finish\n";
+  return core::stopped_exit_code(signal);
+}
+
+// Runs the episodes of the plan that the progress file does not hold yet, each to its images and
+// its entry in the progress file, then writes the annotations, until done or stopped by a signal;
+// returns the exit code. Throws BadEpisode, or core::Error when rendering or writing fails.
+int export_episodes(Export& run) {
+  const std::vector<uint64_t> planned = run.options.plan.episode_indices();
+  if (!run.journal) {
+    std::printf("%s: nothing to do, all %zu episodes are in %s\n", run.scenario.name.c_str(),
+                planned.size(), run.paths.annotations.c_str());
+    return 0;
+  }
   physics::CameraRig rig(run.rig);
   rig.set_world(run.scenario.scene.world, physics::SceneStyle{});
-  scenario::DatasetSettings settings;
-  settings.scenario = run.scenario.name;
-  settings.plan = options.plan;
-  settings.every_s = options.every_s;
-  for (const physics::CameraSpec& spec : rig.cameras()) {
-    settings.cameras.push_back(spec.name);
-    settings.frame_rate_hz.push_back(spec.rate_hz);
+  scenario::CocoDataset dataset(dataset_settings(run));
+  std::set<std::string> done;
+  for (const core::ProgressJournal::Entry& entry : run.journal->kept()) {
+    dataset.add_entries(entry.lines, run.journal->path());
+    done.insert(entry.key);
   }
-  scenario::CocoDataset dataset(settings);
-
+  if (!done.empty()) {
+    std::cerr << "--resume: " << done.size() << " of " << planned.size() << " episodes are in "
+              << run.journal->path() << "; running the other " << planned.size() - done.size()
+              << "\n";
+  }
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<uint64_t> episodes = options.plan.episode_indices();
-  for (size_t done = 0; done < episodes.size(); ++done) {
-    const uint64_t index = episodes[done];
-    const uint64_t seed = options.plan.seed_of(index);
-    const std::unique_ptr<scenario::Episode> episode = start_episode(run, index, seed);
-    // The looks vary from episode to episode and come back with the seed.
-    physics::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
-    std::vector<uint64_t> frames(rig.cameras().size(), 0);  // per camera, for the file names
-    uint64_t ordinal = 0;                                   // images of the episode, for the ids
-    // The initial state first (frame 0 at time 0), then after every step.
-    while (true) {
-      for (physics::LabelledImage& image : cameras.render_due(episode->snapshot())) {
-        const std::string& camera = rig.cameras()[image.camera].name;
-        scenario::DatasetImage entry;
-        entry.id = scenario::DatasetIds::image(index, ordinal++);
-        entry.file_name = run.paths.image(camera, seed, frames[image.camera]++);
-        entry.width = image.colour.cols;
-        entry.height = image.colour.rows;
-        entry.camera = camera;
-        entry.episode_seed = seed;
-        entry.time_s = image.time_s;
-        write_png(run.paths.dir + "/" + entry.file_name, image.colour);
-        dataset.add(entry, image.labels);
-      }
-      if (episode->finished()) {
-        break;
-      }
-      episode->step();
+  for (uint64_t index : planned) {
+    if (done.count(std::to_string(index)) > 0) {
+      continue;
     }
+    if (core::g_stop_signal != 0) {
+      return report_stop(run, done.size(), planned.size(), dataset.image_count(), std::nullopt, 0);
+    }
+    const scenario::CocoDataset::Mark mark = dataset.mark();
+    std::vector<std::string> written;
+    if (!export_episode(run, rig, dataset, index, written)) {
+      for (const std::string& path : written) {
+        fs::remove(path);
+      }
+      return report_stop(run, done.size(), planned.size(), mark.images,
+                         run.options.plan.seed_of(index), written.size());
+    }
+    run.journal->add(std::to_string(index), dataset.entries_since(mark));
+    done.insert(std::to_string(index));
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cerr << (terminal ? "\r" : "")
-              << scenario::progress_line(done + 1, episodes.size(), elapsed_s)
+              << scenario::progress_line(done.size(), planned.size(), elapsed_s)
               << (terminal ? "" : "\n") << std::flush;
   }
   std::cerr << (terminal ? "\n" : "");
   core::OutputFile annotations("--out", run.paths.annotations);
   annotations.stream() << dataset.to_json();
   annotations.commit();
+  run.journal->remove();
   std::printf("%s: %zu episodes, %zu images, %zu person and %zu face annotations in %s\n",
-              run.scenario.name.c_str(), episodes.size(), dataset.image_count(),
+              run.scenario.name.c_str(), planned.size(), dataset.image_count(),
               dataset.count(scenario::CocoDataset::kPersonCategory),
               dataset.count(scenario::CocoDataset::kFaceCategory), run.paths.annotations.c_str());
+  return 0;
 }
 
 }  // namespace
@@ -381,8 +536,9 @@ int main(int argc, char** argv) {
     std::cerr << "export_dataset: --out: " << e.what() << "\n";
     return 2;
   }
+  core::install_stop_handler();
   try {
-    export_episodes(run);
+    return export_episodes(run);
   } catch (const BadEpisode& e) {
     std::cerr << "\nexport_dataset: " << e.what() << "\n";
     return 2;
@@ -393,5 +549,4 @@ int main(int argc, char** argv) {
     std::cerr << "\nexport_dataset: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

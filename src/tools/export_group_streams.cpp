@@ -121,6 +121,8 @@ Options parse_options(int argc, char** argv) {
       options.overwrite = true;
       continue;
     }
+    core::check_known_option(arg, {"--scenes", "--seed", "--seconds", "--every", "--errors",
+                                   "--arrangements", "--out", "--overwrite"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenes") {
       options.scenes = static_cast<uint64_t>(kScenes.parse(value));
@@ -138,12 +140,8 @@ Options parse_options(int argc, char** argv) {
       options.errors = value == "default";
     } else if (arg == "--arrangements") {
       options.arrangements = parse_arrangements(value);
-    } else if (arg == "--out") {
-      options.out = value;
     } else {
-      throw core::ConfigError(arg +
-                              ": expected one of --scenes, --seed, --seconds, --every, --errors, "
-                              "--arrangements, --out, --overwrite");
+      options.out = value;  // --out
     }
   }
   if (!scenes_given || options.out.empty()) {

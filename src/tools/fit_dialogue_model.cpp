@@ -55,6 +55,8 @@ int main(int argc, char** argv) {
         overwrite = true;
         continue;
       }
+      core::check_known_option(arg, {"--corpus", "--out", "--min-row-count", "--prior-weight",
+                                     "--overwrite", "--help", "-h"});
       const std::string value = core::option_value(argc, argv, i);
       if (arg == "--corpus") {
         corpus_dir = value;
@@ -62,10 +64,8 @@ int main(int argc, char** argv) {
         out_path = value;
       } else if (arg == "--min-row-count") {
         options.min_row_count = static_cast<unsigned>(kMinRowCount.parse(value));
-      } else if (arg == "--prior-weight") {
-        options.prior_weight = kPriorWeight.parse(value);
       } else {
-        throw core::ConfigError("unknown option " + arg);
+        options.prior_weight = kPriorWeight.parse(value);  // --prior-weight
       }
     }
     if (overwrite && out_path.empty()) {

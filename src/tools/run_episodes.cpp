@@ -31,6 +31,7 @@
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/scenario/batch_plan.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
 #include "ari_social_sim/scenario/episode_csv.hpp"
@@ -42,13 +43,9 @@ namespace {
 using namespace ari_social_sim;
 namespace fs = std::filesystem;
 
-// Set by the SIGINT/SIGTERM handler, read between steps: a signal handler may do nothing but set
-// a flag of this type, hence the one global of the program.
-volatile std::sig_atomic_t g_stop_signal = 0;
-
-void on_stop_signal(int signal) {
-  g_stop_signal = signal;
-}
+// SIGINT/SIGTERM, shared with the other batch tools (core/stop_signal.hpp).
+using core::g_stop_signal;
+using core::install_stop_handler;
 
 struct Options {
   std::string scenario;
@@ -87,16 +84,15 @@ Options parse_options(int argc, char** argv) {
       options.resume = true;
       continue;
     }
+    core::check_known_option(arg, {"--scenario", "--episodes", "--seed", "--shard", "--out",
+                                   "--no-bags", "--overwrite", "--resume"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
-    } else if (scenario::read_plan_option(arg, value, options.plan, options.given)) {
     } else if (arg == "--out") {
       options.out = value;
     } else {
-      throw core::ConfigError(arg +
-                              ": expected one of --scenario, --episodes, --seed, --shard, --out, "
-                              "--no-bags, --overwrite, --resume");
+      scenario::read_plan_option(arg, value, options.plan, options.given);
     }
   }
   if (options.scenario.empty() || (!options.given.episodes && !options.resume)) {
@@ -108,18 +104,6 @@ Options parse_options(int argc, char** argv) {
     throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
   }
   return options;
-}
-
-// Every YAML file under the configuration folder, sorted: what the episodes may read.
-std::vector<std::string> config_files() {
-  std::vector<std::string> files;
-  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(ARI_CONFIG_DIR)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".yaml") {
-      files.push_back(entry.path().string());
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
 }
 
 std::string read_file(const std::string& path) {
@@ -306,7 +290,7 @@ Batch prepare(int argc, char** argv) {
   settings.scenario_file = scenario_file;
   settings.scenario_digest =
       scenario::digest_files({scenario_file, batch.scenario.scene.world_path});
-  settings.config_digest = scenario::digest_files(config_files());
+  settings.config_digest = scenario::digest_files(scenario::files_under(ARI_CONFIG_DIR, ".yaml"));
   settings.plan = options.plan;
   settings.bags = options.bags;
 
@@ -342,16 +326,6 @@ Batch prepare(int argc, char** argv) {
     batch.csv << scenario::csv_header() << "\n" << std::flush;
   }
   return batch;
-}
-
-void install_stop_handler() {
-  struct sigaction action {};
-  action.sa_handler = on_stop_signal;
-  // A second Ctrl-C kills at once (the default action is back), leaving at most one .active file.
-  action.sa_flags = SA_RESETHAND;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
 }
 
 // Runs the planned episodes that have no row yet, each to its bag and then its row, until done or

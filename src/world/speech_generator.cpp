@@ -1,6 +1,8 @@
 #include "ari_social_sim/world/speech_generator.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <sstream>
 
 #include "ari_social_sim/core/check.hpp"
@@ -34,7 +36,32 @@ double SpeechGenerator::duration_s(const std::string& content) const {
   return static_cast<double>(split_words(content).size()) * 60.0 / words_per_minute_;
 }
 
+namespace {
+
+// Throws core::RequestError naming `field` for a control character in `text` (NUL included: a
+// string that C code, a log or a bag reader would cut or show garbled), the whitespace of
+// `allowed_whitespace` excepted.
+void check_no_control_characters(const std::string& field, const std::string& text,
+                                 const char* allowed_whitespace) {
+  for (size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    const bool allowed = c != '\0' && std::strchr(allowed_whitespace, c) != nullptr;
+    if ((c < 0x20 || c == 0x7f) && !allowed) {
+      char byte[8];
+      std::snprintf(byte, sizeof(byte), "0x%02x", c);
+      throw core::RequestError("say: " + field + ": expected no control characters, got byte " +
+                               byte + " at offset " + std::to_string(i));
+    }
+  }
+}
+
+}  // namespace
+
 void SpeechGenerator::say(const std::string& act, const std::string& content, double now_s) {
+  // Words are split at spaces, tabs and newlines; nothing else below 0x20 is text. An act is one
+  // token (QUESTION:TIME, greet(), inform(time=now)): no whitespace at all.
+  check_no_control_characters("content", content, "\t\n");
+  check_no_control_characters("act", act, "");
   if (content.size() > kMaxContentBytes) {
     throw core::RequestError("say: content: expected at most " + std::to_string(kMaxContentBytes) +
                              " bytes, got " + std::to_string(content.size()));

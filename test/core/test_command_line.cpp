@@ -96,6 +96,15 @@ TEST(OptionValue, TakesTheNextArgumentUnlessMissingOrEmpty) {
             "--report: expected a value after it");
 }
 
+TEST(CheckKnownOption, CallsAnUnknownOptionUnknownEvenWhenLast) {
+  EXPECT_NO_THROW(check_known_option("--out", {"--seed", "--out"}));
+  // `tool --seed 1 --frobnicate`: unknown, not a known option missing its value.
+  EXPECT_EQ(config_error([] {
+              check_known_option("--frobnicate", {"--seed", "--out"});
+            }),
+            "--frobnicate: unknown option, expected one of --seed, --out");
+}
+
 TEST(CheckInputFile, RefusesDirectoriesAndMissingFiles) {
   const fs::path dir = scratch("input");
   const fs::path file = dir / "in.yaml";
@@ -107,6 +116,13 @@ TEST(CheckInputFile, RefusesDirectoriesAndMissingFiles) {
               check_input_file("--config", (dir / "none").string());
             }).find("none: cannot open the file (No such file or directory)"),
             std::string::npos);
+  // A loop is no missing file: say what it is.
+  const fs::path loop = dir / "loop.yaml";
+  fs::create_symlink(loop, loop);
+  EXPECT_EQ(config_error([&] { check_input_file("--config", loop.string()); }),
+            "--config: " + loop.string() + ": cannot open the file (a symbolic link loop)");
+  EXPECT_EQ(config_error([&] { check_output_file("--out", loop.string(), true); }),
+            "--out: " + loop.string() + ": expected a file name, got a symbolic link loop");
   EXPECT_NO_THROW(check_input_directory("--corpus", dir.string()));
   EXPECT_NE(config_error([&] {
               check_input_directory("--corpus", file.string());

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <functional>
 
@@ -34,6 +35,16 @@ TEST(TextFile, NamesWhatWasExpectedAndWhatWasFound) {
             "/tmp: expected a URDF file, got a directory");
   EXPECT_EQ(error_of([] { check_text_file("/dev/null", "a CSV file", 10); }),
             "/dev/null: expected a CSV file, got a special file (device, FIFO or socket)");
+}
+
+TEST(TextFile, ASymbolicLinkLoopIsCalledSoNotMissing) {
+  const std::string loop = ::testing::TempDir() + "text_file_loop.yaml";
+  std::filesystem::remove(loop);
+  std::filesystem::create_symlink(loop, loop);
+  EXPECT_EQ(error_of([&] { check_text_file(loop, "a YAML file", 100); }),
+            loop + ": cannot open the file (a symbolic link loop)");
+  EXPECT_EQ(error_of([&] { check_text_file(loop + "_none", "a YAML file", 100); }),
+            loop + "_none: cannot open the file (it does not exist)");
 }
 
 TEST(TextFile, ReadsUpToTheLimitAndRefusesAByteMore) {

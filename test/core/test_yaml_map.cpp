@@ -43,6 +43,22 @@ TEST(YamlMap, ErrorsNameSourceFieldValueAndExpectation) {
                       {"f.yaml: a", "a number", "abc"});
 }
 
+TEST(YamlMap, ListErrorsNameTheItemsInThePlural) {
+  const YamlMap map = YamlMap::parse("w: [1, x]\nn: [1, -2]\ns: [a, [b]]\n", "l.yaml");
+  try {
+    map.required<std::vector<double>>("w");
+    FAIL() << "no ConfigError thrown";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a list of numbers, got [1, x]"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(std::string(e.what()).find("a list of a "), std::string::npos) << e.what();
+  }
+  expect_config_error([&] { map.required<std::vector<unsigned>>("n"); },
+                      {"a list of non-negative integers"});
+  expect_config_error([&] { map.required<std::vector<std::string>>("s"); }, {"a list of strings"});
+}
+
 TEST(YamlMap, UnknownKeysAreErrors) {
   const YamlMap map = YamlMap::parse("radius: 1\nraduis: 2\n", "w.yaml");
   map.required<double>("radius");

@@ -40,6 +40,15 @@ def test_actions_outside_the_limits_are_clipped():
     robot = obs[env.observation_layout["robot"]]
     assert 0.9 < robot[0] <= 1.0 + 1e-6  # linear velocity at ARI's 1 m/s
     assert robot[2] == pytest.approx(-1.309, abs=0.01)  # head pan at its limit
+    # Finite however large: clipped too, not refused as the inf float32 would make of it.
+    for _ in range(60):
+        obs, *_ = env.step([1e300, 0.0, 1e300])
+    robot = obs[env.observation_layout["robot"]]
+    assert 0.9 < robot[0] <= 1.0 + 1e-6
+    assert robot[2] == pytest.approx(1.309, abs=0.01)
+    envs = learning.make_vector("go_to_pose", 2, terminate_on_collision=False)
+    envs.reset(seed=5)
+    envs.step(np.full((2, 3), -1e300))
 
 
 @pytest.mark.parametrize("action, message", [
@@ -47,6 +56,7 @@ def test_actions_outside_the_limits_are_clipped():
     ([[0.1, 0.2, 0.3]], "action: expected shape (3,), got (1, 3)"),
     ([0.1, float("nan"), 0.0], "action[1] (angular): expected a finite number"),
     ([float("inf"), 0.0, 0.0], "action[0] (linear): expected a finite number"),
+    ([0.0, 0.0, float("nan")], "action[2] (pan): expected a finite number, got nan"),
     (["fast", "left", "up"], "action: expected numbers, got ['fast', 'left', 'up']"),
 ])
 def test_wrong_shapes_and_non_finite_actions_are_refused_by_name(action, message):
@@ -233,3 +243,15 @@ def test_scenario_vector_environments_do_not_depend_on_the_thread_count():
         runs.append(trace)
     for x, y in zip(*runs):
         assert x.tobytes() == y.tobytes()
+
+
+def test_closed_environments_say_so_instead_of_an_attribute_error():
+    for env, call in ((learning.make("join_group"), lambda e: e.step([0.0, 0.0, 0.0])),
+                      (learning.make_vector("join_group", 2), lambda e: e.step(np.zeros((2, 3)))),
+                      (learning.make("dialogue"), lambda e: e.step(["greet()"]))):
+        env.reset(seed=1)
+        env.close()
+        env.close()  # twice is harmless
+        for method in (call, lambda e: e.reset(seed=1)):
+            with pytest.raises(ValueError, match=r"closed environment: \w+Env.close\(\) was called"):
+                method(env)

@@ -3,12 +3,17 @@
 // Runs a built program as a user would, through the shell, for the tests of src/tools/.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace ari_social_sim::tools::test {
 
@@ -47,6 +52,46 @@ inline void expect_refused(const ProgramRun& result, const std::string& fragment
   EXPECT_EQ(result.status, 2) << result.err;
   EXPECT_NE(result.err.find(fragment), std::string::npos)
       << "'" << fragment << "' not in: " << result.err;
+}
+
+/// Starts `program` with `arguments` (shell syntax) in the background as a script would: with
+/// SIGINT ignored (a non-interactive shell starts background jobs so), through `exec` so that the
+/// signals a test sends reach the program, not the shell. Output and error go to the files given.
+/// Returns the program's process id, or -1 when it cannot be started.
+inline pid_t start_in_background(const std::string& program, const std::string& arguments,
+                                 const std::string& stdout_path, const std::string& stderr_path) {
+  const std::string command =
+      "trap '' INT; exec " + program + " " + arguments + " >" + stdout_path + " 2>" + stderr_path;
+  const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  pid_t pid = -1;
+  return posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) == 0
+             ? pid
+             : -1;
+}
+
+/// Polls `ready` every 5 ms until it holds (true) or `limit` passes (false): a test waits for a
+/// file to appear, never for a fixed time that a busy machine would break.
+inline bool wait_until(const std::function<bool()>& ready,
+                       std::chrono::seconds limit = std::chrono::seconds(120)) {
+  const auto give_up = std::chrono::steady_clock::now() + limit;
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() > give_up) {
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return true;
+}
+
+/// Sends `signal` to `pid` and waits for it to end: its exit code, or 128 + the signal's number
+/// when the signal killed it (as a shell reports both).
+inline int signal_and_wait(pid_t pid, int signal) {
+  kill(pid, signal);
+  int raw = 0;
+  if (waitpid(pid, &raw, 0) != pid) {
+    return -1;
+  }
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
 }
 
 }  // namespace ari_social_sim::tools::test

@@ -1,8 +1,10 @@
 // Runs the export_dataset program as a user would: bad input refused before any work, and
 // join_group (the shortest scenario) exported, checked as a COCO file, exported again byte for
-// byte, and in two shards that together hold the same images.
+// byte, and in two shards that together hold the same images; an export interrupted with SIGINT
+// and with SIGKILL, then resumed to the bytes of an uninterrupted one.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -157,7 +159,11 @@ TEST(ExportDataset, BadOptionsExitWithTwoNamingTheOption) {
             "--out: /etc/hostname: expected a directory, got a file"},
            {"--scenario join_group --episodes 2 --out " + dir,
             "expected --scenario, --episodes, --cameras and --out"},
-           {base + " --cameras head --zoom 2", "--zoom: expected one of --scenario"}}) {
+           {base + " --cameras head --zoom 2",
+            "--zoom: unknown option, expected one of --scenario"},
+           // Last, it is still unknown, not an option missing its value.
+           {base + " --cameras head --zoom",
+            "--zoom: unknown option, expected one of --scenario"}}) {
     const ProgramRun result = run(arguments);
     expect_refused(result, fragment);
     EXPECT_EQ(result.out, "") << arguments;
@@ -249,6 +255,108 @@ TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInShards) {
   }
   EXPECT_EQ(sharded_names, names);
   EXPECT_FALSE(fs::exists(shards + "/annotations.json"));
+}
+
+// Three short episodes, one camera, a frame every 2 s: the cheapest export that can be stopped
+// after its first episode and before its last.
+const std::string kSmallExport =
+    "--scenario join_group --episodes 3 --cameras torso --every 2 --out ";
+
+// The image files the progress file lists (those of the finished episodes).
+std::set<std::string> progress_images(const std::string& progress) {
+  std::set<std::string> names;
+  std::istringstream lines(read_all(progress));
+  const std::string key = "\"file_name\": \"";
+  for (std::string line; std::getline(lines, line);) {
+    const size_t at = line.find(key);
+    if (line.rfind("image ", 0) == 0 && at != std::string::npos) {
+      const size_t start = at + key.size();
+      names.insert(line.substr(start, line.find('"', start) - start));
+    }
+  }
+  return names;
+}
+
+// Starts the small export into `dir` in the background (SIGINT ignored, as from a script), sends
+// `signal` once its first episode is in the progress file, and returns the exit code.
+int interrupted_export(const std::string& dir, int signal, std::string& message) {
+  const std::string err = dir + "_stderr.txt";
+  const pid_t pid =
+      start_in_background(ARI_EXPORT_DATASET_BIN, kSmallExport + dir, "/dev/null", err);
+  EXPECT_GT(pid, 0);
+  const std::string progress = dir + "/annotations.json.active";
+  EXPECT_TRUE(
+      wait_until([&] { return read_all(progress).find("\ndone 0\n") != std::string::npos; }));
+  const int status = signal_and_wait(pid, signal);
+  message = read_all(err);
+  return status;
+}
+
+// Every file under `dir` equals the uninterrupted export's, byte for byte.
+void expect_same_files(const std::string& dir,
+                       const std::map<std::string, std::string>& reference) {
+  const std::map<std::string, std::string> files = files_under(dir);
+  int differing = 0;
+  for (const auto& [path, bytes] : reference) {
+    differing += files.count(path) == 0 || files.at(path) != bytes ? 1 : 0;
+  }
+  EXPECT_EQ(files.size(), reference.size());
+  EXPECT_EQ(differing, 0);
+  std::printf(
+      "%s: %zu files (annotations.json and PNGs), %d differing from the uninterrupted run\n",
+      dir.c_str(), files.size(), differing);
+}
+
+TEST(ExportDataset, AnInterruptedExportKeepsFinishedEpisodesAndResumesToTheSameBytes) {
+  const std::string reference_dir = ::testing::TempDir() + "export_dataset_reference";
+  fs::remove_all(reference_dir);
+  const ProgramRun whole = run(kSmallExport + reference_dir);
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  const std::map<std::string, std::string> reference = files_under(reference_dir);
+  ASSERT_GT(reference.size(), 3u);
+
+  // SIGINT, to a process started with SIGINT ignored: it stops, keeping complete episodes only.
+  const std::string dir = ::testing::TempDir() + "export_dataset_sigint";
+  fs::remove_all(dir);
+  std::string message;
+  EXPECT_EQ(interrupted_export(dir, SIGINT, message), 130) << message;
+  EXPECT_NE(message.find("export_dataset: interrupted by SIGINT after "), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("rerun the same command with --resume to finish"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir + "/annotations.json"));
+  const std::set<std::string> kept = progress_images(dir + "/annotations.json.active");
+  std::set<std::string> on_disk;
+  for (const auto& [path, bytes] : files_under(dir)) {
+    if (path != "annotations.json.active") {
+      on_disk.insert(path);
+      EXPECT_EQ(bytes, reference.at(path)) << path;  // no .part, no image of a dropped episode
+    }
+  }
+  EXPECT_EQ(on_disk, kept);
+  std::printf("after SIGINT: %zu images of finished episodes kept, exit 130\n", kept.size());
+  // Other options are refused; the same ones finish the export.
+  expect_refused(
+      run("--scenario join_group --episodes 3 --cameras torso --every 1 --resume --out " + dir),
+      "was made with other settings");
+  const ProgramRun resumed = run(kSmallExport + dir + " --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(
+      resumed.err.find("episodes are in " + dir + "/annotations.json.active; running the other"),
+      std::string::npos)
+      << resumed.err;
+  expect_same_files(dir, reference);
+  const ProgramRun again = run(kSmallExport + dir + " --resume");
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find("nothing to do, all 3 episodes are in"), std::string::npos) << again.out;
+
+  // SIGKILL: no handler runs; --resume still ends with the same bytes.
+  const std::string killed = ::testing::TempDir() + "export_dataset_sigkill";
+  fs::remove_all(killed);
+  EXPECT_EQ(interrupted_export(killed, SIGKILL, message), 128 + SIGKILL);
+  expect_refused(run(kSmallExport + killed), "pass --overwrite to replace it, or --resume");
+  const ProgramRun after_kill = run(kSmallExport + killed + " --resume");
+  ASSERT_EQ(after_kill.status, 0) << after_kill.err;
+  expect_same_files(killed, reference);
 }
 
 }  // namespace

@@ -1,10 +1,14 @@
 // Runs the nav_benchmark program as a user would: options checked before the first episode, the
-// CSV never silently replaced.
+// CSV never silently replaced, a run interrupted with SIGINT and with SIGKILL then resumed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "program_run.hpp"
 
@@ -38,6 +42,8 @@ TEST(NavBenchmark, BadOptionsExitWithTwoBeforeAnyEpisode) {
            {"--csv " + dir, "--csv: " + dir + ": expected a file name, got a directory"},
            {"--csv /proc/nav.csv", "--csv: /proc/nav.csv: cannot write in /proc"},
            {"--overwrite", "--overwrite: expected --csv too"},
+           {"--resume", "--resume: expected --csv too"},
+           {"--csv " + dir + "x.csv --overwrite --resume", "expected one of them, got both"},
            {"--profile shy",
             "--profile: expected ignore, yield, curious, avoid or block, got 'shy'"},
            {"--episodes", "--episodes: expected an integer in [1, 10000], got '--types'"}}) {
@@ -45,6 +51,9 @@ TEST(NavBenchmark, BadOptionsExitWithTwoBeforeAnyEpisode) {
     expect_refused(result, fragment);
     EXPECT_EQ(result.err.find("pose 0 social"), std::string::npos) << arguments;
   }
+  // An unknown option given last is unknown, not an option missing its value.
+  expect_refused(run("--types pose --frobnicate"),
+                 "--frobnicate: unknown option, expected one of --episodes");
 }
 
 TEST(NavBenchmark, AnExistingCsvIsReplacedOnlyWithOverwrite) {
@@ -66,6 +75,85 @@ TEST(NavBenchmark, AnExistingCsvIsReplacedOnlyWithOverwrite) {
   EXPECT_EQ(rows.find("type,episode,seed,controller,profile,success,"), 0u);
   EXPECT_NE(rows.find(",social,ignore,"), std::string::npos);  // the default profile
   EXPECT_FALSE(fs::exists(csv + ".part"));
+}
+
+// Two pose episodes with each controller: four short runs.
+const std::string kSmallRun = "--episodes 2 --types pose --controllers social,baseline --csv ";
+
+// The CSV without its two solve-time columns (solve_cpu_median_ms, solve_cpu_max_ms): CPU times,
+// never the same in two runs; every other byte must be.
+std::string without_solve_times(const std::string& csv) {
+  std::istringstream lines(csv);
+  std::string out;
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> fields;
+    std::stringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) {
+      fields.push_back(field);
+    }
+    for (size_t i = 0; i < fields.size(); ++i) {
+      out += (i == 19 || i == 20) ? std::string("-") : fields[i];
+      out += i + 1 < fields.size() ? "," : "\n";
+    }
+  }
+  return out;
+}
+
+// Starts the small run in the background (SIGINT ignored, as from a script), sends `signal` once
+// its first episode is in the progress file, and returns the exit code.
+int interrupted_run(const std::string& csv, int signal, std::string& message) {
+  const std::string err = csv + "_stderr.txt";
+  const pid_t pid = start_in_background(ARI_NAV_BENCHMARK_BIN, kSmallRun + csv, "/dev/null", err);
+  EXPECT_GT(pid, 0);
+  EXPECT_TRUE(wait_until([&] {
+    return read_all(csv + ".active").find("\ndone pose/0/social\n") != std::string::npos;
+  }));
+  const int status = signal_and_wait(pid, signal);
+  message = read_all(err);
+  return status;
+}
+
+TEST(NavBenchmark, AnInterruptedRunResumesToTheSameCsv) {
+  const std::string dir = ::testing::TempDir() + "nav_benchmark_resume/";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const ProgramRun whole = run(kSmallRun + dir + "whole.csv");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  const std::string reference = without_solve_times(read_all(dir + "whole.csv"));
+  EXPECT_EQ(std::count(reference.begin(), reference.end(), '\n'), 5);  // header and 4 rows
+
+  const std::string csv = dir + "sigint.csv";
+  std::string message;
+  EXPECT_EQ(interrupted_run(csv, SIGINT, message), 130) << message;
+  EXPECT_NE(message.find("nav_benchmark: interrupted by SIGINT after "), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("their records are in " + csv + ".active"), std::string::npos);
+  EXPECT_NE(message.find("rerun the same command with --resume to finish"), std::string::npos);
+  EXPECT_FALSE(fs::exists(csv));
+  expect_refused(run(kSmallRun + csv), "holds the episodes of an interrupted run: pass --resume");
+  expect_refused(
+      run("--episodes 3 --types pose --controllers social,baseline --resume --csv " + csv),
+      "was made with other settings");
+  const ProgramRun resumed = run(kSmallRun + csv + " --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("episodes are in " + csv + ".active; running the other"),
+            std::string::npos)
+      << resumed.err;
+  EXPECT_EQ(without_solve_times(read_all(csv)), reference);
+  EXPECT_FALSE(fs::exists(csv + ".active"));
+  const ProgramRun again = run(kSmallRun + csv + " --resume");
+  EXPECT_EQ(again.status, 0);
+  EXPECT_NE(again.out.find("nothing to do"), std::string::npos) << again.out;
+
+  const std::string killed = dir + "sigkill.csv";
+  EXPECT_EQ(interrupted_run(killed, SIGKILL, message), 128 + SIGKILL);
+  const ProgramRun after_kill = run(kSmallRun + killed + " --resume");
+  ASSERT_EQ(after_kill.status, 0) << after_kill.err;
+  EXPECT_EQ(without_solve_times(read_all(killed)), reference);
+  std::printf(
+      "CSV after SIGINT + --resume and after SIGKILL + --resume: %s the uninterrupted "
+      "run's but for the solve times\n",
+      without_solve_times(read_all(killed)) == reference ? "the same bytes as" : "NOT");
 }
 
 }  // namespace

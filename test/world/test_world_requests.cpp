@@ -204,7 +204,13 @@ TEST(WorldRequests, SayPlaysTheWordsOfAHumanOrAriAndReturnsTheirDuration) {
   EXPECT_DOUBLE_EQ(sim->say(1, "GREETING", "hello there"), 0.8);
   EXPECT_EQ(sim->ari()->speech().content(), "hello there");
   EXPECT_EQ(refusal_text([&] { sim->say(11, "INFORM", "   "); }), "say: content has no words");
+  // A NUL byte or another control character is no text (a log or bag reader would cut it).
+  EXPECT_EQ(refusal_text([&] { sim->say(11, "INFORM", std::string("hi\0there", 8)); }),
+            "say: content: expected no control characters, got byte 0x00 at offset 2");
+  EXPECT_EQ(refusal_text([&] { sim->say(11, "INFORM\x1b[2J", "hi"); }),
+            "say: act: expected no control characters, got byte 0x1b at offset 6");
   EXPECT_FALSE(sim->find_human(11)->speech().is_speaking());
+  EXPECT_DOUBLE_EQ(sim->say(11, "INFORM", "two\nlines"), 0.8);  // whitespace splits words
 }
 
 TEST(ServiceRequests, SpawnFieldsLeftAtZeroTakeTheDefaults) {

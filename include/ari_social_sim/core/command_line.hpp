@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ari_social_sim/core/yaml_map.hpp"
 
@@ -38,6 +39,12 @@ struct NumberOption {
 /// option when there is none (`--out: expected a value after it`) or it is empty (`--out: expected
 /// a value, got ''`): an empty path or number never quietly stands for the default.
 std::string option_value(int argc, char** argv, int& i);
+
+/// Throws ConfigError `--frobnicate: unknown option, expected one of --out, --seed` unless
+/// `option` is one of `known` (every option of the program, as typed). A program's option loop
+/// calls it before option_value, so that an unknown option given last is called unknown, not a
+/// known one missing its value.
+void check_known_option(const std::string& option, const std::vector<std::string>& known);
 
 /// Throws ConfigError (`--config: /tmp: expected a readable file, got a directory`) unless `path`
 /// can be opened for reading and is not a directory.

@@ -122,6 +122,10 @@ struct BatchSettings {
   std::vector<std::string> differences(const BatchSettings& now) const;
 };
 
+/// Every regular file under `dir` (recursively) whose name ends with `extension` (".yaml"),
+/// sorted: e.g. the configuration files an episode may read, for digest_files.
+std::vector<std::string> files_under(const std::string& dir, const std::string& extension);
+
 /// FNV-1a (64 bits) of the files' contents in order, as 16 hex digits: equal digests mean, in
 /// practice, unchanged files. Throws core::ConfigError naming a file that cannot be read.
 std::string digest_files(const std::vector<std::string>& paths);

@@ -70,6 +70,22 @@ class CocoDataset {
   /// The whole file: "info", "images", "annotations", "categories"; one image or annotation per
   /// line.
   std::string to_json() const;
+  /// The "info" object of to_json, on one line: what the dataset was made with.
+  std::string info_json() const;
+
+  /// How many images and annotations the dataset holds, to take entries_since from.
+  struct Mark {
+    size_t images{0};
+    size_t annotations{0};
+  };
+  Mark mark() const { return {images_.size(), annotations_.size()}; }
+  /// The images and annotations added since `mark`, one a line (`image {...}`, `annotation
+  /// {...}`), exactly as to_json prints them: what export_dataset keeps of each finished episode
+  /// so that a resumed run writes the bytes an uninterrupted one would.
+  std::string entries_since(const Mark& mark) const;
+  /// Adds entries_since's lines back. Throws core::ConfigError naming `source` for a line of
+  /// another form, or an image id given twice.
+  void add_entries(const std::string& lines, const std::string& source);
 
  private:
   DatasetSettings settings_;

@@ -98,12 +98,20 @@ def _setup(task, options):
     return _learning.NavEnvSetup.load(root, task_file, text, "make() options")
 
 
+_FLOAT32_MAX = float(np.finfo(np.float32).max)
+
+
 def _numbers(name, values):
-    """`values` as a float32 array; ValueError naming `name` when they are not numbers."""
+    """`values` as a float32 array; ValueError naming `name` when they are not numbers. A finite
+    number beyond float32's range (1e300) is clipped to it, not turned into inf: actions are
+    clipped to ARI's limits, and only NaN and infinities are refused (by the core, naming the
+    field)."""
     try:
-        return np.asarray(values, dtype=np.float32)
+        array = np.asarray(values, dtype=np.float64)
     except (TypeError, ValueError):
         raise ValueError(f"{name}: expected numbers, got {values!r}") from None
+    clipped = np.where(np.isfinite(array), np.clip(array, -_FLOAT32_MAX, _FLOAT32_MAX), array)
+    return clipped.astype(np.float32)
 
 
 def _observation_space(core):
@@ -122,7 +130,23 @@ def _action_space():
     return Box(np.array(low, np.float32), np.array(high, np.float32), dtype=np.float32)
 
 
-class NavigationEnv(_EnvBase):
+class _Closable:
+    """close() for the environments: after it, every method raises ValueError "closed
+    environment" (not an AttributeError from a released core); closing twice is harmless."""
+
+    _core = None
+
+    def close(self):
+        self._core = None
+
+    def _open_core(self):
+        if self._core is None:
+            raise ValueError(f"closed environment: {type(self).__name__}.close() was called; "
+                             f"make a new environment")
+        return self._core
+
+
+class NavigationEnv(_Closable, _EnvBase):
     """One navigation environment (docs/learning.md): observations from perception, actions
     (linear m/s, angular rad/s, head pan rad) clipped to ARI's limits, rewards and metrics on the
     truth. Not thread-safe; use make_vector for several."""
@@ -139,12 +163,11 @@ class NavigationEnv(_EnvBase):
         self.step_s = self._setup.step_s
         self.arrival = self._setup.arrival  # (position m, heading rad) tolerances
         self.observation_config = self._setup.observation_config
-        self._closed = False
 
     def reset(self, seed=None, options=None):
         """Starts an episode: that of `seed`, or the next in this environment's sequence.
         `options` may hold {"seed": int} only (as gymnasium allows); anything else is refused."""
-        self._check_open()
+        core = self._open_core()
         if options is not None:
             if not isinstance(options, dict):
                 raise ValueError(f"options: expected a dict or None, got {type(options).__name__}")
@@ -153,24 +176,16 @@ class NavigationEnv(_EnvBase):
                 raise ValueError(f"options: unknown key {unknown[0]!r}; expected only 'seed'")
             if seed is None:
                 seed = options.get("seed")
-        observation = self._core.reset(_check_seed(seed))
-        return observation, self._core.metrics()
+        observation = core.reset(_check_seed(seed))
+        return observation, core.metrics()
 
     def step(self, action):
-        self._check_open()
-        observation, reward, terminated, truncated = self._core.step(_numbers("action", action))
-        return observation, reward, terminated, truncated, self._core.metrics()
-
-    def close(self):
-        self._closed = True
-        self._core = None
-
-    def _check_open(self):
-        if self._closed:
-            raise ValueError("the environment is closed")
+        core = self._open_core()
+        observation, reward, terminated, truncated = core.step(_numbers("action", action))
+        return observation, reward, terminated, truncated, core.metrics()
 
 
-class VectorNavigationEnv:
+class VectorNavigationEnv(_Closable):
     """num_envs navigation environments stepped in one call, optionally on several threads.
     Environment i plays seeds seed+i, seed+i+num_envs, ...; an ended episode is reset in the same
     step, its last observation in infos["final_observation"][i] (zeros for the others) and its
@@ -197,25 +212,23 @@ class VectorNavigationEnv:
     def reset(self, seed=None, options=None):
         if options is not None:
             raise ValueError("options: a vector environment takes none")
-        observations = self._core.reset(_check_seed(seed))
+        observations = self._open_core().reset(_check_seed(seed))
         return observations, {}
 
     def step(self, actions):
-        observations, rewards, terminated, truncated, finals = self._core.step(
+        core = self._open_core()
+        observations, rewards, terminated, truncated, finals = core.step(
             _numbers("actions", actions))
         ended = terminated | truncated
         infos = {"_final": ended}
         if ended.any():
             infos["final_observation"] = finals
-            infos["final_info"] = [self._core.final_metrics(i) if ended[i] else None
+            infos["final_info"] = [core.final_metrics(i) if ended[i] else None
                                    for i in range(self.num_envs)]
         return observations, rewards, terminated, truncated, infos
 
-    def close(self):
-        self._core = None
 
-
-class DialogueEnv:
+class DialogueEnv(_Closable):
     """dialogue_node's rl_env mode (docs/dialogue.md) in-process: the simulated patient and
     companion answer ARI's dialogue acts. Observations and infos are dicts with the fields of
     /sim/dialogue/step's response; an action is a dict {"acts": [...], "addressees": [...],
@@ -235,12 +248,14 @@ class DialogueEnv:
     def reset(self, seed=None, options=None):
         if options is not None:
             raise ValueError("options: the dialogue environment takes none")
+        core = self._open_core()
         seed = _check_seed(seed)
         seed = self._next_seed if seed is None else seed
         self._next_seed = (seed + 1) % SEED_LIMIT
-        return self._core.reset(seed)
+        return core.reset(seed)
 
     def step(self, action):
+        core = self._open_core()
         if isinstance(action, dict):
             unknown = sorted(set(action) - {"acts", "addressees", "text"})
             if unknown:
@@ -259,10 +274,7 @@ class DialogueEnv:
                 raise ValueError(f"action.{name}: expected a list of strings, got {values!r}")
         if not isinstance(text, str):
             raise ValueError(f"action.text: expected a string, got {text!r}")
-        return self._core.step(list(acts), list(addressees), text)
-
-    def close(self):
-        self._core = None
+        return core.step(list(acts), list(addressees), text)
 
 
 def load_policy(path):

@@ -2,14 +2,19 @@
 // core, with SocialMPC and with a non-social baseline (the same MPC without personal and group
 // spaces); writes one CSV row per episode and prints a summary table per episode type.
 // Perception is ground truth (every person and group known exactly, no errors, no occlusion).
+// With --csv, each finished episode's record goes to CSV.active (core::ProgressJournal) and the CSV
+// is written when all are done; SIGINT or SIGTERM stops between two steps, drops the episode under
+// way and exits with 128 + the signal's number; --resume goes on from CSV.active.
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,12 +23,15 @@
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/core/progress_journal.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/learning/ground_truth.hpp"
 #include "ari_social_sim/learning/navigation_episodes.hpp"
 #include "ari_social_sim/navigation/episode_scorer.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/scenario/ari_observation.hpp"
+#include "ari_social_sim/scenario/batch_plan.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 
 namespace {
@@ -43,7 +51,8 @@ constexpr core::IntegerOption kSeed{"--seed", 0, INT64_MAX};
 std::string usage() {
   return R"(Usage:
   nav_benchmark [--episodes N] [--seed S] [--types T1,T2,...] [--controllers social,baseline]
-                [--solver lbfgs|slsqp|mppi] [--config FILE] [--csv FILE [--overwrite]]
+                [--solver lbfgs|slsqp|mppi] [--config FILE]
+                [--csv FILE [--overwrite | --resume]]
                 [--worlds DIR] [--profile ignore|yield|curious|avoid|block] [--trace]
 
 Runs N seeded episodes of each type with each controller, on the world core in one process,
@@ -64,7 +73,12 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
   --solver NAME     overrides the config's mpc.solver
   --config FILE     SocialMPC parameters (default: the package's config/social_mpc.yaml)
   --csv FILE        writes one row per episode (default: no CSV); checked before the first
-                    episode, refused if it exists unless --overwrite, written when all have run
+                    episode, refused if it exists unless --overwrite, written when all have run;
+                    until then the finished episodes are kept in FILE.active
+  --resume          finishes a run stopped by a signal or a crash from FILE.active: refused
+                    unless the options, the --config file and the worlds are those of that run;
+                    the CSV is byte for byte that of an uninterrupted run but for the solve
+                    times (CPU time, never the same twice)
   --worlds DIR      folder of the shipped worlds (default: the package's worlds/)
   --profile NAME    how every person of every episode reacts to ARI: ignore (default, the
                     episodes as they always were), yield, curious, avoid or block
@@ -72,8 +86,12 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
   --trace           print every replanning cycle (pose, goal, command, cost by term) to stderr
   --help            print this text
 
+SIGINT (Ctrl-C) or SIGTERM stops the run between two steps: the episode under way is dropped,
+the finished ones stay in FILE.active (nothing is kept without --csv), and the same command with
+--resume finishes it. A second Ctrl-C kills at once.
+
 Exit status: 0 after a complete run, 2 on bad arguments or configuration, 1 when the CSV cannot
-be written.
+be written, 130 after SIGINT and 143 after SIGTERM.
 )";
 }
 
@@ -89,6 +107,7 @@ struct Options {
   world::ReactionProfile profile{world::ReactionProfile::kIgnore};
   bool trace{false};
   bool overwrite{false};
+  bool resume{false};
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -123,10 +142,13 @@ Options parse(int argc, char** argv) {
       options.trace = true;
       continue;
     }
-    if (arg == "--overwrite") {
-      options.overwrite = true;
+    if (arg == "--overwrite" || arg == "--resume") {
+      (arg == "--overwrite" ? options.overwrite : options.resume) = true;
       continue;
     }
+    core::check_known_option(
+        arg, {"--episodes", "--seed", "--types", "--controllers", "--solver", "--config", "--csv",
+              "--worlds", "--profile", "--trace", "--overwrite", "--resume", "--help"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--episodes") {
       options.episodes = static_cast<int>(kEpisodes.parse(value));
@@ -166,19 +188,21 @@ Options parse(int argc, char** argv) {
       options.csv = value;
     } else if (arg == "--worlds") {
       options.worlds = value;
-    } else if (arg == "--profile") {
-      options.profile = core::parse_choice(value, world::kReactionProfiles, arg);
     } else {
-      throw core::ConfigError(arg + ": unknown option (see --help)");
+      options.profile = core::parse_choice(value, world::kReactionProfiles, arg);
     }
   }
   // Paths before any episode: a typo must not cost the run.
   core::check_input_file("--config", options.config);
   core::check_input_directory("--worlds", options.worlds);
+  if (options.overwrite && options.resume) {
+    throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
+  }
   if (!options.csv.empty()) {
-    core::check_output_file("--csv", options.csv, options.overwrite);
-  } else if (options.overwrite) {
-    throw core::ConfigError("--overwrite: expected --csv too");
+    core::check_output_file("--csv", options.csv, options.overwrite || options.resume);
+  } else if (options.overwrite || options.resume) {
+    throw core::ConfigError(std::string(options.overwrite ? "--overwrite" : "--resume") +
+                            ": expected --csv too");
   }
   return options;
 }
@@ -272,9 +296,11 @@ void print_trace(const world::Simulation& sim, const navigation::Navigator& navi
   std::fprintf(stderr, "\n");
 }
 
-EpisodeRecord run_episode(NavigationEpisode episode, const navigation::NavigationConfig& config,
-                          const std::string& controller, world::ReactionProfile profile,
-                          bool trace) {
+// Runs one episode to its record; nothing when a stop signal came first.
+std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
+                                         const navigation::NavigationConfig& config,
+                                         const std::string& controller,
+                                         world::ReactionProfile profile, bool trace) {
   world::Simulation& sim = *episode.simulation;
   // Every person reacts alike; with kIgnore nothing is set, so the episodes stay as they were.
   if (profile != world::ReactionProfile::kIgnore) {
@@ -314,6 +340,9 @@ EpisodeRecord run_episode(NavigationEpisode episode, const navigation::Navigatio
             [](const auto& a, const auto& b) { return a.start_s < b.start_s; });
   record.outcome = "timeout";
   while (sim.time_s() < episode.time_limit_s) {
+    if (core::g_stop_signal != 0) {
+      return std::nullopt;
+    }
     while (next_walk < episode.walks.size() && episode.walks[next_walk].start_s <= sim.time_s()) {
       sim.set_human_goal(episode.walks[next_walk].human, episode.walks[next_walk].goal);
       ++next_walk;
@@ -505,53 +534,356 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
   }
 }
 
-}  // namespace
+// One run of the plan: episode `index` of a type with a controller, in the CSV's order.
+struct PlannedRun {
+  EpisodeType type;
+  int index;
+  std::string controller;
 
-int main(int argc, char** argv) {
+  // The run's key in the progress file, e.g. `pose/3/social`.
+  std::string key() const {
+    return std::string(learning::type_name(type)) + "/" + std::to_string(index) + "/" + controller;
+  }
+};
+
+std::vector<PlannedRun> plan_of(const Options& options) {
+  std::vector<PlannedRun> plan;
+  for (EpisodeType type : options.types) {
+    for (int i = 0; i < options.episodes; ++i) {
+      for (const std::string& controller : options.controllers) {
+        plan.push_back({type, i, controller});
+      }
+    }
+  }
+  return plan;
+}
+
+// The progress file's escapes for a field that may hold anything: tabs separate fields and a
+// newline ends the record.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    out += c == '\\' ? "\\\\" : c == '\t' ? "\\t" : c == '\n' ? "\\n" : std::string(1, c);
+  }
+  return out;
+}
+
+std::string unescaped(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+    if (text[i] == '\\' && (next == '\\' || next == 't' || next == 'n')) {
+      out += next == 't' ? '\t' : next == 'n' ? '\n' : '\\';
+      ++i;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
+// Every number with the digits that read back to the same double: a resumed run's CSV and table
+// come from the same values as an uninterrupted run's.
+std::string exact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.17g", value);
+  return text;
+}
+
+std::string exact_list(const std::vector<double>& values) {
+  std::string out;
+  for (double value : values) {
+    out += (out.empty() ? "" : " ") + exact(value);
+  }
+  return out;
+}
+
+// A record as one line of tab-separated fields, for the progress file.
+std::string record_line(const EpisodeRecord& r) {
+  const navigation::EpisodeScore& s = r.score;
+  const std::vector<std::string> fields = {r.type,
+                                           r.controller,
+                                           r.profile,
+                                           r.outcome,
+                                           std::to_string(r.index),
+                                           std::to_string(r.seed),
+                                           r.success ? "1" : "0",
+                                           exact(r.time_to_goal_s),
+                                           exact(r.shortest_path_m),
+                                           exact(s.duration_s),
+                                           exact(s.path_length_m),
+                                           std::to_string(s.person_collisions),
+                                           std::to_string(s.static_collisions),
+                                           exact(s.min_person_distance_m),
+                                           exact(s.personal_space_share),
+                                           std::to_string(s.ospace_intrusions),
+                                           exact(s.mean_abs_jerk),
+                                           exact(r.final_position_error_m),
+                                           exact(r.final_heading_error_rad),
+                                           std::to_string(r.gcff_includes_ari),
+                                           exact_list(r.solve_times_s),
+                                           exact_list(r.solve_wall_times_s),
+                                           escaped(r.reason)};
+  std::string line;
+  for (const std::string& field : fields) {
+    line += (line.empty() ? "" : "\t") + field;
+  }
+  return line;
+}
+
+// Reads record_line's fields in its order, each a number unless read as text.
+class FieldReader {
+ public:
+  FieldReader(const std::string& line, std::string source) : source_(std::move(source)) {
+    // Not getline: it drops an empty last field (an empty reason).
+    for (size_t start = 0;;) {
+      const size_t tab = line.find('\t', start);
+      fields_.push_back(line.substr(start, tab - start));
+      if (tab == std::string::npos) {
+        break;
+      }
+      start = tab + 1;
+    }
+  }
+  std::string text() { return at(next_++); }
+  double number() {
+    const std::string& field = at(next_++);
+    char* end = nullptr;
+    const double value = std::strtod(field.c_str(), &end);
+    if (field.empty() || *end != '\0') {
+      throw core::ConfigError(source_ + ": field " + std::to_string(next_) +
+                              ": expected a number, got '" + field + "'");
+    }
+    return value;
+  }
+  int integer() { return static_cast<int>(number()); }
+  std::vector<double> numbers() {
+    std::vector<double> values;
+    std::stringstream in(at(next_++));
+    for (std::string item; in >> item;) {
+      values.push_back(std::strtod(item.c_str(), nullptr));
+    }
+    return values;
+  }
+
+ private:
+  const std::string& at(size_t i) const {
+    if (i >= fields_.size()) {
+      throw core::ConfigError(source_ + ": expected 23 tab-separated fields, got " +
+                              std::to_string(fields_.size()));
+    }
+    return fields_[i];
+  }
+
+  std::string source_;
+  std::vector<std::string> fields_;
+  size_t next_{0};
+};
+
+EpisodeRecord parse_record(const std::string& line, const std::string& source) {
+  FieldReader in(line, source);
+  EpisodeRecord r;
+  r.type = in.text();
+  r.controller = in.text();
+  r.profile = in.text();
+  r.outcome = in.text();
+  r.index = in.integer();
+  r.seed = static_cast<uint64_t>(std::stoull(in.text()));
+  r.success = in.integer() != 0;
+  r.time_to_goal_s = in.number();
+  r.shortest_path_m = in.number();
+  r.score.duration_s = in.number();
+  r.score.path_length_m = in.number();
+  r.score.person_collisions = in.integer();
+  r.score.static_collisions = in.integer();
+  r.score.min_person_distance_m = in.number();
+  r.score.personal_space_share = in.number();
+  r.score.ospace_intrusions = in.integer();
+  r.score.mean_abs_jerk = in.number();
+  r.final_position_error_m = in.number();
+  r.final_heading_error_rad = in.number();
+  r.gcff_includes_ari = in.integer();
+  r.solve_times_s = in.numbers();
+  r.solve_wall_times_s = in.numbers();
+  r.reason = unescaped(in.text());
+  return r;
+}
+
+// The progress file's first line: every option that changes a record, and the digests of the
+// files the episodes read.
+std::string progress_settings(const Options& options) {
+  std::string types, controllers;
+  for (EpisodeType type : options.types) {
+    types += (types.empty() ? "" : ",") + std::string(learning::type_name(type));
+  }
+  for (const std::string& controller : options.controllers) {
+    controllers += (controllers.empty() ? "" : ",") + controller;
+  }
+  return "nav_benchmark episodes=" + std::to_string(options.episodes) +
+         " seed=" + std::to_string(options.seed) + " types=" + types +
+         " controllers=" + controllers + " solver=" + options.solver +
+         " profile=" + world::reaction_name(options.profile) +
+         " config_digest=" + scenario::digest_files({options.config}) +
+         " worlds_digest=" + scenario::digest_files(scenario::files_under(options.worlds, ".yaml"));
+}
+
+// A checked benchmark, ready to go.
+struct Benchmark {
   Options options;
   std::map<std::string, navigation::NavigationConfig> configs;
   learning::EpisodeWorlds worlds;
-  try {
-    options = parse(argc, argv);
-    for (const std::string& controller : options.controllers) {
-      configs.emplace(controller, controller_config(options, controller));
+  std::optional<core::ProgressJournal> journal;  // with --csv, unless the CSV is complete
+  std::vector<EpisodeRecord> records;            // --resume: those of the earlier run
+  bool complete_already{false};                  // --resume of a run that wrote its CSV
+};
+
+// --resume: the records of the progress file, which must be the plan's first runs.
+void keep_earlier_records(Benchmark& benchmark) {
+  const core::ProgressJournal& journal = *benchmark.journal;
+  if (journal.was_cut_short()) {
+    std::cerr << "--resume: " << journal.path()
+              << " ended in an episode cut short (a run killed while writing it): removed it\n";
+  }
+  const std::vector<PlannedRun> plan = plan_of(benchmark.options);
+  for (size_t k = 0; k < journal.kept().size(); ++k) {
+    const core::ProgressJournal::Entry& entry = journal.kept()[k];
+    if (k >= plan.size() || entry.key != plan[k].key()) {
+      throw core::ConfigError("--resume: " + journal.path() + ": record " + std::to_string(k + 1) +
+                              " is " + entry.key + ", expected " +
+                              (k < plan.size() ? plan[k].key() : "none"));
     }
-    worlds = learning::EpisodeWorlds::load(options.worlds);
+    benchmark.records.push_back(parse_record(entry.lines.substr(0, entry.lines.size() - 1),
+                                             journal.path() + ": " + entry.key));
+  }
+}
+
+// With --csv: the progress file of an earlier run resumed, or a new one. Throws core::ConfigError.
+void open_progress(Benchmark& benchmark) {
+  const Options& options = benchmark.options;
+  const std::string progress = options.csv + ".active";
+  const std::string settings = progress_settings(options);
+  const bool progress_there = std::filesystem::exists(progress);
+  if (options.resume && progress_there) {
+    benchmark.journal = core::ProgressJournal::resume("--resume", progress, settings);
+    keep_earlier_records(benchmark);
+    return;
+  }
+  if (options.resume && std::filesystem::exists(options.csv)) {
+    benchmark.complete_already = true;
+    return;
+  }
+  if (progress_there && !options.overwrite) {
+    throw core::ConfigError("--csv: " + progress +
+                            " holds the episodes of an interrupted run: pass --resume to finish "
+                            "it or --overwrite to start again");
+  }
+  if (options.resume) {
+    std::cerr << "--resume: " << progress << " not found: starting the run\n";
+  }
+  benchmark.journal = core::ProgressJournal::start("--csv", progress, settings);
+}
+
+// Checks the options and files before any episode. Throws core::Error.
+Benchmark prepare(int argc, char** argv) {
+  Benchmark benchmark;
+  benchmark.options = parse(argc, argv);
+  for (const std::string& controller : benchmark.options.controllers) {
+    benchmark.configs.emplace(controller, controller_config(benchmark.options, controller));
+  }
+  benchmark.worlds = learning::EpisodeWorlds::load(benchmark.options.worlds);
+  if (!benchmark.options.csv.empty()) {
+    open_progress(benchmark);
+  }
+  return benchmark;
+}
+
+// After a stop signal: what is kept, and how to go on. Returns the exit code.
+int report_stop(const Benchmark& benchmark, size_t planned, const PlannedRun& dropped) {
+  const int signal = core::g_stop_signal;
+  std::cerr << "nav_benchmark: interrupted by " << core::stop_signal_name(signal) << " after "
+            << benchmark.records.size() << " of " << planned << " episodes";
+  if (benchmark.journal) {
+    std::cerr << ": their records are in " << benchmark.journal->path() << " ("
+              << benchmark.options.csv << " is written once every episode is done)";
+  }
+  std::cerr << "; the episode under way (" << dropped.key() << ") was dropped";
+  if (benchmark.journal) {
+    std::cerr << "; rerun the same command with --resume to finish\n";
+  } else {
+    std::cerr << "; nothing was kept (no --csv)\n";
+  }
+  return core::stopped_exit_code(signal);
+}
+
+// Runs the planned episodes that have no record yet, keeping each in the progress file, until done
+// or stopped by a signal; returns 0, or the exit code to end with. Throws core::Error when the
+// progress file cannot be written.
+int run_episodes(Benchmark& benchmark) {
+  const Options& options = benchmark.options;
+  const std::vector<PlannedRun> plan = plan_of(options);
+  if (!benchmark.records.empty()) {
+    std::cerr << "--resume: " << benchmark.records.size() << " of " << plan.size()
+              << " episodes are in " << benchmark.journal->path() << "; running the other "
+              << plan.size() - benchmark.records.size() << "\n";
+  }
+  for (size_t k = benchmark.records.size(); k < plan.size(); ++k) {
+    const PlannedRun& run = plan[k];
+    std::optional<EpisodeRecord> record;
+    try {
+      record = run_episode(
+          learning::make_episode(run.type, run.index, options.seed, benchmark.worlds),
+          benchmark.configs.at(run.controller), run.controller, options.profile, options.trace);
+    } catch (const core::Error& e) {
+      std::cerr << "nav_benchmark: " << learning::type_name(run.type) << " episode " << run.index
+                << ": " << e.what() << "\n";
+      return kUsageError;
+    }
+    if (!record) {
+      return report_stop(benchmark, plan.size(), run);
+    }
+    if (benchmark.journal) {
+      benchmark.journal->add(run.key(), record_line(*record) + "\n");
+    }
+    benchmark.records.push_back(*record);
+    std::fprintf(stderr, "%s %d %s: %s %s\n", record->type.c_str(), record->index,
+                 record->controller.c_str(), record->outcome.c_str(), record->reason.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Benchmark benchmark;
+  try {
+    benchmark = prepare(argc, argv);
   } catch (const core::Error& e) {
     std::cerr << "nav_benchmark: " << e.what() << "\n";
     return kUsageError;
   }
-  std::vector<EpisodeRecord> records;
+  if (benchmark.complete_already) {
+    std::printf("nothing to do: %s is complete (no %s.active to resume)\n",
+                benchmark.options.csv.c_str(), benchmark.options.csv.c_str());
+    return 0;
+  }
+  core::install_stop_handler();
   const auto started = std::chrono::steady_clock::now();
-  for (EpisodeType type : options.types) {
-    for (int i = 0; i < options.episodes; ++i) {
-      for (const std::string& controller : options.controllers) {
-        try {
-          records.push_back(run_episode(learning::make_episode(type, i, options.seed, worlds),
-                                        configs.at(controller), controller, options.profile,
-                                        options.trace));
-        } catch (const core::Error& e) {
-          std::cerr << "nav_benchmark: " << learning::type_name(type) << " episode " << i << ": "
-                    << e.what() << "\n";
-          return kUsageError;
-        }
-        const EpisodeRecord& r = records.back();
-        std::fprintf(stderr, "%s %d %s: %s %s\n", r.type.c_str(), r.index, r.controller.c_str(),
-                     r.outcome.c_str(), r.reason.c_str());
-      }
+  try {
+    const int stopped = run_episodes(benchmark);
+    if (stopped != 0) {
+      return stopped;
     }
+    if (benchmark.journal) {
+      write_csv(benchmark.options.csv, benchmark.records);
+      benchmark.journal->remove();
+    }
+  } catch (const core::Error& e) {
+    std::cerr << "nav_benchmark: " << e.what() << "\n";
+    return 1;
   }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (!options.csv.empty()) {
-    try {
-      write_csv(options.csv, records);
-    } catch (const core::Error& e) {
-      std::cerr << "nav_benchmark: " << e.what() << "\n";
-      return 1;
-    }
-  }
-  print_summary(records, options);
-  std::printf("%zu episodes in %.0f s of wall time\n", records.size(), wall_s);
+  print_summary(benchmark.records, benchmark.options);
+  std::printf("%zu episodes in %.0f s of wall time\n", benchmark.records.size(), wall_s);
   return 0;
 }

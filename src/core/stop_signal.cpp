@@ -1,0 +1,29 @@
+#include "ari_social_sim/core/stop_signal.hpp"
+
+namespace ari_social_sim::core {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+namespace {
+
+void on_stop_signal(int signal) {
+  g_stop_signal = signal;
+}
+
+}  // namespace
+
+void install_stop_handler() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  // sigaction replaces SIG_IGN too, unlike the `if (signal(...) != SIG_IGN)` idiom.
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+const char* stop_signal_name(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+}
+
+}  // namespace ari_social_sim::core
