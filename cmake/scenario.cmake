@@ -151,7 +151,7 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ${catkin_LIBRARIES})
   target_include_directories(test_run_episodes PRIVATE ${catkin_INCLUDE_DIRS})
   target_compile_definitions(test_run_episodes PRIVATE
-    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>")
+    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>" ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   add_dependencies(test_run_episodes run_episodes)
 endif()
 
