@@ -57,10 +57,14 @@ def first_seed_and_limit(name):
 def batch_runs(name, seeds, first_seed):
     """{seed: (success, duration_s)} of run_episodes' episodes."""
     with tempfile.TemporaryDirectory(prefix="live_vs_batch.") as out:
-        subprocess.run(["rosrun", "ari_social_sim", "run_episodes", "--scenario", name,
-                        "--episodes", str(seeds), "--seed", str(first_seed), "--no-bags",
-                        "--out", out], check=True, stdout=subprocess.DEVNULL,
-                       stderr=subprocess.DEVNULL)
+        run = subprocess.run(["rosrun", "ari_social_sim", "run_episodes", "--scenario", name,
+                              "--episodes", str(seeds), "--seed", str(first_seed), "--no-bags",
+                              "--out", out], stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, text=True)
+        # 1: every episode ran and some failed, which the comparison counts; anything else is
+        # an error.
+        if run.returncode not in (0, 1):
+            raise RuntimeError("run_episodes exited with %d: %s" % (run.returncode, run.stderr))
         with open(os.path.join(out, name + ".csv")) as table:
             return {int(row["seed"]): (row["success"] == "1", float(row["duration_s"]))
                     for row in csv.DictReader(table)}

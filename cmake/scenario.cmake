@@ -122,6 +122,12 @@ if(CATKIN_ENABLE_TESTING)
     group_detection_node social_mpc_node dialogue_node)
   add_rostest(test/integration/scenario_suite.test DEPENDENCIES world_node hri_perception_node
     group_detection_node social_mpc_node dialogue_node scenario_node run_episodes)
+  # scripts/run_launch.py (README, "Exit codes"): its mapping, then group_discussion through it
+  # with a forced time limit (1), a node refusing its parameter (2), a bad launch argument (2).
+  catkin_run_tests_target(pytest run_launch pytest-run_launch.xml
+    COMMAND "${CMAKE_COMMAND} -E env PYTHONPATH=${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_PYTHON_DESTINATION}:${PROJECT_SOURCE_DIR}/python /usr/bin/python3 -m pytest -q -p no:cacheprovider --junitxml=${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-run_launch.xml ${PROJECT_SOURCE_DIR}/test/launch"
+    DEPENDENCIES world_node hri_perception_node group_detection_node social_mpc_node
+      dialogue_node scenario_node)
   # The same scenario with each kind of perception (README, "Swapping in real perception").
   foreach(perception_args "perception:=sim" "perception:=sim person_ids:=random"
                           "perception:=detectors")
@@ -151,7 +157,7 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ${catkin_LIBRARIES})
   target_include_directories(test_run_episodes PRIVATE ${catkin_INCLUDE_DIRS})
   target_compile_definitions(test_run_episodes PRIVATE
-    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>")
+    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>" ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   add_dependencies(test_run_episodes run_episodes)
 endif()
 

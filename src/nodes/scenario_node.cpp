@@ -584,6 +584,7 @@ int main(int argc, char** argv) {
   try {
     config = scenario::ScenarioRunConfig::from_yaml(nodes::read_private_params(private_handle));
     scenario = scenario::load_scenario_file(config.scenario);
+    scenario.script.time_limit_s = config.script_time_limit_for(scenario.script.time_limit_s);
     if (scenario.script.interfaces().dialogue) {
       if (config.dialogue_config.empty()) {
         config.dialogue_config =

@@ -114,14 +114,23 @@ std::string csv_header() {
          "navigation_goals,navigation_failures,utterances,ari_utterances,wall_time_s";
 }
 
+EpisodeCsvRow EpisodeCsvRow::of(const EpisodeSummary& s) {
+  return {s.scenario,
+          s.episode,
+          s.seed,
+          s.finished && s.outcome.success,
+          s.finished ? s.outcome.reason : "did not finish",
+          s.outcome.final_state};
+}
+
 std::string csv_row(const EpisodeSummary& s) {
   const EpisodeMetrics& m = s.metrics;
-  return quoted(s.scenario) + "," + std::to_string(s.episode) + "," + std::to_string(s.seed) + "," +
-         (s.finished && s.outcome.success ? "1" : "0") + "," +
-         quoted(s.finished ? s.outcome.reason : "did not finish") + "," +
-         quoted(s.outcome.final_state) + "," + number(s.outcome.end_time_s) + "," +
-         quoted(s.states) + "," + number(m.ari_path_length_m) + "," + number(m.min_clearance_m) +
-         "," + std::to_string(m.contacts) + "," + number(m.personal_space_time_s) + "," +
+  const EpisodeCsvRow row = EpisodeCsvRow::of(s);
+  return quoted(row.scenario) + "," + std::to_string(row.episode) + "," + std::to_string(row.seed) +
+         "," + (row.success ? "1" : "0") + "," + quoted(row.reason) + "," +
+         quoted(row.final_state) + "," + number(s.outcome.end_time_s) + "," + quoted(s.states) +
+         "," + number(m.ari_path_length_m) + "," + number(m.min_clearance_m) + "," +
+         std::to_string(m.contacts) + "," + number(m.personal_space_time_s) + "," +
          number(m.navigation_time_s) + "," + std::to_string(m.navigation_goals) + "," +
          std::to_string(m.navigation_failures) + "," + std::to_string(s.utterances) + "," +
          std::to_string(s.ari_utterances) + "," + number(s.wall_time_s, 4);
@@ -160,6 +169,12 @@ EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& 
       throw core::ConfigError(where + "expected an episode and a seed as integers, got '" +
                               record.fields[1] + "' and '" + record.fields[2] + "'");
     }
+    if (record.fields[3] != "0" && record.fields[3] != "1") {
+      throw core::ConfigError(where + "success: expected 0 or 1, got '" + record.fields[3] + "'");
+    }
+    row.success = record.fields[3] == "1";
+    row.reason = record.fields[4];
+    row.final_state = record.fields[5];
     if (!episodes.insert(row.episode).second) {
       throw core::ConfigError(where + "episode " + std::to_string(row.episode) +
                               " has a row already");

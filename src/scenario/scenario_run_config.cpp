@@ -13,6 +13,10 @@ ScenarioRunConfig ScenarioRunConfig::from_yaml(const core::YamlMap& map) {
   return core::read_fields<ScenarioRunConfig>(map);
 }
 
+double ScenarioRunConfig::script_time_limit_for(double file_time_limit_s) const {
+  return time_limit_s.value_or(file_time_limit_s);
+}
+
 double ScenarioRunConfig::wall_time_limit_for(double script_time_limit_s) const {
   return wall_time_limit_s ? *wall_time_limit_s : 3.0 * script_time_limit_s + server_timeout_s;
 }

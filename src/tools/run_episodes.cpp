@@ -13,7 +13,9 @@
 // (checks the settings, keeps the rows there and runs the missing episodes). Each bag is written
 // as NAME_SEED.bag.active and renamed when complete; SIGINT or SIGTERM stops between two steps,
 // drops the episode under way (its .active file deleted, no row) and exits with 128 + the
-// signal's number. Exit code 2 on bad input, 1 when writing fails (docs/scenario.md, section 6).
+// signal's number. Exit code 0 when every episode of the CSV succeeded, 1 when any failed (the
+// first few named on standard error), 2 on bad input, 3 when writing fails (docs/scenario.md,
+// section 6).
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,6 +48,15 @@ namespace fs = std::filesystem;
 // SIGINT/SIGTERM, shared with the other batch tools (core/stop_signal.hpp).
 using core::g_stop_signal;
 using core::install_stop_handler;
+
+// Exit codes (docs/scenario.md, section 6); a stop signal gives 128 + its number.
+constexpr int kAllSucceededExit = 0;
+constexpr int kEpisodeFailedExit = 1;
+constexpr int kBadInputExit = 2;
+constexpr int kWriteFailedExit = 3;
+
+// How many failed episodes the end of a run names: enough to start looking, few enough to read.
+constexpr size_t kFailuresNamed = 5;
 
 struct Options {
   std::string scenario;
@@ -328,16 +339,44 @@ Batch prepare(int argc, char** argv) {
   return batch;
 }
 
+// The exit code of a run that went to its end: 0 when every row of the CSV (kept by --resume or
+// new) is a success, else 1 after saying how many failed and, for the first few, why; a user or a
+// job array sees a failed episode without reading the CSV.
+int verdict(const std::vector<scenario::EpisodeCsvRow>& rows, const std::string& csv) {
+  std::vector<const scenario::EpisodeCsvRow*> failed;
+  for (const scenario::EpisodeCsvRow& row : rows) {
+    if (!row.success) {
+      failed.push_back(&row);
+    }
+  }
+  if (failed.empty()) {
+    return kAllSucceededExit;
+  }
+  std::cerr << "run_episodes: " << failed.size() << " of " << rows.size() << " episodes in " << csv
+            << " failed:\n";
+  for (size_t i = 0; i < std::min(failed.size(), kFailuresNamed); ++i) {
+    const scenario::EpisodeCsvRow& row = *failed[i];
+    std::cerr << "  seed " << row.seed << ": failed "
+              << (row.final_state.empty() ? "before the script started"
+                                          : "in state " + row.final_state)
+              << ": " << row.reason << "\n";
+  }
+  if (failed.size() > kFailuresNamed) {
+    std::cerr << "  and " << failed.size() - kFailuresNamed
+              << " more (the rows with success 0 in the CSV)\n";
+  }
+  return kEpisodeFailedExit;
+}
+
 // Runs the planned episodes that have no row yet, each to its bag and then its row, until done or
 // stopped by a signal; returns the exit code.
 int run(Batch& batch) {
   const Options& options = batch.options;
   const OutputPaths& paths = batch.paths;
-  std::vector<uint64_t> row_seeds;  // every row in the CSV, kept or new
+  std::vector<scenario::EpisodeCsvRow> rows = batch.kept;  // every row in the CSV, kept or new
   std::set<uint64_t> done;
   for (const scenario::EpisodeCsvRow& row : batch.kept) {
     done.insert(row.episode);
-    row_seeds.push_back(row.seed);
   }
   std::vector<uint64_t> episodes;
   for (uint64_t index : options.plan.episode_indices()) {
@@ -353,7 +392,7 @@ int run(Batch& batch) {
   if (episodes.empty()) {
     std::printf("%s: nothing to do, all %zu episodes are in %s\n", paths.name.c_str(), planned,
                 paths.csv().c_str());
-    return 0;
+    return verdict(rows, paths.csv());
   }
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
@@ -396,16 +435,16 @@ int run(Batch& batch) {
         throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
                           " failed");
       }
-      row_seeds.push_back(seed);
+      rows.push_back(scenario::EpisodeCsvRow::of(summary));
       successes += summary.outcome.success ? 1 : 0;
       sim_time_s += summary.outcome.end_time_s;
     } catch (const core::Error& e) {
-      // A scene that cannot be built is bad input (2); a file that cannot be written is not (1).
+      // A scene that cannot be built is bad input; a file that cannot be written is not.
       const bool bad_input = dynamic_cast<const core::ConfigError*>(&e) != nullptr ||
                              dynamic_cast<const core::RequestError*>(&e) != nullptr;
       std::cerr << "\nrun_episodes: episode " << index << " (seed " << seed << "): " << e.what()
                 << "\n";
-      return bad_input ? 2 : 1;
+      return bad_input ? kBadInputExit : kWriteFailedExit;
     }
     const std::string line =
         scenario::progress_line(ran + 1, episodes.size(), seconds_since(start));
@@ -417,12 +456,12 @@ int run(Batch& batch) {
   // Stopped: what is kept, and how to go on.
   if (g_stop_signal != 0) {
     size_t bags = 0;
-    for (uint64_t seed : row_seeds) {
-      bags += fs::exists(paths.bag(seed)) ? 1 : 0;
+    for (const scenario::EpisodeCsvRow& row : rows) {
+      bags += fs::exists(paths.bag(row.seed)) ? 1 : 0;
     }
     std::cerr << "run_episodes: interrupted by " << (g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
-              << " after " << row_seeds.size() << " of " << planned
-              << " episodes: " << row_seeds.size() << " rows in " << paths.csv();
+              << " after " << rows.size() << " of " << planned << " episodes: " << rows.size()
+              << " rows in " << paths.csv();
     if (options.bags) {
       std::cerr << ", " << bags << " bags";
     }
@@ -440,7 +479,7 @@ int run(Batch& batch) {
       paths.name.c_str(), ran, successes, sim_time_s, wall_s,
       wall_s > 0 ? sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * ran / wall_s : 0.0,
       paths.csv().c_str());
-  return 0;
+  return verdict(rows, paths.csv());
 }
 
 }  // namespace
@@ -452,10 +491,10 @@ int main(int argc, char** argv) {
   } catch (const core::Error& e) {
     std::cerr << "run_episodes: " << e.what() << "\n";
     print_usage();
-    return 2;
+    return kBadInputExit;
   } catch (const fs::filesystem_error& e) {
     std::cerr << "run_episodes: --out: " << e.what() << "\n";
-    return 2;
+    return kBadInputExit;
   }
   install_stop_handler();
   return run(batch);

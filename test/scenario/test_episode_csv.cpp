@@ -58,6 +58,9 @@ TEST(EpisodeCsv, ReadsBackTheRowsItWrote) {
   EXPECT_EQ(contents.rows[1].scenario, "join_group");
   EXPECT_EQ(contents.rows[1].episode, 2u);
   EXPECT_EQ(contents.rows[1].seed, 102u);
+  EXPECT_FALSE(contents.rows[1].success);
+  EXPECT_EQ(contents.rows[1].reason, "no \"space\",\nanywhere");
+  EXPECT_EQ(contents.rows[1].final_state, "approach");
   EXPECT_EQ(contents.rows[2].episode, 1u);
   EXPECT_EQ(contents.complete_bytes, text.size());
   EXPECT_FALSE(contents.partial_row);
@@ -91,6 +94,10 @@ TEST(EpisodeCsv, ForeignOrDamagedRowsAreNamed) {
   bad_seed.replace(bad_seed.find(",101,"), 5, ",-1,");
   world::test::expect_config_error([&] { read_episode_csv(header + bad_seed, "x.csv"); }, "x.csv:2",
                                    {"'1' and '-1'"});
+  std::string bad_success = row_of(1);
+  bad_success.replace(bad_success.find(",101,0,"), 7, ",101,yes,");
+  world::test::expect_config_error([&] { read_episode_csv(header + bad_success, "x.csv"); },
+                                   "x.csv:2", {"success: expected 0 or 1, got 'yes'"});
   world::test::expect_config_error(
       [&] { read_episode_csv(header + row_of(3) + row_of(3), "x.csv"); }, "x.csv:4",
       {"episode 3 has a row already"});

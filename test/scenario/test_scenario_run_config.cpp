@@ -34,6 +34,11 @@ TEST(ScenarioRunConfig, WallTimeLimitDefaultsToThreeScriptLimitsPlusTheServerWai
   EXPECT_DOUBLE_EQ(read("{scenario: a, world_timeout: 2.5}").world_timeout_s, 2.5);
 }
 
+TEST(ScenarioRunConfig, TimeLimitReplacesTheScriptsOnlyWhenSet) {
+  EXPECT_DOUBLE_EQ(read("{scenario: a.yaml}").script_time_limit_for(120.0), 120.0);
+  EXPECT_DOUBLE_EQ(read("{scenario: a.yaml, time_limit: 3}").script_time_limit_for(120.0), 3.0);
+}
+
 TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
   const std::string source = "/scenario_node parameter";
   world::test::expect_config_error([] { read("{seed: 1}"); }, source, {"scenario", "required"});
@@ -41,6 +46,10 @@ TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
                                    {"seed", "[-1, 2.14748e+09]", "-2"});
   world::test::expect_config_error([] { read("{scenario: a, server_timeout: 0}"); }, source,
                                    {"server_timeout", "> 0", "0"});
+  world::test::expect_config_error([] { read("{scenario: a, time_limit: 0}"); }, source,
+                                   {"time_limit", "> 0", "0"});
+  world::test::expect_config_error([] { read("{scenario: a, time_limit: abc}"); }, source,
+                                   {"time_limit", "abc"});
   world::test::expect_config_error([] { read("{scenario: a, wall_time_limit: -1}"); }, source,
                                    {"wall_time_limit", ">= 0", "-1"});
   world::test::expect_config_error([] { read("{scenario: a, world_timeout: 0}"); }, source,

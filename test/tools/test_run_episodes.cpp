@@ -1,5 +1,6 @@
-// Runs the run_episodes program as a user would: bad options, an existing output, --resume and a
-// run interrupted with SIGINT (docs/scenario.md, section 6). join_group episodes take about 0.1 s.
+// Runs the run_episodes program as a user would: bad options, an existing output, --resume, failed
+// episodes and a run interrupted with SIGINT (docs/scenario.md, section 6). join_group episodes
+// take about 0.1 s.
 #include <gtest/gtest.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -174,6 +175,44 @@ TEST(RunEpisodes, ResumeAddsTheMissingEpisodesAndKeepsTheRest) {
   EXPECT_NE(repaired.err.find("ended in a row cut short"), std::string::npos) << repaired.err;
   EXPECT_EQ(row_seeds(read_all(out + "/join_group.csv")),
             (std::vector<std::string>{"1", "2", "3", "4", "5", "6"}));
+}
+
+// join_group with a script time limit too short to join anyone: every episode fails.
+std::string hopeless_join_group(const std::string& dir) {
+  std::string text = read_all(std::string(ARI_SOURCE_DIR) + "/scenarios/join_group.yaml");
+  text.replace(text.find("../worlds/"), 3, std::string(ARI_SOURCE_DIR) + "/");
+  text.replace(text.find("time_limit: 60"), 14, "time_limit: 1");
+  fs::create_directories(dir);
+  const std::string path = dir + "/join_group_hopeless.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(RunEpisodes, FailedEpisodesExitWithOneNamingTheFirstFive) {
+  const std::string out = out_dir("failed");
+  const std::string args =
+      "--scenario " + hopeless_join_group(out) + " --episodes 7 --no-bags --out " + out;
+  const ProgramRun failed = run(args);
+  EXPECT_EQ(failed.status, 1) << failed.err;
+  const std::string csv = out + "/join_group_hopeless.csv";
+  EXPECT_NE(failed.err.find("run_episodes: 7 of 7 episodes in " + csv +
+                            " failed:\n"
+                            "  seed 1: failed in state join: time limit of 1.000000 s reached in "
+                            "state join\n"),
+            std::string::npos)
+      << failed.err;
+  EXPECT_NE(failed.err.find("  seed 5: "), std::string::npos) << failed.err;
+  EXPECT_EQ(failed.err.find("  seed 6: "), std::string::npos) << failed.err;
+  EXPECT_NE(failed.err.find("  and 2 more (the rows with success 0 in the CSV)\n"),
+            std::string::npos)
+      << failed.err;
+  EXPECT_EQ(count_lines(read_all(csv)), 8u);  // the output is complete all the same
+  // A resumed run answers for the rows it kept: a job array's rerun does not turn them green.
+  const ProgramRun resumed = run(args + " --resume");
+  EXPECT_EQ(resumed.status, 1) << resumed.err;
+  EXPECT_NE(resumed.out.find("nothing to do"), std::string::npos) << resumed.out;
+  EXPECT_NE(resumed.err.find("7 of 7 episodes in " + csv + " failed"), std::string::npos)
+      << resumed.err;
 }
 
 TEST(RunEpisodes, AnInterruptedRunKeepsCompleteEpisodesOnlyAndResumes) {

@@ -33,11 +33,17 @@ std::string csv_header();
 /// One row (no newline); text fields are quoted when they hold a comma or a quote.
 std::string csv_row(const EpisodeSummary& summary);
 
-/// Which run a row of a batch CSV is.
+/// Which run a row of a batch CSV is, and how it ended.
 struct EpisodeCsvRow {
   std::string scenario;
   uint64_t episode{0};
   uint64_t seed{0};
+  bool success{false};
+  std::string reason;
+  std::string final_state;
+
+  /// The row csv_row(summary) writes, as read_episode_csv reads it back.
+  static EpisodeCsvRow of(const EpisodeSummary& summary);
 };
 
 /// A batch CSV as found on disk, read to resume it.
@@ -52,7 +58,8 @@ struct EpisodeCsvContents {
 
 /// Reads a CSV written with csv_header() and csv_row(). Throws core::ConfigError naming `source`
 /// and the line for another header (another version's columns), a row with another number of
-/// columns, an episode or seed that is not a number, or an episode found twice.
+/// columns, an episode or seed that is not a number, a success other than 0 or 1, or an episode
+/// found twice.
 EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& source);
 
 }  // namespace ari_social_sim::scenario

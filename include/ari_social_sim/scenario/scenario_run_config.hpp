@@ -18,6 +18,7 @@ struct ScenarioRunConfig {
   double group_timeout_s{1.0};
   std::string dialogue_config;
   bool start_world{true};
+  std::optional<double> time_limit_s;
   std::optional<double> wall_time_limit_s;
   double world_timeout_s{10.0};
 
@@ -38,6 +39,11 @@ struct ScenarioRunConfig {
     v.field("start_world", start_world,
             "unpause the world once everything the script uses is up; false leaves that to "
             "another node (a test that must see every state, a user's rqt)");
+    v.field("time_limit", time_limit_s,
+            "sim seconds after which the script ends as a failure, in place of the scenario "
+            "file's script time_limit (a shorter run, or a failure on purpose: `time_limit:=3` "
+            "of the scenario launches); unset: the file's",
+            core::positive());
     // The script's time_limit counts sim time, which stands still when the world is paused or
     // gone.
     v.field("wall_time_limit", wall_time_limit_s,
@@ -51,6 +57,9 @@ struct ScenarioRunConfig {
             "run ends as a failure naming the wait",
             core::positive());
   }
+
+  /// The script's sim-time limit: the time_limit parameter if set, else the file's.
+  double script_time_limit_for(double file_time_limit_s) const;
 
   /// The wall-time limit for a script with this sim-time limit: the parameter if set (0 = none),
   /// else 3 x the script's limit (the script at a third of real time) + server_timeout (the
