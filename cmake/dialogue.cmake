@@ -17,6 +17,7 @@ add_library(ari_dialogue
   src/dialogue/dialogue_stats.cpp
   src/dialogue/error_model.cpp
   src/dialogue/turn_timing.cpp
+  src/dialogue/template_text.cpp
   src/dialogue/nlg.cpp
   src/dialogue/agenda.cpp
   src/dialogue/user_simulation.cpp
@@ -69,6 +70,7 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_dialogue_stats.cpp
       test/dialogue/test_error_model.cpp
       test/dialogue/test_turn_timing.cpp
+      test/dialogue/test_template_text.cpp
       test/dialogue/test_nlg.cpp
       test/dialogue/test_agenda.cpp
       test/dialogue/test_reward.cpp

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "ari_social_sim/dialogue/nlg.hpp"
 #include "test_helpers.hpp"
 
@@ -33,14 +35,17 @@ TEST(Nlg, TemplatesFillTheObject) {
             "Thanks. Where is the cafeteria?");
 }
 
-TEST(Nlg, TemplateTextsListEveryAlternative) {
+TEST(Nlg, TemplateTextsListEveryForm) {
   const Nlg nlg(NlgTemplates::load(config_path("nlg_templates.yaml")), nullptr, NlgMode::kTemplate);
-  // nlg_templates.yaml: three human texts for request(location(*)), toilet -> toilets.
+  // nlg_templates.yaml: five human texts for request(location(*)) with 6x4x2, 3x2x2x2x2, 2x3x4,
+  // 3x2x5 and 3x3 forms; toilet -> toilets.
   const std::vector<std::string> texts =
       nlg.template_texts(false, parse_act("request(location(toilet))", "t"));
-  ASSERT_EQ(texts.size(), 3u);
-  EXPECT_EQ(texts[0], "Where is the toilets?");
-  EXPECT_EQ(nlg.template_texts(true, parse_act("offer-help()", "t")).size(), 2u);
+  ASSERT_EQ(texts.size(), 48u + 48u + 24u + 30u + 9u);
+  EXPECT_EQ(texts[0], "Excuse me, where is the toilets, please?");
+  EXPECT_EQ(std::set<std::string>(texts.begin(), texts.end()).size(), texts.size());
+  // 4x2 + 2x3x2 + 1 ways to offer help.
+  EXPECT_EQ(nlg.template_texts(true, parse_act("offer-help()", "t")).size(), 21u);
   EXPECT_TRUE(nlg.template_texts(true, parse_act("call-nurse()", "t")).empty());
 }
 
