@@ -1,10 +1,7 @@
 # dialogue/: the Conversational Content Generator (multi-party user simulation), its tools, tests
-# and benchmark. The MPGT corpus (docs/references.md#mpgt) is not part of the repository:
-# ARI_MPGT_DIR is the folder of its convo*.txt files, the default of the tools, nodes and tests
-# (set it with -DARI_MPGT_DIR=DIR; the environment variable ARI_MPGT_DIR overrides it at run
-# time). Its default is where CI provides the corpus, beside the checkout.
-set(ARI_MPGT_DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/dialogue/mpgt"
-    CACHE PATH "Folder of the MPGT corpus's convo*.txt files")
+# and benchmark. Everything runs on the repository's files alone; the MPGT corpus
+# (docs/references.md#mpgt) is optional and found at run time, never at build time
+# (docs/dialogue.md).
 set(ARI_DIALOGUE_CONFIG_DIR "${CMAKE_CURRENT_SOURCE_DIR}/config/dialogue")
 
 add_library(ari_dialogue
@@ -17,6 +14,7 @@ add_library(ari_dialogue
   src/dialogue/dialogue_stats.cpp
   src/dialogue/error_model.cpp
   src/dialogue/turn_timing.cpp
+  src/dialogue/template_text.cpp
   src/dialogue/nlg.cpp
   src/dialogue/agenda.cpp
   src/dialogue/user_simulation.cpp
@@ -36,7 +34,6 @@ add_library(ari_dialogue
 target_include_directories(ari_dialogue PUBLIC include)
 target_link_libraries(ari_dialogue PUBLIC ari_core)
 target_compile_definitions(ari_dialogue PRIVATE
-  ARI_MPGT_DIR="${ARI_MPGT_DIR}"
   ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
 
 add_executable(fit_dialogue_model src/tools/fit_dialogue_model.cpp)
@@ -46,11 +43,13 @@ target_link_libraries(dialogue_corpus ari_dialogue)
 
 if(CATKIN_ENABLE_TESTING)
   # The programs themselves, run as a user would (test/tools/program_run.hpp).
-  ari_add_gtest(test_dialogue_corpus SOURCES test/tools/test_dialogue_corpus.cpp)
+  ari_add_gtest(test_dialogue_corpus SOURCES test/tools/test_dialogue_corpus.cpp
+    LIBRARIES ari_core)
   target_compile_definitions(test_dialogue_corpus PRIVATE
     ARI_DIALOGUE_CORPUS_BIN="$<TARGET_FILE:dialogue_corpus>")
   add_dependencies(test_dialogue_corpus dialogue_corpus)
-  ari_add_gtest(test_fit_dialogue_model SOURCES test/tools/test_fit_dialogue_model.cpp)
+  ari_add_gtest(test_fit_dialogue_model SOURCES test/tools/test_fit_dialogue_model.cpp
+    LIBRARIES ari_core)
   target_compile_definitions(test_fit_dialogue_model PRIVATE
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     ARI_FIT_DIALOGUE_MODEL_BIN="$<TARGET_FILE:fit_dialogue_model>")
@@ -69,6 +68,7 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_dialogue_stats.cpp
       test/dialogue/test_error_model.cpp
       test/dialogue/test_turn_timing.cpp
+      test/dialogue/test_template_text.cpp
       test/dialogue/test_nlg.cpp
       test/dialogue/test_agenda.cpp
       test/dialogue/test_reward.cpp
@@ -85,7 +85,6 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_spoken_dialogue.cpp
     LIBRARIES ari_dialogue)
   target_compile_definitions(test_dialogue PRIVATE
-    ARI_MPGT_DIR="${ARI_MPGT_DIR}"
     ARI_DIALOGUE_CONFIG_DIR="${ARI_DIALOGUE_CONFIG_DIR}")
 endif()
 

@@ -4,6 +4,8 @@
 
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/config_reader.hpp"
+#include "ari_social_sim/core/data_sets.hpp"
+#include "ari_social_sim/core/error.hpp"
 
 #ifndef ARI_DIALOGUE_CONFIG_DIR
 #define ARI_DIALOGUE_CONFIG_DIR "config/dialogue"
@@ -28,6 +30,47 @@ DialogueConfig with_paths_in(const std::string& base_dir, DialogueConfig config)
   return config;
 }
 
+// How messages name a field of `config`: `file: field`, or `DialogueConfig: field` for settings
+// made in code (as core::check_fields does).
+std::string field_name(const DialogueConfig& config, const std::string& field) {
+  return (config.settings_file.empty() ? std::string("DialogueConfig") : config.settings_file) +
+         ": " + field;
+}
+
+[[noreturn]] void refuse_retrieval_without_corpus(const DialogueConfig& config) {
+  throw core::ConfigError(
+      field_name(config, "nlg") +
+      ": retrieval needs the MPGT corpus, which is not part of the repository, and none is "
+      "pointed at: set corpus_dir (relative to the settings file) or the environment variable "
+      "ARI_MPGT_DIR to the folder of its convo*.txt files (scripts/fetch_data.sh fetches it into " +
+      core::data_set_dir(kMpgtDataSet) + "), or use nlg: template");
+}
+
+// The corpus the settings point at: corpus_dir, else $ARI_MPGT_DIR; none when neither is set. A
+// folder that is named but missing is an error rather than a quiet run without the corpus.
+std::optional<MpgtCorpus> load_pointed_corpus(const DialogueConfig& config) {
+  std::string dir = config.corpus_dir;
+  std::string named_by = field_name(config, "corpus_dir");
+  if (dir.empty()) {
+    dir = mpgt_dir_from_environment();
+    named_by = "ARI_MPGT_DIR (" + named_by + " is empty)";
+  }
+  if (dir.empty()) {
+    if (config.nlg == NlgMode::kRetrieval) {
+      refuse_retrieval_without_corpus(config);
+    }
+    return std::nullopt;
+  }
+  std::error_code error;
+  if (!std::filesystem::is_directory(dir, error)) {
+    throw core::ConfigError(
+        named_by + ": " + dir +
+        ": expected the folder of the MPGT corpus's convo*.txt files, got " +
+        (std::filesystem::exists(dir, error) ? "a file" : "nothing (no such path)"));
+  }
+  return load_mpgt_corpus(dir);
+}
+
 }  // namespace
 
 std::string default_dialogue_config_dir() {
@@ -43,8 +86,11 @@ void DialogueConfig::validate() const {
 }
 
 DialogueConfig DialogueConfig::load(const std::string& file_path) {
-  return with_paths_in(std::filesystem::path(file_path).parent_path().string(),
-                       core::read_fields<DialogueConfig>(core::YamlMap::load_file(file_path)));
+  DialogueConfig config =
+      with_paths_in(std::filesystem::path(file_path).parent_path().string(),
+                    core::read_fields<DialogueConfig>(core::YamlMap::load_file(file_path)));
+  config.settings_file = file_path;
+  return config;
 }
 
 std::unique_ptr<DialogueSetup> DialogueSetup::create(const DialogueConfig& config) {
@@ -55,10 +101,9 @@ std::unique_ptr<DialogueSetup> DialogueSetup::create(const DialogueConfig& confi
   for (const std::string& role : config.users.roles) {
     setup->model.role(role, config.model_file);
   }
-  setup->corpus =
-      load_mpgt_corpus(config.corpus_dir.empty() ? default_mpgt_dir() : config.corpus_dir);
-  setup->nlg =
-      std::make_unique<Nlg>(NlgTemplates::load(config.templates_file), &setup->corpus, config.nlg);
+  setup->corpus = load_pointed_corpus(config);
+  setup->nlg = std::make_unique<Nlg>(NlgTemplates::load(config.templates_file),
+                                     setup->corpus_or_null(), config.nlg);
   setup->errors =
       std::make_unique<ErrorModel>(config.errors, setup->domain, setup->nlg->vocabulary());
   setup->timing = std::make_unique<TurnTiming>(config.timing);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <tuple>
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -16,6 +18,31 @@ void normalise(Distribution& counts) {
       entry.second /= total;
     }
   }
+}
+
+// Whether any of the last kClosingUtterances utterances of `dialogue` has an act of `intent`.
+bool closes_with(const CorpusDialogue& dialogue, const std::string& intent) {
+  const auto& utterances = dialogue.utterances;
+  const size_t first =
+      utterances.size() > kClosingUtterances ? utterances.size() - kClosingUtterances : 0;
+  for (size_t i = first; i < utterances.size(); ++i) {
+    for (const DialogueAct& act : utterances[i].acts) {
+      if (act.intent == intent) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+size_t goal_targets(const CorpusDialogue& dialogue) {
+  std::set<std::string> targets;
+  for (const CorpusUtterance& u : dialogue.utterances) {
+    for (const GoalLabel& label : u.goals) {
+      targets.insert(label.goal.predicate_text());
+    }
+  }
+  return targets.size();
 }
 
 }  // namespace
@@ -56,6 +83,9 @@ DialogueStats compute_stats(const std::vector<CorpusDialogue>& dialogues) {
   for (const CorpusDialogue& dialogue : dialogues) {
     ++stats.dialogues;
     stats.lengths.push_back(dialogue.utterances.size());
+    stats.mean_goal_targets += static_cast<double>(goal_targets(dialogue));
+    stats.bye_closing_share += closes_with(dialogue, "bye") ? 1.0 : 0.0;
+    stats.thank_closing_share += closes_with(dialogue, "thank") ? 1.0 : 0.0;
     for (size_t i = 0; i < dialogue.utterances.size(); ++i) {
       const CorpusUtterance& u = dialogue.utterances[i];
       ++stats.utterances;
@@ -76,7 +106,43 @@ DialogueStats compute_stats(const std::vector<CorpusDialogue>& dialogues) {
                                                      : static_cast<double>(human_to_human) /
                                                            static_cast<double>(stats.utterances);
   std::sort(stats.lengths.begin(), stats.lengths.end());
+  if (stats.dialogues > 0) {
+    const double n = static_cast<double>(stats.dialogues);
+    stats.mean_goal_targets /= n;
+    stats.bye_closing_share /= n;
+    stats.thank_closing_share /= n;
+  }
   return stats;
+}
+
+double ActVariety::ratio() const {
+  return utterances == 0 ? 0.0
+                         : static_cast<double>(distinct_texts) / static_cast<double>(utterances);
+}
+
+std::vector<ActVariety> act_variety(const std::vector<CorpusDialogue>& dialogues) {
+  struct Texts {
+    size_t utterances{0};
+    std::set<std::string> distinct;
+  };
+  std::map<std::pair<bool, std::string>, Texts> by_act;
+  for (const CorpusDialogue& dialogue : dialogues) {
+    for (const CorpusUtterance& u : dialogue.utterances) {
+      const std::string first_act = u.acts.empty() ? "none" : u.acts.front().to_string();
+      Texts& texts = by_act[{u.is_robot(), first_act}];
+      ++texts.utterances;
+      texts.distinct.insert(u.text);
+    }
+  }
+  std::vector<ActVariety> variety;
+  for (const auto& [key, texts] : by_act) {
+    variety.push_back({key.first, key.second, texts.utterances, texts.distinct.size()});
+  }
+  std::sort(variety.begin(), variety.end(), [](const ActVariety& a, const ActVariety& b) {
+    return std::make_tuple(a.robot, b.utterances, a.first_act) <
+           std::make_tuple(b.robot, a.utterances, b.first_act);
+  });
+  return variety;
 }
 
 double js_divergence(const Distribution& p, const Distribution& q) {

@@ -5,13 +5,11 @@
 #include <filesystem>
 #include <sstream>
 
+#include "ari_social_sim/core/command_line.hpp"
+#include "ari_social_sim/core/data_sets.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/text_file.hpp"
 #include "ari_social_sim/dialogue/text.hpp"
-
-#ifndef ARI_MPGT_DIR
-#error "ARI_MPGT_DIR: the build gives the MPGT corpus's folder (cmake/dialogue.cmake)"
-#endif
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -46,19 +44,37 @@ size_t MpgtCorpus::utterance_count() const {
   return count;
 }
 
-std::string default_mpgt_dir() {
+std::string mpgt_dir_from_environment() {
   const char* from_environment = std::getenv("ARI_MPGT_DIR");
-  if (from_environment != nullptr && *from_environment != '\0') {
+  return from_environment != nullptr ? from_environment : "";
+}
+
+std::string required_mpgt_dir(const std::string& given, const std::string& needed_by) {
+  if (!given.empty()) {
+    core::check_input_directory("--corpus", given);
+    return given;
+  }
+  const std::string from_environment = mpgt_dir_from_environment();
+  if (!from_environment.empty()) {
+    core::check_input_directory("$ARI_MPGT_DIR", from_environment);
     return from_environment;
   }
-  return ARI_MPGT_DIR;
+  if (!core::data_set_present(kMpgtDataSet)) {
+    throw core::ConfigError(needed_by +
+                            " needs the MPGT corpus, and none was given (no --corpus DIR, "
+                            "ARI_MPGT_DIR not set): " +
+                            core::missing_data_set_message(kMpgtDataSet));
+  }
+  return core::data_set_dir(kMpgtDataSet);
 }
 
 std::string mpgt_corpus_help() {
   return "  MPGT corpus: the folder of the convo*.txt files of the public MPGT corpus,\n"
          "    https://github.com/AddleseeHQ/mpgt-eval (MIT licence; docs/dialogue.md), which is\n"
-         "    not part of this repository. Given no folder, the tool reads $ARI_MPGT_DIR, else\n"
-         "    the folder set at build time (cmake -DARI_MPGT_DIR=DIR).\n";
+         "    not part of this repository. scripts/fetch_data.sh fetches it into\n"
+         "    $ARI_DATA_DIR/dialogue/mpgt. Where it is needed, the tool reads --corpus DIR, else\n"
+         "    $ARI_MPGT_DIR when set, else $ARI_DATA_DIR/dialogue/mpgt (ARI_DATA_DIR defaults to\n"
+         "    ~/.local/share/ari_social_sim/data).\n";
 }
 
 CorpusDialogue parse_mpgt_dialogue(const std::string& text, const std::string& name) {

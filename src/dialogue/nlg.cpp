@@ -10,8 +10,9 @@ namespace {
 
 constexpr const char* kNone = "none";
 
-const std::string& pick(const std::vector<std::string>& texts, core::Rng& rng) {
-  return texts[rng.uniform_index(texts.size())];
+template <class T>
+const T& pick(const std::vector<T>& items, core::Rng& rng) {
+  return items[rng.uniform_index(items.size())];
 }
 
 std::string replace_all(std::string text, const std::string& from, const std::string& to) {
@@ -64,9 +65,14 @@ NlgTemplates NlgTemplates::parse(const core::YamlMap& map) {
     if (speaker != "human" && speaker != "robot" && speaker != "any") {
       entry.fail("speaker", "human, robot or any", "'" + speaker + "'");
     }
-    const auto texts = entry.required<std::vector<std::string>>("texts");
-    if (texts.empty()) {
+    const auto sources = entry.required<std::vector<std::string>>("texts");
+    if (sources.empty()) {
       entry.fail("texts", "at least one text", "[]");
+    }
+    std::vector<TemplateText> texts;
+    for (size_t i = 0; i < sources.size(); ++i) {
+      texts.push_back(TemplateText::parse(
+          sources[i], entry.field_name("texts") + "[" + std::to_string(i) + "]"));
     }
     if (speaker != "robot") {
       auto& list = templates.human[key];
@@ -119,15 +125,19 @@ Nlg::TemplateMatch Nlg::find_template(bool robot, const DialogueAct& act) const 
   return {};
 }
 
+std::string Nlg::filled(const std::string& form, const std::vector<std::string>& names) const {
+  return tidy_sentence_text(replace_all(form, "{object}", surface(names)));
+}
+
 std::string Nlg::from_template(bool robot, const DialogueAct* act, core::Rng& rng) const {
   if (act == nullptr) {
     const auto& table = robot ? templates_.robot : templates_.human;
     const auto found = table.find(kNone);
-    return found != table.end() ? pick(found->second, rng) : "Hmm.";
+    return found != table.end() ? filled(pick(found->second, rng).draw(rng), {}) : "Hmm.";
   }
   const TemplateMatch match = find_template(robot, *act);
   if (match.texts != nullptr) {
-    return replace_all(pick(*match.texts, rng), "{object}", surface(match.names));
+    return filled(pick(*match.texts, rng).draw(rng), match.names);
   }
   // No template: say the intent and its path in words rather than nothing.
   return replace_all(act->intent, "-", " ") + " " + surface(act->path()) + ".";
@@ -137,8 +147,10 @@ std::vector<std::string> Nlg::template_texts(bool robot, const DialogueAct& act)
   const TemplateMatch match = find_template(robot, act);
   std::vector<std::string> texts;
   if (match.texts != nullptr) {
-    for (const std::string& text : *match.texts) {
-      texts.push_back(replace_all(text, "{object}", surface(match.names)));
+    for (const TemplateText& text : *match.texts) {
+      for (const std::string& form : text.expand(kMaxFormsPerText)) {
+        texts.push_back(filled(form, match.names));
+      }
     }
   }
   return texts;
@@ -184,7 +196,16 @@ std::vector<std::string> Nlg::vocabulary() const {
       }
     }
   };
-  for (const auto* table : {&templates_.human, &templates_.robot, &corpus_human_, &corpus_robot_}) {
+  for (const auto* table : {&templates_.human, &templates_.robot}) {
+    for (const auto& entry : *table) {
+      for (const TemplateText& text : entry.second) {
+        for (const std::string& form : text.expand(kMaxFormsPerText)) {
+          add_text(tidy_sentence_text(form));
+        }
+      }
+    }
+  }
+  for (const auto* table : {&corpus_human_, &corpus_robot_}) {
     for (const auto& entry : *table) {
       for (const std::string& text : entry.second) {
         add_text(text);

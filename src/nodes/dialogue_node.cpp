@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
     return 0;
   }
 
-  const dialogue::RobotNlu nlu(*setup->nlg, setup->domain, &setup->corpus);
+  const dialogue::RobotNlu nlu(*setup->nlg, setup->domain, setup->corpus_or_null());
   if (run.mode == dialogue::DialogueMode::kWorld) {
     ROS_INFO("dialogue_node: waiting for /sim/world_state");
     const auto state = ros::topic::waitForMessage<WorldState>("/sim/world_state", nh);

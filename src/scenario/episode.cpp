@@ -134,8 +134,8 @@ EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   config.navigation = navigation::NavigationConfig::load_file(config_dir + "/social_mpc.yaml");
   auto setup = dialogue::DialogueSetup::create(
       dialogue::DialogueConfig::load(config_dir + "/dialogue/simulation.yaml"));
-  config.nlu =
-      std::make_shared<const dialogue::RobotNlu>(*setup->nlg, setup->domain, &setup->corpus);
+  config.nlu = std::make_shared<const dialogue::RobotNlu>(*setup->nlg, setup->domain,
+                                                          setup->corpus_or_null());
   config.dialogue = std::move(setup);
   return config;
 }

@@ -2,15 +2,17 @@
 // patient and companion and writes one JSON object per utterance (JSON lines).
 //
 //   dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE] [--corpus DIR]
-//                   [--nlg template|retrieval] [--compare] [--report FILE.md] [--overwrite]
+//                   [--nlg template|retrieval] [--compare] [--variety] [--report FILE.md]
+//                   [--overwrite]
 //
-// --config defaults to <source>/config/dialogue/simulation.yaml; --corpus (the MPGT corpus used by
-// retrieval NLG and --compare) to the config's corpus_dir, else $ARI_MPGT_DIR, else the build-time
-// folder (docs/dialogue.md). --compare prints the
-// comparison with MPGT (intent JS divergence, human-to-human share, lengths, complete and success
-// rates) as Markdown, also to --report when given. Outputs are checked before the first dialogue
-// (an existing one needs --overwrite) and appear under their names only when complete. Exit code
-// 2 on bad input, 1 when writing fails.
+// --config defaults to <source>/config/dialogue/simulation.yaml. The MPGT corpus is needed only
+// by --compare and retrieval NLG; they read --corpus, else the config's corpus_dir, else
+// $ARI_MPGT_DIR, else the data set's folder, and refuse before the first dialogue when it is
+// missing (docs/dialogue.md). --compare prints the comparison with MPGT (intent JS divergence,
+// human-to-human share, lengths, complete and success rates) and --variety the distinct texts
+// per act as Markdown, also to --report when given. Outputs are checked before the first
+// dialogue (an existing one needs --overwrite) and appear under their names only when complete.
+// Exit code 2 on bad input, 1 when writing fails.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -44,17 +46,24 @@ struct Options {
   std::string nlg;
   std::string report;
   bool compare{false};
+  bool variety{false};
   bool overwrite{false};
+
+  bool has_tables() const { return compare || variety; }
 };
 
 void print_usage() {
   std::cerr << "usage: dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE]\n"
                "                       [--corpus DIR] [--nlg template|retrieval] [--compare]\n"
-               "                       [--report FILE.md] [--overwrite]\n"
+               "                       [--variety] [--report FILE.md] [--overwrite]\n"
             << "  N in " << kDialogues.range() << ", S in " << kSeed.range() << "\n"
             << "  --out and --report must not exist yet unless --overwrite\n"
             << "  --config defaults to " << default_dialogue_config_dir() << "/simulation.yaml\n"
-            << "  --corpus DIR: the MPGT corpus (below); default: corpus_dir in --config if set\n"
+            << "  --compare: the generated dialogues against MPGT (needs the corpus)\n"
+            << "  --variety: distinct texts / utterances per side and first act\n"
+            << "  --report FILE.md: the tables of --compare and --variety, also in a file\n"
+            << "  --corpus DIR: the MPGT corpus (below), needed only by --compare and retrieval\n"
+            << "    NLG; default: corpus_dir in --config if set, else as below\n"
             << mpgt_corpus_help();
 }
 
@@ -66,6 +75,10 @@ Options parse_options(int argc, char** argv) {
     const std::string arg = argv[i];
     if (arg == "--compare") {
       options.compare = true;
+      continue;
+    }
+    if (arg == "--variety") {
+      options.variety = true;
       continue;
     }
     if (arg == "--overwrite") {
@@ -93,11 +106,14 @@ Options parse_options(int argc, char** argv) {
       options.report = value;  // --report
     }
   }
-  if (!have_dialogues || !have_seed || (options.out.empty() && !options.compare)) {
-    throw core::ConfigError("--dialogues, --seed and --out (or --compare) are required");
+  if (!have_dialogues || !have_seed || (options.out.empty() && !options.has_tables())) {
+    throw core::ConfigError(
+        "--dialogues, --seed and --out (or --compare or --variety) are required");
   }
-  if (!options.report.empty() && !options.compare) {
-    throw core::ConfigError("--report: the report is the comparison's: expected --compare too");
+  if (!options.report.empty() && !options.has_tables()) {
+    throw core::ConfigError(
+        "--report: the report holds the tables of --compare and --variety: expected one of them "
+        "too");
   }
   // Paths before any work: a typo must not cost the run.
   core::check_input_file("--config", options.config);
@@ -132,16 +148,22 @@ std::string lengths_text(const DialogueStats& s) {
          std::to_string(s.length_quantile(1.0));
 }
 
+std::vector<CorpusDialogue> as_corpus(const std::vector<EpisodeRecord>& episodes) {
+  std::vector<CorpusDialogue> generated;
+  for (const EpisodeRecord& e : episodes) {
+    generated.push_back(to_corpus_dialogue(e.utterances));
+  }
+  return generated;
+}
+
 std::string comparison(const Options& options, const std::vector<EpisodeRecord>& episodes,
                        const MpgtCorpus& corpus) {
-  std::vector<CorpusDialogue> generated;
   double complete = 0;
   double success = 0;
   double truncated = 0;
   double reward = 0;
   double robot_turns = 0;
   for (const EpisodeRecord& e : episodes) {
-    generated.push_back(to_corpus_dialogue(e.utterances));
     complete += e.outcome.complete ? 1 : 0;
     success += e.outcome.success ? 1 : 0;
     truncated += e.truncated ? 1 : 0;
@@ -149,7 +171,7 @@ std::string comparison(const Options& options, const std::vector<EpisodeRecord>&
     robot_turns += e.robot_turns;
   }
   const double n = static_cast<double>(std::max<size_t>(episodes.size(), 1));
-  const DialogueStats sim = compute_stats(generated);
+  const DialogueStats sim = compute_stats(as_corpus(episodes));
   const DialogueStats real = compute_stats(corpus.dialogues);
   std::ostringstream out;
   out << "Generated: " << episodes.size() << " dialogues, seed " << options.seed
@@ -170,6 +192,12 @@ std::string comparison(const Options& options, const std::vector<EpisodeRecord>&
       << " |\n";
   out << "| length, mean / min / q25 / median / q75 / max | " << lengths_text(sim) << " | "
       << lengths_text(real) << " |\n";
+  out << "| goals: distinct targets labelled per dialogue (G, AG, CG), mean | "
+      << number(sim.mean_goal_targets, 2) << " | " << number(real.mean_goal_targets, 2) << " |\n";
+  out << "| closing: bye() in the last " << kClosingUtterances << " utterances | "
+      << percent(sim.bye_closing_share) << " | " << percent(real.bye_closing_share) << " |\n";
+  out << "| closing: thank() in the last " << kClosingUtterances << " utterances | "
+      << percent(sim.thank_closing_share) << " | " << percent(real.thank_closing_share) << " |\n";
   out << "| rule policy: complete | " << percent(complete / n) << " | |\n";
   out << "| rule policy: success | " << percent(success / n) << " | |\n";
   out << "| rule policy: truncated | " << percent(truncated / n) << " | |\n";
@@ -189,6 +217,70 @@ std::string comparison(const Options& options, const std::vector<EpisodeRecord>&
   return out.str();
 }
 
+// The most frequent first acts of each side in the variety table; the rest are in the pooled row.
+constexpr size_t kVarietyRowsPerSide = 12;
+
+std::string variety_rows(const std::vector<ActVariety>& variety, bool robot) {
+  std::ostringstream rows;
+  size_t shown = 0;
+  size_t utterances = 0;
+  size_t distinct = 0;
+  for (const ActVariety& v : variety) {
+    if (v.robot != robot) {
+      continue;
+    }
+    utterances += v.utterances;
+    distinct += v.distinct_texts;
+    if (shown++ < kVarietyRowsPerSide) {
+      rows << "| " << (robot ? "ARI" : "humans") << " | " << v.first_act << " | " << v.utterances
+           << " | " << v.distinct_texts << " | " << number(v.ratio(), 2) << " |\n";
+    }
+  }
+  rows << "| " << (robot ? "ARI" : "humans") << " | all " << shown << " first acts | " << utterances
+       << " | " << distinct << " | "
+       << number(utterances == 0 ? 0.0 : static_cast<double>(distinct) / utterances, 2) << " |\n";
+  return rows.str();
+}
+
+std::string variety_table(const Options& options, const std::vector<EpisodeRecord>& episodes,
+                          NlgMode nlg) {
+  const std::vector<ActVariety> variety = act_variety(as_corpus(episodes));
+  std::ostringstream out;
+  out << "Variety: " << episodes.size() << " dialogues, seed " << options.seed << ", "
+      << core::choice_name(nlg, kNlgModes)
+      << " NLG; distinct texts / utterances per side and first act (texts as said, before the "
+         "error layer; the "
+      << kVarietyRowsPerSide << " most frequent first acts of each side, then all).\n\n";
+  out << "| side | first act | utterances | distinct texts | ratio |\n|---|---|---|---|---|\n";
+  out << variety_rows(variety, false) << variety_rows(variety, true);
+  return out.str();
+}
+
+// What needs the MPGT corpus in this run, for the message when it is missing; "" when nothing.
+std::string corpus_needed_by(const Options& options, NlgMode nlg) {
+  if (options.compare) {
+    return "--compare";
+  }
+  return nlg == NlgMode::kRetrieval ? "retrieval NLG (--nlg or nlg in --config)" : "";
+}
+
+// The settings of the run: --config, with --nlg and, where the run needs the corpus, its folder
+// (checked here, before the first dialogue).
+DialogueConfig run_config(const Options& options) {
+  DialogueConfig config = DialogueConfig::load(options.config);
+  if (!options.corpus.empty()) {
+    config.corpus_dir = options.corpus;
+  }
+  if (!options.nlg.empty()) {
+    config.nlg = parse_nlg_mode(options.nlg, "--nlg");
+  }
+  const std::string needed_by = corpus_needed_by(options, config.nlg);
+  if (!needed_by.empty() && config.corpus_dir.empty()) {
+    config.corpus_dir = required_mpgt_dir("", needed_by);
+  }
+  return config;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -203,14 +295,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<core::OutputFile> out;
   try {
     options = parse_options(argc, argv);
-    DialogueConfig config = DialogueConfig::load(options.config);
-    if (!options.corpus.empty()) {
-      config.corpus_dir = options.corpus;
-    }
-    if (!options.nlg.empty()) {
-      config.nlg = parse_nlg_mode(options.nlg, "--nlg");
-    }
-    setup = DialogueSetup::create(config);
+    setup = DialogueSetup::create(run_config(options));
     if (!options.out.empty()) {
       out = std::make_unique<core::OutputFile>("--out", options.out);
     }
@@ -231,15 +316,21 @@ int main(int argc, char** argv) {
           out->stream() << utterance_json(static_cast<int>(d), u) << '\n';
         }
       }
-      if (options.compare) {
+      if (options.has_tables()) {
         episodes.push_back(std::move(episode));
       }
     }
     if (out) {
       out->commit();
     }
-    if (options.compare) {
-      const std::string text = comparison(options, episodes, setup->corpus);
+    if (options.has_tables()) {
+      std::string text;
+      if (options.compare) {
+        text += comparison(options, episodes, *setup->corpus);
+      }
+      if (options.variety) {
+        text += (text.empty() ? "" : "\n") + variety_table(options, episodes, setup->config.nlg);
+      }
       std::cout << text << std::flush;
       if (!options.report.empty()) {
         core::OutputFile report("--report", options.report);

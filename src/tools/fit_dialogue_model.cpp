@@ -4,8 +4,8 @@
 //   fit_dialogue_model [--corpus DIR] [--out FILE [--overwrite]] [--min-row-count N]
 //                      [--prior-weight W]
 //
-// --corpus is the MPGT corpus's folder, by default $ARI_MPGT_DIR, else the build-time one
-// (docs/dialogue.md).
+// --corpus is the MPGT corpus's folder, by default $ARI_MPGT_DIR, else the data set's folder
+// that scripts/fetch_data.sh fills (docs/dialogue.md); without any, it says how to get it.
 // Without --out the model goes to stdout; an existing --out is replaced only with --overwrite,
 // and only once the model is complete. Exit code 2 on bad input, with the reason on stderr; 1
 // when writing fails.
@@ -39,7 +39,7 @@ void print_usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string corpus_dir = dialogue::default_mpgt_dir();
+  std::string corpus_dir;
   std::string out_path;
   bool overwrite = false;
   dialogue::FitOptions options;
@@ -71,10 +71,10 @@ int main(int argc, char** argv) {
     if (overwrite && out_path.empty()) {
       throw core::ConfigError("--overwrite: expected --out too (standard output is not replaced)");
     }
-    core::check_input_directory("--corpus", corpus_dir);
     if (!out_path.empty()) {
       core::check_output_file("--out", out_path, overwrite);
     }
+    corpus_dir = dialogue::required_mpgt_dir(corpus_dir, "the fit");
     corpus = dialogue::load_mpgt_corpus(corpus_dir);
   } catch (const core::Error& e) {
     std::cerr << "fit_dialogue_model: " << e.what() << "\n";

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,33 @@ inline std::string replace_once(std::string text, const std::string& from, const
   EXPECT_NE(at, std::string::npos) << from;
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
+
+/// Sets (or, given nullopt, unsets) an environment variable for one scope, then restores it.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const std::optional<std::string>& value) : name_(name) {
+    const char* before = std::getenv(name);
+    if (before != nullptr) {
+      before_ = before;
+    }
+    set(value);
+  }
+  ~ScopedEnvironment() { set(before_); }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  void set(const std::optional<std::string>& value) {
+    if (value) {
+      setenv(name_, value->c_str(), 1);
+    } else {
+      unsetenv(name_);
+    }
+  }
+
+  const char* name_;
+  std::optional<std::string> before_;
+};
 
 inline std::string config_path(const std::string& file) {
   return std::string(ARI_DIALOGUE_CONFIG_DIR) + "/" + file;

@@ -23,7 +23,7 @@ class LiveDialogueTest : public ::testing::Test {
     DialogueConfig config = DialogueConfig::defaults(ARI_DIALOGUE_CONFIG_DIR);
     config.reward.max_turns = max_turns;
     setup_ = DialogueSetup::create(config);
-    nlu_ = std::make_unique<RobotNlu>(*setup_->nlg, setup_->domain, &setup_->corpus);
+    nlu_ = std::make_unique<RobotNlu>(*setup_->nlg, setup_->domain, setup_->corpus_or_null());
     live_ = std::make_unique<LiveDialogue>(*setup_, *nlu_, LiveDialogueConfig{});
   }
 

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "../common/data_sets.hpp"
 #include "ari_social_sim/dialogue/model_fitting.hpp"
 #include "test_helpers.hpp"
 
@@ -37,7 +38,8 @@ TEST(ModelFitting, CountsContextsOfATinyCorpus) {
 }
 
 TEST(ModelFitting, MpgtFitMatchesSpecsSection22) {
-  const MpgtCorpus corpus = load_mpgt_corpus(ARI_MPGT_DIR);
+  ARI_SKIP_WITHOUT_DATA_SET(kMpgtDataSet);
+  const MpgtCorpus corpus = load_mpgt_corpus(core::data_set_dir(kMpgtDataSet));
   FitOptions options;
   options.min_row_count = 1;
   const UserModel model = fit_user_model(corpus, options);

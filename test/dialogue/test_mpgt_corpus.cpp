@@ -2,10 +2,13 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
+#include "../common/data_sets.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/mpgt_corpus.hpp"
+#include "test_helpers.hpp"
 
 namespace ari_social_sim::dialogue {
 namespace {
@@ -16,7 +19,7 @@ TEST(MpgtCorpus, ParsesTextActsAndGoals) {
       "RC: Where is it? # request(location(cafe)) @ G(RC, go-to(cafe))\n"
       "RP: Does that suit you? @ AG(LC, drink(coffee))\n"
       "\n"
-      "LC: We'll walk slowly.\n",
+      "LC: Mind the step there.\n",
       "inline");
   ASSERT_EQ(dialogue.utterances.size(), 4u);
   EXPECT_EQ(dialogue.utterances[0].text, "Hello ARI.");
@@ -24,7 +27,7 @@ TEST(MpgtCorpus, ParsesTextActsAndGoals) {
   EXPECT_EQ(dialogue.utterances[1].goals[0].to_string(), "G(companion, go-to(cafe))");
   EXPECT_EQ(dialogue.utterances[2].first_intent(), "none");  // goal label but no act
   EXPECT_EQ(dialogue.utterances[2].goals.size(), 1u);
-  EXPECT_EQ(dialogue.utterances[3].text, "We'll walk slowly.");
+  EXPECT_EQ(dialogue.utterances[3].text, "Mind the step there.");
 }
 
 TEST(MpgtCorpus, BadSpeakerNamesTheLine) {
@@ -37,7 +40,8 @@ TEST(MpgtCorpus, BadSpeakerNamesTheLine) {
 }
 
 TEST(MpgtCorpus, LoadsTheCorpusCounts) {
-  const MpgtCorpus corpus = load_mpgt_corpus(ARI_MPGT_DIR);
+  ARI_SKIP_WITHOUT_DATA_SET(kMpgtDataSet);
+  const MpgtCorpus corpus = load_mpgt_corpus(core::data_set_dir(kMpgtDataSet));
   // MPGT: 29 conversations, 768 utterances, ARI 279, 6..82 per conversation.
   ASSERT_EQ(corpus.dialogues.size(), 29u);
   EXPECT_EQ(corpus.utterance_count(), 768u);
@@ -70,18 +74,50 @@ TEST(MpgtCorpus, LoadsTheCorpusCounts) {
   EXPECT_GT(corpus.act_repairs, 0);
 }
 
-TEST(MpgtCorpus, EnvironmentReplacesTheBuildTimeFolder) {
-  const char* before = std::getenv("ARI_MPGT_DIR");
-  const std::string saved = before != nullptr ? before : "";
-  ASSERT_EQ(setenv("ARI_MPGT_DIR", "/data/mpgt", 1), 0);
-  EXPECT_EQ(default_mpgt_dir(), "/data/mpgt");
-  ASSERT_EQ(setenv("ARI_MPGT_DIR", "", 1), 0);  // set but empty: not a folder
-  EXPECT_EQ(default_mpgt_dir(), ARI_MPGT_DIR);
-  ASSERT_EQ(unsetenv("ARI_MPGT_DIR"), 0);
-  EXPECT_EQ(default_mpgt_dir(), ARI_MPGT_DIR);
-  if (before != nullptr) {
-    setenv("ARI_MPGT_DIR", saved.c_str(), 1);
+using testing::ScopedEnvironment;
+
+TEST(MpgtCorpus, OnlyANonEmptyEnvironmentVariablePointsAtTheCorpus) {
+  {
+    const ScopedEnvironment corpus("ARI_MPGT_DIR", "/data/mpgt");
+    EXPECT_EQ(mpgt_dir_from_environment(), "/data/mpgt");
   }
+  {
+    const ScopedEnvironment corpus("ARI_MPGT_DIR", "");  // set but empty: not a folder
+    EXPECT_EQ(mpgt_dir_from_environment(), "");
+  }
+  const ScopedEnvironment corpus("ARI_MPGT_DIR", std::nullopt);
+  EXPECT_EQ(mpgt_dir_from_environment(), "");
+}
+
+TEST(MpgtCorpus, ToolsLookForTheCorpusInOrderAndSayHowToGetIt) {
+  namespace fs = std::filesystem;
+  const std::string data = ::testing::TempDir() + "mpgt_tool_lookup";
+  fs::remove_all(data);
+  fs::create_directories(data);
+  const ScopedEnvironment data_dir("ARI_DATA_DIR", data);
+  const ScopedEnvironment unset("ARI_MPGT_DIR", std::nullopt);
+  // Nothing anywhere: what needs it, and the command that fetches it.
+  testing::expect_config_error(
+      [] { required_mpgt_dir("", "--compare"); },
+      {"--compare needs the MPGT corpus", "no --corpus DIR, ARI_MPGT_DIR not set",
+       data + "/dialogue/mpgt", "scripts/fetch_data.sh"});
+  // The fetched data set.
+  fs::create_directories(data + "/dialogue/mpgt");
+  std::ofstream(data + "/dialogue/mpgt/convo1.txt") << "ARI: Hello. # greet()\n";
+  EXPECT_EQ(required_mpgt_dir("", "--compare"), data + "/dialogue/mpgt");
+  // The environment before the data set, the option before both; each checked by its name.
+  {
+    const ScopedEnvironment corpus("ARI_MPGT_DIR", data);
+    EXPECT_EQ(required_mpgt_dir("", "--compare"), data);
+    EXPECT_EQ(required_mpgt_dir(data + "/dialogue", "--compare"), data + "/dialogue");
+  }
+  {
+    const ScopedEnvironment corpus("ARI_MPGT_DIR", data + "/none");
+    testing::expect_config_error([] { required_mpgt_dir("", "--compare"); },
+                                 {"$ARI_MPGT_DIR: " + data + "/none: expected a directory"});
+  }
+  testing::expect_config_error([&] { required_mpgt_dir(data + "/none", "--compare"); },
+                               {"--corpus: " + data + "/none: expected a directory"});
 }
 
 TEST(MpgtCorpus, MissingDirectoryIsAConfigError) {

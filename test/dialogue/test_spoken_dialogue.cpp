@@ -47,7 +47,7 @@ class SpokenDialogueTest : public ::testing::Test {
  protected:
   SpokenDialogueTest() {
     setup = DialogueSetup::create(DialogueConfig::defaults(ARI_DIALOGUE_CONFIG_DIR));
-    nlu = std::make_unique<RobotNlu>(*setup->nlg, setup->domain, &setup->corpus);
+    nlu = std::make_unique<RobotNlu>(*setup->nlg, setup->domain, setup->corpus_or_null());
   }
   // Ticks until `until_s`, gathering the events.
   SpokenDialogueEvents run(SpokenDialogue& dialogue, double until_s) {

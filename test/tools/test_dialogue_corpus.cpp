@@ -2,10 +2,13 @@
 // first dialogue, outputs never half-written nor silently replaced.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../common/data_sets.hpp"
+#include "ari_social_sim/core/data_sets.hpp"
 #include "program_run.hpp"
 
 namespace ari_social_sim::tools::test {
@@ -47,7 +50,8 @@ TEST(DialogueCorpus, BadOptionsExitWithTwoBeforeWritingAnything) {
   expect_refused(run("--dialogues 2 --seed 1 --compare --report /proc/report.md"),
                  "--report: /proc/report.md: cannot write in /proc");
   expect_refused(run("--dialogues 2 --seed 1 --report " + dir + "r.md" + out),
-                 "--report: the report is the comparison's: expected --compare too");
+                 "--report: the report holds the tables of --compare and --variety: expected one "
+                 "of them too");
   expect_refused(run("--dialogues 2 --seed 1 --compare --report " + dir + "c.jsonl" + out),
                  "expected two files");
   expect_refused(run("--dialogues 2 --seed 1 --config " + dir + out),
@@ -62,13 +66,80 @@ TEST(DialogueCorpus, BadOptionsExitWithTwoBeforeWritingAnything) {
   EXPECT_EQ(fs::directory_iterator(dir), fs::directory_iterator());  // nothing written
 }
 
-// --help says where the MPGT corpus comes from, naming no folder outside the repository.
+// --help says where the MPGT corpus comes from and what needs it, naming no folder outside the
+// repository.
 TEST(DialogueCorpus, HelpSaysWhereTheCorpusComesFrom) {
   const ProgramRun help = run("--help");
   EXPECT_EQ(help.status, 0);
-  EXPECT_NE(help.err.find("https://github.com/AddleseeHQ/mpgt-eval"), std::string::npos);
-  EXPECT_NE(help.err.find("corpus_dir in --config"), std::string::npos) << help.err;
+  for (const std::string fragment :
+       {"https://github.com/AddleseeHQ/mpgt-eval", "corpus_dir in --config",
+        "needed only by --compare and retrieval", "scripts/fetch_data.sh", "$ARI_MPGT_DIR",
+        "--variety"}) {
+    EXPECT_NE(help.err.find(fragment), std::string::npos) << help.err;
+  }
   EXPECT_EQ(help.err.find("../"), std::string::npos) << help.err;
+}
+
+// What needs the corpus refuses before the first dialogue when it is nowhere; the rest runs.
+TEST(DialogueCorpus, WithoutTheCorpusOnlyCompareAndRetrievalAreRefused) {
+  const std::string dir = scratch("no_corpus");
+  const std::string no_corpus =
+      "env -u ARI_MPGT_DIR ARI_DATA_DIR=" + dir + "data " + std::string(ARI_DIALOGUE_CORPUS_BIN);
+  const std::string args = "--dialogues 2 --seed 1 --out " + dir + "c.jsonl";
+  expect_refused(run_program(no_corpus, args + " --compare"),
+                 "--compare needs the MPGT corpus, and none was given (no --corpus DIR, "
+                 "ARI_MPGT_DIR not set): data set 'dialogue/mpgt' is not in " +
+                     dir + "data/dialogue/mpgt: fetch it with scripts/fetch_data.sh");
+  expect_refused(run_program(no_corpus, args + " --nlg retrieval"),
+                 "retrieval NLG (--nlg or nlg in --config) needs the MPGT corpus");
+  EXPECT_FALSE(fs::exists(dir + "c.jsonl"));
+  const ProgramRun templates = run_program(no_corpus, args + " --variety");
+  ASSERT_EQ(templates.status, 0) << templates.err;
+  EXPECT_GE(count_lines(read_all(dir + "c.jsonl")), 10u);
+}
+
+TEST(DialogueCorpus, CompareReadsTheDataSet) {
+  ARI_SKIP_WITHOUT_DATA_SET("dialogue/mpgt");
+  const ProgramRun compared =
+      run_program("env -u ARI_MPGT_DIR " + std::string(ARI_DIALOGUE_CORPUS_BIN),
+                  "--dialogues 3 --seed 2 --compare --nlg retrieval");
+  ASSERT_EQ(compared.status, 0) << compared.err;
+  EXPECT_NE(compared.out.find("corpus: MPGT, 29 conversations"), std::string::npos) << compared.out;
+}
+
+// The pooled row of one side of the --variety table: utterances, distinct texts, ratio.
+struct PooledVariety {
+  size_t utterances{0};
+  size_t distinct{0};
+  double ratio{0.0};
+};
+
+PooledVariety pooled_variety(const std::string& table, const std::string& side) {
+  const std::string row = "| " + side + " | all ";
+  const size_t at = table.find(row);
+  EXPECT_NE(at, std::string::npos) << table;
+  PooledVariety pooled;
+  if (at != std::string::npos) {
+    std::sscanf(table.c_str() + table.find("| ", at + row.size()), "| %zu | %zu | %lf",
+                &pooled.utterances, &pooled.distinct, &pooled.ratio);
+  }
+  return pooled;
+}
+
+TEST(DialogueCorpus, VarietyCountsDistinctTextsPerAct) {
+  const ProgramRun variety = run("--dialogues 100 --seed 1 --variety");
+  ASSERT_EQ(variety.status, 0) << variety.err;
+  EXPECT_NE(variety.out.find("Variety: 100 dialogues, seed 1, template NLG"), std::string::npos)
+      << variety.out;
+  EXPECT_NE(variety.out.find("| humans | thank() | "), std::string::npos) << variety.out;
+  EXPECT_NE(variety.out.find("| ARI | "), std::string::npos) << variety.out;
+  const PooledVariety humans = pooled_variety(variety.out, "humans");
+  EXPECT_GT(humans.utterances, 1000u);  // about 20 human utterances a dialogue
+  EXPECT_NEAR(humans.ratio, static_cast<double>(humans.distinct) / humans.utterances, 0.005);
+  // The grammar's forms: most human utterances are worded afresh (0.89 measured).
+  EXPECT_GT(humans.ratio, 0.8);
+  // The same seed, the same table.
+  EXPECT_EQ(run("--dialogues 100 --seed 1 --variety").out, variety.out);
 }
 
 TEST(DialogueCorpus, AnExistingOutputIsReplacedOnlyWithOverwrite) {
@@ -88,10 +159,10 @@ TEST(DialogueCorpus, AnExistingOutputIsReplacedOnlyWithOverwrite) {
 
 TEST(DialogueCorpus, TheReportIsWhatStandardOutputShows) {
   const std::string dir = scratch("report");
-  const ProgramRun run_1 = run("--dialogues 3 --seed 2 --compare --report " + dir + "r.md");
+  const ProgramRun run_1 = run("--dialogues 3 --seed 2 --variety --report " + dir + "r.md");
   ASSERT_EQ(run_1.status, 0) << run_1.err;
   EXPECT_EQ(read_all(dir + "r.md"), run_1.out);
-  EXPECT_NE(run_1.out.find("Generated: 3 dialogues, seed 2"), std::string::npos);
+  EXPECT_NE(run_1.out.find("Variety: 3 dialogues, seed 2"), std::string::npos);
 }
 
 TEST(DialogueCorpus, AFailedWriteExitsWithOneAndLeavesNoFile) {

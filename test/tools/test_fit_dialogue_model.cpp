@@ -1,11 +1,14 @@
-// Runs the fit_dialogue_model program as a user would: options within their ranges, the shipped
-// model reproduced, an existing output replaced only with --overwrite.
+// Runs the fit_dialogue_model program as a user would: options within their ranges, the corpus
+// found or asked for, the shipped model reproduced, an existing output replaced only with
+// --overwrite.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../common/data_sets.hpp"
+#include "ari_social_sim/core/data_sets.hpp"
 #include "program_run.hpp"
 
 namespace ari_social_sim::tools::test {
@@ -41,22 +44,44 @@ TEST(FitDialogueModel, BadOptionsExitWithTwo) {
 }
 
 // --help says where the corpus comes from and how to point at it, naming no folder outside the
-// repository; ARI_MPGT_DIR in the environment replaces the build-time folder.
-TEST(FitDialogueModel, HelpAndEnvironmentPointAtTheCorpus) {
+// repository.
+TEST(FitDialogueModel, HelpSaysWhereTheCorpusComesFrom) {
   const ProgramRun help = run("--help");
   EXPECT_EQ(help.status, 0);
   for (const std::string fragment :
-       {"https://github.com/AddleseeHQ/mpgt-eval", "$ARI_MPGT_DIR", "-DARI_MPGT_DIR=DIR"}) {
+       {"https://github.com/AddleseeHQ/mpgt-eval", "--corpus DIR", "$ARI_MPGT_DIR",
+        "scripts/fetch_data.sh", "$ARI_DATA_DIR/dialogue/mpgt"}) {
     EXPECT_NE(help.err.find(fragment), std::string::npos) << help.err;
   }
   EXPECT_EQ(help.err.find("../"), std::string::npos) << help.err;
-  const std::string missing = ::testing::TempDir() + "fit_dialogue_model_no_corpus";
-  fs::remove_all(missing);
-  expect_refused(run_program("ARI_MPGT_DIR=" + missing + " " + ARI_FIT_DIALOGUE_MODEL_BIN, ""),
-                 "--corpus: " + missing);
+  EXPECT_EQ(help.err.find("-DARI_MPGT_DIR"), std::string::npos) << help.err;
+}
+
+// Without --corpus the tool reads $ARI_MPGT_DIR, else the data set; with neither it says how to
+// get the corpus, before writing anything.
+TEST(FitDialogueModel, WithoutTheCorpusItSaysHowToGetIt) {
+  const std::string data = ::testing::TempDir() + "fit_dialogue_model_no_data/";
+  fs::remove_all(data);
+  fs::create_directories(data);
+  const std::string out = " --out " + data + "m.yaml";
+  expect_refused(
+      run_program("env -u ARI_MPGT_DIR ARI_DATA_DIR=" + data + " " + ARI_FIT_DIALOGUE_MODEL_BIN,
+                  out),
+      "the fit needs the MPGT corpus, and none was given (no --corpus DIR, "
+      "ARI_MPGT_DIR not set): data set 'dialogue/mpgt' is not in " +
+          data + "/dialogue/mpgt: fetch it with scripts/fetch_data.sh");
+  const std::string missing = data + "no_corpus";
+  expect_refused(run_program("ARI_MPGT_DIR=" + missing + " " + ARI_FIT_DIALOGUE_MODEL_BIN, out),
+                 "$ARI_MPGT_DIR: " + missing + ": expected a directory");
+  EXPECT_EQ(fs::directory_iterator(data), fs::directory_iterator());
 }
 
 TEST(FitDialogueModel, ReproducesTheShippedModelAndKeepsAnExistingOne) {
+  ARI_SKIP_WITHOUT_DATA_SET("dialogue/mpgt");
+  // The data set, found without --corpus as a user who fetched it would.
+  const auto run = [](const std::string& arguments) {
+    return run_program("env -u ARI_MPGT_DIR " + std::string(ARI_FIT_DIALOGUE_MODEL_BIN), arguments);
+  };
   const std::string dir = ::testing::TempDir() + "fit_dialogue_model_out/";
   fs::remove_all(dir);
   fs::create_directories(dir);

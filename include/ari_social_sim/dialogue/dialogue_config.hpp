@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "ari_social_sim/core/config_fields.hpp"
@@ -16,17 +17,20 @@
 namespace ari_social_sim::dialogue {
 
 /// The dialogue simulation's settings (config/dialogue/simulation.yaml). File paths are relative
-/// to the settings file; an empty corpus_dir means default_mpgt_dir().
+/// to the settings file. The MPGT corpus is optional: corpus_dir, else $ARI_MPGT_DIR, else none.
 struct DialogueConfig {
   std::string domain_file{"hospital_domain.yaml"};
   std::string model_file{"mpgt_user_model.yaml"};
   std::string templates_file{"nlg_templates.yaml"};
   std::string corpus_dir;
-  NlgMode nlg{NlgMode::kRetrieval};
+  NlgMode nlg{NlgMode::kTemplate};
   UserSimulationConfig users;
   ErrorModelConfig errors;
   TurnTimingConfig timing;
   RewardConfig reward;
+  /// The settings file load() read, or "" for settings made in code; messages name it. Not a
+  /// field of the file.
+  std::string settings_file;
 
   template <class V>
   void visit(V& v) {
@@ -34,10 +38,11 @@ struct DialogueConfig {
             "the domain: what the humans ask about, what ARI can tell them");
     v.field("model_file", model_file, "the user model fitted to MPGT (fit_dialogue_model)");
     v.field("templates_file", templates_file, "the NLG templates and slot words");
-    v.field("corpus_dir", corpus_dir, "the MPGT corpus; empty: default_mpgt_dir()");
+    v.field("corpus_dir", corpus_dir,
+            "the MPGT corpus's folder, optional; empty: $ARI_MPGT_DIR when set, else no corpus");
     v.choice("nlg", nlg,
              "template: templates per act; retrieval: a real MPGT utterance with the same acts, "
-             "templates when the corpus has none",
+             "templates when the corpus has none (needs the corpus)",
              kNlgModes);
     v.section("users", users, "the simulated humans' behaviour beyond the corpus");
     v.section("errors", errors, "the error layer between the humans and ARI");
@@ -63,12 +68,18 @@ struct DialogueSetup {
   DialogueConfig config;
   Domain domain;
   UserModel model;
-  MpgtCorpus corpus;
+  /// Loaded only when pointed at (corpus_dir, else $ARI_MPGT_DIR); the templates do without it.
+  std::optional<MpgtCorpus> corpus;
   std::unique_ptr<Nlg> nlg;
   std::unique_ptr<ErrorModel> errors;
   std::unique_ptr<TurnTiming> timing;
 
+  /// Throws core::ConfigError naming the settings file and field on a bad file, a corpus folder
+  /// that is missing, or `nlg: retrieval` with no corpus pointed at.
   static std::unique_ptr<DialogueSetup> create(const DialogueConfig& config);
+
+  /// The corpus for Nlg and RobotNlu: null when none was pointed at.
+  const MpgtCorpus* corpus_or_null() const { return corpus ? &*corpus : nullptr; }
 };
 
 }  // namespace ari_social_sim::dialogue

@@ -38,10 +38,19 @@ struct MpgtCorpus {
   size_t utterance_count() const;
 };
 
-/// The folder of the MPGT corpus's convo*.txt files when none is given: the environment variable
-/// ARI_MPGT_DIR when set and not empty, else the folder given at build time (the CMake cache
-/// variable ARI_MPGT_DIR). The corpus is not part of the repository (docs/dialogue.md).
-std::string default_mpgt_dir();
+/// The name of the MPGT corpus among the public data sets (core::data_set_dir): scripts/
+/// fetch_data.sh puts its convo*.txt files in $ARI_DATA_DIR/dialogue/mpgt.
+inline constexpr const char* kMpgtDataSet = "dialogue/mpgt";
+
+/// The environment variable ARI_MPGT_DIR when set and not empty, else "" (none pointed at).
+std::string mpgt_dir_from_environment();
+
+/// The corpus folder of a tool that cannot work without it: `given` (its --corpus DIR) when not
+/// empty, else $ARI_MPGT_DIR, else the data set's folder. `needed_by` says what needs it
+/// (`--compare`, `the fit`). Throws core::ConfigError when the folder is not a directory, naming
+/// where the folder came from and, for the data set, how to fetch it
+/// (core::missing_data_set_message).
+std::string required_mpgt_dir(const std::string& given, const std::string& needed_by);
 
 /// For the tools' --help: where the MPGT corpus comes from and how a tool finds it.
 std::string mpgt_corpus_help();
