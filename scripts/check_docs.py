@@ -17,7 +17,7 @@ another entry of docs/references.md). Files a document shows how to create are d
 
 The same citation rules hold for every tracked source, config, message, launch, URDF, build and
 test file (SOURCE_SUFFIXES; `git ls-files`, or every file outside NOT_ROOTS without git), this
-script excepted, as it spells the patterns out. There is no exemption: public data sets are found
+script and check_paths.py excepted, as they spell the patterns out. There is no exemption: public data sets are found
 at run time (docs/data.md), never through a folder the build names.
 
 Each problem is printed as `FILE:LINE: <target> does not exist` (or names the forbidden mention),
@@ -64,6 +64,8 @@ SOURCE_SUFFIXES = (".cpp", ".hpp", ".h", ".py", ".yaml", ".msg", ".srv", ".actio
                    ".test", ".cmake", ".txt", ".sh", ".xml", ".urdf", ".rviz")
 SOURCE_NAMES = ("CMakeLists.txt", ".ci/run")
 THIS_SCRIPT = "scripts/check_docs.py"
+# The checks that spell the forbidden mentions out as patterns and in their self-tests.
+PATTERN_SCRIPTS = (THIS_SCRIPT, "scripts/check_paths.py")
 
 FENCE = re.compile(r"^\s*(```|~~~)\s*([\w+-]*)")
 # Fenced blocks without a language (or marked text) hold program output, which may quote files of
@@ -304,7 +306,8 @@ class Checker:
                 folders[:] = sorted(f for f in folders if f not in NOT_ROOTS)
                 names += [os.path.relpath(os.path.join(root, f), self.repo) for f in files]
         return sorted(n for n in names
-                      if n != THIS_SCRIPT and (n.endswith(SOURCE_SUFFIXES) or n in SOURCE_NAMES))
+                      if n not in PATTERN_SCRIPTS and
+                      (n.endswith(SOURCE_SUFFIXES) or n in SOURCE_NAMES))
 
     def check_source(self, name):
         try:

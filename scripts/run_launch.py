@@ -242,7 +242,8 @@ def run(options, files):
         if deaths.decider_ended():
             status.wait_for_end(STATUS_WAIT_S)
     except (roslaunch.RLException, ValueError, rospkg.ResourceNotFound) as error:
-        # An argument or a file the launch refuses (seed:=abc, a missing file): nothing ran.
+        # An argument or a file the launch refuses (a seed that is no integer, a missing file):
+        # nothing ran.
         print(error, file=sys.stderr)
         return BAD_INPUT_OR_NODE_DIED, "roslaunch refused %s (above); no node ran" % launch
     finally:
