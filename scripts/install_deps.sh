@@ -31,6 +31,8 @@ packages=(
   libgtest-dev googletest libbenchmark-dev
   # inspection
   rviz xvfb xauth imagemagick
+  # rsvg-convert renders docs/architecture.svg to look at (ImageMagick reads no SVG without it)
+  librsvg2-bin
 )
 
 installer=install_deps
