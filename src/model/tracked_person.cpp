@@ -1,8 +1,26 @@
 #include "ari_social_sim/model/tracked_person.hpp"
 
+#include <cmath>
 #include <utility>
 
+#include "ari_social_sim/core/number_text.hpp"
+
 namespace ari_social_sim::model {
+
+std::string pose_problem(const core::Pose2& pose) {
+  const std::pair<const char*, double> coordinates[] = {{"x", pose.position.x()},
+                                                        {"y", pose.position.y()}};
+  for (const auto& [axis, value] : coordinates) {
+    if (!(std::abs(value) <= kMaxMapCoordinateM)) {
+      return std::string(axis) + " = " + core::number_text(value) + ", expected within +-" +
+             core::number_text(kMaxMapCoordinateM) + " m of the map origin";
+    }
+  }
+  if (!std::isfinite(pose.theta)) {
+    return "theta = " + core::number_text(pose.theta) + ", expected a finite angle";
+  }
+  return "";
+}
 
 std::vector<PlacedPerson> place_at_bodies(std::vector<TrackedPerson> persons,
                                           const BodyLocator& locate_body) {
@@ -12,7 +30,8 @@ std::vector<PlacedPerson> place_at_bodies(std::vector<TrackedPerson> persons,
     if (person.body_id.empty()) {
       continue;
     }
-    if (const std::optional<BodyPlacement> body = locate_body(person.body_id)) {
+    const std::optional<BodyPlacement> body = locate_body(person.body_id);
+    if (body && std::isfinite(body->stamp_s) && pose_problem(body->pose).empty()) {
       placed.push_back({std::move(person.person_id), body->stamp_s, body->pose});
     }
   }
