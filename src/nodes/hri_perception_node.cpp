@@ -42,6 +42,7 @@
 #include "per_id_handle.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
+#include "single_publisher.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -215,16 +216,18 @@ class HriPerceptionNode {
     return !problem;
   }
 
-  void on_map(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
-    if (!usable(kMapTopic, *msg)) {
+  void on_map(const ros::MessageEvent<const nav_msgs::OccupancyGrid>& event) {
+    const nav_msgs::OccupancyGrid::ConstPtr msg = event.getConstMessage();
+    if (!map_publisher_.accept(event.getPublisherName()) || !usable(kMapTopic, *msg)) {
       return;
     }
     pipeline_.set_sight_map(from_msg(*msg));
     has_map_ = true;
   }
 
-  void on_world_state(const WorldState::ConstPtr& msg) {
-    if (!usable(kWorldStateTopic, *msg)) {
+  void on_world_state(const ros::MessageEvent<const WorldState>& event) {
+    const WorldState::ConstPtr msg = event.getConstMessage();
+    if (!state_publisher_.accept(event.getPublisherName()) || !usable(kWorldStateTopic, *msg)) {
       return;
     }
     if (!has_map_) {
@@ -642,6 +645,9 @@ class HriPerceptionNode {
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_{"~"};
   InputCounters inputs_{"hri_perception_node"};
+  // world_node's alone: a second world_node's map and world are refused.
+  SinglePublisher map_publisher_{kMapTopic, inputs_};
+  SinglePublisher state_publisher_{kWorldStateTopic, inputs_};
   ros::Publisher diagnostics_pub_;
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
       matches_, gazing_, markers_;
