@@ -22,6 +22,25 @@ std::string pose_problem(const core::Pose2& pose) {
   return "";
 }
 
+std::string transform_problem(const double (&translation)[3], const double (&rotation)[4]) {
+  const char* const axes[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    if (!(std::abs(translation[i]) <= kMaxMapCoordinateM)) {
+      return std::string("translation ") + axes[i] + " = " + core::number_text(translation[i]) +
+             ", expected within +-" + core::number_text(kMaxMapCoordinateM) + " m";
+    }
+  }
+  double norm2 = 0.0;
+  for (const double q : rotation) {
+    norm2 += q * q;
+  }
+  // Finite and far from zero: tf2 normalises it (and refuses one far from unit length).
+  if (!(std::isfinite(norm2) && norm2 > 1e-6)) {
+    return "rotation norm^2 = " + core::number_text(norm2) + ", expected a unit quaternion";
+  }
+  return "";
+}
+
 std::vector<PlacedPerson> place_at_bodies(std::vector<TrackedPerson> persons,
                                           const BodyLocator& locate_body) {
   std::vector<PlacedPerson> placed;

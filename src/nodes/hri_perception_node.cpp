@@ -239,9 +239,11 @@ class HriPerceptionNode {
     }
     const world::WorldSnapshot snapshot = from_msg(*msg);
     if (run_.crops) {
-      // A world state earlier than the last (a reset) starts the history afresh.
+      // A world state earlier than the last (a reset) starts the history afresh, and the figures'
+      // time with it (else their gait would stand still until time caught up).
       if (!people_history_.empty() && people_history_.back().first > msg->header.stamp.toSec()) {
         people_history_.clear();
+        figures_time_s_ = 0.0;
       }
       people_history_.emplace_back(msg->header.stamp.toSec(), snapshot.humans);
       while (people_history_.size() > kPeopleHistory) {
@@ -374,6 +376,7 @@ class HriPerceptionNode {
   std::optional<Eigen::Isometry3d> camera_pose(const std_msgs::Header& header,
                                                double latest_within_s) {
     tf_buffer_->renew_if_stale();
+    inputs_.add_drops("tf", "absurd transform", tf_buffer_->take_refused().count);
     const tf2_ros::Buffer& buffer = tf_buffer_->buffer();
     try {
       return isometry_of(
@@ -646,8 +649,8 @@ class HriPerceptionNode {
   ros::NodeHandle private_nh_{"~"};
   InputCounters inputs_{"hri_perception_node"};
   // world_node's alone: a second world_node's map and world are refused.
-  SinglePublisher map_publisher_{kMapTopic, inputs_};
-  SinglePublisher state_publisher_{kWorldStateTopic, inputs_};
+  SinglePublisher map_publisher_{kMapTopic, &inputs_};
+  SinglePublisher state_publisher_{kWorldStateTopic, &inputs_};
   ros::Publisher diagnostics_pub_;
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
       matches_, gazing_, markers_;

@@ -35,6 +35,10 @@ class InputCounters {
   bool plausible(const std::string& transform, const core::Pose2& pose);
   /// Counts a drop of `topic`'s message for `field` (which holds `what`) and warns.
   void drop(const std::string& topic, const std::string& field, const std::string& what);
+  /// Counts `n` drops someone else warned about (RenewingTfBuffer's refused transforms).
+  void add_drops(const std::string& topic, const std::string& field, uint64_t n) {
+    drops_[topic + " " + field].dropped += n;
+  }
   void add_clamps(const std::string& topic, uint64_t clamped) { clamps_[topic] += clamped; }
 
   /// Publishes the status on `diagnostics` (a diagnostic_msgs/DiagnosticArray publisher) stamped

@@ -3,6 +3,7 @@
 #include <ros/console.h>
 #include <ros/master.h>
 #include <ros/names.h>
+#include <ros/this_node.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include <algorithm>
@@ -35,9 +36,11 @@ std::optional<std::vector<std::string>> publishers_of(const std::string& topic) 
 
 }  // namespace
 
-SinglePublisher::SinglePublisher(std::string topic, InputCounters& inputs)
+SinglePublisher::SinglePublisher(std::string topic, InputCounters* inputs)
     : topic_(ros::names::resolve(topic)), inputs_(inputs) {
-  inputs_.declare_drop(topic_, "publisher");
+  if (inputs_) {
+    inputs_->declare_drop(topic_, "publisher");
+  }
 }
 
 bool SinglePublisher::still_publishing(const std::string& node) {
@@ -64,11 +67,18 @@ bool SinglePublisher::accept(const std::string& publisher) {
     owner_publishing_ = true;
     return true;
   }
-  ROS_ERROR_THROTTLE(5.0,
-                     "%s: a second publisher, %s, besides %s (a second world_node?): its messages "
-                     "are refused while %s publishes",
-                     topic_.c_str(), publisher.c_str(), owner_.c_str(), owner_.c_str());
-  inputs_.drop(topic_, "publisher", publisher + ", expected " + owner_ + " alone");
+  // Throttled per topic (ROS_ERROR_THROTTLE would share one throttle between all topics).
+  const ros::WallTime now = ros::WallTime::now();
+  if (last_error_.isZero() || (now - last_error_).toSec() >= kErrorPeriod_s) {
+    last_error_ = now;
+    ROS_ERROR(
+        "%s: a second publisher, %s, besides %s (a second world_node?): its messages are "
+        "refused while %s publishes",
+        topic_.c_str(), publisher.c_str(), owner_.c_str(), owner_.c_str());
+  }
+  if (inputs_) {
+    inputs_->drop(topic_, "publisher", publisher + ", expected " + owner_ + " alone");
+  }
   return false;
 }
 

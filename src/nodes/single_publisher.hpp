@@ -11,13 +11,13 @@ namespace ari_social_sim::nodes {
 /// Keeps a topic that one node alone should publish (/map, /sim/world_state: world_node's) to the
 /// first node heard on it. A second world_node started by mistake publishes its own map and
 /// world: mixed in, perception and navigation would follow it for good. Its messages are refused,
-/// counted as drops on `inputs` and reported with ROS_ERROR (throttled) naming both publishers;
-/// once the first publisher no longer publishes the topic (the master says so), the next one
-/// heard takes over. Callers pass the message's publisher (ros::MessageEvent::getPublisherName,
-/// the connection header's callerid).
+/// counted as drops on `inputs` (if given) and reported with ROS_ERROR (throttled) naming both
+/// publishers; once the first publisher no longer publishes the topic (the master says so), the
+/// next one heard takes over. Callers pass the message's publisher
+/// (ros::MessageEvent::getPublisherName, the connection header's callerid).
 class SinglePublisher {
  public:
-  SinglePublisher(std::string topic, InputCounters& inputs);
+  explicit SinglePublisher(std::string topic, InputCounters* inputs = nullptr);
 
   /// True if a message `publisher` sent on the topic is to be used.
   bool accept(const std::string& publisher);
@@ -31,12 +31,14 @@ class SinglePublisher {
   bool still_publishing(const std::string& node);
 
   static constexpr double kMasterQueryPeriod_s = 1.0;
+  static constexpr double kErrorPeriod_s = 5.0;  // wall seconds between errors
 
   std::string topic_;
-  InputCounters& inputs_;
+  InputCounters* inputs_;
   std::string owner_;
   bool owner_publishing_{true};
   ros::WallTime last_query_;
+  ros::WallTime last_error_;
 };
 
 }  // namespace ari_social_sim::nodes

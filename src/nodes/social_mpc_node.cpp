@@ -74,6 +74,7 @@ class SocialMpcNode {
         [this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
     inputs_.declare_drop("tf", "map -> base_footprint");
     inputs_.declare_drop("tf", "map -> body_*");
+    inputs_.declare_drop("tf", "absurd transform");
     move_base_.start();
     approach_.start();
     // The session looks at perception and runs its cycles at the first call in their periods:
@@ -358,6 +359,7 @@ class SocialMpcNode {
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
+    inputs_.add_drops("tf", "absurd transform", tf_.take_refused().count);
     inputs_.publish_when_due(diagnostics_pub_, now);
     tf_.renew_if_stale();
     const navigation::SessionInputs inputs = session_inputs();
@@ -442,7 +444,7 @@ class SocialMpcNode {
   navigation::NavigationSession session_;
   std::map<navigation::GoalId, GoalClient> clients_;  // of the goals waiting or pursued
   InputCounters inputs_{"social_mpc_node"};
-  SinglePublisher map_publisher_{"/map", inputs_};  // world_node's alone
+  SinglePublisher map_publisher_{"/map", &inputs_};  // world_node's alone
   MeasuredAri measured_;
   std::string last_status_;
 

@@ -35,6 +35,12 @@ constexpr double kMaxMapCoordinateM = 1e4;
 /// with the coordinates in %g form ("x = 1e+300 beyond +-10000 m", "theta = nan").
 std::string pose_problem(const core::Pose2& pose);
 
+/// "" if a transform (tf: translation, rotation quaternion x y z w) can be taken in: translation
+/// within kMaxMapCoordinateM on each axis, rotation finite and not zero. Else what is wrong, in
+/// %g form. tf2 itself only refuses NaN: a transform at inf or 1e300 would be kept, and a static
+/// one (map -> odom) overwritten for good, since tf2 never forgets a static transform.
+std::string transform_problem(const double (&translation)[3], const double (&rotation)[4]);
+
 /// A tracked person at their body's placement.
 struct PlacedPerson {
   std::string person_id;
