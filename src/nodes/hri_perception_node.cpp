@@ -227,6 +227,7 @@ class HriPerceptionNode {
 
   void on_world_state(const ros::MessageEvent<const WorldState>& event) {
     const WorldState::ConstPtr msg = event.getConstMessage();
+    clock_publishers_.check_when_due();
     if (!state_publisher_.accept(event.getPublisherName()) || !usable(kWorldStateTopic, *msg)) {
       return;
     }
@@ -651,6 +652,7 @@ class HriPerceptionNode {
   // world_node's alone: a second world_node's map and world are refused.
   SinglePublisher map_publisher_{kMapTopic, &inputs_};
   SinglePublisher state_publisher_{kWorldStateTopic, &inputs_};
+  PublisherCountWatch clock_publishers_{"/clock"};
   ros::Publisher diagnostics_pub_;
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
       matches_, gazing_, markers_;

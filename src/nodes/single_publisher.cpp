@@ -82,4 +82,26 @@ bool SinglePublisher::accept(const std::string& publisher) {
   return false;
 }
 
+PublisherCountWatch::PublisherCountWatch(std::string topic) : topic_(ros::names::resolve(topic)) {}
+
+void PublisherCountWatch::check_when_due() {
+  const ros::WallTime now = ros::WallTime::now();
+  if ((now - last_check_).toSec() < kPeriod_s) {
+    return;
+  }
+  last_check_ = now;
+  const std::optional<std::vector<std::string>> nodes = publishers_of(topic_);
+  if (!nodes || nodes->size() < 2 ||
+      (!last_error_.isZero() && (now - last_error_).toSec() < kErrorPeriod_s)) {
+    return;
+  }
+  last_error_ = now;
+  std::string names;
+  for (const std::string& node : *nodes) {
+    names += (names.empty() ? "" : ", ") + node;
+  }
+  ROS_ERROR("%s: %zu publishers, %s (a second world_node?): their messages mix", topic_.c_str(),
+            nodes->size(), names.c_str());
+}
+
 }  // namespace ari_social_sim::nodes

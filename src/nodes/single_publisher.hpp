@@ -41,4 +41,23 @@ class SinglePublisher {
   ros::WallTime last_error_;
 };
 
+/// Reports (ROS_ERROR naming them all) when the master lists more than one publisher of a topic
+/// whose messages a node cannot refuse by publisher: /clock, which roscpp subscribes to itself. A
+/// second world_node's clock still mixes in; this says so, loudly.
+class PublisherCountWatch {
+ public:
+  explicit PublisherCountWatch(std::string topic);
+
+  /// Asks the master at most once per kPeriod_s of wall time; call it from a timer or callback.
+  void check_when_due();
+
+ private:
+  static constexpr double kPeriod_s = 1.0;
+  static constexpr double kErrorPeriod_s = 5.0;
+
+  std::string topic_;
+  ros::WallTime last_check_;
+  ros::WallTime last_error_;
+};
+
 }  // namespace ari_social_sim::nodes

@@ -360,6 +360,7 @@ class SocialMpcNode {
   void on_timer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
     inputs_.add_drops("tf", "absurd transform", tf_.take_refused().count);
+    clock_publishers_.check_when_due();
     inputs_.publish_when_due(diagnostics_pub_, now);
     tf_.renew_if_stale();
     const navigation::SessionInputs inputs = session_inputs();
@@ -445,6 +446,7 @@ class SocialMpcNode {
   std::map<navigation::GoalId, GoalClient> clients_;  // of the goals waiting or pursued
   InputCounters inputs_{"social_mpc_node"};
   SinglePublisher map_publisher_{"/map", &inputs_};  // world_node's alone
+  PublisherCountWatch clock_publishers_{"/clock"};
   MeasuredAri measured_;
   std::string last_status_;
 
