@@ -4,6 +4,7 @@
 # The navigation core builds on it alone, so it could run on the real robot.
 add_library(ari_model
   src/model/occupancy_grid.cpp
+  src/model/shape_geometry.cpp
   src/model/tracked_person.cpp
   src/model/world_file.cpp)
 target_link_libraries(ari_model PUBLIC ari_core)

@@ -84,6 +84,8 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(test_social_navigation ari_perception ${catkin_LIBRARIES})
   add_dependencies(test_social_navigation ${PROJECT_NAME}_generate_messages_cpp social_mpc_node world_node
     hri_perception_node group_detection_node)
+  add_rostest(test/integration/hostile_inputs.test DEPENDENCIES world_node hri_perception_node
+    social_mpc_node)
 endif()
 
 if(benchmark_FOUND)

@@ -57,7 +57,8 @@ add_library(ari_world_conversions
   src/nodes/conversions/world_state.cpp
   src/nodes/input_counters.cpp
   src/nodes/renewing_tf_buffer.cpp
-  src/nodes/ros_params.cpp)
+  src/nodes/ros_params.cpp
+  src/nodes/single_publisher.cpp)
 target_include_directories(ari_world_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
 target_link_libraries(ari_world_conversions PUBLIC ari_world ${catkin_LIBRARIES})
 add_dependencies(ari_world_conversions ${PROJECT_NAME}_generate_messages_cpp)

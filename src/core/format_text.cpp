@@ -1,5 +1,6 @@
 #include "ari_social_sim/core/format_text.hpp"
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 
@@ -19,6 +20,16 @@ std::string format_text(const char* pattern, ...) {
   }
   va_end(args);
   return text;
+}
+
+std::string coordinate_text(double value) {
+  // Fixed decimals up to a million: beyond, %f writes every digit of the integer part.
+  constexpr double kLargestFixed = 1e6;
+  return std::abs(value) < kLargestFixed ? format_text("%.2f", value) : format_text("%g", value);
+}
+
+std::string point_text(const Eigen::Vector2d& point) {
+  return "(" + coordinate_text(point.x()) + ", " + coordinate_text(point.y()) + ")";
 }
 
 }  // namespace ari_social_sim::core

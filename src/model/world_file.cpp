@@ -14,30 +14,7 @@ namespace {
 // humans and ARI in scene files.
 constexpr ObjectId kFirstAutomaticStaticId = 1000;
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 }  // namespace
-
-bool is_convex(const std::vector<Eigen::Vector2d>& points) {
-  int sign = 0;
-  const size_t n = points.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d edge = points[(i + 1) % n] - points[i];
-    const Eigen::Vector2d next = points[(i + 2) % n] - points[(i + 1) % n];
-    const double turn = cross(edge, next);
-    if (std::abs(turn) < 1e-9) {
-      return false;
-    }
-    const int s = turn > 0 ? 1 : -1;
-    if (sign != 0 && s != sign) {
-      return false;
-    }
-    sign = s;
-  }
-  return true;
-}
 
 std::string WorldObjectEntry::shape_mismatch() const {
   const bool wall = type == ShapeType::kWall, box = type == ShapeType::kBox,
@@ -154,6 +131,17 @@ void WorldDescription::validate() const {
     throw core::ConfigError("world '" + name + "': objects: expected at most " +
                             std::to_string(kMaxWorldObjects) + " objects, got " +
                             std::to_string(objects.size()));
+  }
+  // Objects built in code (learning tasks, tests) meet the file's geometry rules too: whatever
+  // reaches Box2D must be a shape it can build.
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const std::string defect = static_object_defect(objects[i]);
+    if (!defect.empty()) {
+      throw core::ConfigError("world '" + name + "': objects[" + std::to_string(i) + "] ('" +
+                              objects[i].name + "'): expected a shape Box2D can build (" +
+                              polygon_expectation() + "; sides and radii at least " +
+                              core::number_text(kMinShapeFeatureM) + " m), got " + defect);
+    }
   }
 }
 

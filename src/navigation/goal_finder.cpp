@@ -15,10 +15,6 @@ constexpr double kTwoPi = 2.0 * core::kPi;
 // Spacing of the footprint outline points that test personal spaces.
 constexpr double kOutlineSpacing = 0.1;
 
-std::string format_point(const Eigen::Vector2d& p) {
-  return core::format_text("(%.2f, %.2f)", p.x(), p.y());
-}
-
 Eigen::Vector2d unit(double angle) {
   return {std::cos(angle), std::sin(angle)};
 }
@@ -56,7 +52,7 @@ std::vector<Gap> gaps_around(const Eigen::Vector2d& centre,
 
 std::string describe(const NavigationTarget& target) {
   if (const auto* pose = std::get_if<PoseTarget>(&target)) {
-    return "pose " + format_point(pose->pose.position);
+    return "pose " + core::point_text(pose->pose.position);
   }
   if (const auto* person = std::get_if<PersonTarget>(&target)) {
     return "person " + person->person_id;
@@ -161,13 +157,13 @@ GoalSearch GoalFinder::find_pose(const PoseTarget& target, const GridField& sdf)
   int x, y;
   if (!sdf.cell_of(target.pose.position, x, y)) {
     return GoalFailure{GoalFailure::Kind::kUnreachable,
-                       "goal " + format_point(target.pose.position) +
+                       "goal " + core::point_text(target.pose.position) +
                            " is outside the map, which spans " + MapBounds::of(sdf).describe()};
   }
   const PerceivedScene nobody;
   if (!is_free(target.pose, nobody, sdf, 0.0)) {
     return GoalFailure{GoalFailure::Kind::kUnreachable,
-                       "goal " + format_point(target.pose.position) +
+                       "goal " + core::point_text(target.pose.position) +
                            ": ARI's footprint there overlaps a wall or furniture"};
   }
   Goal goal;
@@ -226,7 +222,7 @@ GoalSearch GoalFinder::find_person(const PersonEstimate& person, const Perceived
   }
   return GoalFailure{
       GoalFailure::Kind::kUnreachable,
-      "no free place in front of person " + person.id + " at " + format_point(person.position)};
+      "no free place in front of person " + person.id + " at " + core::point_text(person.position)};
 }
 
 GoalSearch GoalFinder::find_group(const GroupEstimate& group, const PerceivedScene& scene,
@@ -305,7 +301,7 @@ GoalSearch GoalFinder::find_group(const GroupEstimate& group, const PerceivedSce
     }
   }
   return GoalFailure{GoalFailure::Kind::kUnreachable,
-                     "group " + group.id + " at " + format_point(centre) +
+                     "group " + group.id + " at " + core::point_text(centre) +
                          ": no gap with room for ARI and no free place just outside it"};
 }
 

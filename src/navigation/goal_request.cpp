@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 
 namespace ari_social_sim::navigation {
@@ -63,10 +64,8 @@ MapBounds MapBounds::of(const GridField& map) {
 }
 
 std::string MapBounds::describe() const {
-  char text[128];
-  std::snprintf(text, sizeof(text), "x [%.2f, %.2f] and y [%.2f, %.2f]", min.x(), max.x(), min.y(),
-                max.y());
-  return text;
+  return "x [" + core::coordinate_text(min.x()) + ", " + core::coordinate_text(max.x()) +
+         "] and y [" + core::coordinate_text(min.y()) + ", " + core::coordinate_text(max.y()) + "]";
 }
 
 bool MapBounds::contains(const Eigen::Vector2d& point) const {
@@ -79,11 +78,8 @@ void check_inside_map(const core::Pose2& X_map_goal, const MapBounds& bounds,
   if (bounds.contains(X_map_goal.position)) {
     return;
   }
-  char point[64];
-  std::snprintf(point, sizeof(point), "(%.2f, %.2f)", X_map_goal.position.x(),
-                X_map_goal.position.y());
-  throw core::RequestError(field + ": " + point + " in map is outside the map, which spans " +
-                           bounds.describe());
+  throw core::RequestError(field + ": " + core::point_text(X_map_goal.position) +
+                           " in map is outside the map, which spans " + bounds.describe());
 }
 
 void check_target_id(const std::string& id, const std::string& field) {
@@ -101,11 +97,10 @@ void check_target(const NavigationTarget& target) {
     const core::Pose2& p = pose->pose;
     if (!std::isfinite(p.position.x()) || !std::isfinite(p.position.y()) ||
         !std::isfinite(p.theta)) {
-      char text[128];
-      std::snprintf(text, sizeof(text),
-                    "pose target: expected finite x, y and theta, got (%.2f, %.2f, %.2f)",
-                    p.position.x(), p.position.y(), p.theta);
-      throw core::RequestError(text);
+      throw core::RequestError("pose target: expected finite x, y and theta, got (" +
+                               core::coordinate_text(p.position.x()) + ", " +
+                               core::coordinate_text(p.position.y()) + ", " +
+                               core::coordinate_text(p.theta) + ")");
     }
   } else if (const auto* person = std::get_if<PersonTarget>(&target)) {
     check_target_id(person->person_id, "person target");

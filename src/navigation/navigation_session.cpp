@@ -4,6 +4,7 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/navigation/policy_controller.hpp"
 
 namespace ari_social_sim::navigation {
@@ -52,8 +53,9 @@ NavigationTarget rounded(const NavigationTarget& target) {
 SessionInputs rounded(const SessionInputs& inputs) {
   SessionInputs out;
   out.now_s = rounded(inputs.now_s);
-  out.robot = inputs.robot;
-  if (out.robot) {
+  // A rogue transform (map -> odom at 1e300) places ARI nowhere rather than there.
+  if (inputs.robot && model::pose_problem(inputs.robot->pose).empty()) {
+    out.robot = inputs.robot;
     out.robot->pose = rounded(out.robot->pose);
   }
   out.perception.persons = inputs.perception.persons;
@@ -108,6 +110,7 @@ SessionOutput NavigationSession::request(const NavigationTarget& target,
                                          const SessionInputs& told) {
   const SessionInputs inputs = rounded(told);
   SessionOutput out;
+  follow_clock(inputs.now_s, out);
   if (waiting_) {
     out.goals.push_back(
         {waiting_->id,
@@ -136,6 +139,7 @@ SessionOutput NavigationSession::cancel(GoalId goal) {
 
 SessionOutput NavigationSession::control(const SessionInputs& told) {
   SessionOutput out;
+  follow_clock(rounded(told.now_s), out);
   const double rate_hz = control_rate_hz_;
   const bool look = first_in_period(told.now_s, kLooksPerCycle * rate_hz, last_look_);
   const bool cycle = first_in_period(told.now_s, rate_hz, last_cycle_);
@@ -209,6 +213,26 @@ void NavigationSession::start(GoalId id, const NavigationTarget& target,
   }
   pursued_ = id;
   out.goals.push_back({id, {GoalState::kActive, ""}});
+}
+
+void NavigationSession::follow_clock(double now_s, SessionOutput& out) {
+  const std::optional<double> before_s = last_now_s_;
+  last_now_s_ = now_s;
+  if (!before_s || now_s >= *before_s) {
+    return;
+  }
+  tracker_.clear();
+  received_groups_.clear();
+  if (waiting_) {
+    waiting_->until_s = now_s + kTargetWait_s;
+  }
+  if (pursued_) {
+    controller_->cancel();
+    end_pursued({GoalState::kAborted, "sim time went back from " + core::number_text(*before_s) +
+                                          " s to " + core::number_text(now_s) +
+                                          " s (a world reset): the goal's progress is void"},
+                out);
+  }
 }
 
 void NavigationSession::end_pursued(const GoalStatus& status, SessionOutput& out) {

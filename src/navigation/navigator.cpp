@@ -6,6 +6,7 @@
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/navigation/goal_request.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
@@ -18,12 +19,6 @@ namespace {
 std::string format_seconds(double s) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.1f s", s);
-  return text;
-}
-
-std::string format_point(const Eigen::Vector2d& p) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "(%.2f, %.2f)", p.x(), p.y());
   return text;
 }
 
@@ -151,13 +146,13 @@ Navigator::FieldSearch Navigator::field_to(const Goal& goal, const core::Pose2& 
       std::make_unique<GeodesicField>(sdf_, goal.pose.position, config_.navigator.geodesic, discs);
   if (!field->reachable(goal.pose.position)) {
     return GoalFailure{GoalFailure::Kind::kUnreachable,
-                       "goal " + format_point(goal.pose.position) +
+                       "goal " + core::point_text(goal.pose.position) +
                            " is too close to walls or furniture for ARI to reach"};
   }
   if (!field->reachable(robot.position)) {
     return GoalFailure{GoalFailure::Kind::kUnreachable,
-                       "no collision-free path from ARI at " + format_point(robot.position) +
-                           " to the goal " + format_point(goal.pose.position)};
+                       "no collision-free path from ARI at " + core::point_text(robot.position) +
+                           " to the goal " + core::point_text(goal.pose.position)};
   }
   return field;
 }
@@ -287,8 +282,8 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
     return finish(NavigationState::kAborted,
                   "no progress toward " + describe(*target_) + " for " +
                       format_seconds(time_s - best_distance_time_s_) + " (" +
-                      format_point(robot.pose.position) + ", " +
-                      std::to_string(step.distance_to_goal_m).substr(0, 4) + " m to go)");
+                      core::point_text(robot.pose.position) + ", " +
+                      core::coordinate_text(step.distance_to_goal_m) + " m to go)");
   }
 
   build_problem(time_s, robot, scene);

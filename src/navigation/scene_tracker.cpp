@@ -2,13 +2,22 @@
 
 #include <cmath>
 
+#include "ari_social_sim/model/tracked_person.hpp"
+
 namespace ari_social_sim::navigation {
 
 void SceneTracker::observe_person(const std::string& id, double time_s,
                                   const Eigen::Vector2d& position, double heading) {
+  if (!std::isfinite(time_s) || !model::pose_problem({position, heading}).empty()) {
+    return;  // one absurd report would leave the filter at inf or NaN for good
+  }
   const double r = config_.position_noise_m * config_.position_noise_m;
   const Eigen::Vector2d facing(std::cos(heading), std::sin(heading));
   auto it = people_.find(id);
+  if (it != people_.end() && time_s < it->second.time_s - kTimeWentBack_s) {
+    people_.erase(it);  // time went back (a world reset): this is someone new
+    it = people_.end();
+  }
   if (it == people_.end()) {
     Track track;
     track.id = id;
@@ -50,6 +59,9 @@ void SceneTracker::observe_person(const std::string& id, double time_s,
 
 void SceneTracker::observe_group(const std::string& id, double time_s,
                                  const std::vector<std::string>& members) {
+  if (!std::isfinite(time_s)) {
+    return;
+  }
   GroupReport& report = groups_[id];
   report.time_s = time_s;
   for (const std::string& member : members) {
@@ -89,16 +101,22 @@ PerceivedScene SceneTracker::scene(double time_s) const {
 }
 
 void SceneTracker::forget(double time_s) {
+  // Reported "later" than now by more than kTimeWentBack_s: before time went back (a world reset),
+  // and never timed out otherwise.
+  const auto stale = [time_s](double since_s, double timeout_s) {
+    return since_s > timeout_s || since_s < -kTimeWentBack_s;
+  };
   for (auto it = people_.begin(); it != people_.end();) {
-    it = time_s - it->second.time_s > config_.person_timeout_s ? people_.erase(it) : std::next(it);
+    it = stale(time_s - it->second.time_s, config_.person_timeout_s) ? people_.erase(it)
+                                                                     : std::next(it);
   }
   for (auto group = groups_.begin(); group != groups_.end();) {
     std::map<std::string, double>& members = group->second.members;
     for (auto member = members.begin(); member != members.end();) {
-      member = time_s - member->second > config_.group_timeout_s ? members.erase(member)
-                                                                 : std::next(member);
+      member = stale(time_s - member->second, config_.group_timeout_s) ? members.erase(member)
+                                                                       : std::next(member);
     }
-    const bool gone = time_s - group->second.time_s > config_.group_timeout_s;
+    const bool gone = stale(time_s - group->second.time_s, config_.group_timeout_s);
     group = gone ? groups_.erase(group) : std::next(group);
   }
 }

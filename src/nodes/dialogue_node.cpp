@@ -23,6 +23,7 @@
 #include "dialogue/rl_env_services.hpp"
 #include "dialogue/sim_say_client.hpp"
 #include "ros_params.hpp"
+#include "single_publisher.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -122,9 +123,15 @@ int main(int argc, char** argv) {
     std::unique_ptr<nodes::LiveDialogueNode> node;
     // Subscribed before the node is built, so that no state is missed meanwhile. Every state
     // counts: a word lasts 8 steps at 150 wpm and 0.05 s, an act at least that.
+    // world_node's alone: a second world_node's states are refused.
+    nodes::SinglePublisher state_publisher("/sim/world_state");
     const ros::Subscriber states = nh.subscribe<WorldState>(
-        "/sim/world_state", 100, [&stage, &node](const WorldState::ConstPtr& state) {
-          stage.follow(nodes::from_msg(*state));
+        "/sim/world_state", 100,
+        [&stage, &node, &state_publisher](const ros::MessageEvent<const WorldState>& event) {
+          if (!state_publisher.accept(event.getPublisherName())) {
+            return;
+          }
+          stage.follow(nodes::from_msg(*event.getConstMessage()));
           if (node) {
             node->tick();
           }

@@ -42,6 +42,7 @@
 #include "per_id_handle.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
+#include "single_publisher.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -215,16 +216,19 @@ class HriPerceptionNode {
     return !problem;
   }
 
-  void on_map(const nav_msgs::OccupancyGrid::ConstPtr& msg) {
-    if (!usable(kMapTopic, *msg)) {
+  void on_map(const ros::MessageEvent<const nav_msgs::OccupancyGrid>& event) {
+    const nav_msgs::OccupancyGrid::ConstPtr msg = event.getConstMessage();
+    if (!map_publisher_.accept(event.getPublisherName()) || !usable(kMapTopic, *msg)) {
       return;
     }
     pipeline_.set_sight_map(from_msg(*msg));
     has_map_ = true;
   }
 
-  void on_world_state(const WorldState::ConstPtr& msg) {
-    if (!usable(kWorldStateTopic, *msg)) {
+  void on_world_state(const ros::MessageEvent<const WorldState>& event) {
+    const WorldState::ConstPtr msg = event.getConstMessage();
+    clock_publishers_.check_when_due();
+    if (!state_publisher_.accept(event.getPublisherName()) || !usable(kWorldStateTopic, *msg)) {
       return;
     }
     if (!has_map_) {
@@ -236,9 +240,11 @@ class HriPerceptionNode {
     }
     const world::WorldSnapshot snapshot = from_msg(*msg);
     if (run_.crops) {
-      // A world state earlier than the last (a reset) starts the history afresh.
+      // A world state earlier than the last (a reset) starts the history afresh, and the figures'
+      // time with it (else their gait would stand still until time caught up).
       if (!people_history_.empty() && people_history_.back().first > msg->header.stamp.toSec()) {
         people_history_.clear();
+        figures_time_s_ = 0.0;
       }
       people_history_.emplace_back(msg->header.stamp.toSec(), snapshot.humans);
       while (people_history_.size() > kPeopleHistory) {
@@ -371,6 +377,7 @@ class HriPerceptionNode {
   std::optional<Eigen::Isometry3d> camera_pose(const std_msgs::Header& header,
                                                double latest_within_s) {
     tf_buffer_->renew_if_stale();
+    inputs_.add_drops("tf", "absurd transform", tf_buffer_->take_refused().count);
     const tf2_ros::Buffer& buffer = tf_buffer_->buffer();
     try {
       return isometry_of(
@@ -642,6 +649,10 @@ class HriPerceptionNode {
   ros::NodeHandle nh_;
   ros::NodeHandle private_nh_{"~"};
   InputCounters inputs_{"hri_perception_node"};
+  // world_node's alone: a second world_node's map and world are refused.
+  SinglePublisher map_publisher_{kMapTopic, &inputs_};
+  SinglePublisher state_publisher_{kWorldStateTopic, &inputs_};
+  PublisherCountWatch clock_publishers_{"/clock"};
   ros::Publisher diagnostics_pub_;
   ros::Publisher faces_tracked_, bodies_tracked_, voices_tracked_, persons_tracked_, persons_known_,
       matches_, gazing_, markers_;

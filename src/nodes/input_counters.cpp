@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ari_social_sim/core/number_text.hpp"
+#include "ari_social_sim/model/tracked_person.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -27,6 +28,15 @@ bool InputCounters::finite(const std::string& topic, const std::string& field, d
     return true;
   }
   drop(topic, field, core::number_text(value) + ", not a finite number");
+  return false;
+}
+
+bool InputCounters::plausible(const std::string& transform, const core::Pose2& pose) {
+  const std::string problem = model::pose_problem(pose);
+  if (problem.empty()) {
+    return true;
+  }
+  drop("tf", transform, problem);
   return false;
 }
 

@@ -8,6 +8,8 @@
 #include <map>
 #include <string>
 
+#include "ari_social_sim/core/pose2.hpp"
+
 namespace ari_social_sim::nodes {
 
 /// What a node did with the numbers of its input topics: messages dropped because a field it uses
@@ -27,8 +29,16 @@ class InputCounters {
 
   /// True if `value` is finite. Otherwise counts a drop of `topic`'s message for `field` and warns.
   bool finite(const std::string& topic, const std::string& field, double value);
+  /// True if `pose` is a place in the map (model::pose_problem: finite, within
+  /// model::kMaxMapCoordinateM). Otherwise counts a drop of the transform `transform` ("map ->
+  /// base_footprint") under "tf" and warns, with the coordinates in %g form.
+  bool plausible(const std::string& transform, const core::Pose2& pose);
   /// Counts a drop of `topic`'s message for `field` (which holds `what`) and warns.
   void drop(const std::string& topic, const std::string& field, const std::string& what);
+  /// Counts `n` drops someone else warned about (RenewingTfBuffer's refused transforms).
+  void add_drops(const std::string& topic, const std::string& field, uint64_t n) {
+    drops_[topic + " " + field].dropped += n;
+  }
   void add_clamps(const std::string& topic, uint64_t clamped) { clamps_[topic] += clamped; }
 
   /// Publishes the status on `diagnostics` (a diagnostic_msgs/DiagnosticArray publisher) stamped

@@ -50,6 +50,10 @@ std::optional<navigation::RobotObservation> MeasuredAri::observe(const tf2_ros::
   navigation::RobotObservation robot;
   robot.pose.position = {t.transform.translation.x, t.transform.translation.y};
   robot.pose.theta = tf2::getYaw(t.transform.rotation);
+  // A rogue map -> odom (x = 1e300) places ARI nowhere, not there, until good transforms return.
+  if (!inputs_.plausible("map -> base_footprint", robot.pose)) {
+    return std::nullopt;
+  }
   robot.linear_mps = linear_mps_;
   robot.angular_rps = angular_rps_;
   robot.pan_rad = pan_rad_;

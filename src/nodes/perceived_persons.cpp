@@ -76,7 +76,8 @@ std::vector<PerceivedPersons::Placed> PerceivedPersons::place(const tf2_ros::Buf
     if (!t) {
       t = latest(tf, kMapFrame, person_frame(person.person_id));
     }
-    if (t) {
+    // A frame tf places absurdly (inf, 1e300: a rogue publisher) places nobody.
+    if (t && model::pose_problem(planar_pose(*t)).empty()) {
       placed.push_back({person.person_id, t->header.stamp.toSec(), planar_pose(*t), from_body});
     }
   }

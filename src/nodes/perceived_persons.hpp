@@ -58,8 +58,8 @@ class PerceivedPersons {
   const std::optional<double>& list_time_s() const { return list_time_s_; }
   /// Each tracked person at the latest transform map -> body_<body id>, or, for one without a
   /// body or whose body frame tf does not have, at map -> person_<id>. Persons tf cannot place
-  /// are left out. (Social navigation and group detection need the body's facing:
-  /// model::place_at_bodies.)
+  /// are left out, and so are those placed absurdly (model::pose_problem). (Social navigation and
+  /// group detection need the body's facing: model::place_at_bodies.)
   std::vector<Placed> place(const tf2_ros::Buffer& tf) const;
 
  private:

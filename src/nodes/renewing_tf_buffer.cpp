@@ -1,11 +1,88 @@
 #include "renewing_tf_buffer.hpp"
 
-#include <string>
+#include <ros/console.h>
+#include <ros/message_event.h>
+#include <tf2/exceptions.h>
+
 #include <vector>
+
+#include "ari_social_sim/model/tracked_person.hpp"
 
 namespace ari_social_sim::nodes {
 
-RenewingTfBuffer::RenewingTfBuffer() : current_(std::make_unique<Listening>()) {}
+/// One buffer with the subscriptions to /tf and /tf_static that fill it.
+class RenewingTfBuffer::Listening {
+ public:
+  explicit Listening(RenewingTfBuffer& owner) : owner_(owner) {
+    nh_.setCallbackQueue(&queue_);
+    dynamic_ = nh_.subscribe("/tf", 100, &Listening::on_dynamic, this);
+    static_ = nh_.subscribe("/tf_static", 100, &Listening::on_static, this);
+    spinner_.start();
+  }
+  ~Listening() { spinner_.stop(); }  // no callback runs once the members go
+
+  tf2_ros::Buffer buffer;
+
+ private:
+  void on_dynamic(const ros::MessageEvent<const tf2_msgs::TFMessage>& event) { take(event, false); }
+  void on_static(const ros::MessageEvent<const tf2_msgs::TFMessage>& event) { take(event, true); }
+
+  void take(const ros::MessageEvent<const tf2_msgs::TFMessage>& event, bool is_static) {
+    // As tf2_ros::TransformListener: transforms from before a jump back would answer lookups.
+    const ros::Time now = ros::Time::now();
+    if (now < last_update_) {
+      ROS_WARN("tf: sim time went back %.3f s; clearing the tf buffer",
+               (last_update_ - now).toSec());
+      buffer.clear();
+    }
+    last_update_ = now;
+    const std::string authority = event.getPublisherName();
+    for (const geometry_msgs::TransformStamped& t : event.getConstMessage()->transforms) {
+      const geometry_msgs::Vector3& p = t.transform.translation;
+      const geometry_msgs::Quaternion& q = t.transform.rotation;
+      const std::string problem = model::transform_problem({p.x, p.y, p.z}, {q.x, q.y, q.z, q.w});
+      if (!problem.empty()) {
+        owner_.refuse(t.header.frame_id + " -> " + t.child_frame_id + " from " + authority + ": " +
+                      problem);
+        continue;
+      }
+      try {
+        buffer.setTransform(t, authority, is_static);
+      } catch (const tf2::TransformException& e) {
+        ROS_WARN_THROTTLE(5.0, "tf: %s", e.what());
+      }
+    }
+  }
+
+  RenewingTfBuffer& owner_;
+  ros::CallbackQueue queue_;
+  ros::NodeHandle nh_;
+  ros::Subscriber dynamic_, static_;
+  ros::AsyncSpinner spinner_{1, &queue_};  // last: stops first
+  ros::Time last_update_;
+};
+
+RenewingTfBuffer::RenewingTfBuffer() : current_(std::make_unique<Listening>(*this)) {}
+
+RenewingTfBuffer::~RenewingTfBuffer() = default;
+
+const tf2_ros::Buffer& RenewingTfBuffer::buffer() const {
+  return current_->buffer;
+}
+
+void RenewingTfBuffer::refuse(const std::string& what) {
+  ROS_WARN_THROTTLE(5.0, "tf: refused %s", what.c_str());
+  const std::lock_guard<std::mutex> lock(refused_mutex_);
+  ++refused_.count;
+  refused_.last = what;
+}
+
+RenewingTfBuffer::Refused RenewingTfBuffer::take_refused() {
+  const std::lock_guard<std::mutex> lock(refused_mutex_);
+  Refused taken = refused_;
+  refused_.count = 0;
+  return taken;
+}
 
 size_t RenewingTfBuffer::frame_count(const tf2_ros::Buffer& buffer) {
   std::vector<std::string> frames;
@@ -27,7 +104,7 @@ void RenewingTfBuffer::renew_if_stale() {
   }
   last_count_ = now;
   if (frame_count(current_->buffer) > 2 * frames_after_start_ + kSpareFrames) {
-    next_ = std::make_unique<Listening>();
+    next_ = std::make_unique<Listening>(*this);
     next_started_ = now;
   }
 }

@@ -56,6 +56,7 @@
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
+#include "single_publisher.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -452,7 +453,11 @@ class ScenarioNode {
   bool world_reachable() const { return ros::service::exists("/sim/pause", false); }
 
  private:
-  void on_world_state(const WorldState& msg) {
+  void on_world_state(const ros::MessageEvent<const WorldState>& event) {
+    if (!state_publisher_.accept(event.getPublisherName())) {
+      return;
+    }
+    const WorldState& msg = *event.getConstMessage();
     watchdog_.world_state(ros::WallTime::now().toSec());
     if (runner_.finished()) {
       return;
@@ -549,7 +554,8 @@ class ScenarioNode {
   std::unique_ptr<dialogue::DialogueSetup> dialogue_;
   scenario::ScriptRunner runner_;
   scenario::RunWatchdog watchdog_;
-  std::vector<dialogue::Perception> heard_;  // since the last world state
+  SinglePublisher state_publisher_{"/sim/world_state"};  // world_node's alone
+  std::vector<dialogue::Perception> heard_;              // since the last world state
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::MetricsRecorder metrics_;
   scenario::GroupMemory groups_;

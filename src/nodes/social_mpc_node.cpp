@@ -35,6 +35,7 @@
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
+#include "single_publisher.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -71,6 +72,9 @@ class SocialMpcNode {
     approach_.registerGoalCallback([this](ApproachServer::GoalHandle h) { on_approach(h); });
     approach_.registerCancelCallback(
         [this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
+    inputs_.declare_drop("tf", "map -> base_footprint");
+    inputs_.declare_drop("tf", "map -> body_*");
+    inputs_.declare_drop("tf", "absurd transform");
     move_base_.start();
     approach_.start();
     // The session looks at perception and runs its cycles at the first call in their periods:
@@ -92,7 +96,11 @@ class SocialMpcNode {
   };
 
   // ---- inputs ----------------------------------------------------------------------------
-  void on_map(const nav_msgs::OccupancyGrid& msg) {
+  void on_map(const ros::MessageEvent<const nav_msgs::OccupancyGrid>& event) {
+    if (!map_publisher_.accept(event.getPublisherName())) {
+      return;
+    }
+    const nav_msgs::OccupancyGrid& msg = *event.getConstMessage();
     if (const std::optional<InputProblem> problem = input_problem(msg)) {
       inputs_.drop("/map", problem->field, problem->what);
       return;
@@ -111,13 +119,19 @@ class SocialMpcNode {
 
   // What the session is told now: ARI as measured, the persons perception tracks, each at their
   // body frame in the map from tf.
-  navigation::SessionInputs session_inputs() const {
+  // A body frame tf places absurdly (inf, 1e300) is counted and left out: the person's track is
+  // not updated until good transforms return.
+  navigation::SessionInputs session_inputs() {
     navigation::SessionInputs inputs;
     inputs.now_s = ros::Time::now().toSec();
     inputs.robot = measured_.observe(tf_.buffer());
     inputs.perception.persons = persons_.tracked();
     inputs.perception.locate_body = [this](const std::string& body_id) {
-      return body_placement(tf_.buffer(), kMapFrame, body_id);
+      std::optional<model::BodyPlacement> body = body_placement(tf_.buffer(), kMapFrame, body_id);
+      if (body && !inputs_.plausible("map -> body_*", body->pose)) {
+        body.reset();
+      }
+      return body;
     };
     return inputs;
   }
@@ -345,6 +359,8 @@ class SocialMpcNode {
   // ---- control loop --------------------------------------------------------------------
   void on_timer(const ros::TimerEvent&) {
     const ros::Time now = ros::Time::now();
+    inputs_.add_drops("tf", "absurd transform", tf_.take_refused().count);
+    clock_publishers_.check_when_due();
     inputs_.publish_when_due(diagnostics_pub_, now);
     tf_.renew_if_stale();
     const navigation::SessionInputs inputs = session_inputs();
@@ -429,6 +445,8 @@ class SocialMpcNode {
   navigation::NavigationSession session_;
   std::map<navigation::GoalId, GoalClient> clients_;  // of the goals waiting or pursued
   InputCounters inputs_{"social_mpc_node"};
+  SinglePublisher map_publisher_{"/map", &inputs_};  // world_node's alone
+  PublisherCountWatch clock_publishers_{"/clock"};
   MeasuredAri measured_;
   std::string last_status_;
 

@@ -1,8 +1,21 @@
 #include "ari_social_sim/world/box2d_shapes.hpp"
 
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/model/shape_geometry.hpp"
+
 namespace ari_social_sim::world {
 
+// The model's shape rules are written for this Box2D: its slop and its largest polygon.
+static_assert(static_cast<float>(model::kMinShapeFeatureM) == b2_linearSlop);
+static_assert(model::kMaxPolygonVertices == b2_maxPolygonVertices);
+
 StaticShape make_static_shape(const model::StaticObject& object) {
+  // Box2D asserts (aborts the process) on a shape it cannot build; refuse it with a message.
+  const std::string defect = model::static_object_defect(object);
+  if (!defect.empty()) {
+    throw core::ConfigError("object " + std::to_string(object.id) + " ('" + object.name +
+                            "'): expected a shape Box2D can build, got " + defect);
+  }
   StaticShape result;
   result.transform.SetIdentity();
   switch (object.type) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "ari_social_sim/core/format_text.hpp"
@@ -21,6 +22,15 @@ TEST(FormatText, KeepsTextLongerThanAnyFixedBuffer) {
   ASSERT_EQ(text.size(), 5000u + 5u);
   EXPECT_EQ(text.substr(0, 2), "<x");
   EXPECT_EQ(text.substr(text.size() - 4), "> 42");
+}
+
+// A rogue transform at 1e300 used to print its 300 digits in navigation's messages.
+TEST(FormatText, CoordinatesKeepTwoDecimalsUpToAMillionThenPercentG) {
+  EXPECT_EQ(point_text({1.234, -4.5}), "(1.23, -4.50)");
+  EXPECT_EQ(point_text({1e300, 2.0}), "(1e+300, 2.00)");
+  EXPECT_EQ(coordinate_text(-INFINITY), "-inf");
+  EXPECT_EQ(coordinate_text(999999.0), "999999.00");
+  EXPECT_EQ(coordinate_text(2e6), "2e+06");
 }
 
 }  // namespace

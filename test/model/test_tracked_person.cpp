@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <map>
 
 #include "ari_social_sim/model/tracked_person.hpp"
@@ -51,6 +53,17 @@ TEST(PlaceAtBodiesTest, PersonsWithoutABodyOrWhoseBodyCannotBePlacedAreLeftOut) 
   EXPECT_DOUBLE_EQ(placed[0].pose.position.y(), -0.75);
   // The person without a body is not even looked up.
   EXPECT_EQ(asked, (std::vector<std::string>{"b7", "b8"}));
+}
+
+TEST(TransformProblemTest, RefusesTranslationsBeyondTheMapAndDegenerateRotations) {
+  const double unit[4] = {0.0, 0.0, 0.0, 1.0};
+  EXPECT_EQ(transform_problem({1.0, -2.0, 0.5}, unit), "");
+  EXPECT_EQ(transform_problem({1e300, 0.0, 0.0}, unit),
+            "translation x = 1e+300, expected within +-10000 m");
+  EXPECT_NE(transform_problem({0.0, std::numeric_limits<double>::infinity(), 0.0}, unit), "");
+  EXPECT_NE(transform_problem({0.0, 0.0, std::nan("")}, unit), "");
+  EXPECT_NE(transform_problem({0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 0.0}), "");
+  EXPECT_NE(transform_problem({0.0, 0.0, 0.0}, {0.0, 0.0, 1e300, 1.0}), "");
 }
 
 }  // namespace

@@ -83,7 +83,7 @@ TEST(WorldFile, WrongTypeNamesFieldAndValue) {
 
 TEST(WorldFile, NegativeSizeNamesFieldAndBound) {
   expect_rejected(std::string(kHeader) + "  - {type: box, position: [1, 1], size: [1, -2]}\n",
-                  {"objects[0].size", "(0, 200]", "-2"});
+                  {"objects[0].size", "[0.005, 200]", "-2"});
   expect_rejected("name: test\nsize: [5, -5]\nobjects: []\n", {"size", "(0, 200]"});
 }
 
@@ -103,6 +103,35 @@ TEST(WorldFile, NonConvexPolygonAndDuplicateIdsAreRejected) {
                   {": objects", "ids used by one object each", "id 3 twice"});
 }
 
+// Each polygon here passes the old check (3-8 vertices, strictly convex or nearly so) and used to
+// stop the process in a Box2D assertion (SIGABRT) when the world was built.
+TEST(WorldFile, PolygonsBox2dCannotBuildAreRefusedByName) {
+  const std::string polygon = std::string(kHeader) +
+                              "  - {type: box, position: [1, 1], "
+                              "size: [1, 1]}\n  - {type: polygon, points: ";
+  expect_rejected(polygon + "[[1, 1], [1.001, 1], [1, 1.001]]}\n",
+                  {"objects[1].points", "strictly convex", "got tiny: area 5e-07 m^2",
+                   "expected at least 2.5e-05 m^2"});
+  expect_rejected(polygon + "[[0, 0], [1, 0], [0.5, 0.0001]]}\n",
+                  {"objects[1].points", "got sliver: 0.0001 m thin", "aspect 10000:1",
+                   "expected at least 0.005 m"});
+  expect_rejected(polygon + "[[0, 0], [1, 0], [2, 0.000001], [2, 1], [0, 1]]}\n",
+                  {"objects[1].points", "got collinear: vertex 1", "expected at least 0.005 m"});
+  expect_rejected(polygon + "[[0, 0], [1, 0], [1, 0], [1, 1], [0, 1]]}\n",
+                  {"objects[1].points", "got duplicate vertices: 1 and 2 are 0 m apart"});
+  expect_rejected(polygon + "[[0, 0], [1, 0], [1.003, 0.5], [1, 1], [0, 1]]}\n",
+                  {"objects[1].points", "collinear: vertex 2 is 0.003 m off"});
+}
+
+TEST(WorldFile, ShapesThinnerThanBox2dsSlopAreRefused) {
+  expect_rejected(std::string(kHeader) + "  - {type: box, position: [1, 1], size: [1, 0.001]}\n",
+                  {"objects[0].size", "[0.005, 200]", "0.001"});
+  expect_rejected(std::string(kHeader) + "  - {type: wall, from: [1, 1], to: [1.001, 1]}\n",
+                  {"objects[0].to", "at least 0.005 m from 'from'", "got 0.001 m from 'from'"});
+  expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: 1e-6}\n",
+                  {"objects[0].radius", "[0.005, 200]", "1e-6"});
+}
+
 TEST(WorldFile, WorldsBeyondTheDocumentedMaximaAreRefused) {
   // 3000 m used to allocate a 60000 x 60000 occupancy grid and die of bad_alloc.
   expect_rejected("name: test\nsize: [3000, 10]\nobjects: []\n",
@@ -112,7 +141,7 @@ TEST(WorldFile, WorldsBeyondTheDocumentedMaximaAreRefused) {
   expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1e30, 1], radius: 1}\n",
                   {"objects[0].position", "[-1000, 1000]"});
   expect_rejected(std::string(kHeader) + "  - {type: circle, position: [1, 1], radius: 1e9}\n",
-                  {"objects[0].radius", "(0, 200]", "1e9"});
+                  {"objects[0].radius", "[0.005, 200]", "1e9"});
   std::string many = kHeader;
   for (int i = 0; i <= 2000; ++i) {
     many += "  - {type: circle, position: [1, 1], radius: 0.1}\n";
@@ -132,6 +161,13 @@ TEST(WorldFile, ADescriptionBuiltInCodeIsCheckedAgainstTheFilesBounds) {
                                    {"[-1000, 1000]", "got [0, nan]"});
   world.origin = {0.0, 0.0};
   EXPECT_NO_THROW(world.validate());
+  StaticObject shelf;
+  shelf.name = "shelf";
+  shelf.type = ShapeType::kPolygon;
+  shelf.points = {{1.0, 1.0}, {1.001, 1.0}, {1.0, 1.001}};
+  world.objects.push_back(shelf);
+  world::test::expect_config_error([&] { world.validate(); }, "world 'built': objects[0] ('shelf')",
+                                   {"expected a shape Box2D can build", "got tiny: area 5e-07"});
 }
 
 TEST(WorldFile, DirectoriesAndOversizedFilesAreRefusedBeforeReading) {

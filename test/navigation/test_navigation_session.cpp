@@ -127,8 +127,11 @@ TEST(NavigationSession, OneCycleInEachControlPeriodAtTheFirstCallInIt) {
   EXPECT_FALSE(session.control(at(1.0)).step.has_value());
   EXPECT_FALSE(session.control(at(1.09)).step.has_value());
   EXPECT_TRUE(session.control(at(1.1)).step.has_value());
-  // Time going back (a world reset) is a new period.
-  EXPECT_TRUE(session.control(at(0.2)).step.has_value());
+  // Time going back (a world reset) aborts the goal (its progress is void); the next goal's
+  // cycles count from the new time.
+  EXPECT_EQ(session.control(at(0.2)).goals.at(0).status.state, GoalState::kAborted);
+  session.request(kFarCorner, at(0.25));
+  EXPECT_TRUE(session.control(at(0.3)).step.has_value());
 }
 
 TEST(NavigationSession, AGoalNamingSomeoneNotPerceivedWaitsForThemThenStarts) {
@@ -249,6 +252,53 @@ TEST(NavigationSession, ANewMapAbortsThePursuedGoal) {
   EXPECT_EQ(out.goals[0].status.reason, "the map changed while navigating");
   ASSERT_EQ(out.commands.size(), 1u);
   EXPECT_EQ(session.pursued_goal(), 0u);
+}
+
+// A rogue transform (map -> odom or a body frame at 1e300 or inf) is no pose: while it lasts ARI
+// is not placed and the person not updated; once good transforms return, the goal goes on and
+// nothing kept holds the absurd value.
+TEST(NavigationSession, AbsurdPosesOfAriAndOfBodiesAreIgnoredAndTheGoalGoesOn) {
+  for (const double rogue : {1e300, double{INFINITY}, double{NAN}}) {
+    NavigationSession session{NavigationConfig{}};
+    session.set_map(test::room_map(6.0));
+    session.request(kFarCorner, with_p1(0.0));
+    ASSERT_EQ(session.pursued_goal(), 1u);
+    SessionInputs told = with_p1(0.1);
+    told.robot->pose.position.x() = rogue;
+    told.perception.locate_body = [rogue](const std::string&) {
+      return std::optional(model::BodyPlacement{0.1, test::pose(rogue, 3.0, 0.0)});
+    };
+    SessionOutput out = session.control(told);
+    EXPECT_FALSE(out.step) << "ARI placed at x = " << rogue;
+    EXPECT_TRUE(out.goals.empty()) << rogue;
+    out = session.control(with_p1(0.2));
+    ASSERT_TRUE(out.step) << rogue;
+    EXPECT_EQ(out.step->state, NavigationState::kActive) << rogue;
+    EXPECT_TRUE(std::isfinite(out.step->command.linear_mps)) << rogue;
+    EXPECT_EQ(session.pursued_goal(), 1u) << rogue;
+  }
+}
+
+TEST(NavigationSession, TimeGoingBackAbortsThePursuedGoalAndForgetsEveryone) {
+  NavigationSession session{NavigationConfig{}};
+  session.set_map(test::room_map(6.0));
+  session.control(with_p1(1145.0));
+  session.request(kFarCorner, with_p1(1145.05));
+  ASSERT_EQ(session.pursued_goal(), 1u);
+  // A world reset: sim time back to 0.1 s, p1 no longer perceived.
+  SessionOutput out = session.control(at(0.1));
+  const std::vector<GoalChange> changes = changes_of(out, 1);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_EQ(changes[0].status.state, GoalState::kAborted);
+  EXPECT_EQ(changes[0].status.reason,
+            "sim time went back from 1145.05 s to 0.1 s (a world reset): the goal's progress is "
+            "void");
+  // p1, seen before the reset, is no longer known: an approach waits for them.
+  out = session.request(PersonTarget{"p1"}, at(0.15));
+  EXPECT_EQ(out.goals.back().status.state, GoalState::kPending);
+  // A new goal after the reset is pursued as before it.
+  out = session.request(kFarCorner, at(0.2));
+  EXPECT_EQ(out.goals.back().status.state, GoalState::kActive);
 }
 
 }  // namespace

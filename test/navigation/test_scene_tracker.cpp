@@ -125,5 +125,44 @@ TEST(SceneTracker, ForgetsWhatTheSceneLeavesOutSoMemoryFollowsWhoIsAround) {
   EXPECT_EQ(tracker.person_count() + tracker.group_count(), 0u);
 }
 
+// A body frame at inf or 1e300 used to be filtered in: the track held inf, then NaN (inf - inf)
+// for as long as the person was perceived.
+TEST(SceneTracker, AbsurdReportsNeverReachATrack) {
+  SceneTracker tracker{SceneTrackerConfig{}};
+  tracker.observe_person("human1", 0.0, {1.0, 2.0}, 0.0);
+  tracker.observe_person("human1", 0.1, {1e300, 2.0}, 0.0);
+  tracker.observe_person("human1", 0.2, {INFINITY, 2.0}, 0.0);
+  tracker.observe_person("human1", 0.3, {1.0, NAN}, 0.0);
+  tracker.observe_person("human1", 0.4, {1.0, 2.0}, NAN);
+  tracker.observe_person("human1", NAN, {1.0, 2.0}, 0.0);
+  tracker.observe_person("human2", 0.1, {2e4, 2.0}, 0.0);  // beyond kMaxMapCoordinateM
+  tracker.observe_person("human1", 0.5, {1.05, 2.0}, 0.0);
+  const PerceivedScene scene = tracker.scene(0.5);
+  ASSERT_EQ(scene.people.size(), 1u);
+  EXPECT_NEAR(scene.people[0].position.x(), 1.05, 0.05);
+  EXPECT_TRUE(scene.people[0].velocity.allFinite());
+  EXPECT_LT(scene.people[0].velocity.norm(), 0.5);
+}
+
+// A world reset late in a run (sim time 1145 s back to 0): people reported before it are
+// forgotten at once, and one reported again starts a fresh track where they now stand.
+TEST(SceneTracker, TimeGoingBackForgetsWhatWasReportedBefore) {
+  SceneTracker tracker{SceneTrackerConfig{}};
+  for (int i = 0; i <= 10; ++i) {
+    tracker.observe_person("ghost", 1144.0 + 0.1 * i, {20.0, 20.0}, 0.0);
+    tracker.observe_person("human1", 1144.0 + 0.1 * i, {1.0 + 0.1 * i, 2.0}, 0.0);
+  }
+  tracker.observe_group("group1", 1145.0, {"ghost", "human1"});
+  tracker.observe_person("human1", 0.1, {4.0, 4.0}, 0.0);
+  tracker.forget(0.1);
+  EXPECT_EQ(tracker.person_count(), 1u);
+  EXPECT_EQ(tracker.group_count(), 0u);
+  const PerceivedScene scene = tracker.scene(0.1);
+  ASSERT_EQ(scene.people.size(), 1u);
+  EXPECT_EQ(scene.people[0].id, "human1");
+  EXPECT_EQ(scene.people[0].position, Eigen::Vector2d(4.0, 4.0));
+  EXPECT_EQ(scene.people[0].velocity, Eigen::Vector2d::Zero());
+}
+
 }  // namespace
 }  // namespace ari_social_sim::navigation

@@ -184,7 +184,8 @@ TEST(SceneEntries, SpecsBuiltInCodeAreCheckedAgainstTheBoundsFilesAreReadWith) {
   EXPECT_EQ(refusal(ari), "limits: max_linear: expected a number > 0, got 0");
   ari.limits = model::AriLimits{};
   ari.footprint.front_x_m = -0.7;
-  EXPECT_EQ(refusal(ari), "footprint: front_x: expected a number above rear_x (-0.6), got -0.7");
+  EXPECT_EQ(refusal(ari),
+            "footprint: front_x: expected a number at least 0.005 m above rear_x (-0.6), got -0.7");
 }
 
 TEST(SceneEntries, AnEntryWrittenFromItsFieldsReadsBackTheSame) {

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/world/box2d_shapes.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 #include "scene_builders.hpp"
@@ -507,6 +508,35 @@ TEST(Simulation, GroupsAndWorldsHaveDocumentedMaxima) {
   fine_grid.size = {150.0, 150.0};
   EXPECT_THROW((Simulation{fine_grid, SimulationConfig{0.05, 0, 0.01}}), core::ConfigError);
   EXPECT_NO_THROW((Simulation{fine_grid, SimulationConfig{0.05, 0, 0.05}}));  // 3000 x 3000 cells
+}
+
+// Every degenerate polygon class, built in code as the learning tasks and the engine build worlds:
+// refused with a message, never handed to b2PolygonShape::Set (which aborted the process).
+TEST(Simulation, ShapesBox2dCannotBuildAreRefusedNotAborted) {
+  const std::vector<std::pair<std::vector<Eigen::Vector2d>, std::string>> degenerate = {
+      {{{1.0, 1.0}, {1.001, 1.0}, {1.0, 1.001}}, "tiny: area 5e-07 m^2"},
+      {{{1.0, 1.0}, {3.0, 1.0}, {2.0, 1.00000001}}, "tiny: area 1e-08 m^2"},
+      {{{1.0, 1.0}, {3.0, 1.0}, {2.0, 1.0001}}, "sliver: 0.0001 m thin"},
+      {{{1.0, 1.0}, {2.0, 1.0}, {3.0, 1.0}, {2.0, 2.0}}, "collinear: vertex 1 is 0 m off"},
+      {{{1.0, 1.0}, {2.0, 1.0}, {2.001, 1.0}, {2.0, 2.0}}, "duplicate vertices: 1 and 2"},
+  };
+  for (const auto& [points, defect] : degenerate) {
+    model::WorldDescription room = test::square_room(6.0);
+    model::StaticObject shelf;
+    shelf.id = 77;
+    shelf.name = "shelf";
+    shelf.type = model::ShapeType::kPolygon;
+    shelf.points = points;
+    room.objects.push_back(shelf);
+    try {
+      Simulation simulation(room, SimulationConfig{});
+      ADD_FAILURE() << "accepted a polygon with " << defect;
+    } catch (const core::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find(defect), std::string::npos) << e.what();
+    }
+    // The map rasteriser builds the same shape without a Simulation: refused there too.
+    EXPECT_THROW(make_static_shape(shelf), core::ConfigError) << defect;
+  }
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "ari_social_sim/core/config_fields.hpp"
+#include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/shape_geometry.hpp"
 #include "ari_social_sim/model/world_description.hpp"
 
 namespace ari_social_sim::model {
@@ -20,12 +22,8 @@ inline constexpr core::Choice<ShapeType> kShapeTypes[] = {{ShapeType::kWall, "wa
 inline const core::Bounds kWorldCoordinate =
     core::between(-kMaxWorldCoordinateM, kMaxWorldCoordinateM);
 inline const core::Bounds kWorldExtent{0.0, kMaxWorldSideM, true};
-
-/// Box2D takes convex polygons of at most 8 vertices; larger furniture is several objects.
-constexpr size_t kMaxPolygonVertices = 8;
-
-/// True if the vertices form a strictly convex polygon, in either winding.
-bool is_convex(const std::vector<Eigen::Vector2d>& points);
+/// A shape's sides and radius (m): at least Box2D's slop (shape_geometry.hpp).
+inline const core::Bounds kShapeExtent = core::between(kMinShapeFeatureM, kMaxWorldSideM);
 
 /// One `objects[i]` entry of a world file as written: each shape type has its own keys (a wall
 /// `from`, `to` and `thickness`; a box `position`, `orientation` and `size`; a circle `position`
@@ -51,14 +49,17 @@ struct WorldObjectEntry {
     v.field("name", name, "shown in rviz");
     v.field("from", from, "m, wall: one end of its centre line", kWorldCoordinate);
     v.field("to", to, "m, wall: the other end", kWorldCoordinate);
-    v.field("thickness", thickness, "m, wall: default 0.1", kWorldExtent);
+    v.field("thickness", thickness, "m, wall: default 0.1", kShapeExtent);
     v.field("position", position, "m, box and circle: centre in the map frame", kWorldCoordinate);
     v.field("orientation", orientation, "rad, box: heading of its length (default 0)",
             core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad));
-    v.field("size", size, "m, box: [length, width]", kWorldExtent);
-    v.field("radius", radius, "m, circle", kWorldExtent);
-    v.field("points", points, "m, polygon: 3 to 8 vertices of a convex polygon, map frame",
-            kWorldCoordinate);
+    v.field("size", size, "m, box: [length, width]", kShapeExtent);
+    v.field("radius", radius, "m, circle", kShapeExtent);
+    v.field(
+        "points", points,
+        "m, polygon: 3 to 8 vertices of a strictly convex polygon, map frame; edges and width at "
+        "least 0.005 m (Box2D's slop)",
+        kWorldCoordinate);
     v.field("height", height,
             "m, standing on the floor (3D scene); default 2.5 for walls, 0.75 "
             "for furniture",
@@ -68,13 +69,14 @@ struct WorldObjectEntry {
            "and size (orientation), a circle position and radius, a polygon points; any type id, "
            "name and height",
            shape_mismatch());
-    v.rule("to", !(type == ShapeType::kWall && from && to && (*to - *from).norm() < 1e-6),
-           "a point different from 'from' (a wall needs a length)", "the same point as 'from'");
-    const size_t vertices = points ? points->size() : 0;
-    const bool counted = vertices >= 3 && vertices <= kMaxPolygonVertices;
-    v.rule("points", !(type == ShapeType::kPolygon && points && !(counted && is_convex(*points))),
-           "3 to 8 vertices of a convex polygon",
-           std::to_string(vertices) + " vertices" + (counted ? ", not convex" : ""));
+    const double wall_length = from && to ? (*to - *from).norm() : kMinShapeFeatureM;
+    v.rule("to", !(type == ShapeType::kWall && wall_length < kMinShapeFeatureM),
+           "a point at least " + core::number_text(kMinShapeFeatureM) +
+               " m from 'from' (a wall needs a length)",
+           core::number_text(wall_length) + " m from 'from'");
+    const std::string polygon =
+        type == ShapeType::kPolygon && points ? polygon_defect(*points) : "";
+    v.rule("points", polygon.empty(), polygon_expectation(), polygon);
   }
 
   /// "" when the keys given are those of the entry's type, else what is wrong: "a circle without
@@ -120,7 +122,7 @@ struct WorldFile {
 
 /// Reads a world file. Throws core::ConfigError naming the file, the entry and the field on any
 /// malformed value (unknown type, missing field, a key of another type, wrong type, non-positive
-/// size, non-convex polygon, duplicate id).
+/// size, a polygon Box2D cannot take (polygon_defect), duplicate id).
 WorldDescription load_world_file(const std::string& path);
 /// The same from an already-parsed mapping (tests and inline worlds).
 WorldDescription parse_world(const core::YamlMap& root);

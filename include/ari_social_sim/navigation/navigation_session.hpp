@@ -78,7 +78,11 @@ struct SessionOutput {
 /// control() call in its period, counted from sim time 0, so that they fall on the same sim times
 /// whoever calls and however often. Perception is also looked at when a goal is requested. The
 /// times, poses and headings it is told are rounded to 1e-6 (s, m, rad; headings into [-pi, pi)),
-/// so that the rounding of their way to it (tf's quaternions) cannot change a plan.
+/// so that the rounding of their way to it (tf's quaternions) cannot change a plan. ARI's pose
+/// and the bodies' placements are used only when finite and within model::kMaxMapCoordinateM of
+/// the map origin (a rogue transform is no pose). When sim time goes back (a world reset, /clock
+/// restarted) everything kept by time starts afresh: the tracker forgets everyone, the goal
+/// pursued is aborted with the reason, a waiting goal waits its full kTargetWait_s again.
 class NavigationSession {
  public:
   /// How long (s of sim time) a goal naming someone not perceived yet waits before it is
@@ -138,6 +142,8 @@ class NavigationSession {
   void try_waiting_goal(const SessionInputs& inputs, SessionOutput& out);
   void start(GoalId id, const NavigationTarget& target, const SessionInputs& inputs,
              SessionOutput& out);
+  /// Restarts what is kept by time when `now_s` is before the last time told (see the class).
+  void follow_clock(double now_s, SessionOutput& out);
   /// Ends the pursued goal with `status` and stops the base.
   void end_pursued(const GoalStatus& status, SessionOutput& out);
 
@@ -153,6 +159,7 @@ class NavigationSession {
   GoalId next_goal_{1};
   std::optional<int64_t> last_cycle_;  // the control period of the last cycle
   std::optional<int64_t> last_look_;   // the look period of the last look at perception
+  std::optional<double> last_now_s_;   // the last time told, to see it go back
 };
 
 }  // namespace ari_social_sim::navigation

@@ -45,9 +45,15 @@ struct SceneTrackerConfig {
 /// does not reshape the group (and move the gap ARI is heading for). Ids are ROS4HRI ids.
 class SceneTracker {
  public:
+  /// A report or a call this much (s) earlier than what the tracker holds means that time went
+  /// back (a world reset, a bag looping), not that a stamp lagged: what was held is from before.
+  static constexpr double kTimeWentBack_s = 1.0;
+
   explicit SceneTracker(const SceneTrackerConfig& config) : config_(config) {}
 
-  /// A person seen at `time_s` (map frame).
+  /// A person seen at `time_s` (map frame). A non-finite time or an absurd pose
+  /// (model::pose_problem) is ignored; a report from before the person's track by more than
+  /// kTimeWentBack_s starts the track afresh.
   void observe_person(const std::string& id, double time_s, const Eigen::Vector2d& position,
                       double heading);
   /// A group reported at `time_s` with these person ids (non-person ids are ignored later).
@@ -61,7 +67,8 @@ class SceneTracker {
   /// groups and group members not within the group timeout. Call it once per control cycle, so
   /// that memory holds who is around, not everyone ever reported (ROS4HRI person and group ids
   /// come and go all run long). A person reported again after being dropped starts afresh
-  /// (standing still, as a new person), rather than from a velocity estimate that old.
+  /// (standing still, as a new person), rather than from a velocity estimate that old. People
+  /// and groups last reported more than kTimeWentBack_s after `time_s` are dropped too.
   void forget(double time_s);
   void clear();
 

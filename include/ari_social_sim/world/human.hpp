@@ -4,6 +4,7 @@
 #include <string>
 
 #include "ari_social_sim/model/person_attributes.hpp"
+#include "ari_social_sim/model/shape_geometry.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/object.hpp"
 #include "ari_social_sim/world/robot_reaction.hpp"
@@ -16,6 +17,9 @@ constexpr double kMaxAgeYears = 130.0;
 /// Fastest turn (rad/s) a direct velocity command may ask of a human: one turn per second, well
 /// above a person turning on the spot (about half a turn per second).
 constexpr double kMaxHumanTurnRateRps = 6.283185307179586;
+/// Widest collision circle (m) a human may be given: wider than anyone's shoulders, and small
+/// enough that a person still fits through a door of the worlds.
+constexpr double kMaxBodyRadiusM = 1.0;
 
 /// Parameters of a human's movement (D6.4 §3.3: step length, goal distance, personal distance).
 struct HumanMotionParams {
@@ -49,8 +53,9 @@ struct HumanMotionParams {
             core::positive());
     v.field("personal_distance", personal_distance_m,
             "m (Delta_p): others within it repel the human", core::positive());
-    v.field("body_radius", body_radius_m, "m, radius of the body's collision circle",
-            core::positive());
+    v.field("body_radius", body_radius_m,
+            "m, radius of the body's collision circle (at least Box2D's slop)",
+            core::between(model::kMinShapeFeatureM, kMaxBodyRadiusM));
   }
 };
 
