@@ -36,8 +36,12 @@ class RenewingTfBuffer::Listening {
       buffer.clear();
     }
     last_update_ = now;
+    clock_seen_ = clock_seen_ || !now.isZero();
     const std::string authority = event.getPublisherName();
     for (const geometry_msgs::TransformStamped& t : event.getConstMessage()->transforms) {
+      if (sent_before_a_reset(t, is_static, now)) {
+        continue;
+      }
       const geometry_msgs::Vector3& p = t.transform.translation;
       const geometry_msgs::Quaternion& q = t.transform.rotation;
       const std::string problem = model::transform_problem({p.x, p.y, p.z}, {q.x, q.y, q.z, q.w});
@@ -54,12 +58,30 @@ class RenewingTfBuffer::Listening {
     }
   }
 
+  // A transform stamped more than tf2's cache time after the clock was sent before a reset and
+  // delivered after it (a node still publishing the old timeline; the clock reads 0 right after a
+  // reset). Stored, it would make tf2 refuse every transform after the reset as too old
+  // (TF_OLD_DATA) until time caught up. Before any clock (the node starting) nothing is ahead.
+  bool sent_before_a_reset(const geometry_msgs::TransformStamped& t, bool is_static,
+                           const ros::Time& now) {
+    if (is_static || !clock_seen_ || t.header.stamp <= now + buffer.getCacheLength()) {
+      return false;
+    }
+    ROS_WARN_THROTTLE(5.0,
+                      "tf: ignored %s -> %s stamped %.3f s, %.3f s after the clock (sent "
+                      "before a reset?)",
+                      t.header.frame_id.c_str(), t.child_frame_id.c_str(), t.header.stamp.toSec(),
+                      (t.header.stamp - now).toSec());
+    return true;
+  }
+
   RenewingTfBuffer& owner_;
   ros::CallbackQueue queue_;
   ros::NodeHandle nh_;
   ros::Subscriber dynamic_, static_;
   ros::AsyncSpinner spinner_{1, &queue_};  // last: stops first
   ros::Time last_update_;
+  bool clock_seen_{false};
 };
 
 RenewingTfBuffer::RenewingTfBuffer() : current_(std::make_unique<Listening>(*this)) {}
