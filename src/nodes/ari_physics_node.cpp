@@ -21,10 +21,12 @@
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
+#include "ari_social_sim/physics/renderer.hpp"
 #include "ari_social_sim/world/scene.hpp"
 #include "camera_interface.hpp"
 #include "conversions/ari_base.hpp"
 #include "frames.hpp"
+#include "node_main.hpp"
 #include "physics/controller_interface.hpp"
 #include "physics/odom_frame.hpp"
 #include "physics/point_head_interface.hpp"
@@ -68,13 +70,20 @@ void set_covariance(boost::array<double, 36>& covariance) {
 
 class PhysicsNode {
  public:
-  /// Throws what CameraInterface throws (bad camera or mapping parameters, no OpenGL context).
+  /// Throws what CameraInterface throws (bad camera or mapping parameters; no OpenGL context, with
+  /// how to run without cameras).
   PhysicsNode(const physics::PhysicsRunConfig& config, const model::WorldDescription& world,
               std::unique_ptr<physics::AriPhysics> physics)
       : config_(config), physics_(std::move(physics)) {
     clock_.physics = physics_.get();
     if (config_.cameras_enabled) {
-      cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
+      try {
+        cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
+      } catch (const physics::RenderError& e) {
+        throw physics::RenderError(std::string(e.what()) +
+                                   " (run with _cameras_enabled:=false to simulate without "
+                                   "cameras)");
+      }
     }
     if (config_.clock == physics::ClockSource::kOwn) {
       clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
@@ -314,18 +323,14 @@ class PhysicsNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "ari_physics_node");
-  ros::NodeHandle private_handle("~");
-  physics::PhysicsRunConfig config;
-  std::unique_ptr<physics::RobotModel> model;
-  std::unique_ptr<nodes::PhysicsNode> node;
-  try {
-    config = physics::PhysicsRunConfig::from_yaml(nodes::read_private_params(private_handle));
+  return nodes::run_node(argc, argv, "ari_physics_node", [] {
+    ros::NodeHandle private_handle("~");
+    const physics::PhysicsRunConfig config =
+        physics::PhysicsRunConfig::from_yaml(nodes::read_private_params(private_handle));
     const std::string package = ros::package::getPath("ari_social_sim");
-    model = std::make_unique<physics::RobotModel>(physics::RobotModel::from_urdf_file(
-        config.urdf.empty() ? package + "/urdf/ari.urdf" : config.urdf));
+    const physics::RobotModel model = physics::RobotModel::from_urdf_file(
+        config.urdf.empty() ? package + "/urdf/ari.urdf" : config.urdf);
     model::WorldDescription world_description;
-    std::unique_ptr<physics::AriPhysics> simulation;
     core::Pose2 start;
     if (!config.scene.empty()) {
       const world::Scene scene = world::load_scene_file(config.scene);
@@ -340,20 +345,14 @@ int main(int argc, char** argv) {
       start = config.start_pose().value_or(
           core::Pose2{world_description.origin + 0.5 * world_description.size, 0.0});
     }
-    simulation =
-        std::make_unique<physics::AriPhysics>(*model, world_description, start, config.physics);
+    auto simulation =
+        std::make_unique<physics::AriPhysics>(model, world_description, start, config.physics);
     ROS_INFO("ari_physics_node: world %s, ARI at (%.2f, %.2f, %.2f rad), step %.4f s, clock %s",
              world_description.name.c_str(), start.position.x(), start.position.y(), start.theta,
              config.physics.step_s,
              config.clock == physics::ClockSource::kOwn ? "own" : "world_node's");
-    node = std::make_unique<nodes::PhysicsNode>(config, world_description, std::move(simulation));
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s%s", e.what(),
-              dynamic_cast<const physics::RenderError*>(&e) != nullptr
-                  ? " (run with _cameras_enabled:=false to simulate without cameras)"
-                  : "");
-    return 2;
-  }
-  node->run();
-  return 0;
+    nodes::PhysicsNode node(config, world_description, std::move(simulation));
+    node.run();
+    return 0;
+  });
 }

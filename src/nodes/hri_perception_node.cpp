@@ -36,6 +36,7 @@
 #include "conversions/transform.hpp"
 #include "conversions/world_state.hpp"
 #include "input_counters.hpp"
+#include "node_main.hpp"
 #include "per_id_handle.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -614,17 +615,14 @@ class HriPerceptionNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "hri_perception");
-  ros::NodeHandle private_handle("~");
-  perception::PerceptionRunConfig run;
-  perception::PerceptionConfig config;
-  std::optional<model::OccupancyGrid> sound_map;
-  try {
-    run = perception::PerceptionRunConfig::from_yaml(nodes::read_private_params(private_handle));
+  return nodes::run_node(argc, argv, "hri_perception", [] {
+    ros::NodeHandle private_handle("~");
+    perception::PerceptionRunConfig run =
+        perception::PerceptionRunConfig::from_yaml(nodes::read_private_params(private_handle));
     if (run.config.empty()) {
       run.config = ros::package::getPath("ari_social_sim") + "/config/perception.yaml";
     }
-    config = perception::PerceptionConfig::load_file(run.config);
+    perception::PerceptionConfig config = perception::PerceptionConfig::load_file(run.config);
     if (run.seed >= 0) {
       config.seed = static_cast<unsigned>(run.seed);
     }
@@ -634,20 +632,18 @@ int main(int argc, char** argv) {
     if (run.person_ids) {
       config.persons.id_style = *run.person_ids;
     }
+    std::optional<model::OccupancyGrid> sound_map;
     if (!run.world.empty()) {
       sound_map = perception::rasterize_walls(model::load_world_file(run.world),
                                               nodes::kSoundMapResolution_m);
     }
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  }
-  const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
-  ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
-           detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
-           config.errors_enabled ? "on" : "off",
-           run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
-  nodes::HriPerceptionNode node(run, config, std::move(sound_map));
-  ros::spin();
-  return 0;
+    const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
+    ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
+             detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
+             config.errors_enabled ? "on" : "off",
+             run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
+    nodes::HriPerceptionNode node(run, config, std::move(sound_map));
+    ros::spin();
+    return 0;
+  });
 }
