@@ -10,6 +10,7 @@ add_library(ari_rendering
   src/physics/camera_rig.cpp
   src/physics/camera_rig_config.cpp
   src/physics/depth_image.cpp
+  src/physics/drawn_people.cpp
   src/physics/egl_context.cpp
   src/physics/fisheye_renderer.cpp
   src/physics/human_appearance.cpp
@@ -17,6 +18,7 @@ add_library(ari_rendering
   src/physics/figure_regions.cpp
   src/physics/image_labels.cpp
   src/physics/region_crops.cpp
+  src/physics/people_crops.cpp
   src/physics/people_figures.cpp
   src/physics/physics_primitives.cpp
   src/physics/render_mesh.cpp
@@ -38,10 +40,12 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_ari_cameras.cpp
       test/physics/test_camera_rig.cpp
       test/physics/test_depth_image.cpp
+      test/physics/test_drawn_people.cpp
       test/physics/test_figure_regions.cpp
       test/physics/test_fisheye_renderer.cpp
       test/physics/test_human_figures.cpp
       test/physics/test_octomap_mapper.cpp
+      test/physics/test_people_crops.cpp
       test/physics/test_physics_primitives.cpp
       test/physics/test_renderer.cpp
     LIBRARIES ari_rendering ari_mapping)

@@ -34,7 +34,10 @@ add_executable(ari_physics_node
   src/nodes/ari_physics_node.cpp
   src/nodes/camera_interface.cpp
   src/nodes/conversions/image.cpp
-  src/nodes/conversions/joint_trajectory.cpp)
+  src/nodes/conversions/joint_trajectory.cpp
+  src/nodes/physics/controller_interface.cpp
+  src/nodes/physics/odom_frame.cpp
+  src/nodes/physics/point_head_interface.cpp)
 target_include_directories(ari_physics_node PRIVATE ${CATKIN_DEVEL_PREFIX}/include
   ${catkin_INCLUDE_DIRS})
 # ari_rendering and ari_mapping: the cameras' core (cmake/cameras.cmake).

@@ -1,9 +1,8 @@
 // ari_physics_node: ARI on Bullet (physics core) behind ARI's own ROS interfaces.
 // Reads parameters, builds the core, wires topics, actions, services and tf, converts at the
 // edges. Controllers, limits, odometry and head pointing are the core's; this file only times
-// and publishes them.
+// and publishes them. The controllers' and point_head's action servers are in physics/.
 
-#include <actionlib/server/action_server.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/package.h>
@@ -17,24 +16,21 @@
 #include <memory>
 #include <optional>
 
-#include "ari_social_sim/FollowJointTrajectoryAction.h"
-#include "ari_social_sim/JointTrajectoryControllerState.h"
-#include "ari_social_sim/PointHeadAction.h"
-#include "ari_social_sim/QueryTrajectoryState.h"
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
-#include "ari_social_sim/physics/point_head.hpp"
-#include "ari_social_sim/physics/point_head_goal.hpp"
+#include "ari_social_sim/physics/renderer.hpp"
 #include "ari_social_sim/world/scene.hpp"
 #include "camera_interface.hpp"
 #include "conversions/ari_base.hpp"
-#include "conversions/joint_trajectory.hpp"
-#include "conversions/transform.hpp"
 #include "frames.hpp"
+#include "node_main.hpp"
+#include "physics/controller_interface.hpp"
+#include "physics/odom_frame.hpp"
+#include "physics/point_head_interface.hpp"
+#include "physics/sim_clock.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
 
@@ -44,15 +40,6 @@ namespace {
 // The torso RGB-D camera is a D435i; its IMU topic is realsense2_camera's unified one
 // (docs/physics.md: ARI's own launch files name no IMU topic).
 constexpr char kImuTopic[] = "/torso_front_camera/imu";
-// JointTrajectoryController's action_monitor_rate (ari_robot's controller configuration).
-constexpr double kActionMonitorRateHz = 20.0;
-// PAL's head_action: success_angle_threshold (rad) and its default pointing frame.
-constexpr double kPointingThresholdRad = 0.01;
-constexpr char kDefaultPointingFrame[] = "head_front_camera_color_optical_frame";
-// How long a point-head goal waits for tf to know its target frame, and how old the frame's
-// newest transform may grow while the goal runs (wall and sim seconds): a goal on a person who
-// left fails well within a second, and live frames (10-50 Hz) come far more often.
-constexpr double kTfWaitS = 0.5;
 // Covariance diagonal of mobile_base_controller's pose and twist (ari_robot's controller
 // configuration).
 constexpr double kOdomCovariance[6] = {0.001, 0.001, 1e6, 1e6, 1e6, 1000.0};
@@ -75,460 +62,28 @@ geometry_msgs::Pose pose_msg(const Eigen::Isometry3d& X) {
   return pose;
 }
 
-Eigen::Isometry3d planar(const core::Pose2& pose) {
-  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-  X.translation() = Eigen::Vector3d(pose.position.x(), pose.position.y(), 0.0);
-  X.linear() = Eigen::AngleAxisd(pose.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  return X;
-}
-
-// The odom frame in the map as a localised robot knows it: the true planar base pose composed
-// with the inverse of the wheel odometry. The wheels slip (a fast turn on the spot can cost a
-// metre), and ARI's own localisation corrects for it; this stands in for that localisation,
-// without its error.
-core::Pose2 odom_in_map(const physics::AriPhysics& physics) {
-  const Eigen::Isometry3d X_map_base = physics.frame_pose(kBaseFrame);
-  const core::Pose2& base_in_odom = physics.odometry().pose();
-  core::Pose2 odom;
-  odom.theta = core::wrap_angle(std::atan2(X_map_base.linear()(1, 0), X_map_base.linear()(0, 0)) -
-                                base_in_odom.theta);
-  odom.position =
-      X_map_base.translation().head<2>() - Eigen::Rotation2Dd(odom.theta) * base_in_odom.position;
-  return odom;
-}
-
 void set_covariance(boost::array<double, 36>& covariance) {
   for (int i = 0; i < 6; ++i) {
     covariance[static_cast<size_t>(7 * i)] = kOdomCovariance[i];
   }
 }
 
-/// Sim time as the ROS graph sees it: the physics' own time plus where it started on the graph's
-/// clock (0 when this node owns /clock; world_node's time at start-up when it follows it).
-struct SimClock {
-  const physics::AriPhysics* physics{nullptr};
-  double origin_s{0.0};
-
-  double now_s() const { return origin_s + physics->time_s(); }
-  ros::Time now() const { return ros::Time(now_s()); }
-  /// A ROS stamp in the physics' time; 0 (meaning "now") stays 0.
-  double to_physics(const ros::Time& stamp) const {
-    return stamp.isZero() ? 0.0 : std::max(1e-9, stamp.toSec() - origin_s);
-  }
-};
-
-/// One joint trajectory controller's ROS face: /command, follow_joint_trajectory, /state,
-/// query_state, with the names and semantics of ros_controllers.
-class ControllerInterface {
- public:
-  using Server = actionlib::ActionServer<FollowJointTrajectoryAction>;
-
-  ControllerInterface(ros::NodeHandle& nh, physics::TrajectoryController& controller,
-                      physics::AriPhysics& physics, const SimClock& clock)
-      : controller_(controller),
-        physics_(physics),
-        clock_(clock),
-        server_(nh, "/" + controller.spec().name + "/follow_joint_trajectory", false) {
-    const std::string ns = "/" + controller.spec().name;
-    command_sub_ = nh.subscribe(ns + "/command", 1, &ControllerInterface::on_command, this);
-    state_pub_ = nh.advertise<JointTrajectoryControllerState>(ns + "/state", 10);
-    query_ = nh.advertiseService(ns + "/query_state", &ControllerInterface::on_query, this);
-    server_.registerGoalCallback([this](Server::GoalHandle goal) { on_goal(goal); });
-    server_.registerCancelCallback([this](Server::GoalHandle goal) { on_cancel(goal); });
-    server_.start();
-  }
-
-  void publish_state() {
-    JointTrajectoryControllerState state = make_state();
-    state_pub_.publish(state);
-  }
-
-  /// Reports the active goal's outcome once the core has judged it; feedback at the action
-  /// monitor rate.
-  void update_goal() {
-    if (!active_) {
-      return;
-    }
-    const physics::GoalOutcome& outcome = controller_.goal();
-    if (outcome.goal_id != active_id_ || outcome.state == physics::GoalState::kPreempted) {
-      active_->setCanceled(FollowJointTrajectoryResult(), "preempted by a newer trajectory");
-      active_.reset();
-      return;
-    }
-    FollowJointTrajectoryResult result;
-    result.error_code = static_cast<int32_t>(outcome.code);
-    result.error_string = outcome.message;
-    if (outcome.state == physics::GoalState::kSucceeded) {
-      active_->setSucceeded(result);
-      active_.reset();
-    } else if (outcome.state == physics::GoalState::kAborted) {
-      ROS_WARN("%s", outcome.message.c_str());
-      active_->setAborted(result, outcome.message);
-      active_.reset();
-    } else if (clock_.now_s() >= next_feedback_s_) {
-      next_feedback_s_ = clock_.now_s() + 1.0 / kActionMonitorRateHz;
-      FollowJointTrajectoryFeedback feedback;
-      const JointTrajectoryControllerState state = make_state();
-      feedback.header = state.header;
-      feedback.joint_names = state.joint_names;
-      feedback.desired = state.desired;
-      feedback.actual = state.actual;
-      feedback.error = state.error;
-      active_->publishFeedback(feedback);
-    }
-  }
-
- private:
-  JointTrajectoryControllerState make_state() const {
-    JointTrajectoryControllerState state;
-    state.header.stamp = clock_.now();
-    state.joint_names = controller_.spec().joints;
-    state.desired = to_msg(controller_.desired());
-    for (const std::string& joint : state.joint_names) {
-      state.actual.positions.push_back(physics_.joint_position(joint));
-    }
-    state.actual.velocities.assign(state.joint_names.size(), 0.0);
-    const std::vector<std::string>& names = physics_.joint_names();
-    const std::vector<double> velocities = physics_.joint_velocities();
-    for (size_t j = 0; j < state.joint_names.size(); ++j) {
-      const auto it = std::find(names.begin(), names.end(), state.joint_names[j]);
-      state.actual.velocities[j] = velocities[static_cast<size_t>(it - names.begin())];
-      state.error.positions.push_back(state.desired.positions[j] - state.actual.positions[j]);
-      state.error.velocities.push_back(state.desired.velocities[j] - state.actual.velocities[j]);
-    }
-    return state;
-  }
-
-  physics::TrajectoryRequest timed(physics::TrajectoryRequest request) const {
-    request.start_time_s =
-        request.start_time_s > 0.0 ? clock_.to_physics(ros::Time(request.start_time_s)) : 0.0;
-    return request;
-  }
-
-  void on_command(const trajectory_msgs::JointTrajectory& trajectory) {
-    try {
-      controller_.follow(timed(from_msg(trajectory)), physics_.time_s(), false);
-    } catch (const core::Error& e) {
-      ROS_WARN("%s/command ignored: %s", controller_.spec().name.c_str(), e.what());
-    }
-  }
-
-  void on_goal(Server::GoalHandle goal) {
-    try {
-      const uint64_t id =
-          controller_.follow(timed(from_msg(*goal.getGoal())), physics_.time_s(), true);
-      if (active_) {
-        active_->setCanceled(FollowJointTrajectoryResult(), "preempted by a newer goal");
-      }
-      goal.setAccepted();
-      active_ = goal;
-      active_id_ = id;
-      next_feedback_s_ = clock_.now_s();
-    } catch (const physics::TrajectoryRejected& e) {
-      FollowJointTrajectoryResult result;
-      result.error_code = static_cast<int32_t>(e.code());
-      result.error_string = e.what();
-      ROS_WARN("%s", e.what());
-      goal.setRejected(result, e.what());
-    }
-  }
-
-  void on_cancel(Server::GoalHandle goal) {
-    if (active_ && *active_ == goal) {
-      controller_.cancel(active_id_, physics_.time_s());
-      active_->setCanceled(FollowJointTrajectoryResult(), "canceled");
-      active_.reset();
-    }
-  }
-
-  bool on_query(QueryTrajectoryState::Request& request, QueryTrajectoryState::Response& response) {
-    const physics::JointSetpoint state =
-        controller_.sample(std::max(0.0, request.time.toSec() - clock_.origin_s));
-    response.name = controller_.spec().joints;
-    response.position = state.positions;
-    response.velocity = state.velocities;
-    response.acceleration = state.accelerations;
-    return true;
-  }
-
-  physics::TrajectoryController& controller_;
-  physics::AriPhysics& physics_;
-  const SimClock& clock_;
-  Server server_;
-  std::optional<Server::GoalHandle> active_;
-  uint64_t active_id_{0};
-  double next_feedback_s_{0.0};
-  ros::Subscriber command_sub_;
-  ros::Publisher state_pub_;
-  ros::ServiceServer query_;
-};
-
-/// /head_controller/point_head_action as PAL's head_action serves it: solve pan and tilt for the
-/// target, send them to head_controller, report the pointing error until it is below 0.01 rad.
-/// A target in a tf frame (a person, perception's frames) is looked up without waiting, as this
-/// runs in the thread that makes sim time: a goal whose frame tf does not know yet is accepted
-/// and waits kTfWaitS of wall time for it; a frame that stops coming while the goal runs aborts
-/// it. Either way the error names the frame.
-class PointHeadInterface {
- public:
-  using Server = actionlib::ActionServer<PointHeadAction>;
-
-  PointHeadInterface(ros::NodeHandle& nh, physics::AriPhysics& physics, const SimClock& clock,
-                     const RenewingTfBuffer& tf)
-      : physics_(physics),
-        clock_(clock),
-        tf_(tf),
-        solver_(physics.model()),
-        head_(physics.controller("head_controller")),
-        server_(nh, "/head_controller/point_head_action", false) {
-    server_.registerGoalCallback([this](Server::GoalHandle goal) { on_goal(goal); });
-    server_.registerCancelCallback([this](Server::GoalHandle goal) { on_cancel(goal); });
-    server_.start();
-  }
-
-  void update_goal() {
-    if (!active_ || (is_tf_frame(goal_.target_frame) && !target_still_in_tf()) || !moving_) {
-      return;
-    }
-    const physics::GoalOutcome& outcome = head_.goal();
-    PointHeadFeedback feedback;
-    feedback.pointing_angle_error = error_now();
-    active_->publishFeedback(feedback);
-    if (outcome.goal_id != head_goal_id_ || outcome.state == physics::GoalState::kPreempted) {
-      active_->setCanceled(PointHeadResult(), "preempted by another head command");
-      active_.reset();
-    } else if (outcome.state == physics::GoalState::kAborted) {
-      active_->setAborted(PointHeadResult(), outcome.message);
-      active_.reset();
-    } else if (outcome.state == physics::GoalState::kSucceeded &&
-               feedback.pointing_angle_error < kPointingThresholdRad) {
-      active_->setSucceeded();
-      active_.reset();
-    } else if (outcome.state == physics::GoalState::kSucceeded &&
-               clock_.now_s() > settle_deadline_s_) {
-      active_->setAborted(PointHeadResult(), "the head stopped " +
-                                                 std::to_string(feedback.pointing_angle_error) +
-                                                 " rad from the target");
-      active_.reset();
-    }
-  }
-
- private:
-  /// The head's trajectory for a goal, with what it aims at.
-  struct HeadMove {
-    physics::TrajectoryRequest trajectory;
-    double duration_s{0.0};
-    Eigen::Vector3d target_base{Eigen::Vector3d::Zero()};
-  };
-
-  static physics::PointHeadGoal goal_of(const PointHeadGoal& msg) {
-    physics::PointHeadGoal goal;
-    goal.target_frame =
-        msg.target.header.frame_id.empty() ? std::string(kBaseFrame) : msg.target.header.frame_id;
-    goal.target_point = {msg.target.point.x, msg.target.point.y, msg.target.point.z};
-    goal.pointing_axis = {msg.pointing_axis.x, msg.pointing_axis.y, msg.pointing_axis.z};
-    goal.pointing_frame = msg.pointing_frame.empty() ? kDefaultPointingFrame : msg.pointing_frame;
-    goal.min_duration_s = msg.min_duration.toSec();
-    goal.max_velocity_rps = msg.max_velocity;
-    return goal;
-  }
-
-  static double wall_now_s() { return ros::WallTime::now().toSec(); }
-
-  std::unordered_map<std::string, double> joint_positions() const {
-    std::unordered_map<std::string, double> q;
-    const std::vector<double> positions = physics_.joint_positions();
-    for (size_t j = 0; j < positions.size(); ++j) {
-      q[physics_.joint_names()[j]] = positions[j];
-    }
-    return q;
-  }
-
-  double error_now() const {
-    return solver_.pointing_error(target_base_, goal_.pointing_axis, goal_.pointing_frame,
-                                  joint_positions());
-  }
-
-  double max_velocity_rps(const char* joint) const {
-    return physics_.model().joint(joint).max_velocity_rps;
-  }
-
-  // ARI's own frames, map and odom come from the physics; any other frame through tf.
-  bool is_tf_frame(const std::string& frame) const {
-    return frame != kMapFrame && frame != kOdomFrame && physics_.model().link_index(frame) < 0;
-  }
-
-  // The newest transform from `frame` to base_footprint, without waiting; nothing (and the
-  // reason in `error`) when tf cannot give one.
-  std::optional<geometry_msgs::TransformStamped> latest_tf(const std::string& frame,
-                                                           std::string* error) const {
-    try {
-      return tf_.buffer().lookupTransform(kBaseFrame, frame, ros::Time(0));
-    } catch (const tf2::TransformException& e) {
-      *error = e.what();
-      return std::nullopt;
-    }
-  }
-
-  // The target in base_footprint; nothing while tf does not know its frame.
-  std::optional<Eigen::Vector3d> target_in_base(const physics::PointHeadGoal& goal) const {
-    if (!is_tf_frame(goal.target_frame)) {
-      const Eigen::Isometry3d X_map_frame =
-          goal.target_frame == kMapFrame    ? Eigen::Isometry3d::Identity()
-          : goal.target_frame == kOdomFrame ? planar(odom_in_map(physics_))
-                                            : physics_.frame_pose(goal.target_frame);
-      return physics_.frame_pose(kBaseFrame).inverse() * X_map_frame * goal.target_point;
-    }
-    std::string error;
-    const std::optional<geometry_msgs::TransformStamped> t = latest_tf(goal.target_frame, &error);
-    if (!t) {
-      return std::nullopt;
-    }
-    return isometry_of(t->transform) * goal.target_point;
-  }
-
-  // Pan and tilt for the target, timed as PAL's head_action times them; throws core::RequestError
-  // for a target out of reach or a move too slow.
-  HeadMove plan_move(const physics::PointHeadGoal& goal, const Eigen::Vector3d& target_base) const {
-    const std::unordered_map<std::string, double> q = joint_positions();
-    const physics::HeadAim aim =
-        solver_.solve(target_base, goal.pointing_axis, goal.pointing_frame, q);
-    if (aim.error_rad > kPointingThresholdRad) {
-      throw core::RequestError("target out of the head's reach: the pan and tilt limits leave " +
-                               std::to_string(aim.error_rad) + " rad of error");
-    }
-    HeadMove move;
-    move.target_base = target_base;
-    move.duration_s = physics::point_head_duration(
-        goal, std::abs(aim.pan_rad - q.at("head_1_joint")),
-        std::abs(aim.tilt_rad - q.at("head_2_joint")), max_velocity_rps("head_1_joint"),
-        max_velocity_rps("head_2_joint"));
-    move.trajectory.joint_names = {"head_1_joint", "head_2_joint"};
-    move.trajectory.points = {{{aim.pan_rad, aim.tilt_rad}, {0.0, 0.0}, {}, move.duration_s}};
-    return move;
-  }
-
-  void start_move(const HeadMove& move) {
-    try {
-      head_goal_id_ = head_.follow(move.trajectory, physics_.time_s(), true);
-    } catch (const core::Error& e) {
-      abort(e.what());
-      return;
-    }
-    target_base_ = move.target_base;
-    settle_deadline_s_ = clock_.now_s() + move.duration_s + head_.spec().goal_time_s;
-    moving_ = true;
-  }
-
-  void abort(const std::string& message) {
-    if (moving_) {
-      head_.cancel(head_goal_id_, physics_.time_s());
-    }
-    ROS_WARN("point_head_action: %s", message.c_str());
-    active_->setAborted(PointHeadResult(), message);
-    active_.reset();
-  }
-
-  // Watches the active goal's tf frame: starts the move once the frame is there, aborts the
-  // goal when it never comes or stops coming. True while the goal goes on with its frame.
-  bool target_still_in_tf() {
-    std::string error;
-    const std::string& frame = goal_.target_frame;
-    const std::optional<geometry_msgs::TransformStamped> t = latest_tf(frame, &error);
-    const std::optional<double> stamp_s =
-        t ? std::optional<double>(t->header.stamp.toSec()) : std::nullopt;
-    switch (watch_.look(stamp_s, wall_now_s(), clock_.now_s())) {
-      case physics::FrameWatch::Status::kWaiting:
-        return false;
-      case physics::FrameWatch::Status::kNeverSeen:
-        abort(
-            core::format_text("target.header.frame_id: no transform from '%s' to %s within "
-                              "%.1f s (wall clock): %s",
-                              frame.c_str(), kBaseFrame, kTfWaitS, error.c_str()));
-        return false;
-      case physics::FrameWatch::Status::kStale:
-        abort(core::format_text(
-            "target.header.frame_id: '%s' left tf: its newest transform is %.2f s old (sim "
-            "time) and none came for %.1f s (wall clock)",
-            frame.c_str(), clock_.now_s() - watch_.newest_stamp_s().value_or(0.0), kTfWaitS));
-        return false;
-      case physics::FrameWatch::Status::kFresh:
-        break;
-    }
-    if (!moving_) {
-      try {
-        start_move(plan_move(goal_, isometry_of(t->transform) * goal_.target_point));
-      } catch (const core::Error& e) {
-        abort(e.what());
-      }
-    }
-    return active_.has_value();
-  }
-
-  void on_goal(Server::GoalHandle goal) {
-    const physics::PointHeadGoal request = goal_of(*goal.getGoal());
-    std::optional<HeadMove> move;
-    try {
-      physics::check_point_head_goal(
-          request, std::min(max_velocity_rps("head_1_joint"), max_velocity_rps("head_2_joint")));
-      if (const std::optional<Eigen::Vector3d> target = target_in_base(request)) {
-        move = plan_move(request, *target);
-      }
-    } catch (const core::Error& e) {
-      ROS_WARN("point_head_action: %s", e.what());
-      goal.setRejected(PointHeadResult(), e.what());
-      return;
-    }
-    if (active_) {
-      if (moving_) {
-        head_.cancel(head_goal_id_, physics_.time_s());
-      }
-      active_->setCanceled(PointHeadResult(), "preempted by a newer goal");
-    }
-    goal.setAccepted();
-    active_ = goal;
-    goal_ = request;
-    moving_ = false;
-    watch_.start(wall_now_s());
-    if (move) {
-      start_move(*move);
-    }
-  }
-
-  void on_cancel(Server::GoalHandle goal) {
-    if (active_ && *active_ == goal) {
-      if (moving_) {
-        head_.cancel(head_goal_id_, physics_.time_s());
-      }
-      active_->setCanceled();
-      active_.reset();
-    }
-  }
-
-  physics::AriPhysics& physics_;
-  const SimClock& clock_;
-  const RenewingTfBuffer& tf_;
-  physics::PointHeadSolver solver_;
-  physics::TrajectoryController& head_;
-  Server server_;
-  std::optional<Server::GoalHandle> active_;
-  physics::PointHeadGoal goal_;  // the active goal's, defaults filled in
-  bool moving_{false};           // the head's trajectory for the active goal was sent
-  physics::FrameWatch watch_{kTfWaitS};
-  uint64_t head_goal_id_{0};
-  double settle_deadline_s_{0.0};
-  Eigen::Vector3d target_base_{Eigen::Vector3d::Zero()};
-};
-
 class PhysicsNode {
  public:
-  /// Throws what CameraInterface throws (bad camera or mapping parameters, no OpenGL context).
+  /// Throws what CameraInterface throws (bad camera or mapping parameters; no OpenGL context, with
+  /// how to run without cameras).
   PhysicsNode(const physics::PhysicsRunConfig& config, const model::WorldDescription& world,
               std::unique_ptr<physics::AriPhysics> physics)
       : config_(config), physics_(std::move(physics)) {
     clock_.physics = physics_.get();
     if (config_.cameras_enabled) {
-      cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
+      try {
+        cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
+      } catch (const physics::RenderError& e) {
+        throw physics::RenderError(std::string(e.what()) +
+                                   " (run with _cameras_enabled:=false to simulate without "
+                                   "cameras)");
+      }
     }
     if (config_.clock == physics::ClockSource::kOwn) {
       clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
@@ -768,18 +323,14 @@ class PhysicsNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "ari_physics_node");
-  ros::NodeHandle private_handle("~");
-  physics::PhysicsRunConfig config;
-  std::unique_ptr<physics::RobotModel> model;
-  std::unique_ptr<nodes::PhysicsNode> node;
-  try {
-    config = physics::PhysicsRunConfig::from_yaml(nodes::read_private_params(private_handle));
+  return nodes::run_node(argc, argv, "ari_physics_node", [] {
+    ros::NodeHandle private_handle("~");
+    const physics::PhysicsRunConfig config =
+        physics::PhysicsRunConfig::from_yaml(nodes::read_private_params(private_handle));
     const std::string package = ros::package::getPath("ari_social_sim");
-    model = std::make_unique<physics::RobotModel>(physics::RobotModel::from_urdf_file(
-        config.urdf.empty() ? package + "/urdf/ari.urdf" : config.urdf));
+    const physics::RobotModel model = physics::RobotModel::from_urdf_file(
+        config.urdf.empty() ? package + "/urdf/ari.urdf" : config.urdf);
     model::WorldDescription world_description;
-    std::unique_ptr<physics::AriPhysics> simulation;
     core::Pose2 start;
     if (!config.scene.empty()) {
       const world::Scene scene = world::load_scene_file(config.scene);
@@ -794,20 +345,14 @@ int main(int argc, char** argv) {
       start = config.start_pose().value_or(
           core::Pose2{world_description.origin + 0.5 * world_description.size, 0.0});
     }
-    simulation =
-        std::make_unique<physics::AriPhysics>(*model, world_description, start, config.physics);
+    auto simulation =
+        std::make_unique<physics::AriPhysics>(model, world_description, start, config.physics);
     ROS_INFO("ari_physics_node: world %s, ARI at (%.2f, %.2f, %.2f rad), step %.4f s, clock %s",
              world_description.name.c_str(), start.position.x(), start.position.y(), start.theta,
              config.physics.step_s,
              config.clock == physics::ClockSource::kOwn ? "own" : "world_node's");
-    node = std::make_unique<nodes::PhysicsNode>(config, world_description, std::move(simulation));
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s%s", e.what(),
-              dynamic_cast<const physics::RenderError*>(&e) != nullptr
-                  ? " (run with _cameras_enabled:=false to simulate without cameras)"
-                  : "");
-    return 2;
-  }
-  node->run();
-  return 0;
+    nodes::PhysicsNode node(config, world_description, std::move(simulation));
+    node.run();
+    return 0;
+  });
 }

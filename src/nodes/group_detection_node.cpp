@@ -20,6 +20,7 @@
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "conversions/group_markers.hpp"
 #include "conversions/hri_messages.hpp"
+#include "node_main.hpp"
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -109,26 +110,22 @@ class GroupDetectionNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "group_detection");
-  ros::NodeHandle private_handle("~");
-  perception::GroupDetectionRunConfig run;
-  perception::GroupConfig config;
-  try {
-    run =
+  return nodes::run_node(argc, argv, "group_detection", [] {
+    ros::NodeHandle private_handle("~");
+    perception::GroupDetectionRunConfig run =
         perception::GroupDetectionRunConfig::from_yaml(nodes::read_private_params(private_handle));
     if (run.config.empty()) {
       run.config = ros::package::getPath("ari_social_sim") + "/config/perception.yaml";
     }
     // The whole file is read and checked, as hri_perception_node reads it; only `groups:` is used.
-    config = perception::PerceptionConfig::load_file(run.config).groups;
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  }
-  ROS_INFO("group_detection_node: GCFF stride %.2f m, mdl %.2f m^2 (%s), people in %s, at %.0f Hz",
-           config.gcff.stride, config.gcff.mdl, run.config.c_str(), run.reference_frame.c_str(),
-           run.rate_hz);
-  nodes::GroupDetectionNode node(run, config);
-  ros::spin();
-  return 0;
+    const perception::GroupConfig config =
+        perception::PerceptionConfig::load_file(run.config).groups;
+    ROS_INFO(
+        "group_detection_node: GCFF stride %.2f m, mdl %.2f m^2 (%s), people in %s, at %.0f Hz",
+        config.gcff.stride, config.gcff.mdl, run.config.c_str(), run.reference_frame.c_str(),
+        run.rate_hz);
+    nodes::GroupDetectionNode node(run, config);
+    ros::spin();
+    return 0;
+  });
 }

@@ -15,10 +15,8 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
-#include <deque>
 #include <map>
 #include <memory>
-#include <opencv2/imgproc.hpp>
 #include <optional>
 
 #include "ari_social_sim/WorldState.h"
@@ -30,15 +28,15 @@
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
-#include "ari_social_sim/physics/figure_regions.hpp"
-#include "ari_social_sim/physics/people_figures.hpp"
-#include "ari_social_sim/physics/region_crops.hpp"
+#include "ari_social_sim/physics/drawn_people.hpp"
+#include "ari_social_sim/physics/people_crops.hpp"
 #include "conversions/hri_messages.hpp"
 #include "conversions/image.hpp"
 #include "conversions/perception_markers.hpp"
 #include "conversions/transform.hpp"
 #include "conversions/world_state.hpp"
 #include "input_counters.hpp"
+#include "node_main.hpp"
 #include "per_id_handle.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -240,16 +238,7 @@ class HriPerceptionNode {
     }
     const world::WorldSnapshot snapshot = from_msg(*msg);
     if (run_.crops) {
-      // A world state earlier than the last (a reset) starts the history afresh, and the figures'
-      // time with it (else their gait would stand still until time caught up).
-      if (!people_history_.empty() && people_history_.back().first > msg->header.stamp.toSec()) {
-        people_history_.clear();
-        figures_time_s_ = 0.0;
-      }
-      people_history_.emplace_back(msg->header.stamp.toSec(), snapshot.humans);
-      while (people_history_.size() > kPeopleHistory) {
-        people_history_.pop_front();
-      }
+      drawn_->add_state(msg->header.stamp.toSec(), snapshot.humans);
       project_faces(msg->header.stamp);
     }
     const perception::PerceptionFrame& frame = pipeline_.update(snapshot);
@@ -281,7 +270,7 @@ class HriPerceptionNode {
         seed = static_cast<uint64_t>(physics_seed);
       }
     }
-    figures_.emplace(seed);
+    drawn_.emplace(seed);
     int width = kDefaultFaceSize, height = kDefaultFaceSize;
     nh_.param("/humans/faces/width", width, kDefaultFaceSize);
     nh_.param("/humans/faces/height", height, kDefaultFaceSize);
@@ -299,39 +288,11 @@ class HriPerceptionNode {
              kHeadImageTopic, static_cast<unsigned long>(seed), face_size_);
   }
 
-  // Poses the figures as the physics drew them in an image stamped `stamp`. Following
-  // world_node's clock, the physics receives the world state stamped s with the clock's tick to
-  // s, before it steps (and renders) from the previous state's stamp s_prev to s, and walks the
-  // people on from their state at s by their velocity times the time since it received it
-  // (ari_physics.cpp, step 4): a render at stamp in (s_prev, s] shows the state s walked on by
-  // stamp - s_prev, one world step ahead of the truth at stamp. The time never goes backwards:
-  // the gait advances with it.
-  void pose_figures(const ros::Time& stamp) {
-    const double time_s = stamp.toSec();
-    size_t next = 0;  // the first state stamped no earlier than the image, else the last
-    while (next + 1 < people_history_.size() && people_history_[next].first < time_s - 1e-6) {
-      ++next;
-    }
-    const auto& [state_s, humans] = people_history_[next];
-    const double received_s =
-        next > 0 ? people_history_[next - 1].first : state_s - kDefaultWorldStep_s;
-    const double ahead_s = std::max(0.0, time_s - received_s);
-    std::vector<physics::FigureInput> people;
-    for (const world::HumanSnapshot& human : humans) {
-      physics::FigureInput input = physics::figure_input_of(human);
-      input.pose.position += ahead_s * human.velocity_mps;
-      input.pose.theta += ahead_s * human.angular_velocity_rps;
-      people.push_back(input);
-    }
-    figures_time_s_ = std::max(figures_time_s_, time_s);
-    figures_->update(figures_time_s_, people);
-  }
-
   // With the head camera known: each person's face box in its image now, for the faces' roi, so
   // that roi and cropped show the same region of the rendered image.
   void project_faces(const ros::Time& stamp) {
     projected_faces_.clear();
-    if (!head_camera_ || people_history_.empty()) {
+    if (!head_camera_ || drawn_->empty()) {
       return;
     }
     std_msgs::Header header;
@@ -341,33 +302,24 @@ class HriPerceptionNode {
     if (!X_map_optical) {
       return;
     }
-    pose_figures(stamp);
     const physics::PinholeModel& camera = *head_camera_;
-    for (const physics::PosedPerson& person : figures_->posed()) {
-      if (const std::optional<physics::PixelBox> box =
-              physics::face_region(*person.figure, person.pose, camera, *X_map_optical)) {
-        perception::ImageRegion roi;
-        roi.xmin = double(box->x) / camera.width;
-        roi.ymin = double(box->y) / camera.height;
-        roi.xmax = double(box->x + box->width) / camera.width;
-        roi.ymax = double(box->y + box->height) / camera.height;
-        projected_faces_[static_cast<model::ObjectId>(person.id)] = roi;
-      }
+    for (const auto& [id, box] :
+         physics::face_boxes(drawn_->pose_at(stamp.toSec()), camera, *X_map_optical)) {
+      perception::ImageRegion roi;
+      roi.xmin = double(box.x) / camera.width;
+      roi.ymin = double(box.y) / camera.height;
+      roi.xmax = double(box.x + box.width) / camera.width;
+      roi.ymax = double(box.y + box.height) / camera.height;
+      projected_faces_[static_cast<model::ObjectId>(id)] = roi;
     }
   }
 
   void on_camera_info(const sensor_msgs::CameraInfo::ConstPtr& msg) {
-    if (msg->width == 0 || msg->height == 0 || msg->K[0] <= 0.0 || msg->K[4] <= 0.0) {
+    const std::optional<physics::PinholeModel> model = pinhole_of(*msg);
+    if (!model) {
       ROS_WARN_THROTTLE(5.0, "hri_perception_node: %s: no usable intrinsics", kHeadInfoTopic);
       return;
     }
-    physics::PinholeModel model;
-    model.width = static_cast<int>(msg->width);
-    model.height = static_cast<int>(msg->height);
-    model.fx = msg->K[0];
-    model.cx = msg->K[2];
-    model.fy = msg->K[4];
-    model.cy = msg->K[5];
     head_camera_ = model;
     head_camera_frame_ = msg->header.frame_id;
   }
@@ -406,23 +358,6 @@ class HriPerceptionNode {
     return isometry_of(latest.transform);
   }
 
-  // The image as BGR (hri_face_detect's encoding), or empty for an encoding not handled.
-  static cv::Mat bgr_of(const sensor_msgs::Image& msg) {
-    if ((msg.encoding != "rgb8" && msg.encoding != "bgr8") || msg.step < msg.width * 3 ||
-        msg.data.size() < static_cast<size_t>(msg.step) * msg.height) {
-      return {};
-    }
-    const cv::Mat view(static_cast<int>(msg.height), static_cast<int>(msg.width), CV_8UC3,
-                       const_cast<uint8_t*>(msg.data.data()), msg.step);
-    cv::Mat bgr;
-    if (msg.encoding == "rgb8") {
-      cv::cvtColor(view, bgr, cv::COLOR_RGB2BGR);
-    } else {
-      bgr = view.clone();
-    }
-    return bgr;
-  }
-
   static sensor_msgs::Image image_msg(const cv::Mat& bgr, const std_msgs::Header& header) {
     sensor_msgs::Image msg = to_image_msg(bgr, "bgr8");
     msg.header = header;
@@ -456,9 +391,31 @@ class HriPerceptionNode {
     }
   }
 
-  // The crops of one image, the camera at X_map_optical.
+  // Whether anyone listens to `publisher` (advertised with ~crops only).
+  static bool wanted(const ros::Publisher& publisher) {
+    return publisher && publisher.getNumSubscribers() > 0;
+  }
+
+  // Whether anyone listens to a crop of the last perceived frame's faces and bodies.
+  bool crops_wanted() {
+    for (const auto& [id, human] : tracked_faces_) {
+      FaceTopics& topics = faces_.of(id, tracked_time_s_);
+      if (wanted(topics.cropped) || wanted(topics.aligned)) {
+        return true;
+      }
+    }
+    for (const auto& [id, human] : tracked_bodies_) {
+      if (wanted(bodies_.of(id, tracked_time_s_).cropped)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The crops of one image, the camera at X_map_optical, for the last perceived frame's faces
+  // and bodies.
   void cut(const sensor_msgs::Image& msg, const Eigen::Isometry3d& X_map_optical) {
-    if (!head_camera_ || people_history_.empty() || tracked_time_s_ < 0.0 ||
+    if (!head_camera_ || drawn_->empty() || tracked_time_s_ < 0.0 ||
         (tracked_faces_.empty() && tracked_bodies_.empty())) {
       return;
     }
@@ -469,18 +426,7 @@ class HriPerceptionNode {
                         head_camera_->height);
       return;
     }
-    const auto wanted = [](const ros::Publisher& publisher) {
-      return publisher && publisher.getNumSubscribers() > 0;
-    };
-    bool any = false;
-    for (const auto& [id, human] : tracked_faces_) {
-      FaceTopics& topics = faces_.of(id, tracked_time_s_);
-      any = any || wanted(topics.cropped) || wanted(topics.aligned);
-    }
-    for (const auto& [id, human] : tracked_bodies_) {
-      any = any || wanted(bodies_.of(id, tracked_time_s_).cropped);
-    }
-    if (!any) {
+    if (!crops_wanted()) {
       return;  // no-one listens: no conversion, no projection
     }
     const cv::Mat image = bgr_of(msg);
@@ -489,33 +435,24 @@ class HriPerceptionNode {
                         kHeadImageTopic, msg.encoding.c_str());
       return;
     }
-    pose_figures(msg.header.stamp);
     std::map<model::ObjectId, const physics::PosedPerson*> posed;
-    for (const physics::PosedPerson& person : figures_->posed()) {
+    for (const physics::PosedPerson& person : drawn_->pose_at(msg.header.stamp.toSec())) {
       posed[static_cast<model::ObjectId>(person.id)] = &person;
     }
-    const physics::PinholeModel& camera = *head_camera_;
+    const physics::CameraView view{image, *head_camera_, X_map_optical};
     for (const auto& [id, human] : tracked_faces_) {
       const auto found = posed.find(human);
       if (found == posed.end()) {
         continue;
       }
-      const physics::PosedPerson& person = *found->second;
-      const std::optional<physics::PixelBox> box =
-          physics::face_region(*person.figure, person.pose, camera, X_map_optical);
-      if (!box) {
-        continue;
-      }
       FaceTopics& topics = faces_.of(id, tracked_time_s_);
-      if (wanted(topics.cropped)) {
-        topics.cropped.publish(
-            image_msg(physics::letterboxed(image, *box, face_size_), msg.header));
+      const std::optional<physics::FaceImages> images = physics::face_images(
+          *found->second, view, face_size_, {wanted(topics.cropped), wanted(topics.aligned)});
+      if (images && !images->cropped.empty()) {
+        topics.cropped.publish(image_msg(images->cropped, msg.header));
       }
-      const std::optional<std::array<Eigen::Vector2d, 2>> eyes =
-          physics::eye_pixels(*person.figure, person.pose, camera, X_map_optical);
-      if (eyes && wanted(topics.aligned)) {
-        topics.aligned.publish(image_msg(
-            physics::aligned_face(image, *box, (*eyes)[0], (*eyes)[1], face_size_), msg.header));
+      if (images && !images->aligned.empty()) {
+        topics.aligned.publish(image_msg(images->aligned, msg.header));
       }
     }
     for (const auto& [id, human] : tracked_bodies_) {
@@ -524,15 +461,11 @@ class HriPerceptionNode {
       if (found == posed.end() || !wanted(topics.cropped)) {
         continue;
       }
-      const physics::PosedPerson& person = *found->second;
-      const std::optional<physics::PixelBox> box =
-          physics::stride_body_region(*person.figure, person.pose, camera, X_map_optical);
-      if (box) {
-        topics.cropped.publish(image_msg(physics::cut_out(image, *box), msg.header));
+      if (const std::optional<cv::Mat> body = physics::body_image(*found->second, view)) {
+        topics.cropped.publish(image_msg(*body, msg.header));
       }
     }
   }
-
   void publish(const perception::PerceptionFrame& frame, const ros::Time& stamp) {
     std_msgs::Header header;
     header.stamp = stamp;
@@ -674,15 +607,10 @@ class HriPerceptionNode {
   static constexpr double kMaxRoiPoseAge_s = 0.5;
   static constexpr double kMaxImageWait_s = 0.5;
   sensor_msgs::Image::ConstPtr pending_image_;
-  std::optional<physics::PeopleFigures> figures_;
-  // The people of the last world states (sim time, people), oldest first.
-  static constexpr size_t kPeopleHistory = 40;
-  static constexpr double kDefaultWorldStep_s = 0.05;  // world_node's step, when one state is known
-  std::deque<std::pair<double, std::vector<world::HumanSnapshot>>> people_history_;
+  std::optional<physics::DrawnPeople> drawn_;
   // The last perceived frame's faces and bodies, with the human each belongs to.
   std::vector<std::pair<std::string, model::ObjectId>> tracked_faces_, tracked_bodies_;
   double tracked_time_s_{-1.0};
-  double figures_time_s_{0.0};
   std::map<model::ObjectId, perception::ImageRegion> projected_faces_;  // this state's
   std::string head_camera_frame_;
   int face_size_{kDefaultFaceSize};
@@ -696,17 +624,14 @@ class HriPerceptionNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "hri_perception");
-  ros::NodeHandle private_handle("~");
-  perception::PerceptionRunConfig run;
-  perception::PerceptionConfig config;
-  std::optional<model::OccupancyGrid> sound_map;
-  try {
-    run = perception::PerceptionRunConfig::from_yaml(nodes::read_private_params(private_handle));
+  return nodes::run_node(argc, argv, "hri_perception", [] {
+    ros::NodeHandle private_handle("~");
+    perception::PerceptionRunConfig run =
+        perception::PerceptionRunConfig::from_yaml(nodes::read_private_params(private_handle));
     if (run.config.empty()) {
       run.config = ros::package::getPath("ari_social_sim") + "/config/perception.yaml";
     }
-    config = perception::PerceptionConfig::load_file(run.config);
+    perception::PerceptionConfig config = perception::PerceptionConfig::load_file(run.config);
     if (run.seed >= 0) {
       config.seed = static_cast<unsigned>(run.seed);
     }
@@ -716,20 +641,18 @@ int main(int argc, char** argv) {
     if (run.person_ids) {
       config.persons.id_style = *run.person_ids;
     }
+    std::optional<model::OccupancyGrid> sound_map;
     if (!run.world.empty()) {
       sound_map = perception::rasterize_walls(model::load_world_file(run.world),
                                               nodes::kSoundMapResolution_m);
     }
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  }
-  const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
-  ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
-           detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
-           config.errors_enabled ? "on" : "off",
-           run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
-  nodes::HriPerceptionNode node(run, config, std::move(sound_map));
-  ros::spin();
-  return 0;
+    const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
+    ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
+             detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
+             config.errors_enabled ? "on" : "off",
+             run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
+    nodes::HriPerceptionNode node(run, config, std::move(sound_map));
+    ros::spin();
+    return 0;
+  });
 }

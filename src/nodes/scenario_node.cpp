@@ -53,6 +53,7 @@
 #include "conversions/navigation_msgs.hpp"
 #include "conversions/scenario_status.hpp"
 #include "conversions/world_state.hpp"
+#include "node_main.hpp"
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -576,21 +577,19 @@ int main(int argc, char** argv) {
   using namespace ari_social_sim;
   // Our own SIGINT handling, so that an interrupted run prints its report before ROS shuts
   // down; SA_RESETHAND: a second Ctrl-C kills at once.
-  ros::init(argc, argv, "scenario_node", ros::init_options::NoSigintHandler);
-  struct sigaction action {};
-  action.sa_handler = nodes::on_stop_signal;
-  action.sa_flags = SA_RESETHAND;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  ros::NodeHandle private_handle("~");
-  scenario::ScenarioRunConfig config;
-  scenario::Scenario scenario;
-  std::unique_ptr<dialogue::DialogueSetup> dialogue;
-  try {
-    config = scenario::ScenarioRunConfig::from_yaml(nodes::read_private_params(private_handle));
-    scenario = scenario::load_scenario_file(config.scenario);
+  return nodes::run_node(argc, argv, "scenario_node", ros::init_options::NoSigintHandler, [] {
+    struct sigaction action {};
+    action.sa_handler = nodes::on_stop_signal;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+    ros::NodeHandle private_handle("~");
+    scenario::ScenarioRunConfig config =
+        scenario::ScenarioRunConfig::from_yaml(nodes::read_private_params(private_handle));
+    scenario::Scenario scenario = scenario::load_scenario_file(config.scenario);
     scenario.script.time_limit_s = config.script_time_limit_for(scenario.script.time_limit_s);
+    std::unique_ptr<dialogue::DialogueSetup> dialogue;
     if (scenario.script.interfaces().dialogue) {
       if (config.dialogue_config.empty()) {
         config.dialogue_config =
@@ -599,19 +598,17 @@ int main(int argc, char** argv) {
       dialogue =
           dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(config.dialogue_config));
     }
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  }
-  int code = 2;
-  {
-    nodes::ScenarioNode node(config, std::move(scenario), std::move(dialogue));
-    try {
-      code = node.run();
-    } catch (const core::Error& e) {
-      ROS_FATAL("scenario_node: %s", e.what());
+    // A run that fails still ends with ros::shutdown, after the node has reported.
+    int code = nodes::kNodeErrorExit;
+    {
+      nodes::ScenarioNode node(config, std::move(scenario), std::move(dialogue));
+      try {
+        code = node.run();
+      } catch (const core::Error& e) {
+        ROS_FATAL("scenario_node: %s", e.what());
+      }
     }
-  }
-  ros::shutdown();
-  return code;
+    ros::shutdown();
+    return code;
+  });
 }

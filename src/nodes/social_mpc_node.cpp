@@ -32,6 +32,7 @@
 #include "frames.hpp"
 #include "input_counters.hpp"
 #include "measured_ari.hpp"
+#include "node_main.hpp"
 #include "perceived_persons.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
@@ -465,30 +466,20 @@ class SocialMpcNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "social_mpc_node");
-  ros::NodeHandle private_handle("~");
-  navigation::NavigationConfig config;
-  try {
-    config = navigation::NavigationConfig::from_yaml(nodes::read_private_params(private_handle));
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  }
-  std::unique_ptr<nodes::SocialMpcNode> node;
-  try {
-    node = std::make_unique<nodes::SocialMpcNode>(config);
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());  // the policy file could not be read
-    return 2;
-  }
-  if (config.navigator.policy_file.empty()) {
-    ROS_INFO("social_mpc_node: %s solver, horizon %d x %.2f s, replanning at %.0f Hz",
-             navigation::solver_name(config.mpc.solver), config.mpc.horizon_steps,
-             config.mpc.step_s, config.navigator.rate_hz);
-  } else {
-    ROS_INFO("social_mpc_node: the learned policy %s drives ARI instead of SocialMPC",
-             config.navigator.policy_file.c_str());
-  }
-  ros::spin();
-  return 0;
+  return nodes::run_node(argc, argv, "social_mpc_node", [] {
+    ros::NodeHandle private_handle("~");
+    const navigation::NavigationConfig config =
+        navigation::NavigationConfig::from_yaml(nodes::read_private_params(private_handle));
+    nodes::SocialMpcNode node(config);  // throws when the policy file cannot be read
+    if (config.navigator.policy_file.empty()) {
+      ROS_INFO("social_mpc_node: %s solver, horizon %d x %.2f s, replanning at %.0f Hz",
+               navigation::solver_name(config.mpc.solver), config.mpc.horizon_steps,
+               config.mpc.step_s, config.navigator.rate_hz);
+    } else {
+      ROS_INFO("social_mpc_node: the learned policy %s drives ARI instead of SocialMPC",
+               config.navigator.policy_file.c_str());
+    }
+    ros::spin();
+    return 0;
+  });
 }

@@ -51,6 +51,7 @@
 #include "conversions/world_state.hpp"
 #include "frames.hpp"
 #include "input_counters.hpp"
+#include "node_main.hpp"
 #include "ros_params.hpp"
 
 namespace ari_social_sim::nodes {
@@ -500,33 +501,28 @@ class WorldNode {
 
 int main(int argc, char** argv) {
   using namespace ari_social_sim;
-  ros::init(argc, argv, "world_node");
-  ros::NodeHandle private_handle("~");
-  world::WorldRunConfig config;
-  world::Scene scene;
-  try {
-    config = world::WorldRunConfig::from_yaml(nodes::read_private_params(private_handle));
+  return nodes::run_node(argc, argv, "world_node", [] {
+    ros::NodeHandle private_handle("~");
+    world::WorldRunConfig config =
+        world::WorldRunConfig::from_yaml(nodes::read_private_params(private_handle));
     if (config.scene.empty()) {
       config.scene = ros::package::getPath("ari_social_sim") + "/scenes/waiting_room.yaml";
     }
-    scene = world::load_scene_file(config.scene);
+    world::Scene scene = world::load_scene_file(config.scene);
     if (config.seed >= 0) {
       scene.seed = static_cast<uint64_t>(config.seed);
     }
     // Build once here so a scene that cannot be placed stops the node before it advertises.
     world::build_simulation(scene, config.simulation);
-  } catch (const core::Error& e) {
-    ROS_FATAL("%s", e.what());
-    return 2;
-  }
-  ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s, ARI %s",
-           scene.path.c_str(), scene.world.name.c_str(), static_cast<unsigned long>(scene.seed),
-           config.simulation.step_s,
-           config.real_time_factor > 0 ? std::to_string(config.real_time_factor).c_str()
-                                       : "as fast as possible",
-           config.ari_source == world::AriSource::kInternal ? "driven here (2D mode)"
-                                                            : "from ari_physics_node (3D mode)");
-  nodes::WorldNode node(config, std::move(scene));
-  node.run();
-  return 0;
+    ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s, ARI %s",
+             scene.path.c_str(), scene.world.name.c_str(), static_cast<unsigned long>(scene.seed),
+             config.simulation.step_s,
+             config.real_time_factor > 0 ? std::to_string(config.real_time_factor).c_str()
+                                         : "as fast as possible",
+             config.ari_source == world::AriSource::kInternal ? "driven here (2D mode)"
+                                                              : "from ari_physics_node (3D mode)");
+    nodes::WorldNode node(config, std::move(scene));
+    node.run();
+    return 0;
+  });
 }

@@ -57,4 +57,34 @@ sensor_msgs::CameraInfo to_msg(const physics::CameraInfo& info) {
   return msg;
 }
 
+cv::Mat bgr_of(const sensor_msgs::Image& msg) {
+  if ((msg.encoding != "rgb8" && msg.encoding != "bgr8") || msg.step < msg.width * 3 ||
+      msg.data.size() < static_cast<size_t>(msg.step) * msg.height) {
+    return {};
+  }
+  const cv::Mat view(static_cast<int>(msg.height), static_cast<int>(msg.width), CV_8UC3,
+                     const_cast<uint8_t*>(msg.data.data()), msg.step);
+  cv::Mat bgr;
+  if (msg.encoding == "rgb8") {
+    cv::cvtColor(view, bgr, cv::COLOR_RGB2BGR);
+  } else {
+    bgr = view.clone();
+  }
+  return bgr;
+}
+
+std::optional<physics::PinholeModel> pinhole_of(const sensor_msgs::CameraInfo& msg) {
+  if (msg.width == 0 || msg.height == 0 || msg.K[0] <= 0.0 || msg.K[4] <= 0.0) {
+    return std::nullopt;
+  }
+  physics::PinholeModel model;
+  model.width = static_cast<int>(msg.width);
+  model.height = static_cast<int>(msg.height);
+  model.fx = msg.K[0];
+  model.cx = msg.K[2];
+  model.fy = msg.K[4];
+  model.cy = msg.K[5];
+  return model;
+}
+
 }  // namespace ari_social_sim::nodes

@@ -5,6 +5,7 @@
 #include <sensor_msgs/Image.h>
 
 #include <opencv2/core/mat.hpp>
+#include <optional>
 
 #include "ari_social_sim/physics/camera_model.hpp"
 
@@ -17,5 +18,12 @@ sensor_msgs::Image to_image_msg(const cv::Mat& image, const char* colour_encodin
 /// A CV_8UC3 RGB image JPEG-encoded, as image_transport's compressed plugin sends it.
 sensor_msgs::CompressedImage to_compressed_msg(const cv::Mat& rgb);
 sensor_msgs::CameraInfo to_msg(const physics::CameraInfo& info);
+
+/// The image as BGR (hri_face_detect's encoding), a copy; empty for an encoding other than
+/// `rgb8` and `bgr8` or data shorter than its size says.
+cv::Mat bgr_of(const sensor_msgs::Image& msg);
+/// The pinhole intrinsics of an unrectified camera's info (K); nullopt without a size or focal
+/// lengths.
+std::optional<physics::PinholeModel> pinhole_of(const sensor_msgs::CameraInfo& msg);
 
 }  // namespace ari_social_sim::nodes
