@@ -40,10 +40,10 @@ SCRIPT_PATH = "/usr/bin:" + os.environ.get("PATH", "")
 # Entries of install_deps.sh that the self-test removes one at a time: the check must then fail and
 # name it. libnlopt-dev is the one install_deps.sh once forgot; the others are found by other
 # routes (Box2D's headers and library, yaml-cpp's headers, the screenshot scripts' ImageMagick,
-# the Python module's pybind11 headers, the learning package's numpy import, the Haar cascade the
-# detector study names).
+# the Python module's pybind11 headers, the data converter's scipy import (which brings numpy), the
+# Haar cascade the detector study names).
 SELF_TEST_REMOVALS = ("libnlopt-dev", "libbox2d-dev", "libyaml-cpp-dev", "imagemagick",
-                      "pybind11-dev", "python3-numpy", "opencv-data")
+                      "pybind11-dev", "python3-scipy", "opencv-data")
 
 # Debian package of install_deps.sh -> the rosdep keys that install it (rosdistro's
 # rosdep/base.yaml, debian; octomap and urdfdom are also ROS packages whose package.xml Debian

@@ -16,10 +16,10 @@ data_dir="${ARI_DATA_DIR:-$HOME/.local/share/ari_social_sim/data}"
 
 # MPGT (Addlesee et al., SIGDIAL 2023): the annotated conversations, as published.
 mpgt_source="https://raw.githubusercontent.com/AddleseeHQ/mpgt-eval/e32c2861993db9f22d1041df39be61ee11a8354d"
-mpgt_licence="MIT licence (its LICENSE file is fetched with it); cite Addlesee et al., SIGDIAL 2023"
+mpgt_licence="MIT licence (its LICENSE file is fetched with it), cite Addlesee et al., SIGDIAL 2023"
 # The F-formation recordings (Cristani et al., BMVC 2011) as GCFF distributes them, converted to CSV.
 fformation_source="https://raw.githubusercontent.com/vrichter/group-assignment-datasets/eeb630e0e2785f7a3ebd02eb460692ee9715a480/data/octave"
-fformation_licence="free for scientific research; cite Cristani et al., BMVC 2011 and Setti et al., PLOS ONE 2015"
+fformation_licence="free for scientific research, cite Cristani et al., BMVC 2011 and Setti et al., PLOS ONE 2015"
 
 usage() {
   echo "usage: scripts/fetch_data.sh [--check] [fformation] [mpgt]" >&2
@@ -69,10 +69,11 @@ fetch() {
   folder="$(folder_of "$set")"
   source="${set}_source"
   licence="${set}_licence"
-  echo "$set: from ${!source}; ${!licence}"
+  echo "$set: from ${!source}"
+  echo "$set: licence: ${!licence}"
   if [[ -d "$folder" ]]; then
     verify "$set" "$folder" && { echo "$set: present and checked in $folder"; return 0; }
-    echo "$set: $folder does not match scripts/data/$set.sha256; move it away to fetch again" >&2
+    echo "$set: $folder does not match scripts/data/$set.sha256 (move it away to fetch again)" >&2
     return 1
   fi
   if ((check_only)); then
@@ -87,7 +88,7 @@ fetch() {
     return 0
   fi
   rm -rf "$partial"
-  echo "$set: could not be fetched whole; nothing was left in $folder" >&2
+  echo "$set: could not be fetched whole, nothing was left in $folder" >&2
   return 1
 }
 
@@ -96,7 +97,8 @@ sets=()
 for argument in "$@"; do
   case "$argument" in
     --check) check_only=1 ;;
-    fformation | mpgt) sets+=("$argument") ;;
+    fformation) sets+=(fformation) ;;
+    mpgt) sets+=(mpgt) ;;
     *) echo "fetch_data.sh: unknown argument '$argument'" >&2; usage ;;
   esac
 done

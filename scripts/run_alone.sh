@@ -10,7 +10,7 @@ set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 parent="$(dirname "$repo")"
 if [[ "$parent" == "/" ]]; then
-  echo "run_alone.sh: the repository is at the file system's root; clone it into a folder" >&2
+  echo "run_alone.sh: the repository is at the file system's root (clone it into a folder)" >&2
   exit 3
 fi
 home="$(mktemp -d)"

@@ -1,18 +1,27 @@
 """The data and summary scripts: the F-formation converter on MATLAB files shaped as GCFF
 distributes its sequences, and the test summary's count of skipped tests."""
+import importlib.util
 import pathlib
 import subprocess
-import sys
 
 import numpy
 import pytest
 import scipy.io
 
 SCRIPTS = pathlib.Path(__file__).resolve().parents[2] / "scripts"
-sys.path.insert(0, str(SCRIPTS / "data"))
-sys.path.insert(0, str(SCRIPTS))
-import fformation_to_csv  # noqa: E402
-import test_summary  # noqa: E402
+
+
+def load_script(path):
+    """A script of the repository as a module (the scripts are programs, not an installed
+    package)."""
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+fformation_to_csv = load_script(SCRIPTS / "data" / "fformation_to_csv.py")
+test_summary = load_script(SCRIPTS / "test_summary.py")
 
 
 def cell_row(items):
