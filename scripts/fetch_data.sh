@@ -15,11 +15,11 @@ here="$(cd "$(dirname "$0")" && pwd)"
 data_dir="${ARI_DATA_DIR:-$HOME/.local/share/ari_social_sim/data}"
 
 # MPGT (Addlesee et al., SIGDIAL 2023): the annotated conversations, as published.
-mpgt_source="https://raw.githubusercontent.com/AddleseeHQ/mpgt-eval/e32c2861993db9f22d1041df39be61ee11a8354d"
-mpgt_licence="MIT licence (its LICENSE file is fetched with it), cite Addlesee et al., SIGDIAL 2023"
+readonly mpgt_source="https://raw.githubusercontent.com/AddleseeHQ/mpgt-eval/e32c2861993db9f22d1041df39be61ee11a8354d"
+readonly mpgt_licence="MIT licence (its LICENSE file is fetched with it), cite Addlesee et al., SIGDIAL 2023"
 # The F-formation recordings (Cristani et al., BMVC 2011) as GCFF distributes them, converted to CSV.
-fformation_source="https://raw.githubusercontent.com/vrichter/group-assignment-datasets/eeb630e0e2785f7a3ebd02eb460692ee9715a480/data/octave"
-fformation_licence="free for scientific research, cite Cristani et al., BMVC 2011 and Setti et al., PLOS ONE 2015"
+readonly fformation_source="https://raw.githubusercontent.com/vrichter/group-assignment-datasets/eeb630e0e2785f7a3ebd02eb460692ee9715a480/data/octave"
+readonly fformation_licence="free for scientific research, cite Cristani et al., BMVC 2011 and Setti et al., PLOS ONE 2015"
 
 usage() {
   echo "usage: scripts/fetch_data.sh [--check] [fformation] [mpgt]" >&2
