@@ -23,6 +23,9 @@ inline constexpr int kNodeErrorExit = 2;
 template <class Body>
 int run_node(int argc, char** argv, const char* name, uint32_t init_options, Body body) {
   ros::init(argc, argv, name, init_options);
+  // Held until the error is logged: when the body's last NodeHandle goes, roscpp shuts down, and
+  // with it rosconsole, so a ROS_FATAL after that would print nothing.
+  const ros::NodeHandle keep_ros_up;
   try {
     return body();
   } catch (const std::exception& e) {  // core::Error is a std::runtime_error

@@ -49,7 +49,8 @@ TEST(ExportGroupStreams, BadInputIsRefusedBeforeAnySceneRuns) {
   expect_refused(run("--scenes 1 --every 0.01 --out " + out), "--every: expected");
   expect_refused(run("--scenes 1 --seconds 5 --every 10 --out " + out),
                  "--every: expected at most --seconds (5");
-  expect_refused(run("--scenes 1 --stride 3 --out " + out), "--stride: expected one of");
+  expect_refused(run("--scenes 1 --stride 3 --out " + out),
+                 "--stride: unknown option, expected one of");
   EXPECT_FALSE(fs::exists(out));  // nothing was written
   std::ofstream(out) << "a file";
   expect_refused(run("--scenes 1 --out " + out), "expected a directory, got a file");
