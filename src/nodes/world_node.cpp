@@ -510,9 +510,7 @@ int main(int argc, char** argv) {
       config.scene = ros::package::getPath("ari_social_sim") + "/scenes/waiting_room.yaml";
     }
     scene = world::load_scene_file(config.scene);
-    if (config.seed >= 0) {
-      scene.seed = static_cast<uint64_t>(config.seed);
-    }
+    scene.seed = config.seed.value_or(scene.seed);
     // Build once here so a scene that cannot be placed stops the node before it advertises.
     world::build_simulation(scene, config.simulation);
   } catch (const core::Error& e) {
