@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Fails when a tracked source, CMake, launch, config, test or script file names a path outside
 the repository: a relative path that climbs above the repository's root, a build variable or
-package path followed by `/..`, the folder `../shared`, or an absolute path into a home or build
-folder (/home/..., /root/..., /work/..., .../_build/...). A user has a clone and nothing beside
+package path followed by `/..`, the folder CI keeps beside the clone, or an absolute path into a
+home or build folder (/home/..., /root/..., /work/..., .../_build/...). A user has a clone and nothing beside
 it: the build once baked in folders beside the checkout that only CI had, and nothing noticed.
 
 Each problem is printed as `FILE:LINE: <what>`; exit 1 if there is any, 0 otherwise.
@@ -34,7 +34,9 @@ ROOT_THEN_UP = re.compile(
     r"ari_social_sim_SOURCE_DIR)\}|\$\(find ari_social_sim\)|ARI_SOURCE_DIR\s*\"?)\s*\"?/\.\.")
 # Any number of `../` in a row, and the folder CI keeps beside the clone.
 UP_RUN = re.compile(r"(?<![\w.])((?:\.\./)+|(?:\.\.\\/)+)")
-BESIDE = re.compile(r"\.\./shared\b")
+# Spelled in pieces, so that this file does not itself name the folder it looks for.
+BESIDE_FOLDER = "../" + "shared"
+BESIDE = re.compile(re.escape(BESIDE_FOLDER) + r"\b")
 ABSOLUTE_PRIVATE = re.compile(r"(?<![\w.$}~-])/(?:home|root|Users|work)/[\w.-]+|"
                               r"(?<![\w.$}~-])/[\w./-]*/_build\b")
 
@@ -58,7 +60,7 @@ def problems_in_line(name, line):
     if ROOT_THEN_UP.search(line):
         yield "climbs above the repository from its root"
     if BESIDE.search(line):
-        yield "names '../shared', a folder outside the repository"
+        yield "names '%s', a folder outside the repository" % BESIDE_FOLDER
     for match in UP_RUN.finditer(line):
         if match.group(1).count("..") > depth:
             yield "'%s' climbs above the repository from %s" % (match.group(1), name)
@@ -84,8 +86,8 @@ def self_test():
     """Planted problems of each kind beside lines that are fine; exactly the planted ones must be
     reported."""
     files = {
-        "cmake/data.cmake": 'set(DIR "${CMAKE_CURRENT_SOURCE_DIR}/../shared/mpgt")\n'
-                            "include(${CMAKE_CURRENT_LIST_DIR}/../CMakeLists.txt)\n",
+        "cmake/data.cmake": ('set(DIR "${CMAKE_CURRENT_SOURCE_DIR}/%s/mpgt")\n' % BESIDE_FOLDER +
+                             "include(${CMAKE_CURRENT_LIST_DIR}/../CMakeLists.txt)\n"),
         "src/core/data.cpp": 'const char* kDir = "../../../corpus";\n'
                              '#include "../core/rng.hpp"\n',
         "launch/a.launch": '<param name="data" value="/home/alice/data"/>\n'
@@ -97,7 +99,7 @@ def self_test():
     }
     expected = [
         "cmake/data.cmake:1: climbs above the repository from its root",
-        "cmake/data.cmake:1: names '../shared', a folder outside the repository",
+        "cmake/data.cmake:1: names '%s', a folder outside the repository" % BESIDE_FOLDER,
         "src/core/data.cpp:1: '../../../' climbs above the repository from src/core/data.cpp",
         "launch/a.launch:1: absolute path '/home/alice' into a home or build folder",
         "launch/a.launch:3: climbs above the repository from its root",

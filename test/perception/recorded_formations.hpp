@@ -51,7 +51,8 @@ inline double percentile(std::vector<double> values, double p) {
 }
 
 /// The recorded groups of 2 to 4, classified by classify_arrangement, from the F-formation data
-/// set (callers skip without it: ARI_SKIP_WITHOUT_DATA_SET). Throws if a set cannot be read; a member missing from its frame's features is skipped with its group.
+/// set (callers skip without it: ARI_SKIP_WITHOUT_DATA_SET). Throws if a set cannot be read; a
+/// member missing from its frame's features is skipped with its group.
 inline std::map<SpreadKey, FormationSpread> recorded_formation_spreads() {
   std::map<SpreadKey, FormationSpread> spreads;
   for (const char* set : {"Synth", "CoffeeBreak_Seq1", "CoffeeBreak_Seq2"}) {

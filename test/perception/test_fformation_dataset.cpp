@@ -3,10 +3,10 @@
 #include <fstream>
 #include <string>
 
+#include "../common/data_sets.hpp"
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/fformation_dataset.hpp"
-#include "../common/data_sets.hpp"
 
 namespace ari_social_sim::perception {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "ari_social_sim/perception/fformation_geometry.hpp"
 #include "../common/data_sets.hpp"
+#include "ari_social_sim/perception/fformation_geometry.hpp"
 #include "recorded_formations.hpp"
 
 namespace ari_social_sim::perception {

@@ -6,10 +6,10 @@
 
 #include <string>
 
+#include "../common/data_sets.hpp"
 #include "ari_social_sim/perception/fformation_dataset.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/perception/group_evaluation.hpp"
-#include "../common/data_sets.hpp"
 
 namespace ari_social_sim::perception {
 namespace {

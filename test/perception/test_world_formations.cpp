@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "../common/data_sets.hpp"
 #include "../world/scene_builders.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/simulation.hpp"
-#include "../common/data_sets.hpp"
 #include "recorded_formations.hpp"
 
 // The world's groups of 2, 3 and 4 in each arrangement against the recorded F-formations (issue

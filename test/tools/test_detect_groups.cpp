@@ -111,8 +111,8 @@ TEST(DetectGroups, BadArgumentsExitWithTwo) {
 TEST(DetectGroups, AFailedWriteExitsWithOne) {
   // /dev/full takes the open and refuses the bytes, as a full disk does.
   const ProgramRun full = ari_social_sim::tools::test::run_program(
-      ARI_DETECT_GROUPS_BIN,
-      "--features " + small_features() + " --stride 30 --mdl 6000", "/dev/full");
+      ARI_DETECT_GROUPS_BIN, "--features " + small_features() + " --stride 30 --mdl 6000",
+      "/dev/full");
   EXPECT_EQ(full.status, 1);
   EXPECT_NE(full.err.find("standard output: writing the groups failed"), std::string::npos)
       << full.err;
