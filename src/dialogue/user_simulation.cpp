@@ -257,90 +257,122 @@ UserSimulation::Draft UserSimulation::state_goal(size_t speaker, const Utterance
   return draft;
 }
 
+bool UserSimulation::said_by_other_human(size_t speaker, const Utterance* previous) const {
+  return previous != nullptr && !previous->is_robot() && previous->speaker != humans_[speaker].role;
+}
+
+UserSimulation::Draft UserSimulation::thank_and_close(size_t speaker, const std::string& intent) {
+  Draft draft;
+  draft.acts.push_back(bare(intent));
+  for (int i : agenda_.closable(humans_[speaker].role)) {
+    agenda_.goals()[i].status = GoalStatus::kClosed;
+    draft.goals.push_back(GoalLabel{GoalLabelKind::kClosed, agenda_.goals()[i].goal});
+  }
+  return draft;
+}
+
+UserSimulation::Draft UserSimulation::say_bye(size_t speaker, const Utterance* previous,
+                                              core::Rng& rng) {
+  HumanAgent& human = humans_[speaker];
+  if (agenda_.done(human.role) || human.patience <= 0) {
+    human.left = true;
+    Draft draft;
+    draft.acts.push_back(bare("bye"));
+    return draft;
+  }
+  return realise(speaker, "thank", previous, rng);
+}
+
+UserSimulation::Draft UserSimulation::suggest_goal(size_t speaker, core::Rng& rng) {
+  Draft draft;
+  const int index = agenda_.next_waiting(humans_[speaker].role, rng);
+  if (index < 0 || other_human(speaker) < 0) {
+    return draft;  // nothing to suggest: an unannotated remark
+  }
+  const TrackedGoal& goal = agenda_.goals()[index];
+  std::vector<std::string> path = domain_.ask_acts(goal.goal).front().path();
+  path.insert(path.begin(), "requesting");
+  draft.acts.push_back(DialogueAct::from_path("suggest", std::move(path)));
+  draft.goals.push_back(GoalLabel{GoalLabelKind::kStated, goal.goal});
+  relay_goal_ = index;
+  draft.to_other = 1;
+  return draft;
+}
+
+UserSimulation::Draft UserSimulation::accept_suggestion(size_t speaker, const Utterance* previous,
+                                                        core::Rng& rng) {
+  if (said_by_other_human(speaker, previous) && previous->first_intent() == "suggest") {
+    Draft draft;
+    draft.acts.push_back(DialogueAct::from_path("accept-sugg", previous->acts.front().path()));
+    draft.to_other = 1;
+    return draft;
+  }
+  return realise(speaker, "affirm", previous, rng);
+}
+
+UserSimulation::Draft UserSimulation::inform_relayed_goal(size_t speaker, const Utterance* previous,
+                                                          core::Rng& rng) {
+  // The other human answers a goal told to them, when humans may know it (appointment time).
+  if (said_by_other_human(speaker, previous) && relay_goal_ >= 0) {
+    TrackedGoal& goal = agenda_.goals()[relay_goal_];
+    const DomainObject* object = domain_.find_object(goal.goal);
+    if (object != nullptr && object->humans_know && goal.status == GoalStatus::kWaiting) {
+      Draft draft;
+      draft.acts.push_back(DialogueAct::from_path("inform", goal.goal.object));
+      draft.goals.push_back(GoalLabel{GoalLabelKind::kAnswered, goal.goal});
+      goal.status = GoalStatus::kResolved;
+      goal.satisfied = true;
+      relay_goal_ = -1;
+      draft.to_other = 1;
+      return draft;
+    }
+  }
+  return realise(speaker, "acknowledge", previous, rng);
+}
+
+UserSimulation::Draft UserSimulation::query_robot(size_t speaker, const std::string& intent,
+                                                  const Utterance* previous, core::Rng& rng) {
+  const std::vector<std::string> path = last_robot_path(last_robot_acts_);
+  if (path.empty()) {
+    return realise(speaker, intent == "r-confirm" ? "acknowledge" : "cant-hear", previous, rng);
+  }
+  Draft draft;
+  draft.acts.push_back(DialogueAct::from_path(intent, path));
+  draft.to_other = 0;
+  return draft;
+}
+
 UserSimulation::Draft UserSimulation::realise(size_t speaker, const std::string& intent,
                                               const Utterance* previous, core::Rng& rng) {
-  const HumanAgent& human = humans_[speaker];
-  const bool from_other =
-      previous != nullptr && !previous->is_robot() && previous->speaker != human.role;
-  Draft draft;
   if (intent == "request") {
     return state_goal(speaker, previous, rng);
   }
   if (intent == "thank" || intent == "acknowledge") {
-    draft.acts.push_back(bare(intent));
-    for (int i : agenda_.closable(human.role)) {
-      agenda_.goals()[i].status = GoalStatus::kClosed;
-      draft.goals.push_back(GoalLabel{GoalLabelKind::kClosed, agenda_.goals()[i].goal});
-    }
-    return draft;
+    return thank_and_close(speaker, intent);
   }
   if (intent == "bye") {
-    if (agenda_.done(human.role) || human.patience <= 0) {
-      humans_[speaker].left = true;
-      draft.acts.push_back(bare("bye"));
-      return draft;
-    }
-    return realise(speaker, "thank", previous, rng);
+    return say_bye(speaker, previous, rng);
   }
   if (intent == "suggest") {
-    const int index = agenda_.next_waiting(human.role, rng);
-    if (index < 0 || other_human(speaker) < 0) {
-      return draft;  // nothing to suggest: an unannotated remark
-    }
-    const TrackedGoal& goal = agenda_.goals()[index];
-    std::vector<std::string> path = domain_.ask_acts(goal.goal).front().path();
-    path.insert(path.begin(), "requesting");
-    draft.acts.push_back(DialogueAct::from_path("suggest", std::move(path)));
-    draft.goals.push_back(GoalLabel{GoalLabelKind::kStated, goal.goal});
-    relay_goal_ = index;
-    draft.to_other = 1;
-    return draft;
+    return suggest_goal(speaker, rng);
   }
   if (intent == "accept-sugg") {
-    if (from_other && previous->first_intent() == "suggest") {
-      draft.acts.push_back(DialogueAct::from_path("accept-sugg", previous->acts.front().path()));
-      draft.to_other = 1;
-      return draft;
-    }
-    return realise(speaker, "affirm", previous, rng);
+    return accept_suggestion(speaker, previous, rng);
   }
   if (intent == "inform") {
-    // The other human answers a goal told to them, when humans may know it (appointment time).
-    if (from_other && relay_goal_ >= 0) {
-      TrackedGoal& goal = agenda_.goals()[relay_goal_];
-      const DomainObject* object = domain_.find_object(goal.goal);
-      if (object != nullptr && object->humans_know && goal.status == GoalStatus::kWaiting) {
-        draft.acts.push_back(DialogueAct::from_path("inform", goal.goal.object));
-        draft.goals.push_back(GoalLabel{GoalLabelKind::kAnswered, goal.goal});
-        goal.status = GoalStatus::kResolved;
-        goal.satisfied = true;
-        relay_goal_ = -1;
-        draft.to_other = 1;
-        return draft;
-      }
-    }
-    return realise(speaker, "acknowledge", previous, rng);
+    return inform_relayed_goal(speaker, previous, rng);
   }
   if (intent == "r-confirm" || intent == "r-repet") {
-    const std::vector<std::string> path = last_robot_path(last_robot_acts_);
-    if (path.empty()) {
-      return realise(speaker, intent == "r-confirm" ? "acknowledge" : "cant-hear", previous, rng);
-    }
-    draft.acts.push_back(DialogueAct::from_path(intent, path));
-    draft.to_other = 0;
-    return draft;
+    return query_robot(speaker, intent, previous, rng);
   }
+  Draft draft;
   if (intent == "give-feedback") {
     const bool helped = !last_robot_acts_.empty() && last_robot_acts_.front().intent != "cant-help";
     draft.acts.push_back(DialogueAct::from_path(intent, {helped ? "positive" : "negative"}));
-    return draft;
-  }
-  if (intent == "change-volume") {
+  } else if (intent == "change-volume") {
     draft.acts.push_back(DialogueAct::from_path(intent, {"turn_up"}));
     draft.to_other = 0;
-    return draft;
-  }
-  if (intent != kNoIntent) {
+  } else if (intent != kNoIntent) {
     draft.acts.push_back(bare(intent));
   }
   return draft;

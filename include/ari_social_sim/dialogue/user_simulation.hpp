@@ -105,7 +105,17 @@ class UserSimulation {
   const IntentDistribution& context_row(size_t speaker, const Utterance* previous) const;
   Draft realise(size_t speaker, const std::string& intent, const Utterance* previous,
                 core::Rng& rng);
+  // One per intent that touches the agenda or refers back to an earlier turn; an intent that
+  // cannot be said in context falls back to a plainer one through realise().
   Draft state_goal(size_t speaker, const Utterance* previous, core::Rng& rng);
+  Draft thank_and_close(size_t speaker, const std::string& intent);
+  Draft say_bye(size_t speaker, const Utterance* previous, core::Rng& rng);
+  Draft suggest_goal(size_t speaker, core::Rng& rng);
+  Draft accept_suggestion(size_t speaker, const Utterance* previous, core::Rng& rng);
+  Draft inform_relayed_goal(size_t speaker, const Utterance* previous, core::Rng& rng);
+  Draft query_robot(size_t speaker, const std::string& intent, const Utterance* previous,
+                    core::Rng& rng);
+  bool said_by_other_human(size_t speaker, const Utterance* previous) const;
   Draft close_or_leave(size_t speaker);
   int other_human(size_t speaker) const;
   void penalise(int goal_index);
