@@ -112,28 +112,15 @@ bool snap(const ClearanceGrid& grid, const Eigen::Vector2d& point, double cleara
   return std::isfinite(best);
 }
 
-}  // namespace
-
-std::optional<WalkingRoute> WalkingRoute::plan(const model::WorldDescription& world,
-                                               const Eigen::Vector2d& start,
-                                               const Eigen::Vector2d& goal, double clearance_m) {
-  const ClearanceGrid grid = clearance_grid(world);
-  int sx = 0;
-  int sy = 0;
-  int gx = 0;
-  int gy = 0;
-  if (!snap(grid, start, clearance_m, sx, sy) || !snap(grid, goal, clearance_m, gx, gy)) {
-    return std::nullopt;
-  }
-
-  // Dijkstra from the start cell; a step costs its length, more where clearance is short.
+// The cells from start to goal of the cheapest route (Dijkstra from the start cell; a step costs
+// its length, more where clearance is short); empty when the goal cannot be reached.
+std::vector<size_t> cheapest_cells(const ClearanceGrid& grid, size_t start_index, size_t goal_index,
+                                   double clearance_m) {
   const size_t cells = grid.clearance_m.size();
   std::vector<double> cost(cells, kInfinity);
   std::vector<int64_t> parent(cells, -1);
   using Entry = std::pair<double, size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  const size_t start_index = grid.index(sx, sy);
-  const size_t goal_index = grid.index(gx, gy);
   cost[start_index] = 0.0;
   open.push({0.0, start_index});
   const int w = grid.map.width;
@@ -166,17 +153,41 @@ std::optional<WalkingRoute> WalkingRoute::plan(const model::WorldDescription& wo
       }
     }
   }
+  std::vector<size_t> chain;
   if (!std::isfinite(cost[goal_index])) {
+    return chain;
+  }
+  for (int64_t i = static_cast<int64_t>(goal_index); i >= 0; i = parent[static_cast<size_t>(i)]) {
+    chain.push_back(static_cast<size_t>(i));
+  }
+  std::reverse(chain.begin(), chain.end());
+  return chain;
+}
+
+}  // namespace
+
+std::optional<WalkingRoute> WalkingRoute::plan(const model::WorldDescription& world,
+                                               const Eigen::Vector2d& start,
+                                               const Eigen::Vector2d& goal, double clearance_m) {
+  const ClearanceGrid grid = clearance_grid(world);
+  int sx = 0;
+  int sy = 0;
+  int gx = 0;
+  int gy = 0;
+  if (!snap(grid, start, clearance_m, sx, sy) || !snap(grid, goal, clearance_m, gx, gy)) {
+    return std::nullopt;
+  }
+
+  const size_t start_index = grid.index(sx, sy);
+  const size_t goal_index = grid.index(gx, gy);
+  const std::vector<size_t> chain = cheapest_cells(grid, start_index, goal_index, clearance_m);
+  if (chain.empty()) {
     return std::nullopt;
   }
 
   // The cells from start to goal, averaged over their neighbours along the route, between the
   // true start and goal.
-  std::vector<size_t> chain;
-  for (int64_t i = static_cast<int64_t>(goal_index); i >= 0; i = parent[static_cast<size_t>(i)]) {
-    chain.push_back(static_cast<size_t>(i));
-  }
-  std::reverse(chain.begin(), chain.end());
+  const int w = grid.map.width;
   std::vector<Eigen::Vector2d> centres;
   for (size_t i : chain) {
     centres.push_back(grid.map.cell_centre(static_cast<int>(i % w), static_cast<int>(i / w)));
