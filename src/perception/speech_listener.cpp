@@ -34,67 +34,72 @@ void SpeechListener::finish(const Utterance& utterance, double now_s) {
   }
 }
 
-void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
-                            const model::OccupancyGrid* sound_map, int occupied_threshold,
-                            std::vector<PerceivedVoice>& voices) {
-  const double now = snapshot.time_s;
-  const std::vector<world::HumanSnapshot>& humans = snapshot.humans;
-  std::map<model::ObjectId, size_t> index_of;
-  std::vector<bool> audible(humans.size(), false);
+SpeechListener::Hearing SpeechListener::hearing(const std::vector<world::HumanSnapshot>& humans,
+                                                const AriSensors& sensors,
+                                                const model::OccupancyGrid* sound_map,
+                                                int occupied_threshold) {
+  Hearing hearing;
+  hearing.audible.assign(humans.size(), false);
   for (size_t i = 0; i < humans.size(); ++i) {
     const Eigen::Vector2d& position = humans[i].pose.position;
-    index_of[humans[i].id] = i;
-    audible[i] = (position - sensors.microphone).norm() <= sensors.listening_range_m &&
-                 (sound_map == nullptr ||
-                  segment_is_clear(*sound_map, occupied_threshold, sensors.microphone, position));
+    hearing.index_of[humans[i].id] = i;
+    hearing.audible[i] = (position - sensors.microphone).norm() <= sensors.listening_range_m &&
+                         (sound_map == nullptr || segment_is_clear(*sound_map, occupied_threshold,
+                                                                   sensors.microphone, position));
   }
-  for (auto& [owner, voice] : voices_) {
-    voice.active = false;
-    voice.results.clear();
-  }
+  return hearing;
+}
 
-  // Utterances end with their act, when another act starts, or when the speaker goes out of
-  // hearing or out of the world.
+void SpeechListener::finish_ended_utterances(const std::vector<world::HumanSnapshot>& humans,
+                                             const Hearing& hearing, double now_s) {
   for (auto it = utterances_.begin(); it != utterances_.end();) {
-    const auto found = index_of.find(it->first);
-    const bool goes_on = found != index_of.end() && audible[found->second] &&
+    const auto found = hearing.index_of.find(it->first);
+    const bool goes_on = found != hearing.index_of.end() && hearing.audible[found->second] &&
                          humans[found->second].speech.is_speaking &&
                          humans[found->second].speech.start_s == it->second.start_s;
     if (goes_on) {
       ++it;
     } else {
-      finish(it->second, now);
+      finish(it->second, now_s);
       it = utterances_.erase(it);
     }
   }
+}
 
-  // New utterances and new words.
+void SpeechListener::begin_utterance(const std::vector<world::HumanSnapshot>& humans,
+                                     const Hearing& hearing, size_t speaker, Utterance& utterance) {
+  const world::SpeechSnapshot& speech = humans[speaker].speech;
+  utterance.start_s = speech.start_s;
+  utterance.words = split_words(speech.content);
+  // Words said before the speaker came within hearing are lost.
+  utterance.last_heard = static_cast<int>(speech.word_index) - 1;
+  utterance.voice_owner = humans[speaker].id;
+  const double misattribution = config_.speech_errors.misattribution_rate;
+  if (misattribution > 0.0 && rng_.bernoulli(misattribution)) {
+    std::vector<model::ObjectId> others;
+    for (size_t j = 0; j < humans.size(); ++j) {
+      if (j != speaker && hearing.audible[j]) {
+        others.push_back(humans[j].id);
+      }
+    }
+    if (!others.empty()) {
+      utterance.voice_owner = others[rng_.uniform_index(others.size())];
+    }
+  }
+}
+
+void SpeechListener::hear_new_words(const std::vector<world::HumanSnapshot>& humans,
+                                    const Hearing& hearing, double now_s) {
   const double confidence = 1.0 - config_.speech_errors.word_error_rate;
   for (size_t i = 0; i < humans.size(); ++i) {
     const world::SpeechSnapshot& speech = humans[i].speech;
-    if (!audible[i] || !speech.is_speaking) {
+    if (!hearing.audible[i] || !speech.is_speaking) {
       continue;
     }
     auto [it, is_new] = utterances_.try_emplace(humans[i].id);
     Utterance& utterance = it->second;
     if (is_new) {
-      utterance.start_s = speech.start_s;
-      utterance.words = split_words(speech.content);
-      // Words said before the speaker came within hearing are lost.
-      utterance.last_heard = static_cast<int>(speech.word_index) - 1;
-      utterance.voice_owner = humans[i].id;
-      const double misattribution = config_.speech_errors.misattribution_rate;
-      if (misattribution > 0.0 && rng_.bernoulli(misattribution)) {
-        std::vector<model::ObjectId> others;
-        for (size_t j = 0; j < humans.size(); ++j) {
-          if (j != i && audible[j]) {
-            others.push_back(humans[j].id);
-          }
-        }
-        if (!others.empty()) {
-          utterance.voice_owner = others[rng_.uniform_index(others.size())];
-        }
-      }
+      begin_utterance(humans, hearing, i, utterance);
     }
     const size_t before = utterance.transcript.size();
     const int current =
@@ -105,22 +110,25 @@ void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSenso
     utterance.last_heard = std::max(utterance.last_heard, current);
     VoiceTrack& voice = voice_of(utterance.voice_owner);
     voice.active = true;
-    voice.last_active_s = now;
+    voice.last_active_s = now_s;
     if (utterance.transcript.size() != before) {
       voice.transcript = join_words(utterance.transcript);
       voice.results.push_back({voice.transcript, "", confidence});
     }
   }
+}
 
-  // Report the voices in use; forget those whose owner left the world.
+void SpeechListener::report_voices(const std::vector<world::HumanSnapshot>& humans,
+                                   const Hearing& hearing, double now_s,
+                                   std::vector<PerceivedVoice>& voices) {
   for (auto it = voices_.begin(); it != voices_.end();) {
-    const auto found = index_of.find(it->first);
-    if (found == index_of.end()) {
+    const auto found = hearing.index_of.find(it->first);
+    if (found == hearing.index_of.end()) {
       it = voices_.erase(it);
       continue;
     }
     VoiceTrack& voice = it->second;
-    if (voice.active || now - voice.last_active_s <= config_.microphone.voice_timeout_s) {
+    if (voice.active || now_s - voice.last_active_s <= config_.microphone.voice_timeout_s) {
       PerceivedVoice perceived;
       perceived.human = it->first;
       perceived.voice_id = voice.id;
@@ -132,6 +140,22 @@ void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSenso
     }
     ++it;
   }
+}
+
+void SpeechListener::update(const world::WorldSnapshot& snapshot, const AriSensors& sensors,
+                            const model::OccupancyGrid* sound_map, int occupied_threshold,
+                            std::vector<PerceivedVoice>& voices) {
+  const Hearing heard = hearing(snapshot.humans, sensors, sound_map, occupied_threshold);
+  for (auto& [owner, voice] : voices_) {
+    voice.active = false;
+    voice.results.clear();
+  }
+  // Utterances end with their act, when another act starts, or when the speaker goes out of
+  // hearing or out of the world.
+  finish_ended_utterances(snapshot.humans, heard, snapshot.time_s);
+  hear_new_words(snapshot.humans, heard, snapshot.time_s);
+  // Report the voices in use; forget those whose owner left the world.
+  report_voices(snapshot.humans, heard, snapshot.time_s, voices);
 }
 
 }  // namespace ari_social_sim::perception

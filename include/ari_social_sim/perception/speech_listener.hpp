@@ -59,8 +59,25 @@ class SpeechListener {
     std::string transcript;
   };
 
+  /// Who is within hearing this step, and where each human is in the snapshot.
+  struct Hearing {
+    std::map<model::ObjectId, size_t> index_of;  ///< Index in the snapshot's humans.
+    std::vector<bool> audible;                   ///< By index in the snapshot's humans.
+  };
+
   VoiceTrack& voice_of(model::ObjectId human);
   void finish(const Utterance& utterance, double now_s);
+  // The stages of update(), in order.
+  static Hearing hearing(const std::vector<world::HumanSnapshot>& humans, const AriSensors& sensors,
+                         const model::OccupancyGrid* sound_map, int occupied_threshold);
+  void finish_ended_utterances(const std::vector<world::HumanSnapshot>& humans,
+                               const Hearing& hearing, double now_s);
+  void hear_new_words(const std::vector<world::HumanSnapshot>& humans, const Hearing& hearing,
+                      double now_s);
+  void begin_utterance(const std::vector<world::HumanSnapshot>& humans, const Hearing& hearing,
+                       size_t speaker, Utterance& utterance);
+  void report_voices(const std::vector<world::HumanSnapshot>& humans, const Hearing& hearing,
+                     double now_s, std::vector<PerceivedVoice>& voices);
 
   const PerceptionConfig& config_;
   TransientIds& ids_;
