@@ -149,6 +149,91 @@ Script route_script(const RandomGroupSceneSpec& spec, const std::vector<core::Po
   return script;
 }
 
+// Groups: centres drawn in turn, each far enough from those before. Returns the centres.
+std::vector<Eigen::Vector2d> add_groups(Scenario& scenario, const RandomGroupSceneSpec& spec,
+                                        core::Rng& rng, model::ObjectId& next_human) {
+  const unsigned group_count =
+      spec.min_groups +
+      static_cast<unsigned>(rng.uniform_index(spec.max_groups - spec.min_groups + 1));
+  std::vector<Eigen::Vector2d> centres;
+  for (unsigned g = 0; g < group_count; ++g) {
+    Eigen::Vector2d centre;
+    int draw = 0;
+    do {
+      if (++draw > kMaxDraws) {
+        no_place(spec, "group " + std::to_string(g + 1));
+      }
+      centre = rng.uniform_point(spec.area_min, spec.area_max);
+    } while (nearest(centre, centres) < spec.min_centre_distance_m);
+    centres.push_back(centre);
+    add_group(scenario, spec, rng, g + 1, centre, next_human);
+  }
+  return centres;
+}
+
+// People alone, standing or walking somewhere away from the groups. Returns where they stand.
+std::vector<Eigen::Vector2d> add_lone_people(Scenario& scenario, const RandomGroupSceneSpec& spec,
+                                             core::Rng& rng,
+                                             const std::vector<Eigen::Vector2d>& centres,
+                                             model::ObjectId& next_human) {
+  std::vector<Eigen::Vector2d> others;
+  const unsigned lone_count = static_cast<unsigned>(rng.uniform_index(spec.max_lone_people + 1));
+  for (unsigned k = 0; k < lone_count; ++k) {
+    world::HumanSpec human;
+    human.id = next_human++;
+    const std::string what = "person " + std::to_string(human.id);
+    // The heading is drawn before the place, as the seeded scenes of docs/perception_gcff.md were.
+    const double heading = rng.uniform(-kPi, kPi);
+    human.pose = core::Pose2{free_place(spec, rng, centres, others, what), heading};
+    draw_looks(human, rng);
+    if (rng.bernoulli(0.5)) {
+      const Eigen::Vector2d to = free_place(spec, rng, centres, {}, what + "'s goal");
+      const Eigen::Vector2d way = to - human.pose.position;
+      human.goal = core::Pose2{to, std::atan2(way.y(), way.x())};
+    }
+    others.push_back(human.pose.position);
+    scenario.scene.humans.push_back(human);
+  }
+  return others;
+}
+
+// ARI, and its route past the groups in a random order.
+void add_ari_and_route(Scenario& scenario, const RandomGroupSceneSpec& spec, core::Rng& rng,
+                       const std::vector<Eigen::Vector2d>& centres,
+                       const std::vector<Eigen::Vector2d>& others) {
+  world::AriSpec ari;
+  const double ari_heading = rng.uniform(-kPi, kPi);
+  ari.pose = core::Pose2{free_place(spec, rng, centres, others, "ARI"), ari_heading};
+  scenario.scene.ari = ari;
+  std::vector<size_t> order(centres.size());
+  for (size_t i = 0; i < order.size(); ++i) {
+    order[i] = i;
+  }
+  for (size_t i = order.size(); i > 1; --i) {  // Fisher-Yates
+    std::swap(order[i - 1], order[rng.uniform_index(i)]);
+  }
+  std::vector<core::Pose2> waypoints;
+  for (size_t i : order) {
+    if (const std::optional<core::Pose2> waypoint = waypoint_by(spec, rng, centres[i], centres)) {
+      waypoints.push_back(*waypoint);
+    }
+  }
+  if (waypoints.empty()) {
+    no_place(spec, "ARI's waypoints");
+  }
+  scenario.script = route_script(spec, waypoints);
+}
+
+// Where each entry came from, for build_simulation's messages.
+void name_entries(world::Scene& scene) {
+  for (size_t i = 0; i < scene.humans.size(); ++i) {
+    scene.human_fields.push_back(scene.path + ": humans[" + std::to_string(i) + "]");
+  }
+  for (size_t i = 0; i < scene.groups.size(); ++i) {
+    scene.group_fields.push_back(scene.path + ": groups[" + std::to_string(i) + "]");
+  }
+}
+
 }  // namespace
 
 void RandomGroupSceneSpec::validate() const {
@@ -214,76 +299,12 @@ Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed
   scenario.scene.world = spec.world;
   scenario.scene.seed = seed;
 
-  // Groups: centres drawn in turn, each far enough from those before.
-  const unsigned group_count =
-      spec.min_groups +
-      static_cast<unsigned>(rng.uniform_index(spec.max_groups - spec.min_groups + 1));
-  std::vector<Eigen::Vector2d> centres;
   model::ObjectId next_human = kFirstHuman;
-  for (unsigned g = 0; g < group_count; ++g) {
-    Eigen::Vector2d centre;
-    int draw = 0;
-    do {
-      if (++draw > kMaxDraws) {
-        no_place(spec, "group " + std::to_string(g + 1));
-      }
-      centre = rng.uniform_point(spec.area_min, spec.area_max);
-    } while (nearest(centre, centres) < spec.min_centre_distance_m);
-    centres.push_back(centre);
-    add_group(scenario, spec, rng, g + 1, centre, next_human);
-  }
-
-  // People alone, standing or walking somewhere away from the groups.
-  std::vector<Eigen::Vector2d> others;
-  const unsigned lone_count = static_cast<unsigned>(rng.uniform_index(spec.max_lone_people + 1));
-  for (unsigned k = 0; k < lone_count; ++k) {
-    world::HumanSpec human;
-    human.id = next_human++;
-    const std::string what = "person " + std::to_string(human.id);
-    // The heading is drawn before the place, as the seeded scenes of docs/perception_gcff.md were.
-    const double heading = rng.uniform(-kPi, kPi);
-    human.pose = core::Pose2{free_place(spec, rng, centres, others, what), heading};
-    draw_looks(human, rng);
-    if (rng.bernoulli(0.5)) {
-      const Eigen::Vector2d to = free_place(spec, rng, centres, {}, what + "'s goal");
-      const Eigen::Vector2d way = to - human.pose.position;
-      human.goal = core::Pose2{to, std::atan2(way.y(), way.x())};
-    }
-    others.push_back(human.pose.position);
-    scenario.scene.humans.push_back(human);
-  }
-
-  // ARI, and its route past the groups in a random order.
-  world::AriSpec ari;
-  const double ari_heading = rng.uniform(-kPi, kPi);
-  ari.pose = core::Pose2{free_place(spec, rng, centres, others, "ARI"), ari_heading};
-  scenario.scene.ari = ari;
-  std::vector<size_t> order(centres.size());
-  for (size_t i = 0; i < order.size(); ++i) {
-    order[i] = i;
-  }
-  for (size_t i = order.size(); i > 1; --i) {  // Fisher-Yates
-    std::swap(order[i - 1], order[rng.uniform_index(i)]);
-  }
-  std::vector<core::Pose2> waypoints;
-  for (size_t i : order) {
-    if (const std::optional<core::Pose2> waypoint = waypoint_by(spec, rng, centres[i], centres)) {
-      waypoints.push_back(*waypoint);
-    }
-  }
-  if (waypoints.empty()) {
-    no_place(spec, "ARI's waypoints");
-  }
-  scenario.script = route_script(spec, waypoints);
-  // Where each entry came from, for build_simulation's messages.
-  for (size_t i = 0; i < scenario.scene.humans.size(); ++i) {
-    scenario.scene.human_fields.push_back(scenario.scene.path + ": humans[" + std::to_string(i) +
-                                          "]");
-  }
-  for (size_t i = 0; i < scenario.scene.groups.size(); ++i) {
-    scenario.scene.group_fields.push_back(scenario.scene.path + ": groups[" + std::to_string(i) +
-                                          "]");
-  }
+  const std::vector<Eigen::Vector2d> centres = add_groups(scenario, spec, rng, next_human);
+  const std::vector<Eigen::Vector2d> others =
+      add_lone_people(scenario, spec, rng, centres, next_human);
+  add_ari_and_route(scenario, spec, rng, centres, others);
+  name_entries(scenario.scene);
   return scenario;
 }
 
