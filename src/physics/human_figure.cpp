@@ -188,24 +188,42 @@ void HumanFigure::build_trunk_and_arms() {
 void HumanFigure::build_head() {
   const double h = look_.head_height_m;
   const Eigen::Vector3d& r = head_radii_;
-  // Where the head's front surface is at (y, z) of the head frame.
-  auto front = [&r](double y, double z) {
-    const double inside = 1.0 - (y * y) / (r.y() * r.y()) - (z * z) / (r.z() * r.z());
-    return r.x() * std::sqrt(std::max(0.0, inside));
-  };
-  const Eigen::Vector3f& skin = look_.skin;
   // The head's skin is the face: seen from behind, the hair covers it.
-  add_part(kHead, true,
-           shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), 2.0 * r, skin, kHeadSegments));
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), 2.0 * r, look_.skin, kHeadSegments));
   for (double side : {-1.0, 1.0}) {
     add_part(kHead, false,
              shape(PrimitiveShape::kSphere, {-0.05 * h, side * r.y(), 0.0},
-                   {0.08 * h, 0.05 * h, 0.26 * h}, darker(skin, 0.93f), kFeatureSegments));
+                   {0.08 * h, 0.05 * h, 0.26 * h}, darker(look_.skin, 0.93f), kFeatureSegments));
   }
+  const std::vector<Ellipsoid> hair = add_hair();
+  // The face box: hairline to chin, side to side of the head at the eyes.
+  for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
+                                    Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
+    face_outline_.emplace_back(face_front(yz.x(), yz.y()), yz.x(), yz.y());
+  }
+  add_eyes_and_brows();
+  if (look_.mask) {
+    add_mask();
+  } else {
+    add_nose_and_mouth();
+  }
+  collect_face_surface(hair);
+}
+
+double HumanFigure::face_front(double y, double z) const {
+  const Eigen::Vector3d& r = head_radii_;
+  const double inside = 1.0 - (y * y) / (r.y() * r.y()) - (z * z) / (r.z() * r.z());
+  return r.x() * std::sqrt(std::max(0.0, inside));
+}
+
+std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3d& r = head_radii_;
   // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline;
   // long hair falls behind the neck to the shoulders.
-  // (centre, diameters) of the hair's ellipsoids, which hide the skin inside them.
-  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> hair;
+  std::vector<Ellipsoid> hair;
   if (look_.hair_style != HairStyle::kBald) {
     hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
                       Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
@@ -218,73 +236,85 @@ void HumanFigure::build_head() {
     add_part(kHead, false,
              shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, kHeadSegments));
   }
-  // The face box: hairline to chin, side to side of the head at the eyes.
-  for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
-                                    Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
-    face_outline_.emplace_back(front(yz.x(), yz.y()), yz.x(), yz.y());
-  }
-  // Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's
-  // base at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h.
+  return hair;
+}
+
+// Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's base
+// at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h. Detectors read a face by its contrasts
+// (Viola and Jones' features): eye sockets and brows darker than the forehead and the cheeks, a
+// bright nose bridge between the eyes, a dark mouth.
+void HumanFigure::add_eyes_and_brows() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3f& skin = look_.skin;
   const double eye_y = 0.137 * h;
   // Brows darker than the skin whatever the hair's colour: fair hair has darker brows.
   const Eigen::Vector3f brow = darker(look_.hair, 0.5f).cwiseMin(darker(skin, 0.35f));
-  // Detectors read a face by its contrasts (Viola and Jones' features): eye sockets and brows
-  // darker than the forehead and the cheeks, a bright nose bridge between the eyes, a dark mouth.
   for (double side : {-1.0, 1.0}) {
     const double y = side * eye_y;
     add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(y, 0.02 * h) - 0.014, y, 0.02 * h},
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.02 * h) - 0.014, y, 0.02 * h},
                    {0.06 * h, 0.25 * h, 0.17 * h}, darker(skin, 0.4f), kFeatureSegments));
     add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(y, 0.0) - 0.005, y, 0.0},
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.0) - 0.005, y, 0.0},
                    {0.04 * h, 0.15 * h, 0.07 * h}, Eigen::Vector3f(0.9f, 0.88f, 0.84f),
                    kFeatureSegments));
     add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(y, 0.0) + 0.003, y, 0.0},
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.0) + 0.003, y, 0.0},
                    {0.02 * h, 0.07 * h, 0.07 * h}, look_.iris * 0.5f, kFeatureSegments));
-    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(front(y, 0.0) + 0.003, y, 0.0);
+    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(face_front(y, 0.0) + 0.003, y, 0.0);
     add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
                    {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
   }
-  if (look_.mask) {
-    // Over nose and mouth, ear to ear: a shell in front of the lower face.
-    add_part(
-        kHead, true,
-        shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
-              {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour, kHeadSegments));
-    // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
-    for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
-      const double dz = (z + 0.27 * h) / (0.25 * h);
-      const double across = std::sqrt(1.0 - dz * dz);
-      add_part(kHead, true,
-               shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, z},
-                     {2.0 * (0.82 * r.x() * across + 0.003), 2.0 * (0.98 * r.y() * across + 0.003),
-                      0.035 * h},
-                     darker(look_.mask_colour, 0.72f), kTrunkSegments));
-    }
-  } else {  // nose and mouth, which a mask covers
+}
+
+// Over nose and mouth, ear to ear: a shell in front of the lower face.
+void HumanFigure::add_mask() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3d& r = head_radii_;
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
+            {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour, kHeadSegments));
+  // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
+  for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
+    const double dz = (z + 0.27 * h) / (0.25 * h);
+    const double across = std::sqrt(1.0 - dz * dz);
     add_part(kHead, true,
-             glossy(shape(PrimitiveShape::kSphere, {front(0.0, -0.08 * h), 0.0, -0.08 * h},
-                          {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
-                   {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
-    const Eigen::Vector3f lips = darker(skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
-                   {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
-                   {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f),
-                   kFeatureSegments));
-    // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
-    add_part(kJaw, true,
-             shape(PrimitiveShape::kSphere, {front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
-                   {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
+             shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, z},
+                   {2.0 * (0.82 * r.x() * across + 0.003), 2.0 * (0.98 * r.y() * across + 0.003),
+                    0.035 * h},
+                   darker(look_.mask_colour, 0.72f), kTrunkSegments));
   }
-  // What a camera can see of the face: the vertices of every face part (skin and features) not
-  // under the hair, in the head frame; the jaw's twice, with the mouth closed and fully open.
+}
+
+void HumanFigure::add_nose_and_mouth() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3f& skin = look_.skin;
+  add_part(kHead, true,
+           glossy(shape(PrimitiveShape::kSphere, {face_front(0.0, -0.08 * h), 0.0, -0.08 * h},
+                        {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
+  add_part(kHead, true,
+           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
+                 {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
+  const Eigen::Vector3f lips = darker(skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
+  add_part(kHead, true,
+           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
+                 {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, {face_front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
+            {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f), kFeatureSegments));
+  // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
+  add_part(kJaw, true,
+           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
+                 {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
+}
+
+// What a camera can see of the face: the vertices of every face part (skin and features) not
+// under the hair, in the head frame; the jaw's twice, with the mouth closed and fully open.
+void HumanFigure::collect_face_surface(const std::vector<Ellipsoid>& hair) {
+  const double h = look_.head_height_m;
   std::set<std::array<float, 6>> seen;
   for (const Part& part : parts_) {
     if (!part.face || (part.joint != kHead && part.joint != kJaw)) {

@@ -50,6 +50,80 @@ LinkShape to_shape(const urdf::GeometrySharedPtr& geometry, const urdf::Pose& or
   return shape;
 }
 
+// A link's name, inertia (about its origin, in its frame), visuals and collisions; the caller
+// sets its place in the tree.
+RobotLink to_link(const urdf::Link& link, int parent_joint, const std::string& source) {
+  RobotLink out;
+  out.name = link.name;
+  out.parent_joint = parent_joint;
+  const std::string where = source + ": link " + link.name;
+  if (link.inertial) {
+    const urdf::Inertial& inertial = *link.inertial;
+    const Eigen::Isometry3d X = to_isometry(inertial.origin);
+    Eigen::Matrix3d I;
+    I << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz,
+        inertial.ixz, inertial.iyz, inertial.izz;
+    out.inertia.mass_kg = inertial.mass;
+    out.inertia.com_m = X.translation();
+    out.inertia.inertia_kgm2 = X.linear() * I * X.linear().transpose();
+  }
+  for (const urdf::VisualSharedPtr& visual : link.visual_array) {
+    LinkShape shape = to_shape(visual->geometry, visual->origin, where + " visual");
+    if (visual->material) {
+      const urdf::Color& c = visual->material->color;
+      shape.rgba = {c.r, c.g, c.b, c.a};
+    }
+    out.visuals.push_back(shape);
+  }
+  for (const urdf::CollisionSharedPtr& collision : link.collision_array) {
+    out.collisions.push_back(
+        to_shape(collision->geometry, collision->origin, where + " collision"));
+  }
+  return out;
+}
+
+JointType to_joint_type(int urdf_type, const std::string& where) {
+  switch (urdf_type) {
+    case urdf::Joint::FIXED:
+      return JointType::kFixed;
+    case urdf::Joint::REVOLUTE:
+      return JointType::kRevolute;
+    case urdf::Joint::CONTINUOUS:
+      return JointType::kContinuous;
+    default:
+      throw core::ConfigError(where + ": expected a fixed, revolute or continuous joint");
+  }
+}
+
+// A joint below the link `parent_link`, checked: a movable joint's axis is a unit vector, a
+// revolute joint's limits are ordered.
+RobotJoint to_joint(const urdf::Joint& joint, int parent_link, const std::string& source) {
+  RobotJoint j;
+  j.name = joint.name;
+  j.parent_link = parent_link;
+  j.X_parent_joint = to_isometry(joint.parent_to_joint_origin_transform);
+  j.axis = Eigen::Vector3d(joint.axis.x, joint.axis.y, joint.axis.z);
+  const std::string where = source + ": joint " + joint.name;
+  j.type = to_joint_type(joint.type, where);
+  if (j.is_movable()) {
+    if (j.axis.norm() < 1e-9) {
+      throw core::ConfigError(where + ": axis: expected a non-zero vector");
+    }
+    j.axis.normalize();
+  }
+  if (joint.limits) {
+    j.lower_rad = joint.limits->lower;
+    j.upper_rad = joint.limits->upper;
+    j.max_velocity_rps = joint.limits->velocity;
+    j.max_effort_nm = joint.limits->effort;
+  }
+  if (j.type == JointType::kRevolute && !(j.lower_rad < j.upper_rad)) {
+    throw core::ConfigError(where + ": limit: expected lower < upper, got " +
+                            std::to_string(j.lower_rad) + " and " + std::to_string(j.upper_rad));
+  }
+  return j;
+}
+
 }  // namespace
 
 RobotModel RobotModel::from_urdf_file(const std::string& path) {
@@ -72,33 +146,7 @@ RobotModel RobotModel::from_urdf_string(const std::string& xml, const std::strin
   std::function<void(const urdf::LinkConstSharedPtr&, int)> add_link =
       [&](const urdf::LinkConstSharedPtr& link, int parent_joint) {
         const int index = static_cast<int>(model.links_.size());
-        RobotLink out;
-        out.name = link->name;
-        out.parent_joint = parent_joint;
-        const std::string where = source + ": link " + link->name;
-        if (link->inertial) {
-          const Eigen::Isometry3d X = to_isometry(link->inertial->origin);
-          Eigen::Matrix3d I;
-          I << link->inertial->ixx, link->inertial->ixy, link->inertial->ixz, link->inertial->ixy,
-              link->inertial->iyy, link->inertial->iyz, link->inertial->ixz, link->inertial->iyz,
-              link->inertial->izz;
-          out.inertia.mass_kg = link->inertial->mass;
-          out.inertia.com_m = X.translation();
-          out.inertia.inertia_kgm2 = X.linear() * I * X.linear().transpose();
-        }
-        for (const urdf::VisualSharedPtr& visual : link->visual_array) {
-          LinkShape shape = to_shape(visual->geometry, visual->origin, where + " visual");
-          if (visual->material) {
-            const urdf::Color& c = visual->material->color;
-            shape.rgba = {c.r, c.g, c.b, c.a};
-          }
-          out.visuals.push_back(shape);
-        }
-        for (const urdf::CollisionSharedPtr& collision : link->collision_array) {
-          out.collisions.push_back(
-              to_shape(collision->geometry, collision->origin, where + " collision"));
-        }
-        model.links_.push_back(out);
+        model.links_.push_back(to_link(*link, parent_joint, source));
         if (parent_joint >= 0) {
           model.joints_[parent_joint].child_link = index;
         }
@@ -108,45 +156,8 @@ RobotModel RobotModel::from_urdf_string(const std::string& xml, const std::strin
                     return a->child_link_name < b->child_link_name;
                   });
         for (const urdf::JointSharedPtr& joint : children) {
-          RobotJoint j;
-          j.name = joint->name;
-          j.parent_link = index;
-          j.X_parent_joint = to_isometry(joint->parent_to_joint_origin_transform);
-          j.axis = Eigen::Vector3d(joint->axis.x, joint->axis.y, joint->axis.z);
-          const std::string joint_where = source + ": joint " + joint->name;
-          switch (joint->type) {
-            case urdf::Joint::FIXED:
-              j.type = JointType::kFixed;
-              break;
-            case urdf::Joint::REVOLUTE:
-              j.type = JointType::kRevolute;
-              break;
-            case urdf::Joint::CONTINUOUS:
-              j.type = JointType::kContinuous;
-              break;
-            default:
-              throw core::ConfigError(joint_where +
-                                      ": expected a fixed, revolute or continuous joint");
-          }
-          if (j.is_movable()) {
-            if (j.axis.norm() < 1e-9) {
-              throw core::ConfigError(joint_where + ": axis: expected a non-zero vector");
-            }
-            j.axis.normalize();
-          }
-          if (joint->limits) {
-            j.lower_rad = joint->limits->lower;
-            j.upper_rad = joint->limits->upper;
-            j.max_velocity_rps = joint->limits->velocity;
-            j.max_effort_nm = joint->limits->effort;
-          }
-          if (j.type == JointType::kRevolute && !(j.lower_rad < j.upper_rad)) {
-            throw core::ConfigError(joint_where + ": limit: expected lower < upper, got " +
-                                    std::to_string(j.lower_rad) + " and " +
-                                    std::to_string(j.upper_rad));
-          }
           const int joint_index = static_cast<int>(model.joints_.size());
-          model.joints_.push_back(j);
+          model.joints_.push_back(to_joint(*joint, index, source));
           model.links_[index].child_joints.push_back(joint_index);
           add_link(urdf->getLink(joint->child_link_name), joint_index);
         }

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
@@ -88,6 +89,15 @@ class HumanFigure {
   void build_legs();
   void build_trunk_and_arms();
   void build_head();
+  // build_head's stages. An ellipsoid is (centre, diameters) in the head frame.
+  using Ellipsoid = std::pair<Eigen::Vector3d, Eigen::Vector3d>;
+  /// How far in front of the head's centre its surface is at (y, z) of the head frame.
+  double face_front(double y, double z) const;
+  std::vector<Ellipsoid> add_hair();  ///< The hair's ellipsoids, which hide the skin inside them.
+  void add_eyes_and_brows();
+  void add_mask();
+  void add_nose_and_mouth();
+  void collect_face_surface(const std::vector<Ellipsoid>& hair);
 
   HumanAppearance look_;
   // Lengths (m), from the appearance.
