@@ -108,7 +108,23 @@ struct AriPhysics::Engine {
   ~Engine();
 
   void build_world(const PhysicsConfig& config);
+  // build_robot's stages, in order.
   void build_robot(const core::Pose2& start, const PhysicsConfig& config);
+  void create_multibody(const core::Pose2& start);
+  void index_movable_joints();
+  void add_colliders(const PhysicsConfig& config);
+  std::unique_ptr<btCompoundShape> collision_shape(const BodyLayout& body);
+  void add_servos();
+  size_t movable_joint(const std::string& name) const;
+  void add_controllers();
+  void add_drive_and_imu(const core::Pose2& start, const PhysicsConfig& config);
+  // The stages of AriPhysics::step() that come before and after Bullet's, in order.
+  void drive_wheels(double dt, const PhysicsConfig& config);
+  void run_trajectory_controllers(double dt, const PhysicsConfig& config);
+  void follow_passive_joints(double dt);
+  void move_people(double dt);
+  void step_bullet(double dt);
+  void roll_casters(double dt);
   btCollisionShape* own(std::unique_ptr<btCollisionShape> shape) {
     shapes.push_back(std::move(shape));
     return shapes.back().get();
@@ -294,6 +310,22 @@ void AriPhysics::Engine::build_world(const PhysicsConfig& config) {
 }
 
 void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConfig& config) {
+  create_multibody(start);
+  index_movable_joints();
+  robot->finalizeMultiDof();
+  robot->setLinearDamping(0.0);
+  robot->setAngularDamping(0.0);
+  robot->setHasSelfCollision(false);
+  robot->setUseGyroTerm(true);
+  dynamics->addMultiBody(robot.get());
+  add_colliders(config);
+  add_servos();
+  add_controllers();
+  add_drive_and_imu(start, config);
+  save_good_state();
+}
+
+void AriPhysics::Engine::create_multibody(const core::Pose2& start) {
   const std::vector<BodyLayout>& bodies = layout.bodies();
   const int link_count = static_cast<int>(bodies.size()) - 1;
   const BodyLayout& root = bodies[0];
@@ -301,7 +333,6 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
                                         to_bt(Eigen::Vector3d(root.principal_inertia_kgm2)),
                                         /*fixedBase=*/false, /*canSleep=*/false);
   robot->setBaseWorldTransform(to_bt(planar_pose(start) * root.X_reference_com));
-  const DriveJoints drive_joints;
 
   // One multibody link per movable joint, placed as Bullet's setupRevolute wants it: the pivot
   // from the parent's centre of mass in the parent's principal frame, the rotation from the
@@ -325,6 +356,11 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
         to_bt(Eigen::Vector3d(-X_com_joint.translation())),
         /*disableParentCollision=*/true);
   }
+}
+
+// Every movable joint in URDF order, its multibody link (if simulated) and the casters among the
+// kinematic ones.
+void AriPhysics::Engine::index_movable_joints() {
   for (size_t j = 0; j < model.joints().size(); ++j) {
     const RobotJoint& joint = model.joints()[j];
     if (!joint.is_movable()) {
@@ -347,46 +383,49 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   }
   kinematic_position.assign(joint_names.size(), 0.0);
   kinematic_velocity.assign(joint_names.size(), 0.0);
-  robot->finalizeMultiDof();
-  robot->setLinearDamping(0.0);
-  robot->setAngularDamping(0.0);
-  robot->setHasSelfCollision(false);
-  robot->setUseGyroTerm(true);
-  dynamics->addMultiBody(robot.get());
+}
 
-  // Collision shapes: each body's URDF collision primitives in its principal frame. Links on
-  // continuous joints roll (wheels, casters): a sphere of the cylinder's radius gives one clean
-  // contact point with the floor instead of a cylinder rim's chattering ones.
+// A body's URDF collision primitives in its principal frame. Links on continuous joints roll
+// (wheels, casters): a sphere of the cylinder's radius gives one clean contact point with the
+// floor instead of a cylinder rim's chattering ones.
+std::unique_ptr<btCompoundShape> AriPhysics::Engine::collision_shape(const BodyLayout& body) {
+  auto compound = std::make_unique<btCompoundShape>();
+  for (const int link : body.links) {
+    const Eigen::Isometry3d X_com_link =
+        body.X_reference_com.inverse() *
+        layout.placements()[static_cast<size_t>(link)].X_reference_link;
+    const int parent_joint = model.links()[static_cast<size_t>(link)].parent_joint;
+    const bool link_rolls =
+        parent_joint >= 0 &&
+        model.joints()[static_cast<size_t>(parent_joint)].type == JointType::kContinuous;
+    for (const LinkShape& primitive : model.links()[static_cast<size_t>(link)].collisions) {
+      std::unique_ptr<btCollisionShape> shape;
+      if (link_rolls || primitive.type == LinkShape::Type::kSphere) {
+        shape = std::make_unique<btSphereShape>(primitive.type == LinkShape::Type::kBox
+                                                    ? 0.5 * primitive.box_size_m.minCoeff()
+                                                    : primitive.radius_m);
+      } else if (primitive.type == LinkShape::Type::kBox) {
+        shape = std::make_unique<btBoxShape>(to_bt(Eigen::Vector3d(0.5 * primitive.box_size_m)));
+      } else {
+        shape = std::make_unique<btCylinderShapeZ>(
+            btVector3(primitive.radius_m, primitive.radius_m, 0.5 * primitive.length_m));
+      }
+      shape->setMargin(std::min<btScalar>(kMargin, shape->getMargin()));
+      compound->addChildShape(to_bt(X_com_link * primitive.X_link_shape), own(std::move(shape)));
+    }
+  }
+  return compound;
+}
+
+void AriPhysics::Engine::add_colliders(const PhysicsConfig& config) {
+  const std::vector<BodyLayout>& bodies = layout.bodies();
+  const DriveJoints drive_joints;
   robot->forwardKinematics(scratch_rotations, scratch_origins);
   for (size_t k = 0; k < bodies.size(); ++k) {
     const BodyLayout& body = bodies[k];
     const bool rolls = body.joint >= 0 && model.joints()[static_cast<size_t>(body.joint)].type ==
                                               JointType::kContinuous;
-    auto compound = std::make_unique<btCompoundShape>();
-    for (const int link : body.links) {
-      const Eigen::Isometry3d X_com_link =
-          body.X_reference_com.inverse() *
-          layout.placements()[static_cast<size_t>(link)].X_reference_link;
-      const int parent_joint = model.links()[static_cast<size_t>(link)].parent_joint;
-      const bool link_rolls =
-          parent_joint >= 0 &&
-          model.joints()[static_cast<size_t>(parent_joint)].type == JointType::kContinuous;
-      for (const LinkShape& primitive : model.links()[static_cast<size_t>(link)].collisions) {
-        std::unique_ptr<btCollisionShape> shape;
-        if (link_rolls || primitive.type == LinkShape::Type::kSphere) {
-          shape = std::make_unique<btSphereShape>(primitive.type == LinkShape::Type::kBox
-                                                      ? 0.5 * primitive.box_size_m.minCoeff()
-                                                      : primitive.radius_m);
-        } else if (primitive.type == LinkShape::Type::kBox) {
-          shape = std::make_unique<btBoxShape>(to_bt(Eigen::Vector3d(0.5 * primitive.box_size_m)));
-        } else {
-          shape = std::make_unique<btCylinderShapeZ>(
-              btVector3(primitive.radius_m, primitive.radius_m, 0.5 * primitive.length_m));
-        }
-        shape->setMargin(std::min<btScalar>(kMargin, shape->getMargin()));
-        compound->addChildShape(to_bt(X_com_link * primitive.X_link_shape), own(std::move(shape)));
-      }
-    }
+    std::unique_ptr<btCompoundShape> compound = collision_shape(body);
     if (compound->getNumChildShapes() == 0) {
       continue;
     }
@@ -417,9 +456,11 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
     }
     colliders.push_back(std::move(collider));
   }
+}
 
-  // Servos: a motor on every simulated joint with an effort limit (wheels, head, arms), capped at
-  // that effort. Position limits are kept by the controllers, which saturate every command.
+// A motor on every simulated joint with an effort limit (wheels, head, arms), capped at that
+// effort. Position limits are kept by the controllers, which saturate every command.
+void AriPhysics::Engine::add_servos() {
   for (size_t j = 0; j < joint_names.size(); ++j) {
     const RobotJoint& joint = model.joint(joint_names[j]);
     if (joint_link[j] >= 0 && joint.max_effort_nm > 0.0) {
@@ -432,21 +473,24 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
       motors.push_back(nullptr);
     }
   }
+}
 
-  // Controllers, passive joints, drive and sensors.
-  const auto index_of = [&](const std::string& name) {
-    const auto it = joint_by_name.find(name);
-    if (it == joint_by_name.end()) {
-      throw core::RequestError(model.name() + ": the model has no movable joint '" + name +
-                               "' that ARI's controllers need");
-    }
-    return it->second;
-  };
+size_t AriPhysics::Engine::movable_joint(const std::string& name) const {
+  const auto it = joint_by_name.find(name);
+  if (it == joint_by_name.end()) {
+    throw core::RequestError(model.name() + ": the model has no movable joint '" + name +
+                             "' that ARI's controllers need");
+  }
+  return it->second;
+}
+
+// ARI's trajectory controllers and the passive joints that follow them.
+void AriPhysics::Engine::add_controllers() {
   for (const ControllerSpec& spec : ari_controller_specs()) {
     ControlledJoints owned;
     std::vector<JointBounds> bounds;
     for (const std::string& name : spec.joints) {
-      owned.joints.push_back(index_of(name));
+      owned.joints.push_back(movable_joint(name));
       const RobotJoint& joint = model.joint(name);
       bounds.push_back({joint.lower_rad, joint.upper_rad, joint.max_velocity_rps});
     }
@@ -456,11 +500,15 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   }
   for (const PassiveJoint& joint : ari_passive_joints()) {
     const RobotJoint& robot_joint = model.joint(joint.joint);
-    passive.push_back({index_of(joint.joint), index_of(joint.follows), robot_joint.lower_rad,
-                       robot_joint.upper_rad});
+    passive.push_back({movable_joint(joint.joint), movable_joint(joint.follows),
+                       robot_joint.lower_rad, robot_joint.upper_rad});
   }
-  left_wheel = index_of(drive_joints.left_wheel);
-  right_wheel = index_of(drive_joints.right_wheel);
+}
+
+void AriPhysics::Engine::add_drive_and_imu(const core::Pose2& start, const PhysicsConfig& config) {
+  const DriveJoints drive_joints;
+  left_wheel = movable_joint(drive_joints.left_wheel);
+  right_wheel = movable_joint(drive_joints.right_wheel);
   // Radius from the wheel's collision cylinder, separation from the joint origins, as PAL's
   // diff_drive_controller reads them from the URDF.
   const RobotJoint& left = model.joint(drive_joints.left_wheel);
@@ -483,7 +531,112 @@ void AriPhysics::Engine::build_robot(const core::Pose2& start, const PhysicsConf
   }
   imu = std::make_unique<ImuModel>(config.imu_noise, config.gravity_mps2,
                                    core::Rng::for_stream(config.seed, 1));
-  save_good_state();
+}
+
+// The diff-drive controller's wheel velocities, and the wheel angles they integrate to as the
+// position target, which plays the wheel PID's integral term: without it a parked ARI creeps
+// (0.3 mm/s) on the solver's residual. The target never leads the wheel by more than
+// kWheelWindupRad, so a wheel held by a wall does not wind up a lunge for later.
+void AriPhysics::Engine::drive_wheels(double dt, const PhysicsConfig& config) {
+  drive->update(time_s, dt);
+  const double wheel_rates[2] = {drive->left_wheel_rps(), drive->right_wheel_rps()};
+  const size_t wheels[2] = {left_wheel, right_wheel};
+  for (int w = 0; w < 2; ++w) {
+    const double angle = joint_position(wheels[w]);
+    wheel_targets[w] = std::clamp(wheel_targets[w] + wheel_rates[w] * dt, angle - kWheelWindupRad,
+                                  angle + kWheelWindupRad);
+    motors[wheels[w]]->setVelocityTarget(wheel_rates[w], 1.0);
+    motors[wheels[w]]->setPositionTarget(wheel_targets[w], config.joint_position_gain);
+  }
+}
+
+// The saturated position command of each trajectory controller, and its rate as the servo's
+// velocity target.
+void AriPhysics::Engine::run_trajectory_controllers(double dt, const PhysicsConfig& config) {
+  std::vector<double> q;
+  std::vector<double> qd;
+  for (size_t c = 0; c < controllers.size(); ++c) {
+    TrajectoryController& controller = *controllers[c];
+    const std::vector<size_t>& joints = controlled[c].joints;
+    q.resize(joints.size());
+    qd.resize(joints.size());
+    for (size_t j = 0; j < joints.size(); ++j) {
+      q[j] = joint_position(joints[j]);
+      qd[j] = joint_velocity(joints[j]);
+    }
+    const std::vector<double> previous = controller.command();
+    controller.update(time_s, dt, q, qd);
+    for (size_t j = 0; j < joints.size(); ++j) {
+      const double rate = (controller.command()[j] - previous[j]) / dt;
+      if (btMultiBodyJointMotor* motor = motors[joints[j]]) {
+        motor->setPositionTarget(controller.command()[j], config.joint_position_gain);
+        motor->setVelocityTarget(rate, config.joint_velocity_gain);
+      } else {
+        kinematic_position[joints[j]] = controller.command()[j];
+        kinematic_velocity[joints[j]] = rate;
+      }
+    }
+  }
+}
+
+// Passive finger joints copy the actuated one, within their own limits.
+void AriPhysics::Engine::follow_passive_joints(double dt) {
+  for (const Passive& joint : passive) {
+    const double next =
+        std::clamp(kinematic_position[joint.follows], joint.lower_rad, joint.upper_rad);
+    kinematic_velocity[joint.joint] = (next - kinematic_position[joint.joint]) / dt;
+    kinematic_position[joint.joint] = next;
+  }
+}
+
+// People walk on at their reported velocity and close the gap to where their last report puts
+// them now within kPersonCatchUpS, so a body never jumps: a kinematic body that jumps into ARI
+// would hit it with the jump's speed.
+void AriPhysics::Engine::move_people(double dt) {
+  for (Person& person : people) {
+    const double since = time_s - person.reported_at_s;
+    const Eigen::Vector2d expected =
+        person.reported.pose.position + since * person.reported.velocity_mps;
+    const double expected_theta =
+        person.reported.pose.theta + since * person.reported.angular_velocity_rps;
+    person.state.velocity_mps =
+        person.reported.velocity_mps + (expected - person.state.pose.position) / kPersonCatchUpS;
+    person.state.angular_velocity_rps =
+        person.reported.angular_velocity_rps +
+        core::angle_difference(expected_theta, person.state.pose.theta) / kPersonCatchUpS;
+    person.state.pose.position += dt * person.state.velocity_mps;
+    person.state.pose.theta += dt * person.state.angular_velocity_rps;
+    person.motion->setWorldTransform(to_bt(planar_pose(person.state.pose)));
+  }
+}
+
+// Bullet's step; a state that blew up is replaced by the last finite one.
+void AriPhysics::Engine::step_bullet(double dt) {
+  dynamics->stepSimulation(dt, 0, dt);
+  if (!state_is_finite()) {
+    restore_good_state();
+  } else if (steps % 100 == 0) {
+    save_good_state();
+  }
+  time_s = static_cast<double>(steps + 1) * dt;
+  ++steps;
+}
+
+// Casters roll with the floor under them.
+void AriPhysics::Engine::roll_casters(double dt) {
+  if (casters.empty()) {
+    return;
+  }
+  // Casters ride on the base (body 0), whose pose alone places them.
+  const Eigen::Isometry3d X_map_root =
+      to_eigen(robot->getBaseWorldTransform()) * layout.bodies()[0].X_reference_com.inverse();
+  for (const Caster& caster : casters) {
+    // Positive spin rolls forward, as the wheels' (the same joint axis).
+    const double forward = point_velocity(X_map_root * caster.position_root)
+                               .dot(X_map_root.linear() * Eigen::Vector3d::UnitX());
+    kinematic_velocity[caster.joint] = forward / caster.radius_m;
+    kinematic_position[caster.joint] += kinematic_velocity[caster.joint] * dt;
+  }
 }
 
 const std::vector<Eigen::Isometry3d>& AriPhysics::Engine::link_poses() {
@@ -573,104 +726,19 @@ AriPhysics::~AriPhysics() = default;
 void AriPhysics::step() {
   Engine& e = *engine_;
   const double dt = config_.step_s;
-  btMultiBody& robot = *e.robot;
-
-  // 1. Base: the diff-drive controller's wheel velocities, and the wheel angles they integrate
-  // to as the position target, which plays the wheel PID's integral term: without it a parked
-  // ARI creeps (0.3 mm/s) on the solver's residual. The target never leads the wheel by more
-  // than kWheelWindupRad, so a wheel held by a wall does not wind up a lunge for later.
-  e.drive->update(e.time_s, dt);
-  const double wheel_rates[2] = {e.drive->left_wheel_rps(), e.drive->right_wheel_rps()};
-  const size_t wheels[2] = {e.left_wheel, e.right_wheel};
-  for (int w = 0; w < 2; ++w) {
-    const double angle = e.joint_position(wheels[w]);
-    e.wheel_targets[w] = std::clamp(e.wheel_targets[w] + wheel_rates[w] * dt,
-                                    angle - kWheelWindupRad, angle + kWheelWindupRad);
-    e.motors[wheels[w]]->setVelocityTarget(wheel_rates[w], 1.0);
-    e.motors[wheels[w]]->setPositionTarget(e.wheel_targets[w], config_.joint_position_gain);
-  }
-
-  // 2. Joint trajectory controllers: the saturated position command, and its rate as the
-  // servo's velocity target.
-  std::vector<double> q;
-  std::vector<double> qd;
-  for (size_t c = 0; c < e.controllers.size(); ++c) {
-    TrajectoryController& controller = *e.controllers[c];
-    const std::vector<size_t>& joints = e.controlled[c].joints;
-    q.resize(joints.size());
-    qd.resize(joints.size());
-    for (size_t j = 0; j < joints.size(); ++j) {
-      q[j] = e.joint_position(joints[j]);
-      qd[j] = e.joint_velocity(joints[j]);
-    }
-    const std::vector<double> previous = controller.command();
-    controller.update(e.time_s, dt, q, qd);
-    for (size_t j = 0; j < joints.size(); ++j) {
-      const double rate = (controller.command()[j] - previous[j]) / dt;
-      if (btMultiBodyJointMotor* motor = e.motors[joints[j]]) {
-        motor->setPositionTarget(controller.command()[j], config_.joint_position_gain);
-        motor->setVelocityTarget(rate, config_.joint_velocity_gain);
-      } else {
-        e.kinematic_position[joints[j]] = controller.command()[j];
-        e.kinematic_velocity[joints[j]] = rate;
-      }
-    }
-  }
-  // 3. Passive finger joints copy the actuated one, within their own limits.
-  for (const Engine::Passive& joint : e.passive) {
-    const double next =
-        std::clamp(e.kinematic_position[joint.follows], joint.lower_rad, joint.upper_rad);
-    e.kinematic_velocity[joint.joint] = (next - e.kinematic_position[joint.joint]) / dt;
-    e.kinematic_position[joint.joint] = next;
-  }
-  // 4. People walk on at their reported velocity and close the gap to where their last report
-  // puts them now within kPersonCatchUpS, so a body never jumps: a kinematic body that jumps
-  // into ARI would hit it with the jump's speed.
-  for (Engine::Person& person : e.people) {
-    const double since = e.time_s - person.reported_at_s;
-    const Eigen::Vector2d expected =
-        person.reported.pose.position + since * person.reported.velocity_mps;
-    const double expected_theta =
-        person.reported.pose.theta + since * person.reported.angular_velocity_rps;
-    person.state.velocity_mps =
-        person.reported.velocity_mps + (expected - person.state.pose.position) / kPersonCatchUpS;
-    person.state.angular_velocity_rps =
-        person.reported.angular_velocity_rps +
-        core::angle_difference(expected_theta, person.state.pose.theta) / kPersonCatchUpS;
-    person.state.pose.position += dt * person.state.velocity_mps;
-    person.state.pose.theta += dt * person.state.angular_velocity_rps;
-    person.motion->setWorldTransform(to_bt(planar_pose(person.state.pose)));
-  }
-
-  // 5. Bullet.
-  e.dynamics->stepSimulation(dt, 0, dt);
-  if (!e.state_is_finite()) {
-    e.restore_good_state();
-  } else if (e.steps % 100 == 0) {
-    e.save_good_state();
-  }
-  e.time_s = static_cast<double>(e.steps + 1) * dt;
-  ++e.steps;
-
-  // 6. Casters roll with the floor under them; wheel odometry every step; the IMU at its rate.
-  if (!e.casters.empty()) {
-    // Casters ride on the base (body 0), whose pose alone places them.
-    const Eigen::Isometry3d X_map_root =
-        to_eigen(robot.getBaseWorldTransform()) * e.layout.bodies()[0].X_reference_com.inverse();
-    for (const Engine::Caster& caster : e.casters) {
-      // Positive spin rolls forward, as the wheels' (the same joint axis).
-      const double forward = e.point_velocity(X_map_root * caster.position_root)
-                                 .dot(X_map_root.linear() * Eigen::Vector3d::UnitX());
-      e.kinematic_velocity[caster.joint] = forward / caster.radius_m;
-      e.kinematic_position[caster.joint] += e.kinematic_velocity[caster.joint] * dt;
-    }
-  }
+  e.drive_wheels(dt, config_);
+  e.run_trajectory_controllers(dt, config_);
+  e.follow_passive_joints(dt);
+  e.move_people(dt);
+  e.step_bullet(dt);
+  e.roll_casters(dt);
+  // Wheel odometry every step; the IMU at its rate.
   e.odometry->update(e.joint_position(e.left_wheel), e.joint_position(e.right_wheel),
                      e.joint_velocity(e.left_wheel), e.joint_velocity(e.right_wheel));
   if (e.time_s + 1e-9 >= e.next_imu_s) {
     const Eigen::Isometry3d X_map_imu = frame_pose(kImuFrame);
     e.imu_reading = e.imu->measure(e.time_s, X_map_imu, e.point_velocity(X_map_imu.translation()),
-                                   to_eigen(robot.getBaseOmega()));
+                                   to_eigen(e.robot->getBaseOmega()));
     ++e.imu_count;
     e.next_imu_s += 1.0 / config_.imu_rate_hz;
   }
