@@ -368,23 +368,107 @@ int verdict(const std::vector<scenario::EpisodeCsvRow>& rows, const std::string&
   return kEpisodeFailedExit;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point from) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
+}
+
+// The planned episodes that have no row yet (--resume keeps the others'), and how many episodes
+// the run has in all: those and the distinct episodes kept.
+struct PendingEpisodes {
+  std::vector<uint64_t> indices;
+  size_t planned{0};
+};
+
+PendingEpisodes pending_episodes(const Batch& batch) {
+  std::set<uint64_t> done;
+  for (const scenario::EpisodeCsvRow& row : batch.kept) {
+    done.insert(row.episode);
+  }
+  PendingEpisodes pending;
+  for (uint64_t index : batch.options.plan.episode_indices()) {
+    if (done.count(index) == 0) {
+      pending.indices.push_back(index);
+    }
+  }
+  pending.planned = done.size() + pending.indices.size();
+  return pending;
+}
+
+// What the finished episodes of this run add up to, for the closing line.
+struct RunTotals {
+  int successes{0};
+  double sim_time_s{0.0};
+};
+
+// Runs episode `index` to its bag and then its row in the CSV and `rows`. False when a stop signal
+// ended it first: its bag deletes its .active file and it gets no row. Throws core::Error.
+bool run_episode(Batch& batch, uint64_t index, std::vector<scenario::EpisodeCsvRow>& rows,
+                 RunTotals& totals) {
+  const OutputPaths& paths = batch.paths;
+  const uint64_t seed = batch.options.plan.seed_of(index);
+  const auto episode_start = std::chrono::steady_clock::now();
+  scenario::Episode episode(batch.scenario, seed, batch.config);
+  std::unique_ptr<tools::EpisodeBag> bag;
+  if (batch.options.bags) {
+    bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), paths.name);
+  }
+  while (!episode.finished() && g_stop_signal == 0) {
+    episode.step();
+    if (bag) {
+      bag->record_step(episode);
+    }
+  }
+  if (g_stop_signal != 0) {
+    return false;
+  }
+  // The bag under its name first, then the row: a row always has its bag.
+  if (bag) {
+    bag->finish();
+  }
+  const auto summary = scenario::EpisodeSummary::of(
+      paths.name, index, seed, episode.runner(), episode.metrics(), seconds_since(episode_start));
+  batch.csv << scenario::csv_row(summary) << "\n" << std::flush;
+  if (!batch.csv) {
+    throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
+                      " failed");
+  }
+  rows.push_back(scenario::EpisodeCsvRow::of(summary));
+  totals.successes += summary.outcome.success ? 1 : 0;
+  totals.sim_time_s += summary.outcome.end_time_s;
+  return true;
+}
+
+// Stopped by a signal: what is kept, and how to go on. Returns the exit code, 128 + the signal.
+int report_stop(const Batch& batch, const std::vector<scenario::EpisodeCsvRow>& rows,
+                size_t planned, std::optional<uint64_t> dropped_seed) {
+  const OutputPaths& paths = batch.paths;
+  size_t bags = 0;
+  for (const scenario::EpisodeCsvRow& row : rows) {
+    bags += fs::exists(paths.bag(row.seed)) ? 1 : 0;
+  }
+  std::cerr << "run_episodes: interrupted by " << (g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
+            << " after " << rows.size() << " of " << planned << " episodes: " << rows.size()
+            << " rows in " << paths.csv();
+  if (batch.options.bags) {
+    std::cerr << ", " << bags << " bags";
+  }
+  if (dropped_seed) {
+    std::cerr << "; the episode under way (seed " << *dropped_seed << ") was dropped"
+              << (batch.options.bags ? ", its bag deleted" : "");
+  }
+  std::cerr << "; rerun with --resume to finish\n";
+  return 128 + g_stop_signal;
+}
+
 // Runs the planned episodes that have no row yet, each to its bag and then its row, until done or
 // stopped by a signal; returns the exit code.
 int run(Batch& batch) {
   const Options& options = batch.options;
   const OutputPaths& paths = batch.paths;
   std::vector<scenario::EpisodeCsvRow> rows = batch.kept;  // every row in the CSV, kept or new
-  std::set<uint64_t> done;
-  for (const scenario::EpisodeCsvRow& row : batch.kept) {
-    done.insert(row.episode);
-  }
-  std::vector<uint64_t> episodes;
-  for (uint64_t index : options.plan.episode_indices()) {
-    if (done.count(index) == 0) {
-      episodes.push_back(index);
-    }
-  }
-  const size_t planned = done.size() + episodes.size();
+  const PendingEpisodes pending = pending_episodes(batch);
+  const std::vector<uint64_t>& episodes = pending.indices;
+  const size_t planned = pending.planned;
   if (!batch.kept.empty()) {
     std::cerr << "--resume: " << batch.kept.size() << " of " << planned << " episodes are in "
               << paths.csv() << "; running the other " << episodes.size() << "\n";
@@ -397,53 +481,21 @@ int run(Batch& batch) {
 
   const bool terminal = isatty(STDERR_FILENO) != 0;
   const auto start = std::chrono::steady_clock::now();
-  const auto seconds_since = [](std::chrono::steady_clock::time_point from) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count();
-  };
-  int successes = 0;
-  double sim_time_s = 0.0;
+  RunTotals totals;
   std::optional<uint64_t> dropped_seed;
   for (size_t ran = 0; ran < episodes.size() && g_stop_signal == 0; ++ran) {
     const uint64_t index = episodes[ran];
-    const uint64_t seed = options.plan.seed_of(index);
-    const auto episode_start = std::chrono::steady_clock::now();
     try {
-      scenario::Episode episode(batch.scenario, seed, batch.config);
-      std::unique_ptr<tools::EpisodeBag> bag;
-      if (options.bags) {
-        bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), paths.name);
-      }
-      while (!episode.finished() && g_stop_signal == 0) {
-        episode.step();
-        if (bag) {
-          bag->record_step(episode);
-        }
-      }
-      if (g_stop_signal != 0) {
-        dropped_seed = seed;  // `bag` deletes its .active file; the episode gets no row
+      if (!run_episode(batch, index, rows, totals)) {
+        dropped_seed = options.plan.seed_of(index);
         break;
       }
-      // The bag under its name first, then the row: a row always has its bag.
-      if (bag) {
-        bag->finish();
-      }
-      const auto summary =
-          scenario::EpisodeSummary::of(paths.name, index, seed, episode.runner(), episode.metrics(),
-                                       seconds_since(episode_start));
-      batch.csv << scenario::csv_row(summary) << "\n" << std::flush;
-      if (!batch.csv) {
-        throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
-                          " failed");
-      }
-      rows.push_back(scenario::EpisodeCsvRow::of(summary));
-      successes += summary.outcome.success ? 1 : 0;
-      sim_time_s += summary.outcome.end_time_s;
     } catch (const core::Error& e) {
       // A scene that cannot be built is bad input; a file that cannot be written is not.
       const bool bad_input = dynamic_cast<const core::ConfigError*>(&e) != nullptr ||
                              dynamic_cast<const core::RequestError*>(&e) != nullptr;
-      std::cerr << "\nrun_episodes: episode " << index << " (seed " << seed << "): " << e.what()
-                << "\n";
+      std::cerr << "\nrun_episodes: episode " << index << " (seed " << options.plan.seed_of(index)
+                << "): " << e.what() << "\n";
       return bad_input ? kBadInputExit : kWriteFailedExit;
     }
     const std::string line =
@@ -452,32 +504,15 @@ int run(Batch& batch) {
   }
   const double wall_s = seconds_since(start);
   std::cerr << (terminal ? "\n" : "");
-
-  // Stopped: what is kept, and how to go on.
   if (g_stop_signal != 0) {
-    size_t bags = 0;
-    for (const scenario::EpisodeCsvRow& row : rows) {
-      bags += fs::exists(paths.bag(row.seed)) ? 1 : 0;
-    }
-    std::cerr << "run_episodes: interrupted by " << (g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
-              << " after " << rows.size() << " of " << planned << " episodes: " << rows.size()
-              << " rows in " << paths.csv();
-    if (options.bags) {
-      std::cerr << ", " << bags << " bags";
-    }
-    if (dropped_seed) {
-      std::cerr << "; the episode under way (seed " << *dropped_seed << ") was dropped"
-                << (options.bags ? ", its bag deleted" : "");
-    }
-    std::cerr << "; rerun with --resume to finish\n";
-    return 128 + g_stop_signal;
+    return report_stop(batch, rows, planned, dropped_seed);
   }
   const size_t ran = episodes.size();
   std::printf(
       "%s: %zu episodes, %d succeeded; %.1f s of sim time in %.2f s of wall time (%.0fx "
       "real time, %.1f episodes per minute)\nmetrics: %s\n",
-      paths.name.c_str(), ran, successes, sim_time_s, wall_s,
-      wall_s > 0 ? sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * ran / wall_s : 0.0,
+      paths.name.c_str(), ran, totals.successes, totals.sim_time_s, wall_s,
+      wall_s > 0 ? totals.sim_time_s / wall_s : 0.0, wall_s > 0 ? 60.0 * ran / wall_s : 0.0,
       paths.csv().c_str());
   return verdict(rows, paths.csv());
 }

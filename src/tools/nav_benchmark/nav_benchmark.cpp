@@ -296,43 +296,27 @@ void print_trace(const world::Simulation& sim, const navigation::Navigator& navi
   std::fprintf(stderr, "\n");
 }
 
-// Runs one episode to its record; nothing when a stop signal came first.
-std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
-                                         const navigation::NavigationConfig& config,
-                                         const std::string& controller,
-                                         world::ReactionProfile profile, bool trace) {
-  world::Simulation& sim = *episode.simulation;
-  // Every person reacts alike; with kIgnore nothing is set, so the episodes stay as they were.
-  if (profile != world::ReactionProfile::kIgnore) {
-    for (const auto& human : sim.humans()) {
-      sim.set_human_reaction(human->id(), profile);
-    }
-  }
-  EpisodeRecord record;
-  record.type = learning::type_name(episode.type);
-  record.controller = controller;
-  record.profile = world::reaction_name(profile);
-  record.index = episode.index;
-  record.seed = episode.seed;
-  const double stride = config.scene.group_stride_m;
-  navigation::Navigator navigator(config, world::rasterize_static_map(sim.world(), 0.05));
-  navigation::EpisodeScorer scorer(navigator.footprint(), config.mpc.personal_space,
-                                   episode.exempt_people, episode.exempt_group);
-  try {
-    navigator.start(episode.target, learning::true_scene(sim, stride),
-                    scenario::observe_ari(*sim.ari()), sim.time_s());
-  } catch (const core::Error& e) {
-    record.outcome = "rejected";
-    record.reason = e.what();
-    return record;
-  }
-  // Shortest passable path from the start, for the path length ratio.
-  navigation::GeodesicParams plain = config.navigator.geodesic;
-  plain.clearance_penalty = 0.0;
-  record.shortest_path_m =
-      navigation::GeodesicField(navigator.sdf(), navigator.goal()->pose.position, plain)
-          .cost(sim.ari()->pose().position);
+// What the scorer sees after a step: ARI and the true scene.
+void score_step(const world::Simulation& sim, double group_stride_m,
+                navigation::EpisodeScorer& scorer) {
+  navigation::ScoredTick tick;
+  tick.time_s = sim.time_s();
+  tick.ari = sim.ari()->pose();
+  tick.linear_mps = sim.ari()->drive().linear_mps();
+  const navigation::PerceivedScene truth = learning::true_scene(sim, group_stride_m);
+  tick.people = truth.people;
+  tick.groups = truth.groups;
+  tick.static_penetration_m = sim.static_penetration_m(*sim.ari());
+  scorer.add(tick);
+}
 
+// Steps the episode until the navigator succeeds or aborts, or time runs out, scoring every step.
+// False when a stop signal came first.
+bool drive_episode(NavigationEpisode& episode, const navigation::NavigationConfig& config,
+                   navigation::Navigator& navigator, navigation::EpisodeScorer& scorer, bool trace,
+                   EpisodeRecord& record) {
+  world::Simulation& sim = *episode.simulation;
+  const double stride = config.scene.group_stride_m;
   const double control_period = 1.0 / config.navigator.rate_hz;
   double next_control_s = 0.0;
   size_t next_walk = 0;
@@ -341,7 +325,7 @@ std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
   record.outcome = "timeout";
   while (sim.time_s() < episode.time_limit_s) {
     if (core::g_stop_signal != 0) {
-      return std::nullopt;
+      return false;
     }
     while (next_walk < episode.walks.size() && episode.walks[next_walk].start_s <= sim.time_s()) {
       sim.set_human_goal(episode.walks[next_walk].human, episode.walks[next_walk].goal);
@@ -374,21 +358,19 @@ std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
       sim.command_ari_head_pan(step.command.pan_rad);
     }
     sim.step();
-    navigation::ScoredTick tick;
-    tick.time_s = sim.time_s();
-    tick.ari = sim.ari()->pose();
-    tick.linear_mps = sim.ari()->drive().linear_mps();
-    const navigation::PerceivedScene truth = learning::true_scene(sim, stride);
-    tick.people = truth.people;
-    tick.groups = truth.groups;
-    tick.static_penetration_m = sim.static_penetration_m(*sim.ari());
-    scorer.add(tick);
+    score_step(sim, stride, scorer);
   }
-  record.score = scorer.score();
+  return true;
+}
 
-  // Final placement against the person or group (approach and join episodes).
+// Final placement against the person or group (approach and join episodes).
+void record_final_placement(const NavigationEpisode& episode,
+                            const navigation::NavigationConfig& config,
+                            const navigation::Navigator& navigator, EpisodeRecord& record) {
+  const world::Simulation& sim = *episode.simulation;
   const core::Pose2 ari = sim.ari()->pose();
-  const navigation::PerceivedScene final_scene = learning::true_scene(sim, stride);
+  const navigation::PerceivedScene final_scene =
+      learning::true_scene(sim, config.scene.group_stride_m);
   std::optional<Eigen::Vector2d> facing;
   if (const auto* person = std::get_if<navigation::PersonTarget>(&episode.target)) {
     if (const auto* p = final_scene.find_person(person->person_id)) {
@@ -409,6 +391,48 @@ std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
     record.final_heading_error_rad =
         std::abs(core::angle_difference(std::atan2(to.y(), to.x()), ari.theta));
   }
+}
+
+// Runs one episode to its record; nothing when a stop signal came first.
+std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
+                                         const navigation::NavigationConfig& config,
+                                         const std::string& controller,
+                                         world::ReactionProfile profile, bool trace) {
+  world::Simulation& sim = *episode.simulation;
+  // Every person reacts alike; with kIgnore nothing is set, so the episodes stay as they were.
+  if (profile != world::ReactionProfile::kIgnore) {
+    for (const auto& human : sim.humans()) {
+      sim.set_human_reaction(human->id(), profile);
+    }
+  }
+  EpisodeRecord record;
+  record.type = learning::type_name(episode.type);
+  record.controller = controller;
+  record.profile = world::reaction_name(profile);
+  record.index = episode.index;
+  record.seed = episode.seed;
+  navigation::Navigator navigator(config, world::rasterize_static_map(sim.world(), 0.05));
+  navigation::EpisodeScorer scorer(navigator.footprint(), config.mpc.personal_space,
+                                   episode.exempt_people, episode.exempt_group);
+  try {
+    navigator.start(episode.target, learning::true_scene(sim, config.scene.group_stride_m),
+                    scenario::observe_ari(*sim.ari()), sim.time_s());
+  } catch (const core::Error& e) {
+    record.outcome = "rejected";
+    record.reason = e.what();
+    return record;
+  }
+  // Shortest passable path from the start, for the path length ratio.
+  navigation::GeodesicParams plain = config.navigator.geodesic;
+  plain.clearance_penalty = 0.0;
+  record.shortest_path_m =
+      navigation::GeodesicField(navigator.sdf(), navigator.goal()->pose.position, plain)
+          .cost(sim.ari()->pose().position);
+  if (!drive_episode(episode, config, navigator, scorer, trace, record)) {
+    return std::nullopt;
+  }
+  record.score = scorer.score();
+  record_final_placement(episode, config, navigator, record);
   return record;
 }
 
@@ -451,6 +475,73 @@ double mean_of(const std::vector<double>& values) {
   return values.empty() ? 0.0 : sum / values.size();
 }
 
+// One row of the summary table: the episodes of one type with one controller.
+struct SummaryRow {
+  size_t episodes{0};
+  int successes{0}, person_hits{0}, static_hits{0}, intruding{0}, gcff_yes{0}, gcff_count{0};
+  std::vector<double> times, ratios, shares, minima, jerks, position_errors, heading_errors, solves,
+      wall_solves;
+};
+
+SummaryRow summarise(const std::vector<EpisodeRecord>& records, const std::string& type,
+                     const std::string& controller) {
+  SummaryRow row;
+  for (const EpisodeRecord& r : records) {
+    if (r.type != type || r.controller != controller) {
+      continue;
+    }
+    ++row.episodes;
+    row.successes += r.success ? 1 : 0;
+    row.person_hits += r.score.person_collisions;
+    row.static_hits += r.score.static_collisions;
+    row.intruding += r.score.ospace_intrusions > 0 ? 1 : 0;
+    row.shares.push_back(r.score.personal_space_share);
+    row.minima.push_back(r.score.min_person_distance_m);
+    row.jerks.push_back(r.score.mean_abs_jerk);
+    row.solves.insert(row.solves.end(), r.solve_times_s.begin(), r.solve_times_s.end());
+    row.wall_solves.insert(row.wall_solves.end(), r.solve_wall_times_s.begin(),
+                           r.solve_wall_times_s.end());
+    if (r.success) {
+      row.times.push_back(r.time_to_goal_s);
+      if (r.shortest_path_m > 0.0) {
+        row.ratios.push_back(r.score.path_length_m / r.shortest_path_m);
+      }
+      if (r.final_position_error_m >= 0.0) {
+        row.position_errors.push_back(r.final_position_error_m);
+        row.heading_errors.push_back(core::rad_to_deg(r.final_heading_error_rad));
+      }
+    }
+    if (r.gcff_includes_ari >= 0) {
+      ++row.gcff_count;
+      row.gcff_yes += r.gcff_includes_ari;
+    }
+  }
+  return row;
+}
+
+void print_summary_row(const SummaryRow& row, const char* type, const std::string& controller,
+                       world::ReactionProfile profile) {
+  const double n = static_cast<double>(std::max<size_t>(row.episodes, 1));
+  char placement[64] = "-";
+  if (!row.position_errors.empty()) {
+    std::snprintf(placement, sizeof(placement), "%.2f m / %.1f deg", mean_of(row.position_errors),
+                  mean_of(row.heading_errors));
+  }
+  char gcff[32] = "-";
+  if (row.gcff_count > 0) {
+    std::snprintf(gcff, sizeof(gcff), "%.0f %%", 100.0 * row.gcff_yes / row.gcff_count);
+  }
+  std::printf(
+      "| %s | %s | %s | %zu | %.0f %% | %d / %d | %d | %.2f %% | %.2f / %.2f m | %.1f s | %.2f "
+      "| %s | %s | %.2f m/s^3 | %.1f / %.1f ms |\n",
+      type, controller.c_str(), world::reaction_name(profile), row.episodes,
+      100.0 * row.successes / n, row.person_hits, row.static_hits, row.intruding,
+      100.0 * mean_of(row.shares),
+      row.minima.empty() ? 0.0 : *std::min_element(row.minima.begin(), row.minima.end()),
+      mean_of(row.minima), mean_of(row.times), mean_of(row.ratios), placement, gcff,
+      mean_of(row.jerks), 1e3 * percentile(row.solves, 0.5), 1e3 * percentile(row.solves, 0.99));
+}
+
 void print_summary(const std::vector<EpisodeRecord>& records, const Options& options) {
   std::printf(
       "| type | controller | profile | episodes | success | collisions (people/static) | episodes "
@@ -461,66 +552,12 @@ void print_summary(const std::vector<EpisodeRecord>& records, const Options& opt
   std::vector<double> all_solves, all_wall;
   for (EpisodeType type : options.types) {
     for (const std::string& controller : options.controllers) {
-      std::vector<const EpisodeRecord*> rows;
-      for (const EpisodeRecord& r : records) {
-        if (r.type == learning::type_name(type) && r.controller == controller) {
-          rows.push_back(&r);
-        }
-      }
-      int successes = 0, person_hits = 0, static_hits = 0, intruding = 0, gcff_yes = 0,
-          gcff_count = 0;
-      std::vector<double> times, ratios, shares, minima, jerks, position_errors, heading_errors,
-          solves;
-      for (const EpisodeRecord* r : rows) {
-        successes += r->success ? 1 : 0;
-        person_hits += r->score.person_collisions;
-        static_hits += r->score.static_collisions;
-        intruding += r->score.ospace_intrusions > 0 ? 1 : 0;
-        shares.push_back(r->score.personal_space_share);
-        minima.push_back(r->score.min_person_distance_m);
-        jerks.push_back(r->score.mean_abs_jerk);
-        solves.insert(solves.end(), r->solve_times_s.begin(), r->solve_times_s.end());
-        if (r->success) {
-          times.push_back(r->time_to_goal_s);
-          if (r->shortest_path_m > 0.0) {
-            ratios.push_back(r->score.path_length_m / r->shortest_path_m);
-          }
-          if (r->final_position_error_m >= 0.0) {
-            position_errors.push_back(r->final_position_error_m);
-            heading_errors.push_back(core::rad_to_deg(r->final_heading_error_rad));
-          }
-        }
-        if (r->gcff_includes_ari >= 0) {
-          ++gcff_count;
-          gcff_yes += r->gcff_includes_ari;
-        }
-      }
+      const SummaryRow row = summarise(records, learning::type_name(type), controller);
       if (controller == "social") {
-        all_solves.insert(all_solves.end(), solves.begin(), solves.end());
-        for (const EpisodeRecord* r : rows) {
-          all_wall.insert(all_wall.end(), r->solve_wall_times_s.begin(),
-                          r->solve_wall_times_s.end());
-        }
+        all_solves.insert(all_solves.end(), row.solves.begin(), row.solves.end());
+        all_wall.insert(all_wall.end(), row.wall_solves.begin(), row.wall_solves.end());
       }
-      const double n = static_cast<double>(std::max<size_t>(rows.size(), 1));
-      char placement[64] = "-";
-      if (!position_errors.empty()) {
-        std::snprintf(placement, sizeof(placement), "%.2f m / %.1f deg", mean_of(position_errors),
-                      mean_of(heading_errors));
-      }
-      char gcff[32] = "-";
-      if (gcff_count > 0) {
-        std::snprintf(gcff, sizeof(gcff), "%.0f %%", 100.0 * gcff_yes / gcff_count);
-      }
-      std::printf(
-          "| %s | %s | %s | %zu | %.0f %% | %d / %d | %d | %.2f %% | %.2f / %.2f m | %.1f s | %.2f "
-          "| %s | %s | %.2f m/s^3 | %.1f / %.1f ms |\n",
-          learning::type_name(type), controller.c_str(), world::reaction_name(options.profile),
-          rows.size(), 100.0 * successes / n, person_hits, static_hits, intruding,
-          100.0 * mean_of(shares),
-          minima.empty() ? 0.0 : *std::min_element(minima.begin(), minima.end()), mean_of(minima),
-          mean_of(times), mean_of(ratios), placement, gcff, mean_of(jerks),
-          1e3 * percentile(solves, 0.5), 1e3 * percentile(solves, 0.99));
+      print_summary_row(row, learning::type_name(type), controller, options.profile);
     }
   }
   if (!all_solves.empty()) {
