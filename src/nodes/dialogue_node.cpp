@@ -65,6 +65,86 @@ WorldCast cast_from_world(const WorldState& state, const dialogue::DialogueRunCo
   return cast;
 }
 
+// The mode's settings and the dialogue core built from them. Throws core::Error on a bad setting.
+struct DialogueNodeSetup {
+  dialogue::DialogueRunConfig run;
+  std::unique_ptr<dialogue::DialogueSetup> setup;
+};
+
+DialogueNodeSetup load_setup(ros::NodeHandle& private_handle, const std::string& source) {
+  DialogueNodeSetup loaded;
+  dialogue::DialogueRunConfig& run = loaded.run;
+  run = dialogue::DialogueRunConfig::from_yaml(read_private_params(private_handle));
+  if (run.config.empty()) {
+    run.config = ros::package::getPath("ari_social_sim") + "/config/dialogue/simulation.yaml";
+  }
+  // Read as YAML, a directory raises std::ios_failure, which no handler catches: refuse it here.
+  core::check_input_file((source + ": config").c_str(), run.config);
+  loaded.setup = dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(run.config));
+  run.check_human_ids(loaded.setup->config.users.roles, source);
+  return loaded;
+}
+
+// world mode: the humans of the world state answer ARI, whose /tts goals the world speaks.
+int run_world_mode(ros::NodeHandle& nh, const DialogueNodeSetup& loaded,
+                   const dialogue::RobotNlu& nlu, const std::string& source) {
+  const dialogue::DialogueRunConfig& run = loaded.run;
+  const std::vector<std::string>& roles = loaded.setup->config.users.roles;
+  ROS_INFO("dialogue_node: waiting for /sim/world_state");
+  const auto state = ros::topic::waitForMessage<WorldState>("/sim/world_state", nh);
+  if (!state) {
+    return 0;  // shut down while waiting
+  }
+  const WorldCast cast = cast_from_world(*state, run, roles, source);
+  for (size_t r = 0; r < cast.human_ids.size(); ++r) {
+    ROS_INFO("dialogue_node: the %s is human %u (%s)", roles[r].c_str(), cast.human_ids[r],
+             perception::person_id_of(cast.human_ids[r]).c_str());
+  }
+  if (!run.humans) {
+    ROS_INFO("dialogue_node: no simulated humans (~humans false): /tts voices ARI only");
+  }
+  scenario::WorldSpeechStage stage(cast.robot_id, cast.human_ids, SimSayClient(nh));
+  std::unique_ptr<LiveDialogueNode> node;
+  // Subscribed before the node is built, so that no state is missed meanwhile. Every state
+  // counts: a word lasts 8 steps at 150 wpm and 0.05 s, an act at least that.
+  // world_node's alone: a second world_node's states are refused.
+  SinglePublisher state_publisher("/sim/world_state");
+  const ros::Subscriber states = nh.subscribe<WorldState>(
+      "/sim/world_state", 100,
+      [&stage, &node, &state_publisher](const ros::MessageEvent<const WorldState>& event) {
+        if (!state_publisher.accept(event.getPublisherName())) {
+          return;
+        }
+        stage.follow(from_msg(*event.getConstMessage()));
+        if (node) {
+          node->tick();
+        }
+      });
+  node = std::make_unique<LiveDialogueNode>(nh, *loaded.setup, nlu, run, stage);
+  ros::spin();
+  return 0;
+}
+
+// user_bot mode: simulated users heard through ROS4HRI speech, with ids from ~human_ids or 1, 2...
+int run_user_bot_mode(ros::NodeHandle& nh, const DialogueNodeSetup& loaded,
+                      const dialogue::RobotNlu& nlu) {
+  const dialogue::DialogueRunConfig& run = loaded.run;
+  const std::vector<std::string>& roles = loaded.setup->config.users.roles;
+  std::vector<uint32_t> ids(run.human_ids.begin(), run.human_ids.end());
+  for (size_t r = ids.size(); r < roles.size(); ++r) {
+    ids.push_back(static_cast<uint32_t>(r + 1));
+  }
+  AsrStage stage(nh, *loaded.setup->timing, roles, ids, run.language);
+  LiveDialogueNode node(nh, *loaded.setup, nlu, run, stage);
+  const ros::Timer tick = nh.createTimer(ros::Duration(1.0 / kAsrTickHz),
+                                         [&node](const ros::TimerEvent&) { node.tick(); });
+  const ros::Timer tracked =
+      nh.createTimer(ros::Duration(1.0 / kTrackedHz),
+                     [&stage](const ros::TimerEvent&) { stage.publish_tracked(); });
+  ros::spin();
+  return 0;
+}
+
 }  // namespace
 }  // namespace ari_social_sim::nodes
 
@@ -74,75 +154,21 @@ int main(int argc, char** argv) {
     ros::NodeHandle nh;
     ros::NodeHandle private_handle("~");
     const std::string source = ros::this_node::getName() + " parameter";
-    dialogue::DialogueRunConfig run =
-        dialogue::DialogueRunConfig::from_yaml(nodes::read_private_params(private_handle));
-    if (run.config.empty()) {
-      run.config = ros::package::getPath("ari_social_sim") + "/config/dialogue/simulation.yaml";
-    }
-    // Read as YAML, a directory raises std::ios_failure, which no handler catches: refuse it here.
-    core::check_input_file((source + ": config").c_str(), run.config);
-    const std::unique_ptr<dialogue::DialogueSetup> setup =
-        dialogue::DialogueSetup::create(dialogue::DialogueConfig::load(run.config));
-    run.check_human_ids(setup->config.users.roles, source);
-    const std::vector<std::string>& roles = setup->config.users.roles;
+    const nodes::DialogueNodeSetup loaded = nodes::load_setup(private_handle, source);
+    const dialogue::DialogueRunConfig& run = loaded.run;
     ROS_INFO("dialogue_node: mode %s, settings %s, seed %lu", dialogue::to_string(run.mode),
              run.config.c_str(), static_cast<unsigned long>(run.seed));
 
     if (run.mode == dialogue::DialogueMode::kRlEnv) {
-      nodes::RlEnvServices services(nh, *setup);
+      nodes::RlEnvServices services(nh, *loaded.setup);
       ros::spin();
       return 0;
     }
-
-    const dialogue::RobotNlu nlu(*setup->nlg, setup->domain, setup->corpus_or_null());
+    const dialogue::RobotNlu nlu(*loaded.setup->nlg, loaded.setup->domain,
+                                 loaded.setup->corpus_or_null());
     if (run.mode == dialogue::DialogueMode::kWorld) {
-      ROS_INFO("dialogue_node: waiting for /sim/world_state");
-      const auto state = ros::topic::waitForMessage<WorldState>("/sim/world_state", nh);
-      if (!state) {
-        return 0;  // shut down while waiting
-      }
-      const nodes::WorldCast cast = nodes::cast_from_world(*state, run, roles, source);
-      for (size_t r = 0; r < cast.human_ids.size(); ++r) {
-        ROS_INFO("dialogue_node: the %s is human %u (%s)", roles[r].c_str(), cast.human_ids[r],
-                 perception::person_id_of(cast.human_ids[r]).c_str());
-      }
-      if (!run.humans) {
-        ROS_INFO("dialogue_node: no simulated humans (~humans false): /tts voices ARI only");
-      }
-      scenario::WorldSpeechStage stage(cast.robot_id, cast.human_ids, nodes::SimSayClient(nh));
-      std::unique_ptr<nodes::LiveDialogueNode> node;
-      // Subscribed before the node is built, so that no state is missed meanwhile. Every state
-      // counts: a word lasts 8 steps at 150 wpm and 0.05 s, an act at least that.
-      // world_node's alone: a second world_node's states are refused.
-      nodes::SinglePublisher state_publisher("/sim/world_state");
-      const ros::Subscriber states = nh.subscribe<WorldState>(
-          "/sim/world_state", 100,
-          [&stage, &node, &state_publisher](const ros::MessageEvent<const WorldState>& event) {
-            if (!state_publisher.accept(event.getPublisherName())) {
-              return;
-            }
-            stage.follow(nodes::from_msg(*event.getConstMessage()));
-            if (node) {
-              node->tick();
-            }
-          });
-      node = std::make_unique<nodes::LiveDialogueNode>(nh, *setup, nlu, run, stage);
-      ros::spin();
-      return 0;
+      return nodes::run_world_mode(nh, loaded, nlu, source);
     }
-
-    std::vector<uint32_t> ids(run.human_ids.begin(), run.human_ids.end());
-    for (size_t r = ids.size(); r < roles.size(); ++r) {
-      ids.push_back(static_cast<uint32_t>(r + 1));
-    }
-    nodes::AsrStage stage(nh, *setup->timing, roles, ids, run.language);
-    nodes::LiveDialogueNode node(nh, *setup, nlu, run, stage);
-    const ros::Timer tick = nh.createTimer(ros::Duration(1.0 / nodes::kAsrTickHz),
-                                           [&node](const ros::TimerEvent&) { node.tick(); });
-    const ros::Timer tracked =
-        nh.createTimer(ros::Duration(1.0 / nodes::kTrackedHz),
-                       [&stage](const ros::TimerEvent&) { stage.publish_tracked(); });
-    ros::spin();
-    return 0;
+    return nodes::run_user_bot_mode(nh, loaded, nlu);
   });
 }
