@@ -159,10 +159,8 @@ class DialogueEnvCore {
   bool started_{false};
 };
 
-}  // namespace
-
-PYBIND11_MODULE(_learning, m) {
-  m.doc() = "Cores of ari_social_sim.learning (use that package, not this module)";
+// core::Error (a bad setting or request) reaches Python as ValueError.
+void register_error_translator() {
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) {
@@ -172,7 +170,10 @@ PYBIND11_MODULE(_learning, m) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
+}
 
+// A navigation task loaded once and shared by the environments made from it.
+void bind_nav_env_setup(py::module_& m) {
   py::class_<learning::NavEnvSetup, std::shared_ptr<learning::NavEnvSetup>>(m, "NavEnvSetup")
       .def_static(
           "load",
@@ -206,7 +207,10 @@ PYBIND11_MODULE(_learning, m) {
                              })
       .def_property_readonly(
           "step_s", [](const learning::NavEnvSetup&) { return learning::NavEnv::step_s(); });
+}
 
+// The action space and the vector environment's limits.
+void bind_nav_constants(py::module_& m) {
   m.def("action_bounds", [] {
     const learning::ActionBounds b = learning::action_bounds();
     return py::make_tuple(std::vector<float>(b.low.begin(), b.low.end()),
@@ -216,7 +220,9 @@ PYBIND11_MODULE(_learning, m) {
   m.attr("max_threads") = learning::VectorNavEnv::kMaxThreads;
   m.attr("action_names") = std::vector<std::string>(std::begin(learning::kActionNames),
                                                     std::end(learning::kActionNames));
+}
 
+void bind_nav_env(py::module_& m) {
   py::class_<learning::Env>(m, "NavEnv")
       .def(py::init(
           [](std::shared_ptr<learning::NavEnvSetup> setup) { return learning::make_env(setup); }))
@@ -253,7 +259,9 @@ PYBIND11_MODULE(_learning, m) {
            })
       .def("metrics", [](const learning::Env& env) { return metrics_dict(env.metrics()); })
       .def_property_readonly("done", &learning::Env::done);
+}
 
+void bind_vector_nav_env(py::module_& m) {
   py::class_<learning::VectorNavEnv>(m, "VectorNavEnv")
       .def(py::init([](std::shared_ptr<learning::NavEnvSetup> setup, int num_envs, int threads) {
              return std::make_unique<learning::VectorNavEnv>(setup, num_envs, threads);
@@ -306,13 +314,17 @@ PYBIND11_MODULE(_learning, m) {
       .def("final_metrics", [](const learning::VectorNavEnv& env, int i) {
         return metrics_dict(env.final_metrics(i));
       });
+}
 
+void bind_dialogue_env(py::module_& m) {
   py::class_<DialogueEnvCore>(m, "DialogueEnv")
       .def(py::init<const std::string&>(), py::arg("settings_file"))
       .def("reset", &DialogueEnvCore::reset, py::arg("seed"))
       .def("step", &DialogueEnvCore::step, py::arg("acts"), py::arg("addressees"), py::arg("text"))
       .def_property_readonly("roles", &DialogueEnvCore::roles);
+}
 
+void bind_mlp_policy(py::module_& m) {
   py::class_<navigation::MlpPolicy>(m, "MlpPolicy")
       .def(py::init([](const std::string& path) { return navigation::MlpPolicy::load_file(path); }),
            py::arg("path"))
@@ -328,4 +340,17 @@ PYBIND11_MODULE(_learning, m) {
         const auto action = policy.act(observation.data());
         return std::vector<double>(action.begin(), action.end());
       });
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_learning, m) {
+  m.doc() = "Cores of ari_social_sim.learning (use that package, not this module)";
+  register_error_translator();
+  bind_nav_env_setup(m);
+  bind_nav_constants(m);
+  bind_nav_env(m);
+  bind_vector_nav_env(m);
+  bind_dialogue_env(m);
+  bind_mlp_policy(m);
 }
