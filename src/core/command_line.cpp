@@ -80,7 +80,7 @@ std::string option_value(int argc, char** argv, int& i) {
   if (i + 1 >= argc) {
     fail(option.c_str(), "expected a value after it");
   }
-  const std::string value = argv[++i];
+  std::string value = argv[++i];
   if (value.empty()) {
     fail(option.c_str(), "expected a value, got ''");
   }

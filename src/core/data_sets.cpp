@@ -15,7 +15,7 @@ std::string environment(const char* name) {
 }  // namespace
 
 std::string data_dir() {
-  const std::string configured = environment("ARI_DATA_DIR");
+  std::string configured = environment("ARI_DATA_DIR");
   if (!configured.empty()) {
     return configured;
   }

@@ -15,8 +15,8 @@ bool is_scalar(const YAML::Node& node) {
 
 }  // namespace
 
-YamlMap::YamlMap(YAML::Node node, std::string source, std::string path)
-    : node_(std::move(node)), source_(std::move(source)), path_(std::move(path)) {
+YamlMap::YamlMap(const YAML::Node& node, std::string source, std::string path)
+    : node_(node), source_(std::move(source)), path_(std::move(path)) {
   if (!node_.IsMap()) {
     throw ConfigError(source_ + ": " + (path_.empty() ? std::string("top level") : path_) +
                       ": expected a mapping of key: value, got " + render(node_));
@@ -95,7 +95,6 @@ struct Reader<double> {
 template <>
 struct Reader<int> {
   static constexpr const char* kWhat = "an integer";
-  static constexpr const char* kWhatMany = "integers";  // in "a list of ..."
   static bool read(const YAML::Node& n, int& out) {
     if (!is_scalar(n)) {
       return false;

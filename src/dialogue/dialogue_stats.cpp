@@ -135,6 +135,7 @@ std::vector<ActVariety> act_variety(const std::vector<CorpusDialogue>& dialogues
     }
   }
   std::vector<ActVariety> variety;
+  variety.reserve(by_act.size());
   for (const auto& [key, texts] : by_act) {
     variety.push_back({key.first, key.second, texts.utterances, texts.distinct.size()});
   }

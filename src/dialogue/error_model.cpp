@@ -66,7 +66,7 @@ Perception ErrorModel::apply(const Utterance& utterance, const std::vector<std::
       }
     }
     if (heard.addressees.empty()) {
-      heard.addressees.push_back(kRobot);
+      heard.addressees.emplace_back(kRobot);
     }
   }
   heard.text = utterance.text;

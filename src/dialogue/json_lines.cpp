@@ -26,6 +26,7 @@ std::string addressee_value(const std::vector<std::string>& addressees) {
 
 std::string act_list(const std::vector<DialogueAct>& acts) {
   std::vector<std::string> texts;
+  texts.reserve(acts.size());
   for (const DialogueAct& act : acts) {
     texts.push_back(act.to_string());
   }

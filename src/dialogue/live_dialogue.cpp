@@ -10,7 +10,7 @@ void LiveDialogueConfig::validate() const {
 
 LiveDialogue::LiveDialogue(const DialogueSetup& setup, const RobotNlu& nlu,
                            LiveDialogueConfig config)
-    : setup_(setup), nlu_(nlu), config_(config), env_(setup) {
+    : nlu_(nlu), config_(config), env_(setup) {
   config_.validate();
 }
 

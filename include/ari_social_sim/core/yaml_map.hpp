@@ -16,7 +16,7 @@ namespace ari_social_sim::core {
 /// Largest YAML file YamlMap::load_file reads (bytes): 1 MiB. The shipped configs, worlds, scenes
 /// and scenarios are under 6 KB; yaml-cpp holds a document as nodes hundreds of times larger than
 /// its text (a 50 MB scene took 3.5 GB), so a bigger file is refused before it is read.
-constexpr std::uintmax_t kMaxYamlFileBytes = 1024 * 1024;
+constexpr std::uintmax_t kMaxYamlFileBytes = std::uintmax_t{1024} * 1024;
 
 /// Strict reader of one YAML mapping from a user's file or the parameter server.
 ///
@@ -30,7 +30,7 @@ constexpr std::uintmax_t kMaxYamlFileBytes = 1024 * 1024;
 class YamlMap {
  public:
   /// `source` names the file or parameter namespace; `path` the position inside it ("" at the top).
-  YamlMap(YAML::Node node, std::string source, std::string path = "");
+  YamlMap(const YAML::Node& node, std::string source, std::string path = "");
 
   /// Parses a file. Throws ConfigError naming the file, before reading it, if it does not exist,
   /// is a directory or anything but a regular file (a FIFO would block), cannot be opened, or is

@@ -68,7 +68,6 @@ class LiveDialogue {
   void step(const RobotAction& action);
   void enqueue_humans(size_t from);
 
-  const DialogueSetup& setup_;
   const RobotNlu& nlu_;
   LiveDialogueConfig config_;
   DialogueEnv env_;
