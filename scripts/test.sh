@@ -2,8 +2,8 @@
 # Installs what is missing, builds, checks that install_deps.sh installs every Debian package the
 # build and the tests use, runs every test (gtest for the cores, rostest for the nodes, pytest,
 # and the main job on the repository alone) and prints a summary that names every skipped test
-# and why. Exits non-zero if the dependency, documentation or path check fails, any test fails or
-# none ran. Tests that need a public data set run when it is in $ARI_DATA_DIR (docs/data.md).
+# and why. Exits non-zero if the build meets a warning, the dependency, documentation, path,
+# warning or format check fails, any test fails or none ran. Tests that need a public data set run when it is in $ARI_DATA_DIR (docs/data.md).
 set -euo pipefail
 source "$(dirname "$0")/prepare.sh"
 rm -rf _build/test_results
@@ -26,6 +26,16 @@ cmake --build _build --target benchmarks -j"$(nproc)"
 # No tracked file names a path outside the repository (a folder beside the checkout, a home or
 # build folder); the self-test first shows each kind is caught.
 /usr/bin/python3 scripts/check_paths.py --self-test
+# The project's own code compiles without warnings: the build above treats them as errors
+# (ARI_WARNINGS_AS_ERRORS); the check confirms every source had -Werror, after its self-test shows
+# a file with a warning fails to compile with the project's flags.
+/usr/bin/python3 scripts/check_warnings.py --self-test
+# Every tracked C++ file is formatted as .clang-format says (clang-format 14), after the self-test
+# shows a misformatted file fails.
+bash scripts/check_format.sh --self-test
+# clang-tidy's self-test only: it takes up to a minute a source on a loaded machine, hours over all
+# of src/ (docs/contributing.md); run scripts/clang_tidy.sh on a change before its merge.
+bash scripts/clang_tidy.sh --self-test
 # Which public data sets are here (docs/data.md): tests that need a missing one are skipped and
 # named in the summary; CI (ARI_REQUIRE_DATA_SETS=1) has them all and refuses such skips.
 bash scripts/fetch_data.sh --check || true
