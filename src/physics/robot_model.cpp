@@ -128,7 +128,7 @@ RobotJoint to_joint(const urdf::Joint& joint, int parent_link, const std::string
 
 RobotModel RobotModel::from_urdf_file(const std::string& path) {
   // ARI's URDF is 33 KB; urdfdom builds a DOM several times the text's size.
-  constexpr std::uintmax_t kMaxUrdfBytes = 4 * 1024 * 1024;
+  constexpr std::uintmax_t kMaxUrdfBytes = std::uintmax_t{4} * 1024 * 1024;
   return from_urdf_string(core::read_text_file(path, "a URDF file", kMaxUrdfBytes), path);
 }
 

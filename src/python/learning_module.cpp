@@ -37,7 +37,7 @@ void check_shape(const std::string& name, const py::array& array,
                  const std::vector<py::ssize_t>& expected, const std::string& expected_text) {
   bool ok = array.ndim() == static_cast<py::ssize_t>(expected.size());
   for (size_t i = 0; ok && i < expected.size(); ++i) {
-    ok = array.shape(i) == expected[i];
+    ok = array.shape(static_cast<py::ssize_t>(i)) == expected[i];
   }
   if (!ok) {
     throw py::value_error(name + ": expected shape " + expected_text + ", got " +
@@ -81,6 +81,7 @@ py::list fields_of(const navigation::PolicyObservation& observation) {
 
 std::vector<std::string> act_strings(const std::vector<dialogue::DialogueAct>& acts) {
   std::vector<std::string> out;
+  out.reserve(acts.size());
   for (const dialogue::DialogueAct& act : acts) {
     out.push_back(act.to_string());
   }
@@ -161,6 +162,8 @@ class DialogueEnvCore {
 
 // core::Error (a bad setting or request) reaches Python as ValueError.
 void register_error_translator() {
+  // pybind11's translator type takes the exception_ptr by value.
+  // NOLINTNEXTLINE(performance-unnecessary-value-param)
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) {
@@ -224,8 +227,9 @@ void bind_nav_constants(py::module_& m) {
 
 void bind_nav_env(py::module_& m) {
   py::class_<learning::Env>(m, "NavEnv")
-      .def(py::init(
-          [](std::shared_ptr<learning::NavEnvSetup> setup) { return learning::make_env(setup); }))
+      .def(py::init([](const std::shared_ptr<learning::NavEnvSetup>& setup) {
+        return learning::make_env(setup);
+      }))
       .def_property_readonly("observation_size", &learning::Env::observation_size)
       .def("observation_fields",
            [](const learning::Env& env) { return fields_of(env.observation()); })
@@ -263,9 +267,10 @@ void bind_nav_env(py::module_& m) {
 
 void bind_vector_nav_env(py::module_& m) {
   py::class_<learning::VectorNavEnv>(m, "VectorNavEnv")
-      .def(py::init([](std::shared_ptr<learning::NavEnvSetup> setup, int num_envs, int threads) {
-             return std::make_unique<learning::VectorNavEnv>(setup, num_envs, threads);
-           }),
+      .def(py::init(
+               [](const std::shared_ptr<learning::NavEnvSetup>& setup, int num_envs, int threads) {
+                 return std::make_unique<learning::VectorNavEnv>(setup, num_envs, threads);
+               }),
            py::arg("setup"), py::arg("num_envs"), py::arg("threads"))
       .def_property_readonly("num_envs", &learning::VectorNavEnv::num_envs)
       .def_property_readonly("observation_size", &learning::VectorNavEnv::observation_size)

@@ -95,7 +95,7 @@ Eigen::Vector2d free_place(const RandomGroupSceneSpec& spec, core::Rng& rng,
                            const std::vector<Eigen::Vector2d>& centres,
                            const std::vector<Eigen::Vector2d>& others, const std::string& what) {
   for (int draw = 0; draw < kMaxDraws; ++draw) {
-    const Eigen::Vector2d p = rng.uniform_point(spec.area_min, spec.area_max);
+    Eigen::Vector2d p = rng.uniform_point(spec.area_min, spec.area_max);
     if (nearest(p, centres) >= kGroupClearanceM && nearest(p, others) >= kPersonClearanceM) {
       return p;
     }
@@ -133,9 +133,9 @@ Script route_script(const RandomGroupSceneSpec& spec, const std::vector<core::Po
   for (size_t k = 0; k < waypoints.size(); ++k) {
     State state;
     state.name = name(k);
-    state.on_enter.push_back(SetGoalAction{AgentRef::ari(), waypoints[k]});
+    state.on_enter.emplace_back(SetGoalAction{AgentRef::ari(), waypoints[k]});
     const std::string next = name((k + 1) % waypoints.size());
-    for (Condition condition :
+    for (const Condition& condition :
          {Condition{GoalReachedCondition{AgentRef::ari()}}, Condition{NavigationFailedCondition{}},
           Condition{TimeElapsedCondition{spec.goal_timeout_s}}}) {
       Transition transition;

@@ -123,9 +123,9 @@ std::vector<std::string> split(const std::string& text) {
 // Throws core::ConfigError naming `option` for a name given twice: its table would count its
 // episodes twice.
 void check_list(const std::string& option, const std::vector<std::string>& names) {
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (std::find(names.begin(), names.begin() + i, names[i]) != names.begin() + i) {
-      throw core::ConfigError(option + ": expected each name once, got '" + names[i] + "' twice");
+  for (auto name = names.begin(); name != names.end(); ++name) {
+    if (std::find(names.begin(), name, *name) != name) {
+      throw core::ConfigError(option + ": expected each name once, got '" + *name + "' twice");
     }
   }
 }
