@@ -45,7 +45,9 @@ void LeanMultiBodySolver::convertContacts(btPersistentManifold** manifolds, int 
   // in contact, so make it here when nothing touches one.
   if (m_fixedBodyId < 0) {
     m_fixedBodyId = m_tmpSolverBodyPool.size();
-    initSolverBody(&m_tmpSolverBodyPool.expand(), nullptr, info.m_timeStep);
+    // initSolverBody sets every field, as Bullet's getOrInitSolverBody relies on; expand() would
+    // first copy an uninitialised btSolverBody into the slot (GCC 12's maybe-uninitialized).
+    initSolverBody(&m_tmpSolverBodyPool.expandNonInitializing(), nullptr, info.m_timeStep);
   }
   // No manifolds left: this converts the multibody constraints (joint servos) alone.
   btMultiBodyConstraintSolver::convertContacts(manifolds, 0, info);
