@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/model/ari_sensor_geometry.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -19,15 +20,25 @@ Eigen::Matrix3d R_body_optical() {
   return R;
 }
 
+Eigen::Vector3d vector_of(const model::MountPoint& point) {
+  return {point.x_m, point.y_m, point.z_m};
+}
+
 // A mount at `position`, turned by yaw then pitched (positive pitch looks down), in its parent.
-Eigen::Isometry3d mount(const Eigen::Vector3d& position, double yaw_rad, double pitch_rad) {
+Eigen::Isometry3d mount(const model::MountPoint& position, double yaw_rad, double pitch_rad) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-  X.translation() = position;
+  X.translation() = vector_of(position);
   X.linear() = (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
                 Eigen::AngleAxisd(pitch_rad, Eigen::Vector3d::UnitY()))
                    .toRotationMatrix() *
                R_body_optical();
   return X;
+}
+
+void set_image(CameraSpec& spec, const model::CameraGeometry& geometry) {
+  spec.width = geometry.width_px;
+  spec.height = geometry.height_px;
+  spec.hfov_rad = geometry.hfov_deg * kDeg;
 }
 
 CameraSpec fisheye(const std::string& name, const Eigen::Isometry3d& X_footprint_optical) {
@@ -37,9 +48,7 @@ CameraSpec fisheye(const std::string& name, const Eigen::Isometry3d& X_footprint
   spec.mount_frame = "base_footprint";
   spec.X_mount_optical = X_footprint_optical;
   spec.optical_frame = name + "_optical_frame";
-  spec.width = 1280;  // the Gazebo model's; the real ELP streams 3264 x 2448 MJPEG
-  spec.height = 960;
-  spec.hfov_rad = M_PI;
+  set_image(spec, model::kFisheyeCamera);
   spec.rate_hz = 5.0;  // the relay rate of /front_camera/fisheye on ARI
   spec.enabled = false;
   spec.image_topic = name + "/image_raw";
@@ -52,62 +61,60 @@ CameraSpec fisheye(const std::string& name, const Eigen::Isometry3d& X_footprint
 std::vector<CameraSpec> ari_camera_specs() {
   std::vector<CameraSpec> specs;
 
-  // Head camera: the Raspberry Pi camera on head_2_link at (0.0634, 0.182, 0); head_2_link's z
-  // points to the robot's right, so the camera's own frame is head_2_link turned -90 deg about x.
+  // Head camera on head_2_link; head_2_link's z points to the robot's right, so the camera's own
+  // frame is head_2_link turned -90 deg about x.
   CameraSpec head;
   head.name = "head_front_camera";
   head.kind = CameraKind::kColour;
   head.mount_frame = "head_2_link";
-  head.X_mount_optical.translation() = Eigen::Vector3d(0.0634, 0.182, 0.0);
+  head.X_mount_optical.translation() = vector_of(model::kHeadCameraInTiltLink);
   head.X_mount_optical.linear() =
       Eigen::AngleAxisd(-90.0 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix() *
       R_body_optical();
   head.optical_frame = "head_front_camera_color_optical_frame";
-  head.width = 1280;
-  head.height = 960;
-  head.hfov_rad = 62.2 * kDeg;  // the real robot's lens (Gazebo's model uses 80 deg)
+  set_image(head, model::kHeadCamera);
   head.rate_hz = 10.0;
   head.image_topic = "head_front_camera/color/image_raw";
   head.info_topic = "head_front_camera/color/camera_info";
   specs.push_back(head);
 
-  // Torso D435: colour optical frame 0.015 m left of the depth frame at (-0.104, 0.018, 1.105),
-  // pitched 42.5 deg down; depth is rendered in the colour frame (aligned_depth_to_color).
+  // Torso D435: depth is rendered in the colour frame (aligned_depth_to_color).
   CameraSpec torso;
   torso.name = "torso_front_camera";
   torso.kind = CameraKind::kRgbd;
   torso.mount_frame = "base_footprint";
-  torso.X_mount_optical = mount({-0.104, 0.033, 1.105}, 0.0, 42.5 * kDeg);
+  torso.X_mount_optical =
+      mount(model::kTorsoCameraInFootprint, 0.0, model::kTorsoCameraPitchDownDeg * kDeg);
   torso.optical_frame = "torso_front_camera_color_optical_frame";
-  torso.width = 848;
-  torso.height = 480;
-  torso.hfov_rad = 69.4 * kDeg;  // D435 colour sensor
+  set_image(torso, model::kTorsoCamera);
   torso.rate_hz = 15.0;
-  torso.min_range_m = 0.2;
-  torso.max_range_m = 10.0;
+  torso.min_range_m = model::kTorsoCameraMinRangeM;
+  torso.max_range_m = model::kTorsoCameraMaxRangeM;
   torso.image_topic = "torso_front_camera/color/image_raw";
   torso.info_topic = "torso_front_camera/color/camera_info";
   torso.depth_topic = "torso_front_camera/aligned_depth_to_color/image_raw";
   torso.depth_info_topic = "torso_front_camera/aligned_depth_to_color/camera_info";
   specs.push_back(torso);
 
-  // Fisheyes: front pitched 19 deg up, rear turned 180 deg and pitched 25 deg up.
-  specs.push_back(fisheye("front_fisheye_camera", mount({-0.142, 0.0, 1.321}, 0.0, -19.0 * kDeg)));
-  specs.push_back(
-      fisheye("rear_fisheye_camera", mount({-0.321, 0.0, 1.288}, 180.0 * kDeg, -25.0 * kDeg)));
+  // Fisheyes: the rear one turned 180 deg.
+  specs.push_back(fisheye("front_fisheye_camera", mount(model::kFrontFisheyeInFootprint, 0.0,
+                                                        -model::kFrontFisheyePitchUpDeg * kDeg)));
+  specs.push_back(fisheye("rear_fisheye_camera", mount(model::kRearFisheyeInFootprint, M_PI,
+                                                       -model::kRearFisheyePitchUpDeg * kDeg)));
 
-  // T265 behind the torso, facing backwards and pitched 15 deg down; its two fisheyes sit 64 mm
-  // apart (the T265 baseline) across the pose frame at (-0.328, 0.009, 1.159). Which one is on
-  // which side is not in the sources; fisheye1 is taken on the camera's left.
+  // T265 behind the torso, facing backwards: its two fisheyes sit half the baseline either side of
+  // the pose frame. Which one is on which side is not in the sources; fisheye1 is taken on the
+  // camera's left.
   for (int i = 1; i <= 2; ++i) {
-    const double left_offset = i == 1 ? 0.032 : -0.032;
+    const double half_baseline = 0.5 * model::kBackCameraBaselineM;
+    const double left_offset = i == 1 ? half_baseline : -half_baseline;
     // Facing backwards, the camera's left is the robot's -y.
+    model::MountPoint position = model::kBackCameraInFootprint;
+    position.y_m -= left_offset;
     CameraSpec t265 = fisheye("torso_back_camera/fisheye" + std::to_string(i),
-                              mount({-0.328, 0.009 - left_offset, 1.159}, M_PI, 15.0 * kDeg));
+                              mount(position, M_PI, model::kBackCameraPitchDownDeg * kDeg));
     t265.optical_frame = "torso_back_camera_fisheye" + std::to_string(i) + "_optical_frame";
-    t265.width = 848;
-    t265.height = 800;
-    t265.hfov_rad = 163.0 * kDeg;  // T265 lens
+    set_image(t265, model::kBackFisheyeCamera);
     t265.rate_hz = 30.0;
     specs.push_back(t265);
   }
@@ -115,12 +122,13 @@ std::vector<CameraSpec> ari_camera_specs() {
 }
 
 Eigen::Isometry3d X_footprint_head_2(double head_1_rad, double head_2_rad) {
-  // base_footprint -> base_link (z 0.125) -> head_1_link (-0.2255, 0, 1.1915), pan about z ->
-  // head_2_link (0.0425, 0, 0.093) rpy (90 deg, 0, 0), tilt about the child's -z.
+  // base_footprint -> base_link -> head_1_link, pan about z -> head_2_link rpy (90 deg, 0, 0),
+  // tilt about the child's -z.
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-  X.translate(Eigen::Vector3d(-0.2255, 0.0, 0.125 + 1.1915));
+  X.translate(Eigen::Vector3d(0.0, 0.0, model::kBaseLinkHeightM));
+  X.translate(vector_of(model::kHeadPanJointInBaseLink));
   X.rotate(Eigen::AngleAxisd(head_1_rad, Eigen::Vector3d::UnitZ()));
-  X.translate(Eigen::Vector3d(0.0425, 0.0, 0.093));
+  X.translate(vector_of(model::kHeadTiltJointInPanLink));
   X.rotate(Eigen::AngleAxisd(90.0 * kDeg, Eigen::Vector3d::UnitX()));
   X.rotate(Eigen::AngleAxisd(head_2_rad, -Eigen::Vector3d::UnitZ()));
   return X;

@@ -18,9 +18,10 @@ TEST(AriSensors, MountsFollowTheBase) {
   EXPECT_NEAR(sensors.body_camera.X_map_sensor.theta, core::kPi / 2, 1e-12);
   EXPECT_NEAR(sensors.body_camera.half_angle_rad, core::kPi / 2, 1e-12);
   EXPECT_DOUBLE_EQ(sensors.body_camera.range_m, 10.0);
-  // Head camera at pan 0: -0.2255 + 0.1055 = -0.12 m along the heading.
-  EXPECT_NEAR(sensors.face_camera.X_map_sensor.position.y(), 0.88, 1e-12);
-  EXPECT_NEAR(sensors.face_camera.half_angle_rad, core::deg_to_rad(31.0), 1e-12);
+  // Head camera at pan 0: -0.2255 + 0.1059 = -0.1196 m along the heading (ari_robot's URDF, as
+  // the rendered head camera); its lens is the Raspberry Pi camera v2's 62.2 degrees.
+  EXPECT_NEAR(sensors.face_camera.X_map_sensor.position.y(), 0.8804, 1e-12);
+  EXPECT_NEAR(sensors.face_camera.half_angle_rad, core::deg_to_rad(31.1), 1e-12);
   EXPECT_NEAR(sensors.microphone.y(), 0.878, 1e-12);
   EXPECT_DOUBLE_EQ(sensors.listening_range_m, 5.0);
 }
@@ -30,9 +31,9 @@ TEST(AriSensors, HeadCameraTurnsWithThePan) {
   world::AriSnapshot ari;
   ari.head_pan_rad = core::deg_to_rad(60.0);  // head turned left
   const AriSensors sensors = AriSensors::of(ari, config);
-  // Pan axis at (-0.2255, 0); camera 0.1055 m ahead of it along 60 degrees.
-  EXPECT_NEAR(sensors.face_camera.X_map_sensor.position.x(), -0.2255 + 0.1055 * 0.5, 1e-12);
-  EXPECT_NEAR(sensors.face_camera.X_map_sensor.position.y(), 0.1055 * std::sqrt(3.0) / 2, 1e-12);
+  // Pan axis at (-0.2255, 0); camera 0.1059 m ahead of it along 60 degrees.
+  EXPECT_NEAR(sensors.face_camera.X_map_sensor.position.x(), -0.2255 + 0.1059 * 0.5, 1e-12);
+  EXPECT_NEAR(sensors.face_camera.X_map_sensor.position.y(), 0.1059 * std::sqrt(3.0) / 2, 1e-12);
   EXPECT_NEAR(sensors.face_camera.X_map_sensor.theta, core::deg_to_rad(60.0), 1e-12);
   // The fisheye stays with the base.
   EXPECT_NEAR(sensors.body_camera.X_map_sensor.theta, 0.0, 1e-12);

@@ -24,8 +24,10 @@ TEST(PerceptionConfig, DefaultsAreAriAndValidate) {
   const PerceptionConfig config;
   EXPECT_NO_THROW(config.validate());
   EXPECT_DOUBLE_EQ(config.body_camera.field_of_view_deg, 180.0);  // D6.4 §3.5.2
-  EXPECT_DOUBLE_EQ(config.face_camera.field_of_view_deg, 62.0);   // D6.4 §3.5.3
-  EXPECT_DOUBLE_EQ(config.persons.location_decay_s, 10.0);        // hri_person_manager
+  // The Raspberry Pi camera v2's 62.2 degrees, which D6.4 §3.5.3 rounds to 62 and the rendered
+  // head camera uses (model/ari_sensor_geometry.hpp).
+  EXPECT_DOUBLE_EQ(config.face_camera.field_of_view_deg, 62.2);
+  EXPECT_DOUBLE_EQ(config.persons.location_decay_s, 10.0);  // hri_person_manager
   EXPECT_DOUBLE_EQ(config.persons.forget_after_s, 60.0);
   EXPECT_TRUE(config.errors_enabled);
 }

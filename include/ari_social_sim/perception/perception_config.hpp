@@ -10,6 +10,7 @@
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/model/ari_sensor_geometry.hpp"
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
@@ -22,12 +23,13 @@
 
 namespace ari_social_sim::perception {
 
-/// The torso front fisheye that tracks bodies (D6.4 §3.5.2; ELP IMX179, 180 degrees).
+/// The torso front fisheye that tracks bodies. Mount and lens default to ARI's
+/// (model/ari_sensor_geometry.hpp, which the rendered cameras use too).
 struct BodyCameraConfig {
-  double x_m{-0.142};  // ari_robot's URDF: front fisheye at x -0.142
-  double y_m{0.0};
-  double z_m{1.321};
-  double field_of_view_deg{180.0};
+  double x_m{model::kFrontFisheyeInFootprint.x_m};
+  double y_m{model::kFrontFisheyeInFootprint.y_m};
+  double z_m{model::kFrontFisheyeInFootprint.z_m};
+  double field_of_view_deg{model::kFisheyeCamera.hfov_deg};
   double range_m{10.0};
   double min_visible_fraction{0.2};
 
@@ -44,14 +46,15 @@ struct BodyCameraConfig {
   }
 };
 
-/// The head camera that sees faces (D6.4 §3.5.3: 62 degrees), turning with the head pan.
+/// The head camera that sees faces, turning with the head pan. Mount and lens default to ARI's
+/// (model/ari_sensor_geometry.hpp, which the rendered head camera uses too).
 struct FaceCameraConfig {
-  double pan_axis_x_m{-0.2255};  // head_1_joint (ari_robot's URDF)
-  double pan_axis_y_m{0.0};
-  double x_m{0.1055};  // head_front_camera at x -0.120 at pan 0
-  double y_m{0.0};
-  double z_m{1.591};
-  double field_of_view_deg{62.0};
+  double pan_axis_x_m{model::kHeadPanJointInBaseLink.x_m};
+  double pan_axis_y_m{model::kHeadPanJointInBaseLink.y_m};
+  double x_m{model::head_camera_ahead_of_pan_axis_m()};
+  double y_m{0.0};  // the camera is on the head's centre line
+  double z_m{model::head_camera_height_m()};
+  double field_of_view_deg{model::kHeadCamera.hfov_deg};
   double range_m{2.0};  // about 2 m (ARI documentation)
   double min_visible_fraction{0.5};
   double max_face_angle_deg{60.0};
@@ -76,8 +79,8 @@ struct FaceCameraConfig {
 /// The ReSpeaker array in the torso (D6.4 §3.5.4): hears speakers within a distance, not through
 /// walls.
 struct MicrophoneConfig {
-  double x_m{-0.122};
-  double y_m{0.0};
+  double x_m{model::kMicrophoneInFootprint.x_m};
+  double y_m{model::kMicrophoneInFootprint.y_m};
   double max_distance_m{5.0};
   double voice_timeout_s{2.0};
   std::string language{"en-GB"};
