@@ -2,10 +2,12 @@
 
 #include <algorithm>
 
+#include "ari_social_sim/core/rng_streams.hpp"
+
 namespace ari_social_sim::dialogue {
 
 uint64_t episode_seed(uint64_t seed, uint64_t index) {
-  return core::Rng::for_stream(seed, index).next_u64();
+  return core::rng_for(seed, core::rng_streams::kDialogueEpisodes, index).next_u64();
 }
 
 EpisodeRecord run_episode(DialogueEnv& env, RulePolicy& policy, uint64_t seed) {

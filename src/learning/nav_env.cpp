@@ -7,6 +7,7 @@
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/config_reader.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/learning/ground_truth.hpp"
 #include "ari_social_sim/learning/scenario_nav_env.hpp"
@@ -39,7 +40,7 @@ EpisodeType episode_type_for(NavTask task, uint64_t seed) {
       break;
   }
   // Groups of 2, 3 and 4 in equal shares, drawn from the seed.
-  const uint64_t draw = core::Rng::for_stream(seed, 7).next_u64() % 3;
+  const uint64_t draw = core::rng_for(seed, core::rng_streams::kNavEpisodeType).next_u64() % 3;
   return draw == 0 ? EpisodeType::kJoin2 : draw == 1 ? EpisodeType::kJoin3 : EpisodeType::kJoin4;
 }
 
@@ -141,7 +142,7 @@ void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
                                std::to_string(kEpisodeAttempts) + " attempts");
     }
   }
-  walk_rng_ = core::Rng(core::Rng::for_stream(episode_seed, 11).next_u64());
+  walk_rng_ = core::Rng(core::rng_for(episode_seed, core::rng_streams::kNavWalkers).next_u64());
   if (task.walkers > 0) {
     add_walkers(episode_, task.walkers, walk_rng_);
   }

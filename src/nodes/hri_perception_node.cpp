@@ -21,6 +21,7 @@
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/per_id_store.hpp"
@@ -104,9 +105,6 @@ void publish_on_change(ros::Publisher& publisher, std::optional<std::string>& se
   }
 }
 
-// The matchers' own random stream, apart from the pipeline's (PerceptionPipeline's streams 1-5).
-constexpr uint64_t kMatcherStream = 6;
-
 class HriPerceptionNode {
  public:
   HriPerceptionNode(const perception::PerceptionRunConfig& run,
@@ -116,7 +114,7 @@ class HriPerceptionNode {
         pipeline_(config),
         rate_gate_(run.max_rate_hz),
         matcher_(pipeline_.config().matchers,
-                 core::Rng::for_stream(pipeline_.config().seed, kMatcherStream)),
+                 core::rng_for(pipeline_.config().seed, core::rng_streams::kPerceptionMatcher)),
         bodies_([this](const std::string& id) { return advertise_body(id); }),
         faces_([this](const std::string& id) { return advertise_face(id); }),
         voices_([this](const std::string& id) { return advertise_voice(id); }),

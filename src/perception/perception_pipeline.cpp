@@ -3,19 +3,10 @@
 #include <set>
 
 #include "ari_social_sim/core/config_check.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 
 namespace ari_social_sim::perception {
 namespace {
-
-// Independent random streams, so that switching one error model on or off leaves the draws of
-// the others unchanged.
-enum Stream : uint64_t {
-  kIdStream = 1,
-  kBodyStream = 2,
-  kFaceStream = 3,
-  kSpeechStream = 4,
-  kPersonIdStream = 5
-};
 
 // Names the person behind each observation of a frame (every observed human is a known person).
 template <class Observation>
@@ -29,12 +20,12 @@ void link_to_persons(std::vector<Observation>& observations, const PersonRegistr
 
 PerceptionPipeline::PerceptionPipeline(const PerceptionConfig& config)
     : config_(core::validated(config).effective()),
-      ids_(core::Rng::for_stream(config.seed, kIdStream)),
-      bodies_(config_, ids_, core::Rng::for_stream(config.seed, kBodyStream)),
-      faces_(config_, ids_, core::Rng::for_stream(config.seed, kFaceStream)),
-      speech_(config_, ids_, core::Rng::for_stream(config.seed, kSpeechStream)),
+      ids_(core::rng_for(config.seed, core::rng_streams::kPerceptionTransientIds)),
+      bodies_(config_, ids_, core::rng_for(config.seed, core::rng_streams::kPerceptionBodies)),
+      faces_(config_, ids_, core::rng_for(config.seed, core::rng_streams::kPerceptionFaces)),
+      speech_(config_, ids_, core::rng_for(config.seed, core::rng_streams::kPerceptionSpeech)),
       persons_(config_.persons, config_.engagement,
-               core::Rng::for_stream(config.seed, kPersonIdStream)) {}
+               core::rng_for(config.seed, core::rng_streams::kPerceptionPersonIds)) {}
 
 PipelineMemory PerceptionPipeline::memory() const {
   PipelineMemory memory;

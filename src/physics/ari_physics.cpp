@@ -17,6 +17,7 @@
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/physics/ari_controllers.hpp"
 #include "ari_social_sim/physics/multibody_layout.hpp"
 #include "joint_servo.hpp"
@@ -530,7 +531,7 @@ void AriPhysics::Engine::add_drive_and_imu(const core::Pose2& start, const Physi
                              "' for the torso IMU");
   }
   imu = std::make_unique<ImuModel>(config.imu_noise, config.gravity_mps2,
-                                   core::Rng::for_stream(config.seed, 1));
+                                   core::rng_for(config.seed, core::rng_streams::kImuNoise));
 }
 
 // The diff-drive controller's wheel velocities, and the wheel angles they integrate to as the

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 
 namespace ari_social_sim::physics {
 namespace {
@@ -77,7 +78,7 @@ double head_share(double age_years) {
 }  // namespace
 
 HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed) {
-  core::Rng rng = core::Rng::for_stream(seed, traits.id);
+  core::Rng rng = core::rng_for(seed, core::rng_streams::kHumanAppearance, traits.id);
   HumanAppearance look;
   const double z = std::clamp(rng.normal(0.0, 1.0), -2.5, 2.5);
   const double mean = mean_height_m(traits.age_years, traits.gender);

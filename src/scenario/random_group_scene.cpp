@@ -10,6 +10,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 
@@ -18,9 +19,6 @@ namespace {
 
 using core::kPi;
 
-// The scene draws from a stream of its own: the episode's other draws (gaze, perception) use
-// the same seed.
-constexpr uint64_t kSceneStream = 0x5ce9e0a7;
 constexpr int kMaxDraws = 1000;
 constexpr model::ObjectId kFirstHuman = 10;
 // A lone person or ARI stays this far (m) from every o-space centre: clear of the members (at
@@ -291,7 +289,7 @@ GroupSizeRange group_sizes_of(model::Arrangement arrangement) {
 
 Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed) {
   spec.validate();
-  core::Rng rng = core::Rng::for_stream(seed, kSceneStream);
+  core::Rng rng = core::rng_for(seed, core::rng_streams::kRandomGroupScene);
   Scenario scenario;
   scenario.name = "random_group_scene";
   scenario.scene.path = "random group scene " + std::to_string(seed);

@@ -4,14 +4,10 @@
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
-
-// Random groups draw from their own streams, one per group, so that adding a group to a scenario
-// leaves the others unchanged.
-constexpr uint64_t kRandomGroupStream = 0x5ce0a210;
-constexpr uint64_t kConversationStream = 0xc0417e75;
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -97,7 +93,8 @@ ScriptRunner::ScriptRunner(const Scenario& scenario, uint64_t seed,
                            const dialogue::DialogueSetup* dialogue)
     : scenario_(scenario), seed_(seed) {
   if (dialogue != nullptr) {
-    conversation_.emplace(*dialogue, core::Rng::for_stream(seed, kConversationStream).next_u64());
+    conversation_.emplace(*dialogue,
+                          core::rng_for(seed, core::rng_streams::kConversation).next_u64());
   } else if (scenario.script.interfaces().dialogue) {
     throw core::ConfigError(scenario.scene.path +
                             ": script: expected the dialogue settings for `converse` and "
@@ -177,7 +174,7 @@ void ScriptRunner::begin(const Observations& observations, Commands& commands) {
   start_s_ = observations.world.time_s;
   now_s_ = 0.0;
   for (size_t i = 0; i < scenario_.script.random_groups.size(); ++i) {
-    core::Rng rng = core::Rng::for_stream(seed_, kRandomGroupStream + i);
+    core::Rng rng = core::rng_for(seed_, core::rng_streams::kRandomGroups, i);
     const GeneratedGroup generated = generate_group(scenario_.script.random_groups[i], rng);
     std::vector<Action> setup;
     for (const world::HumanSpec& human : generated.humans) {

@@ -11,19 +11,14 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "ari_social_sim/world/social_forces.hpp"
 #include "ari_social_sim/world/step_motion.hpp"
 
 namespace ari_social_sim::world {
-namespace {
-
-// First random stream of the members' stances: far above any object id, which the humans' own
-// streams use.
-constexpr uint64_t kStanceStreams = uint64_t{1} << 48;
-
-}  // namespace
+namespace {}  // namespace
 
 bool GroupSpec::lists_a_member_twice() const {
   return std::set<model::ObjectId>(members.begin(), members.end()).size() != members.size();
@@ -373,9 +368,10 @@ double GroupNavigation::stance_rad(uint64_t seed, model::ObjectId member) const 
   if (spec_.facing_spread_deg <= 0.0) {
     return 0.0;
   }
-  // A stream of its own per (group, member), apart from the humans' own streams (their ids).
-  const uint64_t stream = kStanceStreams + (static_cast<uint64_t>(spec_.id) << 24) + member;
-  return core::Rng::for_stream(seed, stream).normal(0.0, core::deg_to_rad(spec_.facing_spread_deg));
+  // A stream of its own per (group, member).
+  const uint64_t index = (static_cast<uint64_t>(spec_.id) << 24) + member;
+  return core::rng_for(seed, core::rng_streams::kGroupStance, index)
+      .normal(0.0, core::deg_to_rad(spec_.facing_spread_deg));
 }
 
 void GroupNavigation::move_member(Human& human, const Eigen::Vector2d& force, double turn_rad,

@@ -10,6 +10,7 @@
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/number_text.hpp"
+#include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/world/box2d_shapes.hpp"
 #include "ari_social_sim/world/request_check.hpp"
 
@@ -26,8 +27,6 @@ constexpr float kHumanMassKg = 70.0f;
 constexpr model::ObjectId kFirstAutomaticGroupId = 1;
 // About one personal distance: a neighbour query then visits a 3 x 3 block of cells.
 constexpr double kAgentGridCellM = 1.0;
-// Random streams of the reactions to ARI: this plus the human's id.
-constexpr uint64_t kReactionStream = uint64_t{1} << 32;
 
 b2Vec2 to_b2(const Eigen::Vector2d& v) {
   return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
@@ -233,10 +232,9 @@ const Human& Simulation::add_human(HumanSpec spec) {
                   what + " at (" + std::to_string(spec.pose.position.x()) + ", " +
                       std::to_string(spec.pose.position.y()) + ")");
 
-  // The reaction's draws get a stream of their own, past every gaze stream (ids are 32-bit).
-  auto human =
-      std::make_unique<Human>(spec, core::Rng::for_stream(config_.seed, spec.id),
-                              core::Rng::for_stream(config_.seed, kReactionStream + spec.id));
+  auto human = std::make_unique<Human>(
+      spec, core::rng_for(config_.seed, core::rng_streams::kHumanGaze, spec.id),
+      core::rng_for(config_.seed, core::rng_streams::kHumanReaction, spec.id));
   b2Body* body = make_agent_body(*physics_, spec.pose, *human);
   body->SetFixedRotation(true);
   // Continuous collision between people: two walkers meeting head on must not sink into each other.
