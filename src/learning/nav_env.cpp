@@ -150,7 +150,7 @@ void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   target_ = perceivable_target(episode_);
 
   perception::PerceptionConfig perception = setup_->perception;
-  perception.seed = static_cast<unsigned>(episode_seed);
+  perception.seed = episode_seed;
   perception_ = std::make_unique<perception::PerceptionPipeline>(perception);
   perception_->set_sight_map(map_);
   groups_ = std::make_unique<perception::GroupPerception>(perception.groups);

@@ -260,8 +260,8 @@ class HriPerceptionNode {
   // same appearance seed), so the boxes are those of the drawn figures, projected.
   void start_crops() {
     uint64_t seed = 1;
-    if (run_.appearance_seed >= 0) {
-      seed = static_cast<uint64_t>(run_.appearance_seed);
+    if (run_.appearance_seed) {
+      seed = *run_.appearance_seed;
     } else {
       int physics_seed = 1;
       if (nh_.getParam("/ari_physics_node/appearance_seed", physics_seed) && physics_seed >= 0) {
@@ -630,9 +630,7 @@ int main(int argc, char** argv) {
       run.config = ros::package::getPath("ari_social_sim") + "/config/perception.yaml";
     }
     perception::PerceptionConfig config = perception::PerceptionConfig::load_file(run.config);
-    if (run.seed >= 0) {
-      config.seed = static_cast<unsigned>(run.seed);
-    }
+    config.seed = run.seed.value_or(config.seed);
     if (run.errors_enabled) {
       config.errors_enabled = *run.errors_enabled;
     }
@@ -645,9 +643,9 @@ int main(int argc, char** argv) {
                                               nodes::kSoundMapResolution_m);
     }
     const bool detectors = run.mode == perception::PerceptionRunConfig::Mode::kDetectors;
-    ROS_INFO("hri_perception_node: %s mode, %s, seed %u, error models %s, sound blocked by %s",
-             detectors ? "detectors" : "sim", run.config.c_str(), config.seed,
-             config.errors_enabled ? "on" : "off",
+    ROS_INFO("hri_perception_node: %s mode, %s, seed %lu, error models %s, sound blocked by %s",
+             detectors ? "detectors" : "sim", run.config.c_str(),
+             static_cast<unsigned long>(config.seed), config.errors_enabled ? "on" : "off",
              run.world.empty() ? "/map" : ("the walls of " + run.world).c_str());
     nodes::HriPerceptionNode node(run, config, std::move(sound_map));
     ros::spin();

@@ -351,9 +351,7 @@ class ScenarioNode {
       : config_(config),
         scenario_(std::move(scenario)),
         dialogue_(std::move(dialogue)),
-        runner_(scenario_,
-                config.seed >= 0 ? static_cast<uint64_t>(config.seed) : scenario_.scene.seed,
-                dialogue_.get()),
+        runner_(scenario_, config.seed.value_or(scenario_.scene.seed), dialogue_.get()),
         watchdog_(config.wall_time_limit_for(scenario_.script.time_limit_s), config.world_timeout_s,
                   ros::WallTime::now().toSec()),
         groups_(config.group_timeout_s) {

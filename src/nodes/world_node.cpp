@@ -509,9 +509,7 @@ int main(int argc, char** argv) {
       config.scene = ros::package::getPath("ari_social_sim") + "/scenes/waiting_room.yaml";
     }
     world::Scene scene = world::load_scene_file(config.scene);
-    if (config.seed >= 0) {
-      scene.seed = static_cast<uint64_t>(config.seed);
-    }
+    scene.seed = config.seed.value_or(scene.seed);
     // Build once here so a scene that cannot be placed stops the node before it advertises.
     world::build_simulation(scene, config.simulation);
     ROS_INFO("world_node: %s (world %s), seed %lu, step %.3f s, real-time factor %s, ARI %s",

@@ -93,7 +93,7 @@ class Episode::InProcessCommands : public Commands {
 namespace {
 
 perception::PerceptionConfig seeded(perception::PerceptionConfig config, uint64_t seed) {
-  config.seed = static_cast<unsigned>(seed);
+  config.seed = seed;
   return config;
 }
 

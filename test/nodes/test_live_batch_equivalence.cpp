@@ -209,7 +209,7 @@ class LiveChain {
   };
 
   static perception::PerceptionConfig seeded(perception::PerceptionConfig config, uint64_t seed) {
-    config.seed = static_cast<unsigned>(seed);
+    config.seed = seed;
     return config;
   }
 

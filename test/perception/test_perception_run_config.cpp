@@ -14,7 +14,8 @@ PerceptionRunConfig parse(const std::string& text) {
 TEST(PerceptionRunConfig, NoParametersGiveTheDefaults) {
   const PerceptionRunConfig config = parse("{}");
   EXPECT_EQ(config.config, "");
-  EXPECT_EQ(config.seed, -1);
+  EXPECT_FALSE(config.seed.has_value());
+  EXPECT_FALSE(config.appearance_seed.has_value());
   EXPECT_FALSE(config.errors_enabled.has_value());
   EXPECT_EQ(config.world, "");
   EXPECT_DOUBLE_EQ(config.max_rate_hz, 30.0);
@@ -35,12 +36,20 @@ TEST(PerceptionRunConfig, ReadsEveryParameter) {
       "{config: a.yaml, seed: 4, errors_enabled: false, world: w.yaml, max_rate: 15, "
       "id_linger: 0.5, marker_rate: 5}");
   EXPECT_EQ(config.config, "a.yaml");
-  EXPECT_EQ(config.seed, 4);
+  EXPECT_EQ(config.seed, std::optional<uint64_t>(4));
   EXPECT_EQ(config.errors_enabled, std::optional<bool>(false));
   EXPECT_EQ(config.world, "w.yaml");
   EXPECT_DOUBLE_EQ(config.max_rate_hz, 15.0);
   EXPECT_DOUBLE_EQ(config.id_linger_s, 0.5);
   EXPECT_DOUBLE_EQ(config.marker_rate_hz, 5.0);
+}
+
+// The launch files' `seed:=-1` default ("the config's seed") reaches the node as -1: unset.
+TEST(PerceptionRunConfig, MinusOneLeavesTheSeedsUnset) {
+  const PerceptionRunConfig config = parse("{seed: -1, appearance_seed: -1}");
+  EXPECT_FALSE(config.seed.has_value());
+  EXPECT_FALSE(config.appearance_seed.has_value());
+  EXPECT_EQ(parse("{seed: 0}").seed, std::optional<uint64_t>(0));
 }
 
 TEST(PerceptionRunConfig, BadOrUnknownParametersAreNamed) {

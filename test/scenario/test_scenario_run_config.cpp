@@ -13,12 +13,13 @@ ScenarioRunConfig read(const std::string& text) {
 TEST(ScenarioRunConfig, DefaultsAndOverrides) {
   const ScenarioRunConfig defaults = read("{scenario: a.yaml}");
   EXPECT_EQ(defaults.scenario, "a.yaml");
-  EXPECT_EQ(defaults.seed, -1);
+  EXPECT_FALSE(defaults.seed.has_value());
+  EXPECT_FALSE(read("{scenario: a.yaml, seed: -1}").seed.has_value());  // a launch file's seed:=-1
   EXPECT_DOUBLE_EQ(defaults.server_timeout_s, 60.0);
   EXPECT_DOUBLE_EQ(defaults.group_timeout_s, 1.0);
   const ScenarioRunConfig set =
       read("{scenario: b.yaml, seed: 12, server_timeout: 5, group_timeout: 0.5}");
-  EXPECT_EQ(set.seed, 12);
+  EXPECT_EQ(set.seed, std::optional<uint64_t>(12));
   EXPECT_DOUBLE_EQ(set.server_timeout_s, 5.0);
   EXPECT_DOUBLE_EQ(set.group_timeout_s, 0.5);
 }

@@ -28,11 +28,12 @@ TEST(WorldRunConfig, DefaultsAreValidAndFieldsAreRead) {
   const WorldRunConfig defaults = parse("{}");
   EXPECT_DOUBLE_EQ(defaults.simulation.step_s, 0.05);
   EXPECT_DOUBLE_EQ(defaults.real_time_factor, 1.0);
-  EXPECT_EQ(defaults.seed, -1);
+  EXPECT_FALSE(defaults.seed.has_value());
+  EXPECT_FALSE(parse("{seed: -1}").seed.has_value());  // a launch file's seed:=-1
   const WorldRunConfig config = parse("{step: 0.02, real_time_factor: 0, seed: 4, duration: 40}");
   EXPECT_DOUBLE_EQ(config.simulation.step_s, 0.02);
   EXPECT_DOUBLE_EQ(config.real_time_factor, 0.0);
-  EXPECT_EQ(config.seed, 4);
+  EXPECT_EQ(config.seed, std::optional<uint64_t>(4));
   EXPECT_DOUBLE_EQ(config.duration_s, 40.0);
   EXPECT_EQ(defaults.ari_source, AriSource::kInternal);
   EXPECT_EQ(parse("{ari_source: physics}").ari_source, AriSource::kPhysics);

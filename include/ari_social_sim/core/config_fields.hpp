@@ -30,7 +30,8 @@
 // (docs/parameters.md, parameter_table.hpp). So a bound or default is written once, and the docs
 // cannot disagree with the code.
 //
-//   v.field(key, member, meaning[, bounds])  a value; a std::optional member may stay unset
+//   v.field(key, member, meaning[, bounds])  a value; a std::optional member may stay unset;
+//                                            core::unset_by_minus_one(key) also reads -1 as unset
 //   v.choice(key, member, meaning, choices)  an enum, spelled in files by the names of `choices`
 //   v.section(key, member, meaning)          a nested struct (its own visit): a nested mapping;
 //                                            a std::optional member is set only when given
@@ -58,6 +59,8 @@ struct Key {
 
   std::string name;
   bool required{false};
+  // A std::optional<uint64_t> field (a seed) that -1 leaves unset, see unset_by_minus_one.
+  bool minus_one_unsets{false};
 };
 
 inline Key required(std::string name) {
@@ -65,6 +68,18 @@ inline Key required(std::string name) {
   key.required = true;
   return key;
 }
+
+/// The key of a std::optional<uint64_t> field, a seed, that files and parameters may also set to
+/// -1, meaning unset: a launch file's `seed:=-1` default passes "the file's seed" on to a node
+/// this way. The reader is the one place -1 becomes unset; in code the field is the optional.
+inline Key unset_by_minus_one(std::string name) {
+  Key key(std::move(name));
+  key.minus_one_unsets = true;
+  return key;
+}
+
+/// Seeds that nodes take as parameters: a ROS integer parameter is 32-bit and signed.
+inline constexpr Bounds kParameterSeedBounds{0.0, 2147483647.0, false};
 
 /// One value of an enumerated field and how files spell it.
 template <class E>

@@ -19,7 +19,9 @@ class FieldReader {
   template <class T>
   void field(const Key& key, T& value, const char* /*meaning*/, const Bounds& bounds = {}) {
     if (key.required || map_.has(key.name)) {
-      if constexpr (IsOptional<T>::value) {
+      if constexpr (std::is_same_v<T, std::optional<uint64_t>>) {
+        value = read_seed(key, bounds);
+      } else if constexpr (IsOptional<T>::value) {
         value = read<typename T::value_type>(key.name, bounds);
       } else {
         value = read<T>(key.name, bounds);
@@ -90,6 +92,19 @@ class FieldReader {
     } else {
       return map_.required<T>(key, bounds);
     }
+  }
+
+  // An optional seed: a non-negative integer within `bounds`, or -1 (unset) for an
+  // unset_by_minus_one key.
+  std::optional<uint64_t> read_seed(const Key& key, const Bounds& bounds) const {
+    if (!key.minus_one_unsets) {
+      return read<uint64_t>(key.name, bounds);
+    }
+    const int64_t given = read<int64_t>(key.name, Bounds{-1.0, bounds.max, false});
+    if (given == -1) {
+      return std::nullopt;
+    }
+    return read<uint64_t>(key.name, bounds);
   }
 
   template <class S>

@@ -37,6 +37,9 @@ class ParameterTable {
     if constexpr (IsVector<typename Unoptional<T>::type>::value) {
       range = range.empty() ? "" : "each " + range;
     }
+    if (key.minus_one_unsets) {
+      range += (range.empty() ? "" : "; ") + std::string("-1: unset");
+    }
     add(key, type_name<T>(), key.required ? "required" : value_text(value), range, meaning);
   }
 

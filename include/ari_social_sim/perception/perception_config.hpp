@@ -428,7 +428,7 @@ struct GroupConfig {
 
 /// Everything ARI's simulated perception is configured with (config/perception.yaml).
 struct PerceptionConfig {
-  unsigned seed{1};
+  uint64_t seed{1};
   bool errors_enabled{true};
   BodyCameraConfig body_camera;
   FaceCameraConfig face_camera;

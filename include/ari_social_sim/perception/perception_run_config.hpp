@@ -21,7 +21,7 @@ struct PerceptionRunConfig {
 
   Mode mode{Mode::kSim};
   std::string config;
-  int64_t seed{-1};
+  std::optional<uint64_t> seed;
   std::optional<bool> errors_enabled;
   std::optional<std::string> person_ids;
   std::string world;
@@ -31,7 +31,7 @@ struct PerceptionRunConfig {
   double id_linger_s{1.0};
   double marker_rate_hz{10.0};
   bool crops{false};
-  int64_t appearance_seed{-1};
+  std::optional<uint64_t> appearance_seed;
 
   template <class V>
   void visit(V& v) {
@@ -42,8 +42,8 @@ struct PerceptionRunConfig {
     v.field("config", config,
             "sensors and error models (config/perception.yaml below); empty: the package's "
             "config/perception.yaml");
-    v.field("seed", seed, "overrides the config's seed when >= 0",
-            core::Bounds{-1.0, 2147483647.0, false});
+    v.field(core::unset_by_minus_one("seed"), seed, "overrides the config's seed when set",
+            core::kParameterSeedBounds);
     v.field("errors_enabled", errors_enabled,
             "overrides the config's errors_enabled: false turns every error model off");
     v.field("person_ids", person_ids,
@@ -63,10 +63,10 @@ struct PerceptionRunConfig {
             "3D mode: cut REP-155's face (cropped, aligned) and body (cropped) images from ARI's "
             "head camera for the tracked faces and bodies; subscribing makes ari_physics_node "
             "render that camera");
-    v.field("appearance_seed", appearance_seed,
-            "with crops: ari_physics_node's appearance_seed, which sizes the people it draws; -1: "
-            "read /ari_physics_node/appearance_seed, 1 (its default) when unset",
-            core::Bounds{-1.0, 2147483647.0, false});
+    v.field(core::unset_by_minus_one("appearance_seed"), appearance_seed,
+            "with crops: ari_physics_node's appearance_seed, which sizes the people it draws; "
+            "unset: read /ari_physics_node/appearance_seed, 1 (its default) when that is unset",
+            core::kParameterSeedBounds);
   }
 
   /// Throws core::ConfigError naming the field outside what visit allows.

@@ -13,7 +13,7 @@ namespace ari_social_sim::scenario {
 /// (core/config_fields.hpp; docs/parameters.md is generated from it).
 struct ScenarioRunConfig {
   std::string scenario;
-  int64_t seed{-1};
+  std::optional<uint64_t> seed;
   double server_timeout_s{60.0};
   double group_timeout_s{1.0};
   std::string dialogue_config;
@@ -25,8 +25,9 @@ struct ScenarioRunConfig {
   template <class V>
   void visit(V& v) {
     v.field(core::required("scenario"), scenario, "the scenario file");
-    v.field("seed", seed, "seed of the script's random draws (random groups); -1 = the scene's",
-            core::Bounds{-1.0, 2147483647.0, false});
+    v.field(core::unset_by_minus_one("seed"), seed,
+            "seed of the script's random draws (random groups); unset: the scene's",
+            core::kParameterSeedBounds);
     v.field("server_timeout", server_timeout_s,
             "wall seconds to wait for the services and actions the script uses", core::positive());
     // ROS4HRI publishes one message per group, repeatedly, and no "gone" message.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "ari_social_sim/core/config_fields.hpp"
@@ -22,7 +23,7 @@ struct WorldRunConfig {
   std::string scene;
   SimulationConfig simulation;  // ~step and ~map_resolution; the seed is the scene's
   double real_time_factor{1.0};
-  int64_t seed{-1};
+  std::optional<uint64_t> seed;
   double duration_s{0.0};
   double marker_rate_hz{30.0};
   bool start_paused{false};
@@ -38,8 +39,8 @@ struct WorldRunConfig {
             "sim seconds per wall second (1e-3: one 0.05 s step every 50 s); 0 = as fast as "
             "possible. Pacing restarts after a pause and after /sim/reset",
             core::non_negative());
-    v.field("seed", seed, "overrides the scene's seed when >= 0",
-            core::Bounds{-1.0, 2147483647.0, false});
+    v.field(core::unset_by_minus_one("seed"), seed, "overrides the scene's seed when set",
+            core::kParameterSeedBounds);
     v.field("duration", duration_s,
             "stop after this many sim seconds and print a group report; 0 = run until shut down",
             core::non_negative());
