@@ -122,14 +122,16 @@ void Simulation::add_floor_fence() {
 Simulation::~Simulation() = default;
 
 void Simulation::register_object(Object& object) {
-  if (!objects_by_id_.emplace(object.id(), &object).second) {
-    throw core::RequestError("id " + std::to_string(object.id()) + " is already used");
+  if (!used_ids_.insert(object.id()).second) {
+    throw core::RequestError("id " + std::to_string(object.id()) + " is already used" +
+                             (find_object(object.id()) == nullptr ? " earlier in this run" : ""));
   }
+  objects_by_id_.emplace(object.id(), &object);
 }
 
 model::ObjectId Simulation::next_free_id(model::ObjectId from) const {
   model::ObjectId id = std::max<model::ObjectId>(from, kFirstAutomaticHumanId);
-  while (objects_by_id_.count(id) > 0) {
+  while (used_ids_.count(id) > 0) {
     ++id;
   }
   return id;
@@ -217,6 +219,12 @@ const Human& Simulation::add_human(HumanSpec spec) {
   check.valid(spec);
   if (find_object(spec.id) != nullptr) {
     check.fail("id", "an id no other object uses", std::to_string(spec.id));
+  }
+  if (used_ids_.count(spec.id) > 0) {
+    check.fail("id",
+               "an id not used earlier in this run (a removed human's id is not reused; "
+               "/sim/reset starts over)",
+               std::to_string(spec.id));
   }
   if (humans_.size() >= kMaxHumans) {
     throw core::RequestError("spawn_human: the world already holds " +

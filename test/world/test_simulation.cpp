@@ -190,6 +190,33 @@ TEST(Simulation, SpawnRequestsAreCheckedAgainstWallsPeopleAndIds) {
   EXPECT_EQ(simulation.next_free_id(10), 11u);
 }
 
+// A removed human's id is never handed out again within a run, so that a consumer of
+// /sim/world_state or a bag cannot mistake the next person for them: spawn (automatic id 10),
+// remove 10, spawn again: 11, not 10. Asking for 10 by name is refused, naming it; a new
+// simulation (what /sim/reset builds) starts over at 10.
+TEST(Simulation, ARemovedHumansIdIsNotReused) {
+  Simulation simulation(test::square_room(6.0), SimulationConfig{});
+  const model::ObjectId first = simulation.add_human(person(model::kNoObject, 2.0, 3.0)).id();
+  EXPECT_EQ(first, 10u);
+  simulation.remove_human(first);
+  const model::ObjectId second = simulation.add_human(person(model::kNoObject, 2.0, 3.0)).id();
+  EXPECT_EQ(second, 11u);
+  EXPECT_EQ(simulation.next_free_id(10), 12u);
+  try {
+    simulation.add_human(person(10, 4.0, 3.0));
+    ADD_FAILURE() << "a removed human's id was accepted again";
+  } catch (const core::RequestError& e) {
+    EXPECT_NE(std::string(e.what()).find("id: expected an id not used earlier in this run"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("got 10"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(simulation.humans().size(), 1u);
+
+  Simulation reset(test::square_room(6.0), SimulationConfig{});
+  EXPECT_EQ(reset.add_human(person(model::kNoObject, 2.0, 3.0)).id(), 10u);
+}
+
 TEST(Simulation, AGoalTakesAHumanOutOfItsGroupAndSpeakersAreFoundById) {
   Simulation simulation(test::square_room(6.0), SimulationConfig{});
   simulation.add_human(person(10, 2.0, 3.0));

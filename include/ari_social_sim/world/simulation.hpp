@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "ari_social_sim/core/clock_time.hpp"
@@ -80,11 +81,13 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  /// Adds a human (world_node's /sim/spawn_human). A spec without an id (kNoObject) gets the
-  /// smallest free id from kFirstAutomaticHumanId on. Throws if the spec is invalid
-  /// (HumanSpec::validate), its position or goal is off the floor, a gaze target is not another
-  /// object of the world, the id is taken, the world already holds kMaxHumans humans, or the body
-  /// would stand outside the floor or overlap a wall, furniture, ARI or another human.
+  /// Adds a human (world_node's /sim/spawn_human). A spec without an id (kNoObject) gets
+  /// next_free_id(kFirstAutomaticHumanId). Throws if the spec is invalid (HumanSpec::validate), its
+  /// position or goal is off the floor, a gaze target is not another object of the world, the id
+  /// is taken or was an object's earlier in the run (ids are never reused, so that a consumer of
+  /// the world state or a bag cannot mistake a new person for a removed one), the world already
+  /// holds kMaxHumans humans, or the body would stand outside the floor or overlap a wall,
+  /// furniture, ARI or another human.
   const Human& add_human(HumanSpec spec);
   /// Takes a human out of the world, and out of its group (/sim/remove_human). Throws for an
   /// unknown id.
@@ -164,7 +167,9 @@ class Simulation {
   /// `human_id`.
   void check_gaze_targets(const RequestCheck& check, model::ObjectId human_id,
                           const GazeModel& model) const;
-  /// Smallest id >= `from` (and >= kFirstAutomaticHumanId) that no object uses.
+  /// Smallest id >= `from` (and >= kFirstAutomaticHumanId) that no object of this simulation has
+  /// had, removed ones included: automatic ids only increase within a run (a new simulation, as
+  /// /sim/reset builds, starts over).
   model::ObjectId next_free_id(model::ObjectId from) const;
 
   void step();
@@ -252,6 +257,8 @@ class Simulation {
   std::vector<std::unique_ptr<GroupNavigation>> groups_;
   std::vector<std::unique_ptr<WalkingGroup>> walking_groups_;
   std::unordered_map<model::ObjectId, Object*> objects_by_id_;
+  // Every id an object has had in this simulation, removed objects' included: never reused.
+  std::unordered_set<model::ObjectId> used_ids_;
   uint64_t step_count_{0};
   StepDiagnostics diagnostics_;
   // Rebuilt lazily by the first neighbour query after agents changed; a cache, hence mutable.
