@@ -449,7 +449,7 @@ struct PerceptionConfig {
     v.field("errors_enabled", errors_enabled,
             "false: every error model off, the output equals the ground truth");
     v.section("body_camera", body_camera, "torso front fisheye (ELP IMX179), tracks bodies");
-    v.section("face_camera", face_camera, "head camera (62 degrees), turns with head_1_joint");
+    v.section("face_camera", face_camera, "head camera (62.2 degrees), turns with head_1_joint");
     v.section("microphone", microphone, "ReSpeaker array in the torso");
     v.section("occlusion", occlusion, "what blocks sight");
     v.section("human_model", human_model, "the 2D world has no heights: where the 3D frames go");
