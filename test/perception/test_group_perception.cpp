@@ -70,9 +70,11 @@ TEST(GroupPerception, ClearForgetsTracksButNeverReusesIds) {
 
 // The batch engines' composition (PerceptionPipeline, then GroupPerception on
 // group_candidates_of) on the benchmark's crowd: 50 people in circles of 1-4 in front of ARI
-// behind a wall, default error models, 60 frames at 30 Hz. The expected numbers are what
-// PerceptionPipeline reported as frame.groups when GCFF still ran inside it (commit 005b1fd), so
-// moving group detection out changed no group, member, id or centre.
+// behind a wall, default error models, 60 frames at 30 Hz. Moving group detection out of
+// PerceptionPipeline (commit 005b1fd) changed no group, member, id or centre of what it reported
+// as frame.groups. The numbers are re-pinned since the perception's error models draw from the
+// streams core/rng_streams.hpp gives them (2^40 + 1..5, apart from the humans' gaze streams):
+// other draws of the same models, so other misses and another grouping of the same crowd.
 TEST(GroupPerception, SameGroupsAsInsideThePipelineOnACrowd) {
   world::WorldSnapshot snapshot = test::crowd_snapshot(50, 7);
   PerceptionPipeline pipeline{PerceptionConfig{}};
@@ -95,16 +97,15 @@ TEST(GroupPerception, SameGroupsAsInsideThePipelineOnACrowd) {
       centre_sum += group.centre;
     }
   }
-  EXPECT_EQ(reported, 349);
-  EXPECT_EQ(frames_of.size(), 44u);  // distinct (id, members) pairs over the run
-  EXPECT_NEAR(centre_sum.x(), 1216.90696953, 1e-6);
-  EXPECT_NEAR(centre_sum.y(), -202.033352724, 1e-6);
-  // The steadiest pairs, and the first group's id passing from one membership to the next.
-  EXPECT_EQ(frames_of["g2: human21 human22"], 55);
-  EXPECT_EQ(frames_of["g8: human51 human52"], 52);
-  EXPECT_EQ(frames_of["g1: human13 human14"], 20);
-  EXPECT_EQ(frames_of["g1: human13 human14 human53 human54"], 10);
-  EXPECT_EQ(frames_of["g6: human53 human54"], 26);
+  EXPECT_EQ(reported, 310);
+  EXPECT_EQ(frames_of.size(), 49u);  // distinct (id, members) pairs over the run
+  EXPECT_NEAR(centre_sum.x(), 1100.675223002, 1e-6);
+  EXPECT_NEAR(centre_sum.y(), -154.496665862, 1e-6);
+  // The steadiest pairs, and a group's id passing from one membership to the next.
+  EXPECT_EQ(frames_of["g1: human21 human22"], 50);
+  EXPECT_EQ(frames_of["g5: human51 human52"], 44);
+  EXPECT_EQ(frames_of["g6: human13 human14 human53 human54"], 30);
+  EXPECT_EQ(frames_of["g6: human53 human54"], 19);
 }
 
 }  // namespace

@@ -90,8 +90,9 @@ TEST(PersonRegistry, EngagementComesFromThePerceivedFace) {
     snapshot.time_s = 0.1 * i;
     registry.update(snapshot, &sensors, {}, {face}, {}, reports);
   }
-  // 1.12 m from the head camera: log(3.88) / log(5) = 0.84 > 0.5.
-  EXPECT_NEAR(reports.at(0).engagement_score, std::log(4.0 + 1.0 - 1.12) / std::log(5.0), 1e-9);
+  // 1.1196 m from the head camera (0.1196 m behind base_footprint, model/ari_sensor_geometry.hpp):
+  // log(3.8804) / log(5) = 0.84 > 0.5.
+  EXPECT_NEAR(reports.at(0).engagement_score, std::log(4.0 + 1.0 - 1.1196) / std::log(5.0), 1e-9);
   EXPECT_EQ(reports[0].engagement, EngagementLevel::kEngaged);
 }
 
