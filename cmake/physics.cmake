@@ -79,6 +79,7 @@ endif()
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/ari_physics_node.test DEPENDENCIES ari_physics_node)
   add_rostest(test/integration/point_head_lost_frame.test DEPENDENCIES ari_physics_node)
+  add_rostest(test/integration/fuzz_physics.test DEPENDENCIES ari_physics_node)
   add_rostest(test/integration/world_3d.test DEPENDENCIES ari_physics_node world_node)
   add_rostest(test/integration/ari_cameras.test DEPENDENCIES ari_physics_node)
   add_rostest(test/integration/head_crops.test

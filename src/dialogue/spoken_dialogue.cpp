@@ -64,6 +64,10 @@ std::string SpokenDialogue::cancel_robot() {
 
 void SpokenDialogue::tick() {
   const double now = stage_.now_s();
+  if (now < last_tick_s_ - kTimeBackToleranceS) {
+    restart_clock(now);
+  }
+  last_tick_s_ = now;
   const bool may_start =
       !dialogue_active_ && next_start_s_ >= 0.0 && now >= next_start_s_ && stage_.has_listener();
   if (may_start && run_.start == DialogueStart::kAtOnce) {
@@ -111,12 +115,31 @@ void SpokenDialogue::tick() {
     human_playing_ = true;
   }
   if (live_.over()) {
-    report_outcome(now);
-    dialogue_active_ = false;
-    ++dialogue_index_;
-    const bool more = run_.dialogues == 0 || dialogue_index_ < run_.dialogues;
-    next_start_s_ = more ? now + run_.dialogue_pause_s : -1.0;
+    end_dialogue(now, false);
   }
+}
+
+void SpokenDialogue::end_dialogue(double now_s, bool cut_off) {
+  report_outcome(now_s, cut_off);
+  dialogue_active_ = false;
+  human_playing_ = false;
+  ++dialogue_index_;
+  const bool more = run_.dialogues == 0 || dialogue_index_ < run_.dialogues;
+  next_start_s_ = more ? now_s + run_.dialogue_pause_s : -1.0;
+}
+
+// The stage's clock went back (/sim/reset): every time held is from before it. A dialogue under
+// way ends cut off (the reset put its speakers back in their places, silent) and the next starts
+// a pause later; ARI's utterance waits what it had left to wait, and one it was speaking counts
+// from now.
+void SpokenDialogue::restart_clock(double now_s) {
+  if (dialogue_active_) {
+    end_dialogue(now_s, true);
+  } else if (next_start_s_ >= 0.0) {
+    next_start_s_ = now_s + std::max(0.0, next_start_s_ - last_tick_s_);
+  }
+  robot_not_before_s_ = now_s + std::max(0.0, robot_not_before_s_ - last_tick_s_);
+  robot_start_s_ = now_s;
 }
 
 void SpokenDialogue::start_dialogue(double now_s, Opening opening) {
@@ -155,12 +178,12 @@ void SpokenDialogue::report_utterance(int index, double stamp_s) {
   events_.utterances.push_back(event);
 }
 
-void SpokenDialogue::report_outcome(double now_s) {
+void SpokenDialogue::report_outcome(double now_s, bool cut_off) {
   const StepResult& last = live_.last_result();
-  events_.outcomes.push_back({dialogue_index_, live_.seed(), now_s, last.info.complete,
-                              last.info.success, last.truncated, last.info.robot_turns,
-                              static_cast<int>(live_.env().transcript().size()),
-                              live_.total_reward(), last.info.goals});
+  events_.outcomes.push_back(
+      {dialogue_index_, live_.seed(), now_s, last.info.complete && !cut_off,
+       last.info.success && !cut_off, last.truncated || cut_off, last.info.robot_turns,
+       static_cast<int>(live_.env().transcript().size()), live_.total_reward(), last.info.goals});
 }
 
 std::string SpokenDialogue::robot_words(size_t count) const {

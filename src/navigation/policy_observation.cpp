@@ -88,8 +88,15 @@ void PolicyObservation::build(const RobotObservation& robot, const PerceivedScen
   }
   at += 4;
 
-  // The K nearest within range, nearest first (ties by id, so that the order never depends on
-  // the order perception listed them in).
+  write_people(pose, scene, goal, at);
+  at += kPersonFeatures * config_.nearest_people;
+  write_occupancy(pose, map, at);
+}
+
+// The K nearest within range, nearest first (ties by id, so that the order never depends on the
+// order perception listed them in), kPersonFeatures values each.
+void PolicyObservation::write_people(const core::Pose2& pose, const PerceivedScene& scene,
+                                     const std::optional<Goal>& goal, float* at) const {
   std::vector<std::pair<double, const PersonEstimate*>> near;
   near.reserve(scene.people.size());
   for (const PersonEstimate& person : scene.people) {
@@ -119,8 +126,11 @@ void PolicyObservation::build(const RobotObservation& robot, const PerceivedScen
     p[7] = goal && goal->is_target(person.id) ? 1.0f : 0.0f;
     p[8] = scene.group_of(person.id) != nullptr ? 1.0f : 0.0f;
   }
-  at += kPersonFeatures * config_.nearest_people;
+}
 
+// A patch_cells x patch_cells occupancy patch centred on ARI, rows along its heading.
+void PolicyObservation::write_occupancy(const core::Pose2& pose, const model::OccupancyGrid& map,
+                                        float* at) const {
   const int cells = config_.patch_cells;
   const double half = 0.5 * (cells - 1);
   const Eigen::Vector2d forward = pose.heading();

@@ -3,6 +3,7 @@
 // edges. Controllers, limits, odometry and head pointing are the core's; this file only times
 // and publishes them. The controllers' and point_head's action servers are in physics/.
 
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/package.h>
@@ -12,12 +13,15 @@
 #include <sensor_msgs/JointState.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/format_text.hpp"
+#include "ari_social_sim/model/tracked_person.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
@@ -26,6 +30,7 @@
 #include "camera_interface.hpp"
 #include "conversions/ari_base.hpp"
 #include "frames.hpp"
+#include "input_counters.hpp"
 #include "node_main.hpp"
 #include "physics/controller_interface.hpp"
 #include "physics/odom_frame.hpp"
@@ -33,6 +38,7 @@
 #include "physics/sim_clock.hpp"
 #include "renewing_tf_buffer.hpp"
 #include "ros_params.hpp"
+#include "single_publisher.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -92,9 +98,10 @@ class PhysicsNode {
     odom_pub_ = nh_.advertise<nav_msgs::Odometry>("/mobile_base_controller/odom", 10);
     ground_truth_pub_ = nh_.advertise<nav_msgs::Odometry>("/ground_truth_odom", 10);
     imu_pub_ = nh_.advertise<sensor_msgs::Imu>(kImuTopic, 10);
-    cmd_vel_sub_ =
-        nh_.subscribe("/mobile_base_controller/cmd_vel", 1, &PhysicsNode::on_cmd_vel, this);
-    world_state_sub_ = nh_.subscribe("/sim/world_state", 1, &PhysicsNode::on_world_state, this);
+    diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+    declare_inputs();
+    cmd_vel_sub_ = nh_.subscribe(kCmdVelTopic, kCheckedInputQueue, &PhysicsNode::on_cmd_vel, this);
+    world_state_sub_ = nh_.subscribe(kWorldStateTopic, 1, &PhysicsNode::on_world_state, this);
     for (const auto& controller : physics_->controllers()) {
       controllers_.push_back(
           std::make_unique<ControllerInterface>(nh_, *controller, *physics_, clock_));
@@ -111,6 +118,22 @@ class PhysicsNode {
   }
 
  private:
+  static constexpr const char* kCmdVelTopic = "/mobile_base_controller/cmd_vel";
+  static constexpr const char* kWorldStateTopic = "/sim/world_state";
+  // Faster than a sprinter and a pirouette: nobody in a world of people walking and standing.
+  static constexpr double kMaxPersonSpeedMps = 10.0;
+  static constexpr double kMaxPersonTurnRps = 20.0;
+
+  void declare_inputs() {
+    for (const char* field : {"linear.x", "angular.z"}) {
+      inputs_.declare_drop(kCmdVelTopic, field);
+    }
+    for (const char* field : {"humans[].pose", "humans[].velocity", "humans[].gaze.direction"}) {
+      inputs_.declare_drop(kWorldStateTopic, field);
+    }
+    inputs_.declare_clamp(kCmdVelTopic);
+  }
+
   // Own clock: advance one /clock tick at a time, paced at the real-time factor.
   void run_on_own_clock() {
     const double tick_s = 1.0 / kClockRateHz;
@@ -201,8 +224,10 @@ class PhysicsNode {
     if (clamps > reported_clamps_) {
       ROS_WARN_THROTTLE(5.0, "cmd_vel beyond ARI's limits was scaled down (%lu so far)",
                         static_cast<unsigned long>(clamps));
+      inputs_.add_clamps(kCmdVelTopic, clamps - reported_clamps_);
       reported_clamps_ = clamps;
     }
+    inputs_.publish_when_due(diagnostics_pub_, stamp);
     if (physics_->diagnostics().nan_resets > 0) {
       ROS_ERROR_THROTTLE(5.0, "physics blew up and was reset %lu times",
                          static_cast<unsigned long>(physics_->diagnostics().nan_resets));
@@ -270,16 +295,45 @@ class PhysicsNode {
   }
 
   void on_cmd_vel(const geometry_msgs::Twist& twist) {
-    if (!std::isfinite(twist.linear.x) || !std::isfinite(twist.angular.z)) {
-      ROS_WARN_THROTTLE(5.0, "cmd_vel ignored: values must be finite");
-      return;
+    const bool linear_ok = inputs_.finite(kCmdVelTopic, "linear.x", twist.linear.x);
+    const bool angular_ok = inputs_.finite(kCmdVelTopic, "angular.z", twist.angular.z);
+    if (linear_ok && angular_ok) {
+      physics_->command_base(twist.linear.x, twist.angular.z);
     }
-    physics_->command_base(twist.linear.x, twist.angular.z);
   }
 
-  void on_world_state(const WorldState& state) {
+  // A person whose numbers are not finite, who stands far outside any map or who moves faster
+  // than anyone runs is left out of this update: the physics moves people on at their reported
+  // velocity, and one at 1e300 m/s would leave the world's numbers in a step. The world's own
+  // checks never let one through; a bag replay or a second publisher might.
+  bool plausible(const HumanState& human) {
+    const std::string problem =
+        model::pose_problem({{human.pose.x, human.pose.y}, human.pose.theta});
+    if (!problem.empty()) {
+      inputs_.drop(kWorldStateTopic, "humans[].pose", problem);
+      return false;
+    }
+    const double speed = std::hypot(human.velocity.linear.x, human.velocity.linear.y);
+    const double turn = std::abs(human.velocity.angular.z);
+    if (!(speed <= kMaxPersonSpeedMps && turn <= kMaxPersonTurnRps)) {
+      inputs_.drop(kWorldStateTopic, "humans[].velocity",
+                   core::format_text("%g m/s, %g rad/s, expected at most %g m/s and %g rad/s",
+                                     speed, turn, kMaxPersonSpeedMps, kMaxPersonTurnRps));
+      return false;
+    }
+    return inputs_.finite(kWorldStateTopic, "humans[].gaze.direction", human.gaze.direction);
+  }
+
+  void on_world_state(const ros::MessageEvent<const WorldState>& event) {
+    if (!state_publisher_.accept(event.getPublisherName())) {
+      return;
+    }
+    const WorldState& state = *event.getConstMessage();
     std::vector<physics::PersonState> people;
     for (const HumanState& human : state.humans) {
+      if (!plausible(human)) {
+        continue;
+      }
       physics::PersonState person;
       person.id = human.id;
       person.pose = {{human.pose.x, human.pose.y}, human.pose.theta};
@@ -308,8 +362,12 @@ class PhysicsNode {
   uint64_t reported_clamps_{0};
 
   ros::NodeHandle nh_;
-  ros::Publisher clock_pub_, joint_state_pub_, odom_pub_, ground_truth_pub_, imu_pub_;
+  ros::Publisher clock_pub_, joint_state_pub_, odom_pub_, ground_truth_pub_, imu_pub_,
+      diagnostics_pub_;
   ros::Subscriber cmd_vel_sub_, world_state_sub_;
+  InputCounters inputs_{"ari_physics_node"};
+  // world_node's alone: a second world_node's people are refused.
+  SinglePublisher state_publisher_{kWorldStateTopic, &inputs_};
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   // Point-head targets may be people's frames, which come and go with perception's ids.
   RenewingTfBuffer tf_;

@@ -62,11 +62,13 @@ class SocialMpcNode {
     status_pub_ = nh_.advertise<std_msgs::String>("/social_mpc/status", 1, /*latch=*/true);
     diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     map_sub_ = nh_.subscribe("/map", 1, &SocialMpcNode::on_map, this);
-    odom_sub_ = nh_.subscribe("/mobile_base_controller/odom", 1, &SocialMpcNode::on_odom, this);
-    joints_sub_ = nh_.subscribe("/joint_states", 1, &SocialMpcNode::on_joints, this);
+    odom_sub_ = nh_.subscribe("/mobile_base_controller/odom", kCheckedInputQueue,
+                              &SocialMpcNode::on_odom, this);
+    joints_sub_ =
+        nh_.subscribe("/joint_states", kCheckedInputQueue, &SocialMpcNode::on_joints, this);
     groups_sub_ = nh_.subscribe("/humans/interactions/groups", 20, &SocialMpcNode::on_group, this);
-    simple_goal_sub_ =
-        nh_.subscribe("/move_base_simple/goal", 1, &SocialMpcNode::on_simple_goal, this);
+    simple_goal_sub_ = nh_.subscribe("/move_base_simple/goal", kCheckedInputQueue,
+                                     &SocialMpcNode::on_simple_goal, this);
     move_base_.registerGoalCallback([this](MoveBaseServer::GoalHandle h) { on_move_base(h); });
     move_base_.registerCancelCallback(
         [this](MoveBaseServer::GoalHandle h) { on_cancel(h.getGoalID()); });

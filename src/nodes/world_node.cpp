@@ -119,13 +119,16 @@ class WorldNode {
       // The head's joint states come from here only in 2D mode; in 3D mode ari_physics_node
       // publishes /joint_states and this node reads them.
       joint_states_pub_ = nh_.advertise<sensor_msgs::JointState>("/joint_states", 10);
-      cmd_vel_sub_ = nh_.subscribe(kCmdVelTopic, 1, &WorldNode::on_cmd_vel, this);
-      head_sub_ = nh_.subscribe(kHeadCommandTopic, 1, &WorldNode::on_head_command, this);
+      cmd_vel_sub_ = nh_.subscribe(kCmdVelTopic, kCheckedInputQueue, &WorldNode::on_cmd_vel, this);
+      head_sub_ =
+          nh_.subscribe(kHeadCommandTopic, kCheckedInputQueue, &WorldNode::on_head_command, this);
     } else {
       // 3D mode: ari_physics_node drives ARI and publishes its odometry and tf; the 2D body
       // follows its ground truth and head pan.
-      ground_truth_sub_ = nh_.subscribe(kGroundTruthTopic, 1, &WorldNode::on_ground_truth, this);
-      joint_state_sub_ = nh_.subscribe(kJointStatesTopic, 1, &WorldNode::on_joint_states, this);
+      ground_truth_sub_ =
+          nh_.subscribe(kGroundTruthTopic, kCheckedInputQueue, &WorldNode::on_ground_truth, this);
+      joint_state_sub_ =
+          nh_.subscribe(kJointStatesTopic, kCheckedInputQueue, &WorldNode::on_joint_states, this);
     }
 
     services_.push_back(nh_.advertiseService("/sim/spawn_human", &WorldNode::spawn_human, this));

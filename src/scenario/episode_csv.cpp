@@ -80,6 +80,27 @@ bool read_unsigned(const std::string& text, uint64_t& value) {
   return true;
 }
 
+// `name=seconds;...` in order; a state that re-entered itself N times in a row as `name*N`, and
+// the visits past the runner's record as one `(N more)`.
+std::string states_field(const ScriptRunner& runner, double end_time_s) {
+  const auto& visits = runner.visits();
+  const double recorded_until_s =
+      runner.unrecorded_visits() > 0 ? runner.unrecorded_from_s() : end_time_s;
+  std::string field;
+  for (size_t i = 0; i < visits.size(); ++i) {
+    const double end_s = i + 1 < visits.size() ? visits[i + 1].enter_s : recorded_until_s;
+    const std::string repeats =
+        visits[i].entries > 1 ? "*" + std::to_string(visits[i].entries) : "";
+    field += (i == 0 ? "" : ";") + visits[i].state + repeats + "=" +
+             number(end_s - visits[i].enter_s, 2);
+  }
+  if (runner.unrecorded_visits() > 0) {
+    field += ";(" + std::to_string(runner.unrecorded_visits()) +
+             " more)=" + number(end_time_s - recorded_until_s, 2);
+  }
+  return field;
+}
+
 }  // namespace
 
 EpisodeSummary EpisodeSummary::of(const std::string& scenario, uint64_t episode, uint64_t seed,
@@ -93,12 +114,7 @@ EpisodeSummary EpisodeSummary::of(const std::string& scenario, uint64_t episode,
   if (runner.outcome()) {
     summary.outcome = *runner.outcome();
   }
-  const auto& visits = runner.visits();
-  for (size_t i = 0; i < visits.size(); ++i) {
-    const double end_s = i + 1 < visits.size() ? visits[i + 1].enter_s : summary.outcome.end_time_s;
-    summary.states +=
-        (i == 0 ? "" : ";") + visits[i].state + "=" + number(end_s - visits[i].enter_s, 2);
-  }
+  summary.states = states_field(runner, summary.outcome.end_time_s);
   summary.metrics = metrics;
   for (const TranscriptLine& line : runner.transcript().lines()) {
     ++summary.utterances;

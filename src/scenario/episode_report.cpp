@@ -15,7 +15,13 @@ std::string format_report(const std::string& scenario_name, const ScriptRunner& 
   }
   report += "states:";
   for (const StateVisit& visit : runner.visits()) {
-    report += " " + visit.state + core::format_text(" %.2f s,", visit.enter_s);
+    report +=
+        " " + visit.state + core::format_text(" %.2f s", visit.enter_s) +
+        (visit.entries > 1 ? " (re-entered " + std::to_string(visit.entries - 1) + "x)" : "") + ",";
+  }
+  if (runner.unrecorded_visits() > 0) {
+    report += core::format_text(" and %zu more from %.2f s,", runner.unrecorded_visits(),
+                                runner.unrecorded_from_s());
   }
   if (!runner.visits().empty()) {
     report.pop_back();

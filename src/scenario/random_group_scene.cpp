@@ -11,6 +11,7 @@
 #include "ari_social_sim/core/number_text.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/core/rng_streams.hpp"
+#include "ari_social_sim/scenario/script_time_limit.hpp"
 #include "ari_social_sim/world/formation_layout.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 
@@ -258,13 +259,17 @@ void RandomGroupSceneSpec::validate() const {
          "(" + core::number_text(area_min.x()) + ", " + core::number_text(area_min.y()) + ") to (" +
              core::number_text(area_max.x()) + ", " + core::number_text(area_max.y()) + ")");
   }
-  for (const auto& [field, value] :
-       {std::pair{"min_centre_distance", min_centre_distance_m},
-        std::pair{"waypoint_distance", waypoint_distance_m},
-        std::pair{"goal_timeout", goal_timeout_s}, std::pair{"duration", duration_s}}) {
+  for (const auto& [field, value] : {std::pair{"min_centre_distance", min_centre_distance_m},
+                                     std::pair{"waypoint_distance", waypoint_distance_m},
+                                     std::pair{"goal_timeout", goal_timeout_s}}) {
     if (!(value > 0.0 && std::isfinite(value))) {
       fail(field, "a finite number > 0", core::number_text(value));
     }
+  }
+  if (!script_time_limit_bounds().contains(duration_s)) {
+    fail("duration",
+         "a number " + script_time_limit_bounds().describe() + " (the script's time limit)",
+         core::number_text(duration_s));
   }
   for (const auto& [field, value] : {std::pair{"position_jitter", position_jitter_m},
                                      std::pair{"heading_jitter", heading_jitter_rad}}) {

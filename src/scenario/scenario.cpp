@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/scenario/script_time_limit.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -108,7 +109,7 @@ class ScriptReader {
 
   Script read(const core::YamlMap& map) {
     Script script;
-    script.time_limit_s = map.required<double>("time_limit", core::positive());
+    script.time_limit_s = map.required<double>("time_limit", script_time_limit_bounds());
     for (const core::YamlMap& entry : map.list("random_groups", true)) {
       script.random_groups.push_back(read_random_group(entry));
     }

@@ -195,8 +195,20 @@ void ScriptRunner::enter(size_t state, const Observations& observations, Command
   state_ = state;
   state_enter_s_ = now_s_;
   finished_in_state_.clear();
-  visits_.push_back({scenario_.script.states[state].name, now_s_});
+  record_visit(scenario_.script.states[state].name);
   run(scenario_.script.states[state].on_enter, observations, commands);
+}
+
+void ScriptRunner::record_visit(const std::string& state) {
+  // A re-entry of the last recorded state, unless visits past the record came between.
+  if (unrecorded_visits_ == 0 && !visits_.empty() && visits_.back().state == state) {
+    ++visits_.back().entries;
+  } else if (visits_.size() < kMaxRecordedVisits) {
+    visits_.push_back({state, now_s_});
+  } else {
+    unrecorded_from_s_ = unrecorded_visits_ == 0 ? now_s_ : unrecorded_from_s_;
+    ++unrecorded_visits_;
+  }
 }
 
 bool ScriptRunner::holds(const Condition& condition, const Observations& observations) const {

@@ -109,7 +109,8 @@ std::vector<Shot> shots() {
   // Overview: ARI faces north-west towards the middle rows of chairs; two people talk in front
   // of it (one speaking, one in a mask), one walks past on its left and two wait nearby.
   Shot overview{"", {{6.0, 2.6}, 2.0}, 0.15, 0.05, {}};
-  overview.people = {person(1, 34, Gender::kFemale, false, {{5.1, 4.2}, -0.9}, -1.1, {}, true),
+  overview.people = {person(1, 34, Gender::kFemale, false, {{5.1, 4.2}, -0.9}, -1.1,
+                            Eigen::Vector2d::Zero(), true),
                      person(2, 61, Gender::kMale, true, {{4.5, 3.7}, 0.2}, 0.5),
                      person(3, 27, Gender::kMale, false, {{4.3, 2.0}, 1.6}, 1.6, {0.0, 1.2}),
                      person(4, 45, Gender::kFemale, false, {{7.2, 0.9}, 2.3}, 2.5),
@@ -123,7 +124,8 @@ std::vector<Shot> shots() {
         centre + 0.6 * Eigen::Vector2d(std::cos(bearings[i]), std::sin(bearings[i]));
     const double to_centre = bearings[i] + M_PI;
     group.people.push_back(person(11 + i, 30.0 + 12 * i, i == 1 ? Gender::kMale : Gender::kFemale,
-                                  false, {at, to_centre}, to_centre, {}, i == 0));
+                                  false, {at, to_centre}, to_centre, Eigen::Vector2d::Zero(),
+                                  i == 0));
   }
   // Someone walking across ARI's view at 1.2 m/s, 3.5 m ahead.
   Shot walking{"walking", {{6.0, 4.0}, M_PI}, 0.0, 0.15, {}};

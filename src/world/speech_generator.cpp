@@ -1,5 +1,6 @@
 #include "ari_social_sim/world/speech_generator.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -55,6 +56,45 @@ void check_no_control_characters(const std::string& field, const std::string& te
   }
 }
 
+// Throws core::RequestError unless `act` is one act or several in the notations the suite uses:
+// a name with optional bracketed arguments (QUESTION:TIME, greet(), request(location(toilet)),
+// inform(time=now)), several separated by `;` or `,` and at most one space (the dialogue writes
+// `greet(); request(...)`). Consumers match acts against patterns and split them at the
+// separators: a stray space, quote or bracket would make an act that no pattern can name.
+void check_act_grammar(const std::string& act) {
+  const auto refuse = [&act](const std::string& what, size_t at) {
+    throw core::RequestError(
+        "say: act: expected acts such as QUESTION:TIME or greet(); request(location(toilet)): "
+        "letters, digits and _:=,.*'- with balanced brackets, separated by '; ', got '" +
+        act + "' (" + what + " at offset " + std::to_string(at) + ")");
+  };
+  int depth = 0;
+  bool act_start = true;  // the next character begins an act: a letter
+  for (size_t i = 0; i < act.size(); ++i) {
+    const char c = act[i];
+    if (act_start && !std::isalpha(static_cast<unsigned char>(c))) {
+      refuse("an act that does not start with a letter", i);
+    }
+    act_start = false;
+    if (depth == 0 && (c == ';' || c == ',')) {
+      i += i + 1 < act.size() && act[i + 1] == ' ' ? 1 : 0;
+      act_start = true;
+    } else if (c == '(') {
+      ++depth;
+    } else if (c == ')' && --depth < 0) {
+      refuse("a ')' without its '('", i);
+    } else if (!std::isalnum(static_cast<unsigned char>(c)) && !std::strchr("_:=,.*'-()", c)) {
+      refuse(std::string("the character '") + c + "'", i);
+    }
+  }
+  if (depth != 0) {
+    refuse("an unclosed '('", act.size());
+  }
+  if (act_start) {
+    refuse("no act after the last separator", act.size());
+  }
+}
+
 }  // namespace
 
 void SpeechGenerator::say(const std::string& act, const std::string& content, double now_s) {
@@ -77,6 +117,7 @@ void SpeechGenerator::say(const std::string& act, const std::string& content, do
   if (act.empty()) {
     throw core::RequestError("say: act is empty (e.g. QUESTION:TIME)");
   }
+  check_act_grammar(act);
   if (is_speaking()) {
     finish(now_s, true);
   }

@@ -129,5 +129,26 @@ TEST_F(SpokenDialogueTest, SameSeedSameDialogue) {
   EXPECT_EQ(voiced[0], voiced[1]);
 }
 
+// /sim/reset sends the world's clock back: the dialogue under way ends there, truncated, and the
+// next one starts a dialogue_pause later on the new clock, not when the old clock would have
+// come round again (at 20 minutes into a run, 20 minutes of silence).
+TEST_F(SpokenDialogueTest, AClockThatGoesBackEndsTheDialogueAndStartsTheNextAPauseLater) {
+  SpokenDialogue dialogue(*setup, *nlu, run_config, stage);
+  run(dialogue, 600.0);
+  ASSERT_TRUE(dialogue.dialogue_active()) << "no dialogue under way at 600 s";
+  stage.now = 1.0;  // the reset
+  const SpokenDialogueEvents after = run(dialogue, 30.0);
+  ASSERT_FALSE(after.outcomes.empty());
+  const OutcomeEvent& cut_off = after.outcomes[0];
+  EXPECT_NEAR(cut_off.stamp_s, 1.0, 1e-9);
+  EXPECT_TRUE(cut_off.truncated);
+  EXPECT_FALSE(cut_off.success);
+  ASSERT_FALSE(after.utterances.empty()) << "silence after the reset";
+  const UtteranceEvent& first = after.utterances[0];
+  EXPECT_EQ(first.dialogue, cut_off.dialogue + 1);
+  EXPECT_GE(first.stamp_s, 1.0 + run_config.dialogue_pause_s - 1e-9);
+  EXPECT_LT(first.stamp_s, 1.0 + run_config.dialogue_pause_s + 5.0);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::dialogue

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """rostest, must-show 1 of issue 13 (fuzz.test): seeded requests and messages built from random,
 extreme and non-finite values, sent to a running world_node, hri_perception_node,
-group_detection_node, social_mpc_node and dialogue_node (world and rl_env modes).
+group_detection_node, social_mpc_node and dialogue_node (world and rl_env modes), and hostile
+transforms on /tf (the robot's chain and the people's body frames) that social_mpc_node and
+hri_perception_node read.
 
 Each request or message is a valid one with one field replaced: a leaf of the message (a number,
 a string, a flag, an array's length or one of its items) takes a value drawn from that type's
@@ -20,17 +22,17 @@ import unittest
 from collections import Counter
 
 import actionlib
-import genpy
 import rosnode
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
 from diagnostic_msgs.msg import DiagnosticArray
-from geometry_msgs.msg import Pose2D, PoseStamped, Twist
+from geometry_msgs.msg import Pose2D, PoseStamped, TransformStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid, Odometry
 from sensor_msgs.msg import JointState
 from std_srvs.srv import SetBool, Trigger
+from tf2_msgs.msg import TFMessage
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from ari_social_sim.msg import (ApproachAction, ApproachGoal, Group, IdsList, TtsAction, TtsGoal,
@@ -40,84 +42,15 @@ from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup
                                 SetGazeTargets, SetGoal, SetGroupArrangement, SetGroupCentre,
                                 SetPose, SetReaction, SetVelocity, SpawnHuman, StepSimulation)
 
+from fuzz_values import mutate
+
 SEED = 20261124
 SERVICE_REQUESTS = 1100
 TOPIC_MESSAGES = 600
+TF_MESSAGES = 300
 ACTION_GOALS = 90
 NODES = ["/world_node", "/hri_perception", "/group_detection", "/social_mpc_node",
          "/dialogue_node", "/dialogue_rl"]
-
-FLOATS = [float("nan"), float("inf"), -float("inf"), 1e300, -1e300, 1e-300, 0.0, -1.0, 1e6,
-          -1e6, 3.4e38]
-FLOATS32 = [float("nan"), float("inf"), -float("inf"), 3.4e38, -3.4e38, 1e-38, 0.0, -1.0, 1e6]
-STRINGS = ["", " ", "x" * 5000, "h\u00e9llo \u4f60\u597d", "\n\t", "human10", "../../etc/passwd",
-           "anonymous_person_abcde", "QUESTION:TIME", "%s%s%n", "g1"]
-INT_LIMITS = {"int8": (-2**7, 2**7 - 1), "uint8": (0, 2**8 - 1), "int16": (-2**15, 2**15 - 1),
-              "uint16": (0, 2**16 - 1), "int32": (-2**31, 2**31 - 1), "uint32": (0, 2**32 - 1),
-              "int64": (-2**63, 2**63 - 1), "uint64": (0, 2**64 - 1)}
-
-
-def leaves(msg, path=""):
-    """(path, type, parent, slot or index) of every scalar of `msg`, and of each array itself."""
-    found = []
-    for slot, slot_type in zip(msg.__slots__, msg._slot_types):
-        value = getattr(msg, slot)
-        name = path + slot
-        if slot_type.endswith("]"):
-            if slot_type.endswith("[]"):  # a fixed-size array (a covariance) keeps its length
-                found.append((name + "[]", "array", msg, slot))
-            item_type = slot_type[:slot_type.index("[")]
-            if item_type in ("uint8", "char"):  # bytes: only the length is fuzzed
-                continue
-            # Every item of a message array; the ends of a long array of numbers (a map's cells).
-            indices = range(len(value)) if len(value) <= 50 else (0, len(value) - 1)
-            if not isinstance(value, list):
-                value = list(value)
-                setattr(msg, slot, value)
-            for i in indices:
-                item = value[i]
-                if hasattr(item, "__slots__"):
-                    found += leaves(item, "%s[%d]." % (name, i))
-                else:
-                    found.append(("%s[%d]" % (name, i), item_type, value, i))
-        elif hasattr(value, "__slots__") and slot_type not in ("time", "duration"):
-            found += leaves(value, name + ".")
-        else:
-            found.append((name, slot_type, msg, slot))
-    return found
-
-
-def hostile(rng, kind, current):
-    if kind in ("float32", "float64"):
-        return rng.choice((FLOATS32 if kind == "float32" else FLOATS) + [rng.uniform(-100, 100)])
-    if kind in INT_LIMITS:
-        low, high = INT_LIMITS[kind]
-        return rng.choice([low, high, 0, 1, rng.randint(low, high)])
-    if kind == "string":
-        return rng.choice(STRINGS)
-    if kind == "bool":
-        return not current
-    if kind in ("time", "duration"):
-        cls = genpy.Time if kind == "time" else genpy.Duration
-        return cls(rng.choice([0, 1, 2**31 - 1]), rng.choice([0, 999999999]))
-    return current
-
-
-def mutate(rng, msg):
-    """`msg` with one leaf (or one array's length) replaced by a hostile value; the leaf's path."""
-    path, kind, parent, key = rng.choice(leaves(msg))
-    if kind == "array":
-        items = getattr(parent, key)
-        template = items[0] if items else None
-        length = rng.choice([0, 1, 3, 300])
-        setattr(parent, key, [] if template is None else [template] * length)
-        return path
-    if isinstance(parent, list):
-        parent[key] = hostile(rng, kind, parent[key])
-    else:
-        setattr(parent, key, hostile(rng, kind, getattr(parent, key)))
-    return path
-
 
 class World:
     """The world as /map and /sim/world_state show it, for valid baselines and the final check."""
@@ -131,6 +64,12 @@ class World:
         self.lock = threading.Lock()
         self.state = None
         rospy.Subscriber("/sim/world_state", WorldState, self.on_state, queue_size=1)
+        self.bodies = ["abcde"]
+        rospy.Subscriber("/humans/bodies/tracked", IdsList, self.on_bodies, queue_size=1)
+
+    def on_bodies(self, msg):
+        if msg.ids:
+            self.bodies = list(msg.ids)
 
     def on_state(self, msg):
         if msg._connection_header.get("callerid") != "/world_node":
@@ -225,6 +164,19 @@ def topic_baselines(rng, world):
     }
 
 
+def tf_baseline(rng, world):
+    """A valid transform the nodes read: the robot's chain, or a person's body frame."""
+    person = "body_" + rng.choice(world.bodies)
+    parent, child = rng.choice([("map", "odom"), ("odom", "base_footprint"), ("map", person),
+                                ("base_footprint", person)])
+    transform = TransformStamped()
+    transform.header.stamp = rospy.Time.now()
+    transform.header.frame_id, transform.child_frame_id = parent, child
+    transform.transform.translation.x = rng.uniform(-2.0, 2.0)
+    transform.transform.rotation.w = 1.0
+    return transform
+
+
 class Fuzz(unittest.TestCase):
     def test_hostile_input_leaves_every_node_up_and_the_world_finite(self):
         rng = random.Random(SEED)
@@ -278,6 +230,17 @@ class Fuzz(unittest.TestCase):
                 publishers[topic] = rospy.Publisher(topic, type(msg), queue_size=100)
                 time.sleep(0.5)  # connected before the first message
             publishers[topic].publish(msg)
+            time.sleep(0.002)
+
+        # tf: each transform valid but for one hostile field (a stamp, a frame, a coordinate).
+        tf_publisher = rospy.Publisher("/tf", TFMessage, queue_size=100)
+        time.sleep(0.5)
+        for _ in range(TF_MESSAGES):
+            transform = tf_baseline(rng, world)
+            field = mutate(rng, transform)
+            sent["/tf %r->%r %s" % (transform.header.frame_id[:20],
+                                    transform.child_frame_id[:20], field)] += 1
+            tf_publisher.publish(TFMessage([transform]))
             time.sleep(0.002)
 
         # Actions: move_base, /social_mpc/approach and /tts goals.

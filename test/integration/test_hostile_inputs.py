@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Must-show 4 of issue 28: rogue transforms, a second world publisher, a reset late in a run."""
 
 import math
@@ -11,7 +11,7 @@ import rostest
 import tf2_msgs.msg
 import tf2_ros
 from diagnostic_msgs.msg import DiagnosticArray
-from geometry_msgs.msg import Pose2D, TransformStamped
+from geometry_msgs.msg import Pose2D, TransformStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid
 from rosgraph_msgs.msg import Clock, Log
@@ -28,6 +28,8 @@ NUDGE = (3.3, 3.4)  # a short goal from GOAL, Ana's place (moved or not) in view
 GHOST_RADIUS_M = 0.7  # of a body frame; a personal-space ring's centre lies ahead of the person:
 RING_GHOST_RADIUS_M = 1.0
 LATE_S = 60.0  # sim time the run reaches before the reset
+CMD_VEL_DROPS = "dropped /mobile_base_controller/cmd_vel linear.x"
+FLOOD_MESSAGES, FLOOD_BURST = 3000, 100  # NaN commands, sent 100 at a time every 0.1 s (1 kHz)
 
 
 def transform(parent, child, x):
@@ -62,6 +64,7 @@ class HostileInputs(unittest.TestCase):
         cls.rings = []  # centres of social_mpc's personal-space rings
         cls.errors = []  # (node, text) of ERROR and above
         cls.tf_drops = {}  # social_mpc_node's "dropped tf ..." counters
+        cls.cmd_vel_drops = None  # world_node's count of NaN linear.x in cmd_vel
         rospy.Subscriber("/humans/bodies/tracked", IdsList, cls.on_bodies)
         rospy.Subscriber("/social_mpc/markers", MarkerArray, cls.on_markers)
         rospy.Subscriber("/rosout", Log, cls.on_log)
@@ -98,10 +101,11 @@ class HostileInputs(unittest.TestCase):
     @classmethod
     def on_diagnostics(cls, msg):
         for status in msg.status:
-            if status.name.startswith("social_mpc_node"):
-                for kv in status.values:
-                    if kv.key.startswith("dropped tf"):
-                        cls.tf_drops[kv.key] = int(kv.value)
+            for kv in status.values:
+                if status.name.startswith("social_mpc_node") and kv.key.startswith("dropped tf"):
+                    cls.tf_drops[kv.key] = int(kv.value)
+                if status.name.startswith("world_node") and kv.key == CMD_VEL_DROPS:
+                    cls.cmd_vel_drops = int(kv.value)
 
     def drive_to(self, xy, timeout_s=40.0):
         """Sim seconds the goal took."""
@@ -238,6 +242,34 @@ class HostileInputs(unittest.TestCase):
         self.assertEqual(ghost_bodies, [], "perception still places a body there")
         self.assertGreater(len(self.placed), 0, "perception places nobody after the reset")
         self.assertLess(after, 1.5 * before)
+
+    def test_4_a_flood_of_bad_commands_is_counted_whole(self):
+        """Every NaN cmd_vel of a 1 kHz flood is counted on /diagnostics, not only those that
+        reached the callback once a spin (160 of 6,054 with a queue of one)."""
+        deadline = time.time() + 10.0
+        while self.cmd_vel_drops is None and time.time() < deadline:
+            time.sleep(0.1)
+        self.assertIsNotNone(self.cmd_vel_drops, "world_node publishes no cmd_vel counter")
+        before = self.cmd_vel_drops
+        publisher = rospy.Publisher("/mobile_base_controller/cmd_vel", Twist,
+                                    queue_size=FLOOD_MESSAGES)
+        deadline = time.time() + 10.0
+        while publisher.get_num_connections() == 0 and time.time() < deadline:
+            time.sleep(0.05)
+        nan = Twist()
+        nan.linear.x = float("nan")
+        for _ in range(FLOOD_MESSAGES // FLOOD_BURST):
+            for _ in range(FLOOD_BURST):
+                publisher.publish(nan)
+            time.sleep(0.1)
+        deadline = time.time() + 15.0
+        while self.cmd_vel_drops - before < FLOOD_MESSAGES and time.time() < deadline:
+            time.sleep(0.2)
+        counted = self.cmd_vel_drops - before
+        print("[hostile] NaN cmd_vel sent at 1 kHz: %d, counted by world_node: %d"
+              % (FLOOD_MESSAGES, counted))
+        publisher.unregister()
+        self.assertEqual(counted, FLOOD_MESSAGES)
 
     @staticmethod
     def goal_pose(xy):

@@ -167,7 +167,7 @@ TEST(Scenario, SceneErrorsNameTheSceneEntry) {
 TEST(Scenario, ScriptStructureErrorsNameTheEntry) {
   expect_rejected("  start: s\n  states: [{name: s}]\n", {"script.time_limit", "required"});
   expect_rejected("  time_limit: -1\n  start: s\n  states: [{name: s}]\n",
-                  {"script.time_limit", "> 0", "-1"});
+                  {"script.time_limit", "(0, 86400]", "-1"});
   expect_rejected("  time_limit: 5\n  start: s\n  states: []\n",
                   {"script.states", "at least one state"});
   expect_rejected("  time_limit: 5\n  start: x\n  states: [{name: s}]\n",

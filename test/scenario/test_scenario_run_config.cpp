@@ -48,7 +48,7 @@ TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
   world::test::expect_config_error([] { read("{scenario: a, server_timeout: 0}"); }, source,
                                    {"server_timeout", "> 0", "0"});
   world::test::expect_config_error([] { read("{scenario: a, time_limit: 0}"); }, source,
-                                   {"time_limit", "> 0", "0"});
+                                   {"time_limit", "(0, 86400]", "0"});
   world::test::expect_config_error([] { read("{scenario: a, time_limit: abc}"); }, source,
                                    {"time_limit", "abc"});
   world::test::expect_config_error([] { read("{scenario: a, wall_time_limit: -1}"); }, source,

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/scenario/episode_csv.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 
 namespace ari_social_sim::scenario {
@@ -365,6 +366,59 @@ TEST(ScriptRunner, ActPatterns) {
   EXPECT_TRUE(act_matches("inform*", "inform(location(toilet))"));
   EXPECT_FALSE(act_matches("inform*", "request(location(toilet))"));
   EXPECT_TRUE(act_matches("*", "anything"));
+}
+
+
+// What an hour-long run of `states` (starting at state a) keeps of its visits.
+struct VisitRecord {
+  std::vector<StateVisit> visits;
+  size_t unrecorded{0};
+  std::string csv_states;
+};
+
+VisitRecord run_for_an_hour(const std::string& states) {
+  const Scenario s = inline_scenario("  time_limit: 3600\n  start: a\n  states:\n" + states);
+  ScriptRunner runner(s, 2);
+  RecordingCommands commands;
+  Stage stage;
+  while (!runner.finished()) {
+    stage.tick(runner, commands, 0.5);
+  }
+  return {runner.visits(), runner.unrecorded_visits(),
+          EpisodeSummary::of("inline", 0, 2, runner, {}, 1.0).states};
+}
+
+// A state that polls by re-entering itself every tick, for an hour of sim time: one visit with
+// its count, not 7,200; and a script that alternates between two states keeps only the first
+// kMaxRecordedVisits visits and counts the rest (a 30,000 s run once kept 174 MB of them).
+TEST(ScriptRunner, LoopingStatesKeepABoundedRecord) {
+  const std::string poll = "[{when: [{type: time_elapsed, seconds: 0.1}], next: ";
+  const VisitRecord looping =
+      run_for_an_hour("    - name: a\n      transitions: " + poll + "a}]\n");
+  ASSERT_EQ(looping.visits.size(), 1u);
+  EXPECT_EQ(looping.visits[0].entries, 7200u);  // the first entry, then one per tick after it
+  EXPECT_EQ(looping.unrecorded, 0u);
+  EXPECT_EQ(looping.csv_states, "a*7200=3600.00");
+
+  const VisitRecord alternating =
+      run_for_an_hour("    - name: a\n      transitions: " + poll + "b}]\n" +
+                      "    - name: b\n      transitions: " + poll + "a}]\n");
+  EXPECT_EQ(alternating.visits.size(), ScriptRunner::kMaxRecordedVisits);
+  EXPECT_EQ(alternating.unrecorded, 7200u - ScriptRunner::kMaxRecordedVisits);
+  EXPECT_LT(alternating.csv_states.size(), 10u * ScriptRunner::kMaxRecordedVisits);
+  const std::string tail = ";(6200 more)=3100.00";
+  ASSERT_GE(alternating.csv_states.size(), tail.size());
+  EXPECT_EQ(alternating.csv_states.substr(alternating.csv_states.size() - tail.size()), tail);
+}
+
+TEST(ScriptRunner, TimeLimitIsAtMostADay) {
+  try {
+    inline_scenario("  time_limit: 86401\n  start: a\n  states:\n    - name: a\n");
+    FAIL() << "a time_limit over a day was accepted";
+  } catch (const core::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("time_limit"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(0, 86400]"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

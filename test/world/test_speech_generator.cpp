@@ -77,5 +77,34 @@ TEST(SpeechGenerator, ContentAndActAreBounded) {
   EXPECT_EQ(speech.content(), words);  // the refused acts left the one in progress alone
 }
 
+// An act is what consumers match patterns against and split at `;`: one notation, checked.
+TEST(SpeechGenerator, ActsFollowTheSuitesNotation) {
+  SpeechGenerator speech(150.0);
+  for (const std::string act :
+       {"QUESTION:TIME", "greet()", "request(location(toilet))", "inform(time=now)",
+        "greet(); request(location(toilet))", "affirm(),inform(beverage(tea))", "confirm(*)"}) {
+    EXPECT_NO_THROW(speech.say(act, "hello", 0.0)) << act;
+  }
+  const std::pair<std::string, std::string> refused[] = {
+      {"two words", "the character ' ' at offset 3"},
+      {"greet(", "an unclosed '(' at offset 6"},
+      {"greet())", "a ')' without its '(' at offset 7"},
+      {"greet();", "no act after the last separator at offset 8"},
+      {"greet();  bye()", "an act that does not start with a letter at offset 9"},
+      {"(x)", "an act that does not start with a letter at offset 0"},
+      {"say\"hi\"", "the character '\"' at offset 3"},
+      {"tab\x7f", "expected no control characters, got byte 0x7f at offset 3"},
+  };
+  for (const auto& [act, why] : refused) {
+    try {
+      speech.say(act, "hello", 1.0);
+      ADD_FAILURE() << "accepted '" << act << "'";
+    } catch (const core::RequestError& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(speech.act(), "confirm(*)");  // the refused acts left the last one alone
+}
+
 }  // namespace
 }  // namespace ari_social_sim::world

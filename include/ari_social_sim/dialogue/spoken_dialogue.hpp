@@ -66,7 +66,9 @@ class SpokenDialogue {
   std::string request_robot(const std::string& text, double wait_before_speaking_s);
   /// Cancels ARI's current utterance; returns the words said so far ("" when none).
   std::string cancel_robot();
-  /// Advances everything to the stage's clock; call on every tick of the stage.
+  /// Advances everything to the stage's clock; call on every tick of the stage. A clock that
+  /// went back (the world was reset) ends the dialogue under way as truncated and restarts the
+  /// waits from the new time.
   void tick();
 
   /// The events since the previous call, which this call clears.
@@ -79,7 +81,11 @@ class SpokenDialogue {
   void start_dialogue(double now_s, Opening opening);
   void finish_robot(const std::string& said, double now_s);
   void report_utterance(int index, double stamp_s);
-  void report_outcome(double now_s);
+  /// Ends the dialogue under way; `cut_off` (by a reset) reports it truncated, neither complete
+  /// nor successful.
+  void end_dialogue(double now_s, bool cut_off);
+  void restart_clock(double now_s);
+  void report_outcome(double now_s, bool cut_off);
   std::string robot_words(size_t count) const;
 
   const DialogueSetup& setup_;
@@ -101,6 +107,10 @@ class SpokenDialogue {
   double robot_not_before_s_{0.0};
   double robot_start_s_{0.0};
   size_t robot_words_reported_{0};
+
+  /// Less than a world step: a clock that goes back by more was reset.
+  static constexpr double kTimeBackToleranceS = 1e-3;
+  double last_tick_s_{0.0};
 };
 
 }  // namespace ari_social_sim::dialogue

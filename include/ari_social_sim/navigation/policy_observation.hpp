@@ -71,6 +71,10 @@ class PolicyObservation {
              float* out) const;
 
  private:
+  void write_people(const core::Pose2& pose, const PerceivedScene& scene,
+                    const std::optional<Goal>& goal, float* at) const;
+  void write_occupancy(const core::Pose2& pose, const model::OccupancyGrid& map, float* at) const;
+
   PolicyObservationConfig config_;
   std::vector<ObservationField> fields_;
   int size_{0};

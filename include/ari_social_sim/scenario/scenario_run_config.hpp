@@ -6,6 +6,7 @@
 
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/scenario/script_time_limit.hpp"
 
 namespace ari_social_sim::scenario {
 
@@ -44,7 +45,7 @@ struct ScenarioRunConfig {
             "sim seconds after which the script ends as a failure, in place of the scenario "
             "file's script time_limit (a shorter run, or a failure on purpose: `time_limit:=3` "
             "of the scenario launches); unset: the file's",
-            core::positive());
+            script_time_limit_bounds());
     // The script's time_limit counts sim time, which stands still when the world is paused or
     // gone.
     v.field("wall_time_limit", wall_time_limit_s,

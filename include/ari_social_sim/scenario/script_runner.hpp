@@ -22,10 +22,12 @@ struct Outcome {
   bool interrupted{false};  // stopped from outside (SIGINT, shutdown): neither success nor failure
 };
 
-/// One entry into a state.
+/// One entry into a state, and the re-entries that followed it without leaving: a state whose
+/// transition leads back to itself (a polling loop) is one visit, however often it loops.
 struct StateVisit {
   std::string state;
   double enter_s{0.0};  // sim time since the script started
+  size_t entries{1};
 };
 
 /// Plays a scenario's script (D6.4's Script.step, §3.7, as a state machine) against any run
@@ -59,7 +61,14 @@ class ScriptRunner {
   const std::optional<Outcome>& outcome() const { return outcome_; }
   /// Name of the current state; empty until the start state is entered.
   const std::string& state() const;
+  /// The states entered, in order; at most kMaxRecordedVisits, then only counted.
   const std::vector<StateVisit>& visits() const { return visits_; }
+  /// Visits past kMaxRecordedVisits, not recorded one by one, and when the first of them began.
+  size_t unrecorded_visits() const { return unrecorded_visits_; }
+  double unrecorded_from_s() const { return unrecorded_from_s_; }
+  /// Bounds what a run keeps of a script that alternates between states for hours (every tick a
+  /// new visit, megabytes of history): far more than any script meant to finish goes through.
+  static constexpr size_t kMaxRecordedVisits = 1000;
   const Transcript& transcript() const { return transcript_; }
   /// How the dialogue with the simulated humans ended, once it has.
   const std::optional<DialogueEnd>& dialogue_end() const { return dialogue_end_; }
@@ -74,6 +83,7 @@ class ScriptRunner {
 
   void begin(const Observations& observations, Commands& commands);
   void enter(size_t state, const Observations& observations, Commands& commands);
+  void record_visit(const std::string& state);
   bool holds(const Condition& condition, const Observations& observations) const;
   /// Runs actions in order; false once the run has ended (stop or a refused command).
   bool run(const std::vector<Action>& actions, const Observations& observations,
@@ -96,6 +106,8 @@ class ScriptRunner {
   std::vector<SayAction> ari_says_;  // ARI's utterances asked for and not yet heard, in order
   size_t lines_labelled_{0};
   std::vector<StateVisit> visits_;
+  size_t unrecorded_visits_{0};
+  double unrecorded_from_s_{0.0};
   Transcript transcript_;
   std::optional<Conversation> conversation_;  // when the runner has the dialogue setup
   std::optional<DialogueEnd> dialogue_end_;

@@ -82,29 +82,10 @@ nav_msgs::Path plan_msg(const navigation::MpcSolution& plan, const std::string& 
   return path;
 }
 
-visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& navigator,
-                                                   bool active, const std::string& frame_id) {
-  visualization_msgs::MarkerArray out;
-  MarkerBuilder markers(frame_id, out);
-  markers.delete_all();
-  if (!active || !navigator.goal()) {
-    return out;
-  }
-  const navigation::Goal& goal = *navigator.goal();
-  const navigation::MpcProblem& problem = navigator.problem();
-  const navigation::PersonalSpaceParams& spaces = navigator.config().mpc.personal_space;
-  const std_msgs::ColorRGBA green = rgba(0.1f, 0.85f, 0.2f);
+namespace {
 
-  // Goal pose and what the head camera keeps in view.
-  markers.arrow("goal", 0, goal.pose.position.x(), goal.pose.position.y(), 0.05, goal.pose.theta,
-                0.5, green);
-  if (goal.look_at) {
-    Marker& target = markers.add("look_at", 0, Marker::SPHERE, green);
-    target.pose.position = at(*goal.look_at, 1.2);
-    target.scale.x = target.scale.y = target.scale.z = 0.15;
-  }
-
-  // The predicted footprint outline every few steps of the plan.
+// The predicted footprint outline every few steps of the plan.
+void add_plan_footprints(const navigation::Navigator& navigator, MarkerBuilder& markers) {
   const std::vector<Eigen::Vector2d> outline = navigator.footprint().outline(0.76);
   const std::vector<navigation::RobotState>& states = navigator.plan().states;
   for (size_t i = 0; i < states.size(); i += 4) {
@@ -118,9 +99,15 @@ visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& 
       box.points.push_back(at(pose.transform(outline[k % outline.size()]), 0.02));
     }
   }
+}
 
-  // Personal-space edges (farther ahead than behind; green for the person approached or the
-  // members joined, whose spaces ARI may enter) and o-space circles (green for the group joined).
+// Personal-space edges (farther ahead than behind; green for the person approached or the
+// members joined, whose spaces ARI may enter) and o-space circles (green for the group joined).
+void add_social_spaces(const navigation::Navigator& navigator, MarkerBuilder& markers) {
+  const navigation::Goal& goal = *navigator.goal();
+  const navigation::MpcProblem& problem = navigator.problem();
+  const navigation::PersonalSpaceParams& spaces = navigator.config().mpc.personal_space;
+  const std_msgs::ColorRGBA green = rgba(0.1f, 0.85f, 0.2f);
   int id = 0;
   for (const navigation::ProblemPerson& person : problem.people) {
     const bool is_target = goal.is_target(person.estimate.id);
@@ -148,20 +135,49 @@ visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& 
                    navigation::ospace_radius(group.estimate, spaces), 0.04,
                    group.is_target ? green : rgba(0.9f, 0.1f, 0.1f));
   }
+}
 
-  // Social cost density around ARI (rviz rejects an empty list, so none when all is clear).
+// Social cost density around ARI (rviz rejects an empty list, so none when all is clear).
+void add_social_cost(const navigation::Navigator& navigator, MarkerBuilder& markers) {
+  const navigation::MpcProblem& problem = navigator.problem();
   constexpr double kSpacing = 0.2;
-  const std::vector<navigation::CostSample> samples =
-      navigation::sample_social_cost(problem, spaces, problem.start.position, 5.0, kSpacing, 0.05);
-  if (!samples.empty()) {
-    Marker& cost = markers.add("social_cost", 0, Marker::CUBE_LIST, rgba(1, 1, 1));
-    cost.scale.x = cost.scale.y = kSpacing;
-    cost.scale.z = 0.01;
-    for (const navigation::CostSample& sample : samples) {
-      cost.points.push_back(at(sample.position, 0.01));
-      cost.colors.push_back(heat(sample.value));
-    }
+  const std::vector<navigation::CostSample> samples = navigation::sample_social_cost(
+      problem, navigator.config().mpc.personal_space, problem.start.position, 5.0, kSpacing, 0.05);
+  if (samples.empty()) {
+    return;
   }
+  Marker& cost = markers.add("social_cost", 0, Marker::CUBE_LIST, rgba(1, 1, 1));
+  cost.scale.x = cost.scale.y = kSpacing;
+  cost.scale.z = 0.01;
+  for (const navigation::CostSample& sample : samples) {
+    cost.points.push_back(at(sample.position, 0.01));
+    cost.colors.push_back(heat(sample.value));
+  }
+}
+
+}  // namespace
+
+visualization_msgs::MarkerArray navigation_markers(const navigation::Navigator& navigator,
+                                                   bool active, const std::string& frame_id) {
+  visualization_msgs::MarkerArray out;
+  MarkerBuilder markers(frame_id, out);
+  markers.delete_all();
+  if (!active || !navigator.goal()) {
+    return out;
+  }
+  const navigation::Goal& goal = *navigator.goal();
+  const std_msgs::ColorRGBA green = rgba(0.1f, 0.85f, 0.2f);
+  // Goal pose and what the head camera keeps in view.
+  markers.arrow("goal", 0, goal.pose.position.x(), goal.pose.position.y(), 0.05, goal.pose.theta,
+                0.5, green);
+  if (goal.look_at) {
+    Marker& target = markers.add("look_at", 0, Marker::SPHERE, green);
+    target.pose.position = at(*goal.look_at, 1.2);
+    target.scale.x = target.scale.y = target.scale.z = 0.15;
+  }
+  add_plan_footprints(navigator, markers);
+  add_social_spaces(navigator, markers);
+  add_social_cost(navigator, markers);
   return out;
 }
 
