@@ -76,6 +76,7 @@ while [[ $# -gt 0 ]]; do
     --base) base="$2"; shift ;;
     --build) build="$2"; shift ;;
     -j) jobs="$2"; shift ;;
+    -j[0-9]*) jobs="${1#-j}" ;;
     -*) echo "clang_tidy: unknown option $1" >&2; exit 2 ;;
     *) files+=("$1"); mode=files ;;
   esac

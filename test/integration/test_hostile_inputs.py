@@ -212,18 +212,16 @@ class HostileInputs(unittest.TestCase):
             self.assertLess(rospy.Time.now().to_sec(), LATE_S + 30.0,
                             "perception does not see Ana moved: %s" % self.placed)
             time.sleep(0.2)
-        self.rings = []
+        self.rings.clear()  # the class's list, which on_markers fills
         self.drive_to(NUDGE)
         rings_before = len(self.rings)
         seen_rings = [c for c in self.rings if near(c, ANA_MOVED, RING_GHOST_RADIUS_M)]
         late_s = rospy.Time.now().to_sec()
-        # (Not asserted: social_mpc_node draws rings only for the people in its scene during a
-        # cycle, which a short goal may not include; the count is printed.)
         self.tf_listener.unregister()  # it would complain about every transform after the reset
         reset = rospy.ServiceProxy("/sim/reset", Trigger)
         self.assertTrue(reset().success)
         time.sleep(1.0)
-        self.rings = []
+        self.rings.clear()  # the class's list, which on_markers fills
         after = self.drive_to(GOAL)
         self.drive_to(NUDGE)
         ghosts = [c for c in self.rings if near(c, ANA_MOVED, RING_GHOST_RADIUS_M)]
@@ -238,6 +236,8 @@ class HostileInputs(unittest.TestCase):
               "%d of %d after; bodies there after it: %s (tracked: %s)" %
               (len(seen_rings), rings_before, len(ghosts), len(self.rings), ghost_bodies,
                self.placed))
+        self.assertTrue(seen_rings, "social_mpc_node never drew Ana's personal space before the "
+                        "reset: the ghost check below would prove nothing")
         self.assertFalse(ghosts, "social_mpc_node still sees Ana where she stood before the reset")
         self.assertEqual(ghost_bodies, [], "perception still places a body there")
         self.assertGreater(len(self.placed), 0, "perception places nobody after the reset")
