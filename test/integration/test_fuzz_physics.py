@@ -35,6 +35,7 @@ from ari_social_sim.msg import (FollowJointTrajectoryAction, FollowJointTrajecto
                                 PointHeadAction, PointHeadGoal, WorldState)
 from ari_social_sim.srv import QueryTrajectoryState
 from fuzz_values import mutate
+from wall_clock import wait_wall
 
 SEED = 20261128
 GOALS = 160
@@ -45,15 +46,6 @@ PERSON_FRAME = "person_fuzz"  # a frame this test broadcasts, as perception does
 CAMERA_FRAME = "head_front_camera_color_optical_frame"
 TERMINAL = (GoalStatus.ABORTED, GoalStatus.REJECTED, GoalStatus.SUCCEEDED, GoalStatus.PREEMPTED,
             GoalStatus.RECALLED, GoalStatus.LOST)
-
-
-def wait_wall(predicate, timeout_s):
-    limit = time.monotonic() + timeout_s
-    while time.monotonic() < limit:
-        if predicate():
-            return True
-        time.sleep(0.005)
-    return predicate()
 
 
 class Latest:

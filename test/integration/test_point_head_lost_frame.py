@@ -19,6 +19,7 @@ from trajectory_msgs.msg import JointTrajectoryPoint
 from ari_social_sim.msg import (FollowJointTrajectoryAction, FollowJointTrajectoryGoal,
                                 FollowJointTrajectoryResult, JointTolerance, PointHeadAction,
                                 PointHeadGoal)
+from wall_clock import wait_wall
 
 ABORT_BOUND_WALL_S = 1.0  # the node's own bound is 0.5 s; the rest is slack for a loaded machine
 TERMINAL = (GoalStatus.ABORTED, GoalStatus.REJECTED, GoalStatus.SUCCEEDED, GoalStatus.PREEMPTED,
@@ -44,15 +45,6 @@ class ClockWatch:
     def now(self):
         with self._lock:
             return self.sim_s
-
-
-def wait_wall(predicate, timeout_s):
-    limit = time.monotonic() + timeout_s
-    while time.monotonic() < limit:
-        if predicate():
-            return True
-        time.sleep(0.002)
-    return predicate()
 
 
 def target(frame, x=0.0, y=0.0, z=HEAD_HEIGHT_M):
