@@ -166,3 +166,21 @@ if(benchmark_FOUND)
   target_compile_definitions(bench_scenario PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(bench_scenario PRIVATE ${PROJECT_SOURCE_DIR}/src/tools)
 endif()
+
+if(CATKIN_ENABLE_TESTING)
+  # The signal fuzz (issue 28): every batch tool, of every module, stopped by SIGINT or SIGTERM at
+  # a seeded random moment; here, where the last of them is defined.
+  ari_add_gtest(test_tool_signals SOURCES test/tools/test_tool_signals.cpp)
+  target_compile_definitions(test_tool_signals PRIVATE
+    ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    ARI_RUN_EPISODES_BIN="$<TARGET_FILE:run_episodes>"
+    ARI_EXPORT_DATASET_BIN="$<TARGET_FILE:export_dataset>"
+    ARI_NAV_BENCHMARK_BIN="$<TARGET_FILE:nav_benchmark>"
+    ARI_RENDER_CAMERAS_BIN="$<TARGET_FILE:render_cameras>"
+    ARI_DETECT_GROUPS_BIN="$<TARGET_FILE:detect_groups>"
+    ARI_DIALOGUE_CORPUS_BIN="$<TARGET_FILE:dialogue_corpus>"
+    ARI_EXPORT_GROUP_STREAMS_BIN="$<TARGET_FILE:export_group_streams>"
+    ARI_FIT_DIALOGUE_MODEL_BIN="$<TARGET_FILE:fit_dialogue_model>")
+  add_dependencies(test_tool_signals run_episodes export_dataset nav_benchmark render_cameras
+    detect_groups dialogue_corpus export_group_streams fit_dialogue_model)
+endif()

@@ -15,7 +15,9 @@ void on_stop_signal(int signal) {
 void install_stop_handler() {
   struct sigaction action {};
   action.sa_handler = on_stop_signal;
-  action.sa_flags = SA_RESETHAND;
+  // SA_RESTART: a read or write under way when the signal comes (a pipe, a slow disk) goes on
+  // rather than failing with EINTR, which would turn a clean stop into a write error.
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
   sigemptyset(&action.sa_mask);
   // sigaction replaces SIG_IGN too, unlike the `if (signal(...) != SIG_IGN)` idiom.
   sigaction(SIGINT, &action, nullptr);

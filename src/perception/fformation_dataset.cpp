@@ -225,11 +225,15 @@ std::vector<FrameId> read_fformation_frames(const std::string& path) {
   return frames;
 }
 
-GroupTable detect_fformation_groups(const FeatureTable& features, const GcffParams& params) {
+GroupTable detect_fformation_groups(const FeatureTable& features, const GcffParams& params,
+                                    const std::function<bool()>& stop) {
   GcffDetector detector(params);
   GcffResult result;
   GroupTable table;
   for (const auto& [frame, persons] : features) {
+    if (stop && stop()) {
+      break;
+    }
     detector.detect(persons, result);
     Grouping& groups = table[frame];
     for (const GcffGroup& group : result.groups) {

@@ -1,5 +1,7 @@
 // detect_groups: runs the GCFF F-formation detector over a recorded data set (CSV), and optionally
 // scores it against ground truth with the protocol of GCFF's evaluation code (Setti 2015).
+// Standard output gets the groups of every frame (or the score) or nothing: SIGINT or SIGTERM
+// stops between two frames, writes nothing and exits with 128 + the signal's number.
 
 #include <cstdio>
 #include <iostream>
@@ -9,6 +11,7 @@
 
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/perception/fformation_dataset.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
 #include "ari_social_sim/perception/group_evaluation.hpp"
@@ -43,8 +46,11 @@ groups are numbered 0, 1, ... within each frame.
                     members: 2/3 (default) or 1.
   --help            print this text.
 
+SIGINT (Ctrl-C) or SIGTERM stops the detection between two frames and writes nothing: standard
+output gets the groups of every frame, or the score, or nothing. A second Ctrl-C kills at once.
+
 Exit status: 0 on success, 2 on bad arguments or unreadable or malformed files, 1 when the
-output cannot be written.
+output cannot be written, 130 after SIGINT and 143 after SIGTERM.
 )";
 
 // Any finite positive number: the unit is the data set's.
@@ -132,6 +138,16 @@ void write_groups(const perception::GroupTable& detected) {
   }
 }
 
+// After a stop signal: nothing was written. Returns the exit code.
+int report_stop(size_t frames_done, size_t frames) {
+  const int signal = core::g_stop_signal;
+  std::cerr << "detect_groups: interrupted by " << core::stop_signal_name(signal) << " after "
+            << frames_done << " of " << frames
+            << " frames: nothing written (standard output gets every frame's result or none); "
+               "rerun to detect them all\n";
+  return core::stopped_exit_code(signal);
+}
+
 int run(const Options& options) {
   perception::GcffParams params;
   params.stride = *options.stride;
@@ -146,7 +162,12 @@ int run(const Options& options) {
     frames = perception::read_fformation_frames(options.frames);
   }
 
-  const perception::GroupTable detected = perception::detect_fformation_groups(features, params);
+  const perception::GroupTable detected = perception::detect_fformation_groups(
+      features, params, [] { return core::g_stop_signal != 0; });
+  // A signal after the last frame stops nothing: the result is complete and written.
+  if (detected.size() < features.size()) {
+    return report_stop(detected.size(), features.size());
+  }
   if (options.ground_truth.empty()) {
     write_groups(detected);
     return 0;
@@ -170,6 +191,7 @@ int main(int argc, char** argv) {
       std::cout << kUsage;
       return 0;
     }
+    core::install_stop_handler();
     return run(*options);
   } catch (const core::ConfigError& e) {
     std::cerr << "detect_groups: " << e.what() << "\n(see detect_groups --help)\n";

@@ -11,8 +11,9 @@
 // missing (docs/dialogue.md). --compare prints the comparison with MPGT (intent JS divergence,
 // human-to-human share, lengths, complete and success rates) and --variety the distinct texts
 // per act as Markdown, also to --report when given. Outputs are checked before the first
-// dialogue (an existing one needs --overwrite) and appear under their names only when complete.
-// Exit code 2 on bad input, 1 when writing fails.
+// dialogue (an existing one needs --overwrite) and appear under their names only when complete:
+// SIGINT or SIGTERM stops between two dialogues, writes nothing and exits with 128 + the signal's
+// number. Exit code 2 on bad input, 1 when writing fails.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -23,6 +24,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/dialogue/dialogue_runner.hpp"
 #include "ari_social_sim/dialogue/dialogue_stats.hpp"
 #include "ari_social_sim/dialogue/json_lines.hpp"
@@ -64,6 +66,10 @@ void print_usage() {
             << "  --report FILE.md: the tables of --compare and --variety, also in a file\n"
             << "  --corpus DIR: the MPGT corpus (below), needed only by --compare and retrieval\n"
             << "    NLG; default: corpus_dir in --config if set, else as below\n"
+            << "  outputs appear only when complete; SIGINT (Ctrl-C) or SIGTERM stops between two\n"
+            << "    dialogues and writes nothing (a second Ctrl-C kills at once)\n"
+            << "  exit status: 0 on success, 2 on bad input, 1 when writing fails, 130 after\n"
+            << "    SIGINT and 143 after SIGTERM\n"
             << mpgt_corpus_help();
 }
 
@@ -281,6 +287,58 @@ DialogueConfig run_config(const Options& options) {
   return config;
 }
 
+// After a stop signal: nothing was written. Returns the exit code.
+int report_stop(const Options& options, int64_t done) {
+  const int signal = core::g_stop_signal;
+  std::cerr << "dialogue_corpus: interrupted by " << core::stop_signal_name(signal) << " after "
+            << done << " of " << options.dialogues << " dialogues: nothing written (the outputs "
+            << "appear only once every dialogue is done); rerun to make them\n";
+  return core::stopped_exit_code(signal);
+}
+
+// Runs the dialogues into `out` (when --out) and the tables, until done (0) or a stop signal comes
+// (the exit code of report_stop; `out` is then dropped). Throws core::Error when writing fails.
+int make_corpus(const Options& options, const DialogueSetup& setup,
+                std::unique_ptr<core::OutputFile> out) {
+  DialogueEnv env(setup);
+  RulePolicy policy(setup.domain);
+  std::vector<EpisodeRecord> episodes;
+  for (int64_t d = 0; d < options.dialogues; ++d) {
+    if (core::g_stop_signal != 0) {
+      return report_stop(options, d);
+    }
+    EpisodeRecord episode =
+        run_episode(env, policy, episode_seed(static_cast<uint64_t>(options.seed), d));
+    if (out) {
+      for (const Utterance& u : episode.utterances) {
+        out->stream() << utterance_json(static_cast<int>(d), u) << '\n';
+      }
+    }
+    if (options.has_tables()) {
+      episodes.push_back(std::move(episode));
+    }
+  }
+  if (out) {
+    out->commit();
+  }
+  if (options.has_tables()) {
+    std::string text;
+    if (options.compare) {
+      text += comparison(options, episodes, *setup.corpus);
+    }
+    if (options.variety) {
+      text += (text.empty() ? "" : "\n") + variety_table(options, episodes, setup.config.nlg);
+    }
+    std::cout << text << std::flush;
+    if (!options.report.empty()) {
+      core::OutputFile report("--report", options.report);
+      report.stream() << text;
+      report.commit();
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -304,43 +362,11 @@ int main(int argc, char** argv) {
     print_usage();
     return 2;
   }
+  core::install_stop_handler();
   try {
-    DialogueEnv env(*setup);
-    RulePolicy policy(setup->domain);
-    std::vector<EpisodeRecord> episodes;
-    for (int64_t d = 0; d < options.dialogues; ++d) {
-      EpisodeRecord episode =
-          run_episode(env, policy, episode_seed(static_cast<uint64_t>(options.seed), d));
-      if (out) {
-        for (const Utterance& u : episode.utterances) {
-          out->stream() << utterance_json(static_cast<int>(d), u) << '\n';
-        }
-      }
-      if (options.has_tables()) {
-        episodes.push_back(std::move(episode));
-      }
-    }
-    if (out) {
-      out->commit();
-    }
-    if (options.has_tables()) {
-      std::string text;
-      if (options.compare) {
-        text += comparison(options, episodes, *setup->corpus);
-      }
-      if (options.variety) {
-        text += (text.empty() ? "" : "\n") + variety_table(options, episodes, setup->config.nlg);
-      }
-      std::cout << text << std::flush;
-      if (!options.report.empty()) {
-        core::OutputFile report("--report", options.report);
-        report.stream() << text;
-        report.commit();
-      }
-    }
+    return make_corpus(options, *setup, std::move(out));
   } catch (const core::Error& e) {
     std::cerr << "dialogue_corpus: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

@@ -8,8 +8,9 @@
 // T seconds of sim time by the batch engine (scenario::Episode: the world, perception with
 // config/perception.yaml's error models, social navigation driving ARI along its route). Every
 // SECONDS of sim time the perception frame is sampled (scenario::GroupStreams) into
-// DIR/features.csv, DIR/groundtruth.csv and DIR/frames.csv. Exit code 2 on bad input, 1 when
-// writing fails.
+// DIR/features.csv, DIR/groundtruth.csv and DIR/frames.csv, written once every scene is done:
+// SIGINT or SIGTERM stops between two world steps, writes nothing and exits with 128 + the
+// signal's number. Exit code 2 on bad input, 1 when writing fails.
 #include <unistd.h>
 
 #include <algorithm>
@@ -26,6 +27,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/sim_timer.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/scenario/episode.hpp"
 #include "ari_social_sim/scenario/group_streams.hpp"
@@ -72,7 +74,11 @@ detect_groups reads them (--features, --evaluate, --frames). N in [1, 100000], S
 [0, 2147483647] (S + N - 1 too), T in [1, 3600], SECONDS in [0.05, T]. Existing files are
 replaced only with --overwrite; the same options give the same bytes.
 
-Exit status: 0 on success, 2 on bad input (checked before any scene runs), 1 when writing fails.
+The three files are written once every scene is done, each whole. SIGINT (Ctrl-C) or SIGTERM
+stops the export between two world steps and writes nothing. A second Ctrl-C kills at once.
+
+Exit status: 0 on success, 2 on bad input (checked before any scene runs), 1 when writing fails,
+130 after SIGINT and 143 after SIGTERM.
 )";
 
 struct Options {
@@ -217,9 +223,20 @@ void write_file(const std::string& path, const std::string& text) {
   file.commit();
 }
 
-// Runs every scene, sampling its perception frames, then writes the three files. Throws
-// BadScene when a scene cannot be built, core::Error when writing fails.
-void export_scenes(const Export& run) {
+// After a stop signal: nothing was written. Returns the exit code.
+int report_stop(const Options& options, uint64_t done) {
+  const int signal = core::g_stop_signal;
+  std::cerr << "export_group_streams: interrupted by " << core::stop_signal_name(signal)
+            << " after " << done << " of " << options.scenes << " scenes: nothing written in "
+            << options.out << " (its three files are written once every scene is done); rerun "
+            << "to make them\n";
+  return core::stopped_exit_code(signal);
+}
+
+// Runs every scene, sampling its perception frames, then writes the three files: 0, or the exit
+// code of report_stop when a stop signal came first. Throws BadScene when a scene cannot be
+// built, core::Error when writing fails.
+int export_scenes(const Export& run) {
   const Options& options = run.options;
   scenario::GroupStreams streams;
   // How much ARI moved among the groups, for the summary.
@@ -238,13 +255,18 @@ void export_scenes(const Export& run) {
     // A sample falls due on a world step; it takes the first frame perception reports from then
     // on (at the default rates, that step's own).
     bool sample_due = false;
-    while (!episode->finished()) {
+    while (!episode->finished() && core::g_stop_signal == 0) {
       episode->step();
       sample_due = sample_due || sampler.due(episode->snapshot().time_s);
       if (sample_due && episode->perception_frame() != nullptr) {
         streams.add(episode->snapshot(), *episode->perception_frame());
         sample_due = false;
       }
+    }
+    // A signal on the scene's last step stops nothing: the scene is done.
+    if (!episode->finished()) {
+      std::cerr << (terminal ? "\n" : "");  // after the progress line
+      return report_stop(options, i);
     }
     path_m += episode->metrics().ari_path_length_m;
     goals += episode->metrics().navigation_goals;
@@ -266,6 +288,7 @@ void export_scenes(const Export& run) {
       counts.truth_groups, counts.world_groups, options.out.c_str());
   std::printf("ARI: %.1f m driven per scene, %d navigation goals, %d of them failed\n",
               path_m / static_cast<double>(options.scenes), goals, failed_goals);
+  return 0;
 }
 
 }  // namespace
@@ -287,8 +310,9 @@ int main(int argc, char** argv) {
     std::cerr << "export_group_streams: --out: " << e.what() << "\n";
     return 2;
   }
+  core::install_stop_handler();
   try {
-    export_scenes(run);
+    return export_scenes(run);
   } catch (const BadScene& e) {
     std::cerr << "\nexport_group_streams: " << e.what() << "\n";
     return 2;
@@ -296,5 +320,4 @@ int main(int argc, char** argv) {
     std::cerr << "\nexport_group_streams: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

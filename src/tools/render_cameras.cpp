@@ -1,5 +1,7 @@
 // render_cameras: renders one image from each of ARI's cameras in a world with a few people, and
 // writes them as PNG files (the pictures in docs/cameras.md). Depth is written false-coloured.
+// Each picture is written whole or not at all (core::OutputFile); SIGINT or SIGTERM stops between
+// two pictures, keeping those written, and exits with 128 + the signal's number.
 
 #include <cmath>
 #include <cstdio>
@@ -10,6 +12,8 @@
 
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/output_file.hpp"
+#include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/camera_rig.hpp"
 #include "ari_social_sim/physics/people_figures.hpp"
@@ -30,10 +34,13 @@ T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world an
 around it (one speaking, one in a mask, one walking), and writes DIR/camera_head.png, camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m
 false-coloured, black where invalid), camera_fisheye_front.png, camera_fisheye_rear.png,
 camera_t265_fisheye1.png and camera_t265_fisheye2.png. DIR is created when missing; pictures
-already there are replaced only with --overwrite (checked before rendering).
+already there are replaced only with --overwrite (checked before rendering). Each picture
+appears under its name only once it is whole. SIGINT (Ctrl-C) or SIGTERM stops between two
+pictures: those written are kept, the others are not rendered. A second Ctrl-C kills at once.
 
 Exit status: 0 on success, 2 on bad arguments, an unreadable world or an output folder that
-cannot be written, 1 when rendering or writing a picture fails.
+cannot be written, 1 when rendering or writing a picture fails, 130 after SIGINT and 143 after
+SIGTERM.
 )";
 
 // File name of each camera's picture.
@@ -69,16 +76,21 @@ cv::Mat false_colour(const cv::Mat& depth_m) {
   return coloured;
 }
 
+// Encodes the picture as PNG (OpenCV's default settings, as cv::imwrite uses) and writes it whole
+// or not at all (core::OutputFile): a failure or a stop never leaves half a picture under its name.
 void write_png(const std::string& path, const cv::Mat& bgr) {
-  bool written = false;
+  std::vector<uint8_t> bytes;
   try {
-    written = cv::imwrite(path, bgr);
+    if (!cv::imencode(".png", bgr, bytes)) {
+      throw core::Error(path + ": cannot encode the picture as PNG");
+    }
   } catch (const cv::Exception& e) {
-    throw core::Error(path + ": cannot write the picture: " + e.what());
+    throw core::Error(path + ": cannot encode the picture as PNG: " + e.what());
   }
-  if (!written) {
-    throw core::Error(path + ": cannot write the picture");
-  }
+  core::OutputFile file("--out", path);
+  file.stream().write(reinterpret_cast<const char*>(bytes.data()),
+                      static_cast<std::streamsize>(bytes.size()));
+  file.commit();
   std::printf("wrote %s (%dx%d)\n", path.c_str(), bgr.cols, bgr.rows);
 }
 
@@ -148,30 +160,55 @@ std::vector<std::string> pictures_of(const Shot& shot, const std::string& camera
   return {};
 }
 
-int run(const std::string& world_path, const std::string& out_dir, bool overwrite) {
-  core::check_input_file("--world", world_path);
-  const model::WorldDescription world = model::load_world_file(world_path);
+// A checked command line, ready to render.
+struct Job {
+  model::WorldDescription world;
+  std::string out_dir;
   physics::CameraRigConfig config;
-  for (physics::CameraSpec& spec : config.cameras) {
+  std::vector<std::string> pictures;  // every file the job writes
+};
+
+// Checks the world and every picture's place before the renderer starts. Throws core::Error.
+Job prepare(const std::string& world_path, const std::string& out_dir, bool overwrite) {
+  core::check_input_file("--world", world_path);
+  Job job;
+  job.world = model::load_world_file(world_path);
+  job.out_dir = out_dir;
+  for (physics::CameraSpec& spec : job.config.cameras) {
     spec.enabled = true;
   }
-  // Every picture's place is checked before the renderer starts.
   core::prepare_output_directory("--out", out_dir);
-  std::vector<std::string> pictures{out_dir + "/camera_torso_depth.png"};
+  job.pictures = {out_dir + "/camera_torso_depth.png"};
   for (const Shot& shot : shots()) {
-    for (const physics::CameraSpec& spec : config.cameras) {
+    for (const physics::CameraSpec& spec : job.config.cameras) {
       for (const std::string& name : pictures_of(shot, spec.name)) {
-        pictures.push_back(out_dir + "/" + name + ".png");
+        job.pictures.push_back(out_dir + "/" + name + ".png");
       }
     }
   }
-  for (const std::string& picture : pictures) {
+  for (const std::string& picture : job.pictures) {
     core::check_output_file("--out", picture, overwrite);
   }
-  physics::CameraRig rig(config);
-  std::printf("renderer: %s\n", rig.renderer().device_name().c_str());
-  rig.set_world(world, physics::SceneStyle{});
+  return job;
+}
 
+// After a stop signal: what is kept. Returns the exit code.
+int report_stop(const Job& job, size_t written) {
+  const int signal = core::g_stop_signal;
+  std::fprintf(stderr,
+               "render_cameras: interrupted by %s after %zu of %zu pictures, written whole in %s; "
+               "the others were not rendered (rerun with --overwrite to render them all)\n",
+               core::stop_signal_name(signal), written, job.pictures.size(), job.out_dir.c_str());
+  return core::stopped_exit_code(signal);
+}
+
+// Renders every shot's pictures, one whole file at a time, until done (0) or a stop signal comes
+// (the exit code of report_stop). Throws core::Error when rendering or writing fails.
+int render(const Job& job) {
+  physics::CameraRig rig(job.config);
+  std::printf("renderer: %s\n", rig.renderer().device_name().c_str());
+  rig.set_world(job.world, physics::SceneStyle{});
+  size_t written = 0;
   physics::CameraFrame frame;
   for (const Shot& shot : shots()) {
     physics::PeopleFigures figures(kAppearanceSeed);
@@ -186,12 +223,17 @@ int run(const std::string& world_path, const std::string& out_dir, bool overwrit
       if (names.empty()) {
         continue;
       }
+      if (core::g_stop_signal != 0) {
+        return report_stop(job, written);
+      }
       rig.render(i, physics::X_world_optical(spec, shot.ari, shot.head_pan, shot.head_tilt), frame);
       cv::Mat bgr;
       cv::cvtColor(frame.colour, bgr, cv::COLOR_RGB2BGR);
-      write_png(out_dir + "/" + names.front() + ".png", bgr);
+      write_png(job.out_dir + "/" + names.front() + ".png", bgr);
+      ++written;
       if (shot.suffix.empty() && !frame.depth.empty()) {
-        write_png(out_dir + "/camera_torso_depth.png", false_colour(frame.depth));
+        write_png(job.out_dir + "/camera_torso_depth.png", false_colour(frame.depth));
+        ++written;
       }
     }
   }
@@ -203,6 +245,7 @@ int run(const std::string& world_path, const std::string& out_dir, bool overwrit
 int main(int argc, char** argv) {
   std::string world_path, out_dir;
   bool overwrite = false;
+  Job job;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -221,11 +264,20 @@ int main(int argc, char** argv) {
     if (world_path.empty() || out_dir.empty()) {
       throw core::ConfigError("--world and --out are required");
     }
-    return run(world_path, out_dir, overwrite);
+    job = prepare(world_path, out_dir, overwrite);
   } catch (const core::ConfigError& error) {
     std::fprintf(stderr, "render_cameras: %s\n(see render_cameras --help)\n", error.what());
     return kUsageError;
   } catch (const core::Error& error) {
+    std::fprintf(stderr, "render_cameras: %s\n", error.what());
+    return 1;
+  }
+  core::install_stop_handler();
+  try {
+    return render(job);
+  } catch (const core::Error& error) {
+    // A picture that cannot be written (core::OutputFile's core::ConfigError) too: by now it is a
+    // failure, not bad input.
     std::fprintf(stderr, "render_cameras: %s\n", error.what());
     return 1;
   }

@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -76,7 +75,11 @@ void print_usage() {
             << scenario::seed_option_range()
             << " (the last seed, S + N - 1, too)\n"
                "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
-               "  --resume (finish it: same settings, --episodes and --seed default to its own)\n";
+               "  --resume (finish it: same settings, --episodes and --seed default to its own)\n"
+               "  SIGINT (Ctrl-C) or SIGTERM stops between two steps, keeping the finished\n"
+               "  episodes only (a second Ctrl-C kills at once)\n"
+               "  exit status: 0 when every episode succeeded, 1 when any failed, 2 on bad input,\n"
+               "  3 when writing fails, 130 after SIGINT and 143 after SIGTERM\n";
 }
 
 Options parse_options(int argc, char** argv) {
@@ -446,9 +449,9 @@ int report_stop(const Batch& batch, const std::vector<scenario::EpisodeCsvRow>& 
   for (const scenario::EpisodeCsvRow& row : rows) {
     bags += fs::exists(paths.bag(row.seed)) ? 1 : 0;
   }
-  std::cerr << "run_episodes: interrupted by " << (g_stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
-            << " after " << rows.size() << " of " << planned << " episodes: " << rows.size()
-            << " rows in " << paths.csv();
+  std::cerr << "run_episodes: interrupted by " << core::stop_signal_name(g_stop_signal) << " after "
+            << rows.size() << " of " << planned << " episodes: " << rows.size() << " rows in "
+            << paths.csv();
   if (batch.options.bags) {
     std::cerr << ", " << bags << " bags";
   }
@@ -457,7 +460,7 @@ int report_stop(const Batch& batch, const std::vector<scenario::EpisodeCsvRow>& 
               << (batch.options.bags ? ", its bag deleted" : "");
   }
   std::cerr << "; rerun with --resume to finish\n";
-  return 128 + g_stop_signal;
+  return core::stopped_exit_code(g_stop_signal);
 }
 
 // Runs the planned episodes that have no row yet, each to its bag and then its row, until done or

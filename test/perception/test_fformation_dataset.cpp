@@ -151,5 +151,21 @@ TEST(FformationDataset, DetectsGroupsInEveryFrame) {
   EXPECT_TRUE(groups.at(2).empty());
 }
 
+TEST(FformationDataset, StopsBeforeTheFrameItIsToldTo) {
+  const std::string path = write_file("stop.csv",
+                                      "frame,person_id,x,y,theta\n"
+                                      "1,a,0,0,0\n1,b,120,0,3.141593\n2,c,0,0,0\n3,d,0,0,0\n");
+  GcffParams params;
+  params.stride = 60.0;
+  params.mdl = 8000.0;
+  // Asked before each frame, as detect_groups asks whether a stop signal came: yes at the second.
+  int asked = 0;
+  const GroupTable groups = detect_fformation_groups(read_fformation_features(path), params,
+                                                     [&asked] { return ++asked == 2; });
+  EXPECT_EQ(asked, 2);
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups.at(1), (Grouping{{"a", "b"}}));
+}
+
 }  // namespace
 }  // namespace ari_social_sim::perception

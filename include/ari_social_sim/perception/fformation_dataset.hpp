@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,8 +33,10 @@ GroupTable read_fformation_groups(const std::string& path);
 std::vector<FrameId> read_fformation_frames(const std::string& path);
 
 /// Runs GCFF on every frame of `features`: the detected groups (two or more people) by person id,
-/// members in input order, with an entry for every frame. Throws core::ConfigError for invalid
-/// `params`.
-GroupTable detect_fformation_groups(const FeatureTable& features, const GcffParams& params);
+/// members in input order, with an entry for every frame. `stop`, when given, is asked before each
+/// frame: once it says true, the frames done are returned, an entry for each (a tool stopped by a
+/// signal). Throws core::ConfigError for invalid `params`.
+GroupTable detect_fformation_groups(const FeatureTable& features, const GcffParams& params,
+                                    const std::function<bool()>& stop = nullptr);
 
 }  // namespace ari_social_sim::perception
