@@ -54,7 +54,7 @@ std::optional<std::vector<std::string>> match_pattern(const DialogueAct& pattern
       !std::equal(pattern.slots.begin(), pattern.slots.end() - 1, path.begin())) {
     return std::nullopt;
   }
-  return std::vector<std::string>(path.begin() + prefix, path.end());
+  return std::vector<std::string>(path.begin() + static_cast<std::ptrdiff_t>(prefix), path.end());
 }
 
 Domain Domain::load(const std::string& file_path) {

@@ -54,7 +54,7 @@ std::string required_mpgt_dir(const std::string& given, const std::string& neede
     core::check_input_directory("--corpus", given);
     return given;
   }
-  const std::string from_environment = mpgt_dir_from_environment();
+  std::string from_environment = mpgt_dir_from_environment();
   if (!from_environment.empty()) {
     core::check_input_directory("$ARI_MPGT_DIR", from_environment);
     return from_environment;
@@ -137,7 +137,7 @@ MpgtCorpus load_mpgt_corpus(const std::string& dir) {
   MpgtCorpus corpus;
   for (const auto& [number, path] : files) {
     // The corpus's conversations are a few kilobytes each.
-    constexpr std::uintmax_t kMaxConversationBytes = 1024 * 1024;
+    constexpr std::uintmax_t kMaxConversationBytes = std::uintmax_t{1024} * 1024;
     CorpusDialogue dialogue = parse_mpgt_dialogue(
         core::read_text_file(path.string(), "an MPGT conversation", kMaxConversationBytes),
         path.filename().string());

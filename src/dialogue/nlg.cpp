@@ -30,7 +30,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> keys_of(const Dial
   keys.emplace_back(act.to_string(), path);
   if (!path.empty()) {
     std::vector<std::string> prefix(path.begin(), path.end() - 1);
-    prefix.push_back("*");
+    prefix.emplace_back("*");
     keys.emplace_back(DialogueAct{act.intent, prefix, ""}.to_string(),
                       std::vector<std::string>{path.back()});
   }

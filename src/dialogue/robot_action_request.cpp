@@ -94,8 +94,8 @@ RobotAction robot_action_from(const std::vector<std::string>& acts,
       throw core::RequestError(field + ": expected one of the humans' roles, got '" + addressee +
                                "'");
     }
-    if (std::find(addressees.begin(), addressees.begin() + i, addressee) !=
-        addressees.begin() + i) {
+    const auto before = addressees.begin() + static_cast<std::ptrdiff_t>(i);
+    if (std::find(addressees.begin(), before, addressee) != before) {
       throw core::RequestError(field + ": expected each role once, got '" + addressee + "' again");
     }
   }

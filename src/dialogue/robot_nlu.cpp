@@ -99,7 +99,7 @@ RobotNlu::RobotNlu(const Nlg& nlg, const Domain& domain, const MpgtCorpus* corpu
   weigh_exemplars();
 }
 
-void RobotNlu::add_exemplar(const std::string& text, std::vector<DialogueAct> acts) {
+void RobotNlu::add_exemplar(const std::string& text, const std::vector<DialogueAct>& acts) {
   std::vector<std::string> words = normalised_words(text);
   if (words.empty()) {
     return;
@@ -109,7 +109,7 @@ void RobotNlu::add_exemplar(const std::string& text, std::vector<DialogueAct> ac
   }
   exemplar_words_.push_back(std::move(words));
   Exemplar exemplar;
-  for (DialogueAct& act : acts) {
+  for (const DialogueAct& act : acts) {
     exemplar.acts.push_back(in_domain_form(act));
   }
   exemplars_.push_back(std::move(exemplar));

@@ -185,7 +185,7 @@ core::Pose2 flat_goal(const world::Simulation& sim, const navigation::GridField&
                       core::Rng& rng, const Eigen::Vector2d& low, const Eigen::Vector2d& high,
                       Accept accept) {
   for (int draw = 0; draw < kMaxDraws; ++draw) {
-    const core::Pose2 goal = pose(rng.uniform_point(low, high), rng.uniform(-kPi, kPi));
+    core::Pose2 goal = pose(rng.uniform_point(low, high), rng.uniform(-kPi, kPi));
     bool far_from_people = true;
     for (const auto& human : sim.humans()) {
       far_from_people = far_from_people && (human->pose().position - goal.position).norm() > 1.5;

@@ -9,7 +9,8 @@
 
 namespace ari_social_sim::learning {
 
-VectorNavEnv::VectorNavEnv(std::shared_ptr<const NavEnvSetup> setup, int num_envs, int threads)
+VectorNavEnv::VectorNavEnv(const std::shared_ptr<const NavEnvSetup>& setup, int num_envs,
+                           int threads)
     : final_metrics_(num_envs), threads_(std::clamp(threads, 1, std::max(num_envs, 1))) {
   if (num_envs < 1 || num_envs > kMaxEnvs) {
     throw core::RequestError("learning: num_envs: expected an integer in [1, " +

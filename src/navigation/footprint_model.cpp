@@ -32,7 +32,7 @@ std::vector<Eigen::Vector2d> FootprintModel::outline(double spacing_m) const {
     const Eigen::Vector2d& to = corners[(i + 1) % 4];
     const int pieces = std::max(1, static_cast<int>(std::ceil((to - from).norm() / spacing_m)));
     for (int k = 0; k < pieces; ++k) {
-      points.push_back(from + (to - from) * (static_cast<double>(k) / pieces));
+      points.emplace_back(from + (to - from) * (static_cast<double>(k) / pieces));
     }
   }
   return points;

@@ -106,7 +106,7 @@ void PolicyObservation::write_people(const core::Pose2& pose, const PerceivedSce
     }
   }
   const size_t shown = std::min(near.size(), static_cast<size_t>(config_.nearest_people));
-  std::partial_sort(near.begin(), near.begin() + shown, near.end(),
+  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(shown), near.end(),
                     [](const auto& a, const auto& b) {
                       return a.first != b.first ? a.first < b.first : a.second->id < b.second->id;
                     });

@@ -103,7 +103,7 @@ PerceivedScene SceneTracker::scene(double time_s) const {
 void SceneTracker::forget(double time_s) {
   // Reported "later" than now by more than kTimeWentBack_s: before time went back (a world reset),
   // and never timed out otherwise.
-  const auto stale = [time_s](double since_s, double timeout_s) {
+  const auto stale = [](double since_s, double timeout_s) {
     return since_s > timeout_s || since_s < -kTimeWentBack_s;
   };
   for (auto it = people_.begin(); it != people_.end();) {

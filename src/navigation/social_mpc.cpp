@@ -43,7 +43,7 @@ MpcSolution SocialMpc::solve(const MpcProblem& problem) {
   candidates.push_back(follow_geodesic(problem, config_, bounds_, 0.0));
   candidates.push_back(follow_geodesic(problem, config_, bounds_, kSwerveRps));
   candidates.push_back(follow_geodesic(problem, config_, bounds_, -kSwerveRps));
-  candidates.push_back(Eigen::VectorXd::Zero(config_.control_count()));
+  candidates.emplace_back(Eigen::VectorXd::Zero(config_.control_count()));
   size_t best = 0;
   double best_cost = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < candidates.size(); ++i) {

@@ -69,8 +69,8 @@ geometry_msgs::Pose pose_msg(const Eigen::Isometry3d& X) {
 }
 
 void set_covariance(boost::array<double, 36>& covariance) {
-  for (int i = 0; i < 6; ++i) {
-    covariance[static_cast<size_t>(7 * i)] = kOdomCovariance[i];
+  for (size_t i = 0; i < 6; ++i) {
+    covariance[7 * i] = kOdomCovariance[i];
   }
 }
 
@@ -285,11 +285,9 @@ class PhysicsNode {
     imu.linear_acceleration.y = reading.linear_acceleration_mps2.y();
     imu.linear_acceleration.z = reading.linear_acceleration_mps2.z();
     const physics::ImuNoise& noise = physics_->config().imu_noise;
-    for (int i = 0; i < 3; ++i) {
-      imu.angular_velocity_covariance[static_cast<size_t>(4 * i)] =
-          noise.gyro_std_rps * noise.gyro_std_rps;
-      imu.linear_acceleration_covariance[static_cast<size_t>(4 * i)] =
-          noise.accel_std_mps2 * noise.accel_std_mps2;
+    for (size_t i = 0; i < 3; ++i) {
+      imu.angular_velocity_covariance[4 * i] = noise.gyro_std_rps * noise.gyro_std_rps;
+      imu.linear_acceleration_covariance[4 * i] = noise.accel_std_mps2 * noise.accel_std_mps2;
     }
     imu_pub_.publish(imu);
   }

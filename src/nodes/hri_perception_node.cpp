@@ -213,7 +213,7 @@ class HriPerceptionNode {
   }
 
   void on_map(const ros::MessageEvent<const nav_msgs::OccupancyGrid>& event) {
-    const nav_msgs::OccupancyGrid::ConstPtr msg = event.getConstMessage();
+    const nav_msgs::OccupancyGrid::ConstPtr& msg = event.getConstMessage();
     if (!map_publisher_.accept(event.getPublisherName()) || !usable(kMapTopic, *msg)) {
       return;
     }
@@ -222,7 +222,7 @@ class HriPerceptionNode {
   }
 
   void on_world_state(const ros::MessageEvent<const WorldState>& event) {
-    const WorldState::ConstPtr msg = event.getConstMessage();
+    const WorldState::ConstPtr& msg = event.getConstMessage();
     clock_publishers_.check_when_due();
     if (!state_publisher_.accept(event.getPublisherName()) || !usable(kWorldStateTopic, *msg)) {
       return;
@@ -245,10 +245,10 @@ class HriPerceptionNode {
       tracked_faces_.clear();
       tracked_bodies_.clear();
       for (const perception::PerceivedFace& face : frame.faces) {
-        tracked_faces_.push_back({face.face_id, face.human});
+        tracked_faces_.emplace_back(face.face_id, face.human);
       }
       for (const perception::PerceivedBody& body : frame.bodies) {
-        tracked_bodies_.push_back({body.body_id, body.human});
+        tracked_bodies_.emplace_back(body.body_id, body.human);
       }
       tracked_time_s_ = frame.time_s;
       cut_pending_image();

@@ -37,7 +37,7 @@ class RenewingTfBuffer::Listening {
     }
     last_update_ = now;
     clock_seen_ = clock_seen_ || !now.isZero();
-    const std::string authority = event.getPublisherName();
+    const std::string& authority = event.getPublisherName();
     for (const geometry_msgs::TransformStamped& t : event.getConstMessage()->transforms) {
       if (sent_before_a_reset(t, is_static, now)) {
         continue;

@@ -24,6 +24,8 @@ YAML::Node to_yaml(XmlRpc::XmlRpcValue& value) {
       return YAML::Node(static_cast<std::string>(value));
     case XmlRpc::XmlRpcValue::TypeArray: {
       YAML::Node list(YAML::NodeType::Sequence);
+      // Not a range-for: XmlRpcValue's begin() walks a struct's members, not an array's items.
+      // NOLINTNEXTLINE(modernize-loop-convert)
       for (int i = 0; i < value.size(); ++i) {
         list.push_back(to_yaml(value[i]));
       }

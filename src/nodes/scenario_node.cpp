@@ -130,17 +130,17 @@ class RosCommands : public scenario::Commands {
         {"/sim/say", [] { return ros::service::exists("/sim/say", false); }}};
     if (uses.text_to_speech) {
       tts_ = std::make_unique<TtsClient>("/tts", true);
-      needed.push_back({"/tts action server", [this] { return tts_->isServerConnected(); }});
+      needed.emplace_back("/tts action server", [this] { return tts_->isServerConnected(); });
     }
     if (uses.move_base) {
       move_base_ = std::make_unique<MoveBaseClient>("move_base", true);
-      needed.push_back(
-          {"move_base action server", [this] { return move_base_->isServerConnected(); }});
+      needed.emplace_back("move_base action server",
+                          [this] { return move_base_->isServerConnected(); });
     }
     if (uses.approach) {
       approach_ = std::make_unique<ApproachClient>("/social_mpc/approach", true);
-      needed.push_back({"/social_mpc/approach action server",
-                        [this] { return approach_->isServerConnected(); }});
+      needed.emplace_back("/social_mpc/approach action server",
+                          [this] { return approach_->isServerConnected(); });
     }
     const ros::WallTime limit = ros::WallTime::now() + ros::WallDuration(timeout_s);
     ros::WallTime last_waited = ros::WallTime::now();

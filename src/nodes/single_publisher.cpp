@@ -23,6 +23,8 @@ std::optional<std::vector<std::string>> publishers_of(const std::string& topic) 
   }
   std::vector<std::string> nodes;
   XmlRpc::XmlRpcValue& publications = payload[0];
+  // Not a range-for: XmlRpcValue's begin() walks a struct's members, not an array's items.
+  // NOLINTNEXTLINE(modernize-loop-convert)
   for (int i = 0; i < publications.size(); ++i) {
     if (static_cast<std::string>(publications[i][0]) != topic) {
       continue;
@@ -36,7 +38,7 @@ std::optional<std::vector<std::string>> publishers_of(const std::string& topic) 
 
 }  // namespace
 
-SinglePublisher::SinglePublisher(std::string topic, InputCounters* inputs)
+SinglePublisher::SinglePublisher(const std::string& topic, InputCounters* inputs)
     : topic_(ros::names::resolve(topic)), inputs_(inputs) {
   if (inputs_) {
     inputs_->declare_drop(topic_, "publisher");
@@ -82,7 +84,8 @@ bool SinglePublisher::accept(const std::string& publisher) {
   return false;
 }
 
-PublisherCountWatch::PublisherCountWatch(std::string topic) : topic_(ros::names::resolve(topic)) {}
+PublisherCountWatch::PublisherCountWatch(const std::string& topic)
+    : topic_(ros::names::resolve(topic)) {}
 
 void PublisherCountWatch::check_when_due() {
   const ros::WallTime now = ros::WallTime::now();

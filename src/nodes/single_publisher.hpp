@@ -17,7 +17,7 @@ namespace ari_social_sim::nodes {
 /// (ros::MessageEvent::getPublisherName, the connection header's callerid).
 class SinglePublisher {
  public:
-  explicit SinglePublisher(std::string topic, InputCounters* inputs = nullptr);
+  explicit SinglePublisher(const std::string& topic, InputCounters* inputs = nullptr);
 
   /// True if a message `publisher` sent on the topic is to be used.
   bool accept(const std::string& publisher);
@@ -46,7 +46,7 @@ class SinglePublisher {
 /// second world_node's clock still mixes in; this says so, loudly.
 class PublisherCountWatch {
  public:
-  explicit PublisherCountWatch(std::string topic);
+  explicit PublisherCountWatch(const std::string& topic);
 
   /// Asks the master at most once per kPeriod_s of wall time; call it from a timer or callback.
   void check_when_due();

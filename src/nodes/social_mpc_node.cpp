@@ -69,12 +69,13 @@ class SocialMpcNode {
     groups_sub_ = nh_.subscribe("/humans/interactions/groups", 20, &SocialMpcNode::on_group, this);
     simple_goal_sub_ = nh_.subscribe("/move_base_simple/goal", kCheckedInputQueue,
                                      &SocialMpcNode::on_simple_goal, this);
-    move_base_.registerGoalCallback([this](MoveBaseServer::GoalHandle h) { on_move_base(h); });
+    move_base_.registerGoalCallback(
+        [this](const MoveBaseServer::GoalHandle& h) { on_move_base(h); });
     move_base_.registerCancelCallback(
-        [this](MoveBaseServer::GoalHandle h) { on_cancel(h.getGoalID()); });
-    approach_.registerGoalCallback([this](ApproachServer::GoalHandle h) { on_approach(h); });
+        [this](const MoveBaseServer::GoalHandle& h) { on_cancel(h.getGoalID()); });
+    approach_.registerGoalCallback([this](const ApproachServer::GoalHandle& h) { on_approach(h); });
     approach_.registerCancelCallback(
-        [this](ApproachServer::GoalHandle h) { on_cancel(h.getGoalID()); });
+        [this](const ApproachServer::GoalHandle& h) { on_cancel(h.getGoalID()); });
     inputs_.declare_drop("tf", "map -> base_footprint");
     inputs_.declare_drop("tf", "map -> body_*");
     inputs_.declare_drop("tf", "absurd transform");

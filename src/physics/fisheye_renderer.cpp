@@ -96,6 +96,9 @@ void FisheyeRenderer::render(Renderer& renderer, const Eigen::Isometry3d& X_worl
     for (int c = 0; c < 3; ++c) {
       const float top = (1 - a) * p00[c] + a * p00[c + 3];
       const float bottom = (1 - a) * p10[c] + a * p10[c + 3];
+      // A colour in [0, 255], where + 0.5 rounds right; std::lround would cost a call per
+      // channel of every pixel.
+      // NOLINTNEXTLINE(bugprone-incorrect-roundings)
       out[c] = static_cast<uint8_t>((1 - b) * top + b * bottom + 0.5f);
     }
     out += 3;

@@ -39,8 +39,11 @@ void OctomapMapper::insert_depth(const cv::Mat& depth_m, const PinholeModel& mod
   const Eigen::Vector3d origin = X_map_optical.translation();
   // Points beyond max_range_m clear their ray up to it and mark nothing (OctoMap's maxrange);
   // discretising merges rays ending in the same voxel, which a dense depth image has many of.
-  tree_.insertPointCloud(cloud, octomap::point3d(origin.x(), origin.y(), origin.z()),
-                         config_.max_range_m, false, true);
+  tree_.insertPointCloud(
+      cloud,
+      octomap::point3d(static_cast<float>(origin.x()), static_cast<float>(origin.y()),
+                       static_cast<float>(origin.z())),
+      config_.max_range_m, false, true);
 }
 
 void OctomapMapper::save_binary(const std::string& path) const {

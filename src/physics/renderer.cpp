@@ -144,14 +144,16 @@ struct GpuMesh {
     const int sizes[5] = {3, 3, 3, 1, 1};
     for (GLuint i = 0; i < 5; ++i) {
       glEnableVertexAttribArray(i);
-      glVertexAttribPointer(i, sizes[i], GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<void*>(offsets[i] * sizeof(float)));
+      // OpenGL takes a buffer offset as a pointer.
+      // NOLINTNEXTLINE(performance-no-int-to-ptr)
+      const void* offset = reinterpret_cast<void*>(offsets[i] * sizeof(float));
+      glVertexAttribPointer(i, sizes[i], GL_FLOAT, GL_FALSE, stride, offset);
     }
   }
   void upload(const RenderMesh& mesh) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
-    glBufferData(GL_ARRAY_BUFFER, mesh.vertices.size() * sizeof(float), mesh.vertices.data(),
-                 GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)),
+                 mesh.vertices.data(), GL_DYNAMIC_DRAW);
     vertex_count = static_cast<GLsizei>(mesh.vertex_count());
   }
   void draw() const { draw(0, vertex_count); }

@@ -65,7 +65,7 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
             solid(PrimitiveShape::kPrism, planar(object.pose.position, 0.5 * height, 0.0),
                   Eigen::Vector3d(1.0, 1.0, height), colour);
         for (const Eigen::Vector2d& point : object.points) {
-          prism.outline.push_back(point - object.pose.position);
+          prism.outline.emplace_back(point - object.pose.position);
         }
         out.push_back(prism);
         break;

@@ -154,8 +154,7 @@ dialogue::DialogueRunConfig dialogue_run_for(const Script& script,
 }
 
 Episode::Episode(const Scenario& scenario, uint64_t seed, const EpisodeConfig& config)
-    : scenario_(scenario),
-      seed_(seed),
+    : seed_(seed),
       config_(core::validated(config)),
       perception_(seeded(config.perception, seed)),
       group_detection_(perception_.config().groups),

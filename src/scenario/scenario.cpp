@@ -41,7 +41,7 @@ std::string one_of(const std::vector<std::string>& names) {
 
 // Reads `type` and checks it is one of `types`.
 std::string read_type(const core::YamlMap& entry, const std::vector<std::string>& types) {
-  const std::string type = entry.required<std::string>("type");
+  std::string type = entry.required<std::string>("type");
   if (std::find(types.begin(), types.end(), type) == types.end()) {
     entry.fail("type", one_of(types), "'" + type + "'");
   }
@@ -49,7 +49,7 @@ std::string read_type(const core::YamlMap& entry, const std::vector<std::string>
 }
 
 std::string read_text(const core::YamlMap& map, const std::string& key) {
-  const std::string text = map.required<std::string>(key);
+  std::string text = map.required<std::string>(key);
   if (text.find_first_not_of(" \t\n") == std::string::npos) {
     map.fail(key, "a non-empty string", "'" + text + "'");
   }
@@ -330,7 +330,7 @@ class ScriptReader {
       entry.fail("gaze", "gaze targets (humans added during a run cannot take gaze directions)",
                  "directions");
     }
-    const world::HumanSpec spec = world::parse_human(entry);
+    world::HumanSpec spec = world::parse_human(entry);
     if (!known_.humans.insert(spec.id).second) {
       entry.fail("id", "an id used by no other human of the scenario", std::to_string(spec.id));
     }
@@ -375,7 +375,7 @@ class ScriptReader {
             "a value");
       }
     }
-    const Spec spec = parse(entry);
+    Spec spec = parse(entry);
     if (!known_.groups.insert(spec.id).second) {
       entry.fail("id", "a group id used by no other group of the scenario",
                  std::to_string(spec.id));

@@ -178,9 +178,9 @@ void ScriptRunner::begin(const Observations& observations, Commands& commands) {
     const GeneratedGroup generated = generate_group(scenario_.script.random_groups[i], rng);
     std::vector<Action> setup;
     for (const world::HumanSpec& human : generated.humans) {
-      setup.push_back(AddHumanAction{human});
+      setup.emplace_back(AddHumanAction{human});
     }
-    setup.push_back(CreateGroupAction{generated.group});
+    setup.emplace_back(CreateGroupAction{generated.group});
     if (!run(setup, observations, commands)) {
       return;
     }

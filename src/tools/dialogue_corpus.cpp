@@ -156,6 +156,7 @@ std::string lengths_text(const DialogueStats& s) {
 
 std::vector<CorpusDialogue> as_corpus(const std::vector<EpisodeRecord>& episodes) {
   std::vector<CorpusDialogue> generated;
+  generated.reserve(episodes.size());
   for (const EpisodeRecord& e : episodes) {
     generated.push_back(to_corpus_dialogue(e.utterances));
   }

@@ -122,7 +122,7 @@ std::vector<std::string> parse_cameras(const std::string& list) {
       throw core::ConfigError("--cameras: expected each camera once, got '" + name +
                               "' twice in '" + list + "'");
     }
-    cameras.push_back(found->rig_name);
+    cameras.emplace_back(found->rig_name);
   }
   return cameras;
 }

@@ -67,7 +67,7 @@ cv::Mat false_colour(const cv::Mat& depth_m) {
       const float d = depth_m.at<float>(v, u);
       invalid.at<uint8_t>(v, u) = std::isfinite(d) ? 0 : 255;
       scaled.at<uint8_t>(v, u) =
-          static_cast<uint8_t>(std::clamp(d / 5.0f, 0.0f, 1.0f) * 255.0f + 0.5f);
+          static_cast<uint8_t>(std::lround(std::clamp(d / 5.0f, 0.0f, 1.0f) * 255.0f));
     }
   }
   cv::Mat coloured;

@@ -82,8 +82,11 @@ double row_distance_for(Arrangement arrangement, size_t count, double member_spa
   // they are sqrt((r - a)^2 + (r - b)^2) apart: at least a shoulder spacing s from
   // r = (a + b + sqrt(2 s^2 - (a - b)^2)) / 2.
   const double s = shoulder_spacing_m;
-  const double a = 0.5 * static_cast<double>((count + 1) / 2 - 1) * s;
-  const double b = 0.5 * static_cast<double>(count / 2 > 0 ? count / 2 - 1 : 0) * s;
+  // Members on each side of the L, in whole people: the longer side takes the odd one.
+  const size_t long_side = (count + 1) / 2;
+  const size_t short_side = count / 2;
+  const double a = 0.5 * static_cast<double>(long_side - 1) * s;
+  const double b = 0.5 * static_cast<double>(short_side > 0 ? short_side - 1 : 0) * s;
   const double corner_clear = 0.5 * (a + b + std::sqrt(2.0 * s * s - (a - b) * (a - b)));
   return std::max(member_spacing_m / std::sqrt(2.0), corner_clear);
 }
@@ -157,7 +160,7 @@ std::vector<size_t> assign_slots(const std::vector<Eigen::Vector2d>& positions,
       }
     }
     slot_of[movers[best_mover]] = best_slot;
-    movers.erase(movers.begin() + best_mover);
+    movers.erase(movers.begin() + static_cast<std::ptrdiff_t>(best_mover));
     free_slots.erase(std::find(free_slots.begin(), free_slots.end(), best_slot));
   }
   return slot_of;

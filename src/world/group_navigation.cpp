@@ -18,7 +18,6 @@
 #include "ari_social_sim/world/step_motion.hpp"
 
 namespace ari_social_sim::world {
-namespace {}  // namespace
 
 bool GroupSpec::lists_a_member_twice() const {
   return std::set<model::ObjectId>(members.begin(), members.end()).size() != members.size();

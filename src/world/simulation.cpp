@@ -32,7 +32,9 @@ b2Vec2 to_b2(const Eigen::Vector2d& v) {
   return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
 }
 
+// Box2D keeps a body's user data as an integer (b2BodyUserData::pointer): ours is its Object.
 Object* object_of(b2Body* body) {
+  // NOLINTNEXTLINE(performance-no-int-to-ptr)
   return reinterpret_cast<Object*>(body->GetUserData().pointer);
 }
 
@@ -334,8 +336,8 @@ void Simulation::add_group_members(model::ObjectId group_id,
   check_members(check, members);
   size_t joining = 0;
   for (size_t i = 0; i < members.size(); ++i) {
-    const bool repeated =
-        std::find(members.begin(), members.begin() + i, members[i]) != members.begin() + i;
+    const auto before = members.begin() + static_cast<std::ptrdiff_t>(i);
+    const bool repeated = std::find(members.begin(), before, members[i]) != before;
     joining += find_human(members[i])->group_id() != group_id && !repeated ? 1 : 0;
   }
   if (group.members().size() + joining > kMaxGroupMembers) {

@@ -189,6 +189,7 @@ std::optional<WalkingRoute> WalkingRoute::plan(const model::WorldDescription& wo
   // true start and goal.
   const int w = grid.map.width;
   std::vector<Eigen::Vector2d> centres;
+  centres.reserve(chain.size());
   for (size_t i : chain) {
     centres.push_back(grid.map.cell_centre(static_cast<int>(i % w), static_cast<int>(i / w)));
   }
@@ -202,7 +203,7 @@ std::optional<WalkingRoute> WalkingRoute::plan(const model::WorldDescription& wo
     for (int m = k - half; m <= k + half; ++m) {
       sum += centres[static_cast<size_t>(m)];
     }
-    route.points_.push_back(sum / (2 * half + 1));
+    route.points_.emplace_back(sum / (2 * half + 1));
     route.clearance_m_.push_back(grid.clearance_m[chain[static_cast<size_t>(k)]]);
   }
   route.points_.push_back(goal);

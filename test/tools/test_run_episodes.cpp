@@ -52,6 +52,22 @@ std::vector<fs::path> files_ending(const std::string& dir, const std::string& en
   return found;
 }
 
+// The rows of a join_group CSV whose success column (the fourth, no quoted field before it) is 0.
+size_t failed_rows(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header
+  size_t failed = 0;
+  while (std::getline(in, line)) {
+    size_t at = 0;
+    for (int field = 0; field < 3; ++field) {
+      at = line.find(',', at) + 1;
+    }
+    failed += line.compare(at, 2, "0,") == 0 ? 1 : 0;
+  }
+  return failed;
+}
+
 // The seed column of each row of a join_group CSV (no quoted field before it).
 std::vector<std::string> row_seeds(const std::string& csv) {
   std::vector<std::string> seeds;
@@ -114,7 +130,8 @@ TEST(RunEpisodes, BadOptionsExitWithTwoBeforeWritingAnything) {
 
 TEST(RunEpisodes, AnExistingOutputIsRefusedUnlessOverwritten) {
   const std::string out = out_dir("existing");
-  const std::string args = "--scenario join_group --episodes 2 --no-bags --out " + out;
+  // From seed 2: seed 1's group is one ARI cannot join (exit 1), beside the point here.
+  const std::string args = "--scenario join_group --episodes 2 --seed 2 --no-bags --out " + out;
   ASSERT_EQ(run(args).status, 0);
   const std::string csv = read_all(out + "/join_group.csv");
   EXPECT_EQ(count_lines(csv), 3u);  // header and 2 rows
@@ -125,33 +142,36 @@ TEST(RunEpisodes, AnExistingOutputIsRefusedUnlessOverwritten) {
   fs::remove(out + "/join_group.csv");
   fs::remove(out + "/join_group.settings.yaml");
   std::ofstream(out + "/join_group_2.bag.active") << "half";
-  expect_refused(run("--scenario join_group --episodes 2 --out " + out), "1 bags of its seeds");
+  expect_refused(run("--scenario join_group --episodes 2 --seed 2 --out " + out),
+                 "1 bags of its seeds");
   const ProgramRun replaced =
-      run("--scenario join_group --episodes 3 --out " + out + " --overwrite");
+      run("--scenario join_group --episodes 3 --seed 2 --out " + out + " --overwrite");
   EXPECT_EQ(replaced.status, 0) << replaced.err;
   EXPECT_NE(replaced.err.find("--overwrite: removed its settings and 0 bags"), std::string::npos)
       << replaced.err;
-  expect_complete_bags(out, {"1", "2", "3"});
-  const ProgramRun again = run("--scenario join_group --episodes 1 --out " + out + " --overwrite");
+  expect_complete_bags(out, {"2", "3", "4"});
+  const ProgramRun again =
+      run("--scenario join_group --episodes 1 --seed 2 --out " + out + " --overwrite");
   EXPECT_NE(again.err.find("removed " + out + "/join_group.csv (3 rows), its settings and 3 bags"),
             std::string::npos)
       << again.err;
-  expect_complete_bags(out, {"1"});
+  expect_complete_bags(out, {"2"});
 }
 
 TEST(RunEpisodes, ResumeAddsTheMissingEpisodesAndKeepsTheRest) {
   const std::string out = out_dir("resume");
-  ASSERT_EQ(run("--scenario join_group --episodes 3 --out " + out).status, 0);
+  // From seed 2: seed 1's group is one ARI cannot join (exit 1), beside the point here.
+  ASSERT_EQ(run("--scenario join_group --episodes 3 --seed 2 --out " + out).status, 0);
   const std::string first = read_all(out + "/join_group.csv");
-  const std::string bag_1 = read_all(out + "/join_group_1.bag");
+  const std::string bag_2 = read_all(out + "/join_group_2.bag");
   // Other settings are refused, each difference named.
   const ProgramRun other =
       run("--scenario join_group --episodes 5 --seed 4 --no-bags --resume --out " + out);
   expect_refused(other, "was made with other settings");
-  EXPECT_NE(other.err.find("--seed: first seed 1 there, 4 now"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("--seed: first seed 2 there, 4 now"), std::string::npos) << other.err;
   EXPECT_NE(other.err.find("--no-bags: bags there, no bags now"), std::string::npos) << other.err;
   expect_refused(run("--scenario join_group --episodes 2 --resume --out " + out),
-                 "the row of episode 2 (scenario join_group, seed 3) is not one of this run's 2");
+                 "the row of episode 2 (scenario join_group, seed 4) is not one of this run's 2");
 
   const ProgramRun resumed = run("--scenario join_group --episodes 5 --resume --out " + out);
   EXPECT_EQ(resumed.status, 0) << resumed.err;
@@ -159,9 +179,9 @@ TEST(RunEpisodes, ResumeAddsTheMissingEpisodesAndKeepsTheRest) {
   const std::string csv = read_all(out + "/join_group.csv");
   EXPECT_EQ(count_lines(csv), 6u);
   EXPECT_EQ(csv.substr(0, first.size()), first);  // the first 3 rows, byte for byte
-  EXPECT_EQ(row_seeds(csv), (std::vector<std::string>{"1", "2", "3", "4", "5"}));
-  EXPECT_EQ(read_all(out + "/join_group_1.bag"), bag_1);
-  expect_complete_bags(out, {"1", "2", "3", "4", "5"});
+  EXPECT_EQ(row_seeds(csv), (std::vector<std::string>{"2", "3", "4", "5", "6"}));
+  EXPECT_EQ(read_all(out + "/join_group_2.bag"), bag_2);
+  expect_complete_bags(out, {"2", "3", "4", "5", "6"});
   EXPECT_NE(read_all(out + "/join_group.settings.yaml").find("episodes: 5\n"), std::string::npos);
 
   // Without --episodes it goes on to the count of the settings: nothing left.
@@ -169,12 +189,12 @@ TEST(RunEpisodes, ResumeAddsTheMissingEpisodesAndKeepsTheRest) {
   EXPECT_EQ(done.status, 0);
   EXPECT_NE(done.out.find("nothing to do, all 5 episodes are in"), std::string::npos);
   // A row cut short (a run killed while writing it) is removed, and its episode run again.
-  std::ofstream(out + "/join_group.csv", std::ios::app) << "join_group,5,6,1,\"cut";
+  std::ofstream(out + "/join_group.csv", std::ios::app) << "join_group,5,7,1,\"cut";
   const ProgramRun repaired = run("--scenario join_group --episodes 6 --resume --out " + out);
   EXPECT_EQ(repaired.status, 0) << repaired.err;
   EXPECT_NE(repaired.err.find("ended in a row cut short"), std::string::npos) << repaired.err;
   EXPECT_EQ(row_seeds(read_all(out + "/join_group.csv")),
-            (std::vector<std::string>{"1", "2", "3", "4", "5", "6"}));
+            (std::vector<std::string>{"2", "3", "4", "5", "6", "7"}));
 }
 
 // join_group with a script time limit too short to join anyone: every episode fails.
@@ -250,7 +270,11 @@ TEST(RunEpisodes, AnInterruptedRunKeepsCompleteEpisodesOnlyAndResumes) {
   EXPECT_NE(message.find("rerun with --resume to finish"), std::string::npos);
 
   const ProgramRun resumed = run("--scenario join_group --resume --out " + out);
-  EXPECT_EQ(resumed.status, 0) << resumed.err;
+  // 0 when every episode of the 50 succeeded, else 1 (a few of ARI's joins fail: docs/scenario.md,
+  // "Known limits").
+  const size_t failed = failed_rows(read_all(out + "/join_group.csv"));
+  EXPECT_EQ(resumed.status, failed > 0 ? 1 : 0) << resumed.err;
+  EXPECT_LT(failed, 10u);
   std::vector<std::string> all;
   for (int seed = 1; seed <= 50; ++seed) {
     all.push_back(std::to_string(seed));

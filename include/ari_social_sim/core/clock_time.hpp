@@ -14,7 +14,8 @@ namespace ari_social_sim::core {
 inline double clock_time_s(uint64_t steps, double step_s) {
   const auto step_ns = static_cast<uint64_t>(std::llround(step_s * 1e9));
   const uint64_t ns = steps * step_ns;
-  return static_cast<double>(ns / 1000000000u) + 1e-9 * static_cast<double>(ns % 1000000000u);
+  const uint64_t whole_s = ns / 1000000000u;  // whole seconds, exactly
+  return static_cast<double>(whole_s) + 1e-9 * static_cast<double>(ns % 1000000000u);
 }
 
 }  // namespace ari_social_sim::core

@@ -27,6 +27,8 @@ constexpr std::uintmax_t kMaxYamlFileBytes = std::uintmax_t{1024} * 1024;
 /// Supported value types: bool, int, unsigned, double, std::string, Eigen::Vector2d ([x, y]),
 /// std::vector<double>, std::vector<unsigned>, std::vector<std::string>,
 /// std::vector<Eigen::Vector2d> ([[x, y], ...]).
+// NOLINTNEXTLINE(bugprone-exception-escape): the implicit assignments assign a YAML::Node, which
+// may throw only for an invalid node; a YamlMap always holds a valid one.
 class YamlMap {
  public:
   /// `source` names the file or parameter namespace; `path` the position inside it ("" at the top).

@@ -46,7 +46,7 @@ class RobotNlu {
     const Exemplar* exemplar{nullptr};
   };
 
-  void add_exemplar(const std::string& text, std::vector<DialogueAct> acts);
+  void add_exemplar(const std::string& text, const std::vector<DialogueAct>& acts);
   void weigh_exemplars();
   std::map<int, double> weigh(const std::vector<std::string>& words) const;
   Match best_match(const std::string& sentence) const;

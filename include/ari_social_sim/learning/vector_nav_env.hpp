@@ -39,7 +39,7 @@ class VectorNavEnv {
 
   /// Throws core::RequestError naming num_envs or threads outside [1, kMaxEnvs] or
   /// [1, kMaxThreads].
-  VectorNavEnv(std::shared_ptr<const NavEnvSetup> setup, int num_envs, int threads);
+  VectorNavEnv(const std::shared_ptr<const NavEnvSetup>& setup, int num_envs, int threads);
   ~VectorNavEnv();
   VectorNavEnv(const VectorNavEnv&) = delete;
   VectorNavEnv& operator=(const VectorNavEnv&) = delete;

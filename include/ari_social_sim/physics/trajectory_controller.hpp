@@ -125,7 +125,6 @@ class TrajectoryController {
   JointTrajectory trajectory_;
   JointSetpoint desired_;
   std::vector<double> command_;
-  bool command_initialised_{false};
 
   GoalOutcome goal_;
   uint64_t next_goal_id_{1};

@@ -150,7 +150,6 @@ class Episode {
   void navigate();
   void converse();
 
-  const Scenario& scenario_;
   uint64_t seed_;
   EpisodeConfig config_;
   std::unique_ptr<world::Simulation> simulation_;

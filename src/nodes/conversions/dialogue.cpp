@@ -7,6 +7,7 @@ namespace ari_social_sim::nodes {
 
 std::vector<std::string> to_strings(const std::vector<dialogue::DialogueAct>& acts) {
   std::vector<std::string> out;
+  out.reserve(acts.size());
   for (const dialogue::DialogueAct& act : acts) {
     out.push_back(act.to_string());
   }
@@ -15,6 +16,7 @@ std::vector<std::string> to_strings(const std::vector<dialogue::DialogueAct>& ac
 
 std::vector<std::string> to_strings(const std::vector<dialogue::GoalLabel>& goals) {
   std::vector<std::string> out;
+  out.reserve(goals.size());
   for (const dialogue::GoalLabel& goal : goals) {
     out.push_back(goal.to_string());
   }

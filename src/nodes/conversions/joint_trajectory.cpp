@@ -5,6 +5,7 @@ namespace {
 
 std::vector<physics::JointTolerance> from_msg(const std::vector<JointTolerance>& tolerances) {
   std::vector<physics::JointTolerance> out;
+  out.reserve(tolerances.size());
   for (const JointTolerance& tolerance : tolerances) {
     out.push_back({tolerance.name, tolerance.position, tolerance.velocity, tolerance.acceleration});
   }

@@ -12,7 +12,7 @@ LiveDialogueNode::LiveDialogueNode(ros::NodeHandle& nh, const dialogue::Dialogue
                                    const dialogue::RobotNlu& nlu,
                                    const dialogue::DialogueRunConfig& run,
                                    dialogue::SpeechStage& stage)
-    : setup_(setup), dialogue_(setup, nlu, run, stage), tts_(nh, "/tts", false) {
+    : dialogue_(setup, nlu, run, stage), tts_(nh, "/tts", false) {
   utterance_pub_ = nh.advertise<DialogueUtterance>("/sim/dialogue/utterances", 100);
   outcome_pub_ = nh.advertise<DialogueOutcome>("/sim/dialogue/outcome", 10, /*latch=*/true);
   tts_.registerGoalCallback([this] { on_goal(); });

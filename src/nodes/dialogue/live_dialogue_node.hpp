@@ -29,7 +29,6 @@ class LiveDialogueNode {
   void on_preempt();
   void publish(const dialogue::SpokenDialogueEvents& events);
 
-  const dialogue::DialogueSetup& setup_;
   dialogue::SpokenDialogue dialogue_;
   actionlib::SimpleActionServer<TtsAction> tts_;
   ros::Publisher utterance_pub_, outcome_pub_;

@@ -24,8 +24,8 @@ ControllerInterface::ControllerInterface(ros::NodeHandle& nh,
   command_sub_ = nh.subscribe(ns + "/command", 1, &ControllerInterface::on_command, this);
   state_pub_ = nh.advertise<JointTrajectoryControllerState>(ns + "/state", 10);
   query_ = nh.advertiseService(ns + "/query_state", &ControllerInterface::on_query, this);
-  server_.registerGoalCallback([this](Server::GoalHandle goal) { on_goal(goal); });
-  server_.registerCancelCallback([this](Server::GoalHandle goal) { on_cancel(goal); });
+  server_.registerGoalCallback([this](const Server::GoalHandle& goal) { on_goal(goal); });
+  server_.registerCancelCallback([this](const Server::GoalHandle& goal) { on_cancel(goal); });
   server_.start();
 }
 
@@ -121,7 +121,7 @@ void ControllerInterface::on_goal(Server::GoalHandle goal) {
   }
 }
 
-void ControllerInterface::on_cancel(Server::GoalHandle goal) {
+void ControllerInterface::on_cancel(const Server::GoalHandle& goal) {
   if (active_ && *active_ == goal) {
     controller_.cancel(active_id_, physics_.time_s());
     active_->setCanceled(FollowJointTrajectoryResult(), "canceled");

@@ -41,7 +41,7 @@ class ControllerInterface {
 
   void on_goal(Server::GoalHandle goal);
 
-  void on_cancel(Server::GoalHandle goal);
+  void on_cancel(const Server::GoalHandle& goal);
 
   bool on_query(QueryTrajectoryState::Request& request, QueryTrajectoryState::Response& response);
 

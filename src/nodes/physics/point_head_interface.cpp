@@ -31,8 +31,8 @@ PointHeadInterface::PointHeadInterface(ros::NodeHandle& nh, physics::AriPhysics&
       head_(physics.controller("head_controller")),
       server_(nh, "/head_controller/point_head_action", false),
       watch_(kTfWaitS) {
-  server_.registerGoalCallback([this](Server::GoalHandle goal) { on_goal(goal); });
-  server_.registerCancelCallback([this](Server::GoalHandle goal) { on_cancel(goal); });
+  server_.registerGoalCallback([this](const Server::GoalHandle& goal) { on_goal(goal); });
+  server_.registerCancelCallback([this](const Server::GoalHandle& goal) { on_cancel(goal); });
   server_.start();
 }
 
@@ -229,7 +229,7 @@ void PointHeadInterface::on_goal(Server::GoalHandle goal) {
   }
 }
 
-void PointHeadInterface::on_cancel(Server::GoalHandle goal) {
+void PointHeadInterface::on_cancel(const Server::GoalHandle& goal) {
   if (active_ && *active_ == goal) {
     if (moving_) {
       head_.cancel(head_goal_id_, physics_.time_s());

@@ -78,7 +78,7 @@ class PointHeadInterface {
 
   void on_goal(Server::GoalHandle goal);
 
-  void on_cancel(Server::GoalHandle goal);
+  void on_cancel(const Server::GoalHandle& goal);
 
   physics::AriPhysics& physics_;
   const SimClock& clock_;
