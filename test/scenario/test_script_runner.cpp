@@ -368,7 +368,6 @@ TEST(ScriptRunner, ActPatterns) {
   EXPECT_TRUE(act_matches("*", "anything"));
 }
 
-
 // What an hour-long run of `states` (starting at state a) keeps of its visits.
 struct VisitRecord {
   std::vector<StateVisit> visits;
