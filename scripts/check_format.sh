@@ -46,6 +46,6 @@ fi
 if check "${files[@]}"; then
   echo "check_format: ${#files[@]} C++ files formatted as .clang-format says"
 else
-  echo "check_format: files above are not formatted; run clang-format-14 -i on them" >&2
+  echo "check_format: files above are not formatted, clang-format-14 -i fixes them" >&2
   exit 1
 fi

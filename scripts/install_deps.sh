@@ -29,8 +29,9 @@ packages=(
   # MATLAB files (docs/data.md)
   curl python3-scipy
   libgtest-dev googletest libbenchmark-dev
-  # the habits scripts/test.sh enforces: formatting (check_format.sh) and clang_tidy.sh
-  clang-format-14 clang-tidy-14
+  # the habits scripts/test.sh enforces: formatting (check_format.sh) and clang_tidy.sh, which
+  # asks git for the sources a change touches
+  clang-format-14 clang-tidy-14 git
   # inspection
   rviz xvfb xauth imagemagick
   # rsvg-convert renders docs/architecture.svg to look at (ImageMagick reads no SVG without it)
