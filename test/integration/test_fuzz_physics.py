@@ -183,15 +183,18 @@ class FuzzPhysics(unittest.TestCase):
             client.cancel_all_goals()
 
     def fuzz_requests(self, rng, sent, refused, errors):
+        proxies = {}
+        for controller in CONTROLLERS:
+            name = "/%s/query_state" % controller
+            rospy.wait_for_service(name, timeout=30.0)
+            proxies[controller] = rospy.ServiceProxy(name, QueryTrajectoryState)
         for _ in range(REQUESTS):
             controller = rng.choice(CONTROLLERS)
             request = QueryTrajectoryState._request_class(time=rospy.Time.now())
             key = "/%s/query_state %s" % (controller, mutate(rng, request))
             sent[key] += 1
-            proxy = rospy.ServiceProxy("/%s/query_state" % controller, QueryTrajectoryState)
             try:
-                proxy.wait_for_service(timeout=5.0)
-                proxy(request)
+                proxies[controller](request)
             except rospy.ServiceException:  # refused: the node answers the call with an error
                 refused[key] += 1
             except rospy.ROSException as e:
