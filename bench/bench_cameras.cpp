@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/mapping/octomap_mapper.hpp"
 #include "ari_social_sim/model/world_file.hpp"
-#include "ari_social_sim/physics/camera_rig.hpp"
-#include "ari_social_sim/physics/octomap_mapper.hpp"
-#include "ari_social_sim/physics/people_figures.hpp"
+#include "ari_social_sim/rendering/camera_rig.hpp"
+#include "ari_social_sim/rendering/people_figures.hpp"
 
 namespace {
 
@@ -42,11 +42,11 @@ std::vector<Placement> placements_at(double t_s) {
 }
 
 // The people as the simulator draws them: articulated figures, posed per frame.
-physics::RenderMesh figures_at(double t_s, size_t count, physics::PeopleFigures& figures) {
-  std::vector<physics::FigureInput> people;
+rendering::RenderMesh figures_at(double t_s, size_t count, rendering::PeopleFigures& figures) {
+  std::vector<rendering::FigureInput> people;
   const std::vector<Placement> placements = placements_at(t_s);
   for (size_t i = 0; i < count; ++i) {
-    physics::FigureInput person;
+    rendering::FigureInput person;
     person.traits = {static_cast<uint32_t>(i + 1), 20.0 + 5.0 * i,
                      i % 2 == 0 ? model::Gender::kFemale : model::Gender::kMale, i == 1};
     person.pose = placements[i].pose;
@@ -61,16 +61,16 @@ physics::RenderMesh figures_at(double t_s, size_t count, physics::PeopleFigures&
 
 // The baseline the figures are weighed against: the shapes people had before them (an elliptic
 // body cylinder, a head sphere, a face plate and two eye boxes), tessellated every frame.
-physics::RenderMesh shapes_at(double t_s, size_t count) {
-  auto solid = [](physics::PrimitiveShape shape, const Eigen::Isometry3d& X,
+rendering::RenderMesh shapes_at(double t_s, size_t count) {
+  auto solid = [](rendering::PrimitiveShape shape, const Eigen::Isometry3d& X,
                   const Eigen::Vector3d& size) {
-    physics::RenderPrimitive primitive;
+    rendering::RenderPrimitive primitive;
     primitive.shape = shape;
     primitive.X_world_shape = X;
     primitive.size = size;
     return primitive;
   };
-  std::vector<physics::RenderPrimitive> primitives;
+  std::vector<rendering::RenderPrimitive> primitives;
   const std::vector<Placement> placements = placements_at(t_s);
   for (size_t i = 0; i < count; ++i) {
     const Placement& p = placements[i];
@@ -78,25 +78,25 @@ physics::RenderMesh shapes_at(double t_s, size_t count) {
       return Eigen::Translation3d(p.pose.position.x(), p.pose.position.y(), z) *
              Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
     };
-    primitives.push_back(
-        solid(physics::PrimitiveShape::kCylinder, planar(0.725, p.pose.theta), {0.26, 0.42, 1.45}));
+    primitives.push_back(solid(rendering::PrimitiveShape::kCylinder, planar(0.725, p.pose.theta),
+                               {0.26, 0.42, 1.45}));
     const Eigen::Isometry3d head = planar(1.6, p.face_yaw);
-    primitives.push_back(solid(physics::PrimitiveShape::kSphere, head, {0.22, 0.22, 0.22}));
-    primitives.push_back(solid(physics::PrimitiveShape::kBox,
+    primitives.push_back(solid(rendering::PrimitiveShape::kSphere, head, {0.22, 0.22, 0.22}));
+    primitives.push_back(solid(rendering::PrimitiveShape::kBox,
                                head * Eigen::Translation3d(0.0935, 0.0, 0.0), {0.04, 0.132, 0.11}));
     for (double side : {-1.0, 1.0}) {
-      primitives.push_back(solid(physics::PrimitiveShape::kBox,
+      primitives.push_back(solid(rendering::PrimitiveShape::kBox,
                                  head * Eigen::Translation3d(0.1185, side * 0.03, 0.02),
                                  {0.012, 0.022, 0.018}));
     }
   }
-  return physics::mesh_of(primitives);
+  return rendering::mesh_of(primitives);
 }
 
 // A rig with only the named cameras enabled, sized as given.
-physics::CameraRig rig_with(const std::vector<std::string>& names, int width, int height) {
-  physics::CameraRigConfig config;
-  for (physics::CameraSpec& spec : config.cameras) {
+rendering::CameraRig rig_with(const std::vector<std::string>& names, int width, int height) {
+  rendering::CameraRigConfig config;
+  for (rendering::CameraSpec& spec : config.cameras) {
     spec.enabled = false;
     for (const std::string& name : names) {
       if (spec.name == name) {
@@ -106,21 +106,21 @@ physics::CameraRig rig_with(const std::vector<std::string>& names, int width, in
       }
     }
   }
-  physics::CameraRig rig(config);
+  rendering::CameraRig rig(config);
   rig.set_world(
       model::load_world_file(std::string(ARI_SOURCE_DIR) + "/worlds/hospital_waiting_room.yaml"),
-      physics::SceneStyle{});
+      rendering::SceneStyle{});
   return rig;
 }
 
 // One frame of one camera per iteration, the five people in front posed each frame; items =
 // frames.
 void render_frames(benchmark::State& state, const std::string& camera) {
-  physics::CameraRig rig =
+  rendering::CameraRig rig =
       rig_with({camera}, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  const Eigen::Isometry3d X = physics::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
-  physics::PeopleFigures figures;
-  physics::CameraFrame frame;
+  const Eigen::Isometry3d X = rendering::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
+  rendering::PeopleFigures figures;
+  rendering::CameraFrame frame;
   double t = 0.0;
   rig.set_dynamic_mesh(figures_at(t, 5, figures));
   rig.render(0, X, frame);  // first frame allocates framebuffers and compiles the pipeline
@@ -137,11 +137,11 @@ void render_frames(benchmark::State& state, const std::string& camera) {
 // The head camera at 1280x960 with ten people, drawn as the earlier shapes (figures:0) or as
 // articulated figures posed per frame (figures:1): the figures' cost relative to the shapes.
 void BM_HeadCameraTenPeople(benchmark::State& state) {
-  physics::CameraRig rig = rig_with({"head_front_camera"}, 0, 0);
-  const Eigen::Isometry3d X = physics::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
+  rendering::CameraRig rig = rig_with({"head_front_camera"}, 0, 0);
+  const Eigen::Isometry3d X = rendering::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
   const bool use_figures = state.range(0) == 1;
-  physics::PeopleFigures figures;
-  physics::CameraFrame frame;
+  rendering::PeopleFigures figures;
+  rendering::CameraFrame frame;
   double t = 0.0;
   auto people = [&] { return use_figures ? figures_at(t, 10, figures) : shapes_at(t, 10); };
   rig.set_dynamic_mesh(people());
@@ -196,9 +196,9 @@ BENCHMARK(BM_FisheyeFront)
 // real-time factor the cameras allow on their own (physics excluded; see docs/PERFORMANCE.md for
 // the combination).
 void BM_HeadAndRgbdSimSecond(benchmark::State& state) {
-  physics::CameraRig rig = rig_with({"head_front_camera", "torso_front_camera"}, 0, 0);
-  physics::PeopleFigures figures;
-  physics::CameraFrame frame;
+  rendering::CameraRig rig = rig_with({"head_front_camera", "torso_front_camera"}, 0, 0);
+  rendering::PeopleFigures figures;
+  rendering::CameraFrame frame;
   double t = 0.0;
   for (auto _ : state) {
     for (int step = 0; step < 1000; ++step, t += 0.001) {
@@ -208,7 +208,7 @@ void BM_HeadAndRgbdSimSecond(benchmark::State& state) {
       }
       rig.set_dynamic_mesh(figures_at(t, 10, figures));
       for (const size_t i : due) {
-        rig.render(i, physics::X_world_optical(rig.cameras()[i], kAri, 0.15, 0.05), frame);
+        rig.render(i, rendering::X_world_optical(rig.cameras()[i], kAri, 0.15, 0.05), frame);
       }
     }
   }
@@ -218,16 +218,16 @@ BENCHMARK(BM_HeadAndRgbdSimSecond)->UseRealTime()->Unit(benchmark::kMillisecond)
 
 // Inserting one torso depth image (848 x 480, every 4th pixel, 4 m rays) into the OctoMap.
 void BM_OctomapInsert(benchmark::State& state) {
-  physics::CameraRig rig = rig_with({"torso_front_camera"}, 0, 0);
-  physics::PeopleFigures figures;
+  rendering::CameraRig rig = rig_with({"torso_front_camera"}, 0, 0);
+  rendering::PeopleFigures figures;
   rig.set_dynamic_mesh(figures_at(0.0, 5, figures));
-  const Eigen::Isometry3d X = physics::X_world_optical(rig.cameras()[0], kAri, 0.0, 0.0);
-  physics::CameraFrame frame;
+  const Eigen::Isometry3d X = rendering::X_world_optical(rig.cameras()[0], kAri, 0.0, 0.0);
+  rendering::CameraFrame frame;
   rig.render(0, X, frame);
-  const physics::CameraInfo& info = rig.info(0);
-  const physics::PinholeModel model{info.width, info.height, info.K[0],
-                                    info.K[4],  info.K[2],   info.K[5]};
-  physics::OctomapMapper mapper(physics::MappingConfig{});
+  const rendering::CameraInfo& info = rig.info(0);
+  const rendering::PinholeModel model{info.width, info.height, info.K[0],
+                                      info.K[4],  info.K[2],   info.K[5]};
+  mapping::OctomapMapper mapper(mapping::MappingConfig{});
   for (auto _ : state) {
     mapper.insert_depth(frame.depth, model, X);
   }

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "ari_social_sim/scenario/episode.hpp"
-#include "episode_bag.hpp"
+#include "ari_social_sim/engine/episode.hpp"
+#include "episode_bag/episode_bag.hpp"
 
 namespace {
 
@@ -17,13 +17,13 @@ const std::string kScenarios = std::string(ARI_SOURCE_DIR) + "/scenarios/";
 // Runs episodes with seeds 1, 2, 3, ... of the named scenario.
 void run_scenario(benchmark::State& state, const std::string& name, bool with_bag) {
   const scenario::Scenario loaded = scenario::load_scenario_file(kScenarios + name + ".yaml");
-  const scenario::EpisodeConfig config =
-      scenario::EpisodeConfig::load(std::string(ARI_SOURCE_DIR) + "/config");
+  const engine::EpisodeConfig config =
+      engine::EpisodeConfig::load(std::string(ARI_SOURCE_DIR) + "/config");
   uint64_t seed = 1;
   double sim_s = 0.0;
   int successes = 0;
   for (auto _ : state) {
-    scenario::Episode episode(loaded, seed++, config);
+    engine::Episode episode(loaded, seed++, config);
     std::unique_ptr<tools::EpisodeBag> bag;
     if (with_bag) {
       bag = std::make_unique<tools::EpisodeBag>("/tmp/bench_scenario.bag", loaded.name);

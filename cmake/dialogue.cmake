@@ -89,11 +89,8 @@ if(CATKIN_ENABLE_TESTING)
 endif()
 
 # dialogue_node: thin ROS adapter over the dialogue core, three modes (docs/dialogue.md).
-add_library(ari_dialogue_conversions src/nodes/conversions/dialogue.cpp)
-target_include_directories(ari_dialogue_conversions PUBLIC
-  ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS} PRIVATE src/nodes)
-target_link_libraries(ari_dialogue_conversions PUBLIC ari_dialogue ari_world ${catkin_LIBRARIES})
-add_dependencies(ari_dialogue_conversions ${PROJECT_NAME}_generate_messages_cpp)
+add_library(ari_dialogue_conversions src/dialogue_conversions/dialogue.cpp)
+target_link_libraries(ari_dialogue_conversions PUBLIC ari_dialogue ari_world ari_node_support)
 add_executable(dialogue_node
   src/nodes/dialogue_node.cpp
   src/nodes/dialogue/asr_stage.cpp
@@ -101,10 +98,10 @@ add_executable(dialogue_node
   src/nodes/dialogue/request_checks.cpp
   src/nodes/dialogue/rl_env_services.cpp
   src/nodes/dialogue/sim_say_client.cpp)
-target_include_directories(dialogue_node PRIVATE src/nodes)
-# The world stage (mode 1) is scenario::WorldSpeechStage, fed /sim/world_state as world snapshots.
+# The world stage (mode 1) is world_speech::WorldSpeechStage, fed /sim/world_state as world
+# snapshots.
 target_link_libraries(dialogue_node
-  ari_dialogue_conversions ari_world_conversions ari_world_speech_stage)
+  ari_dialogue_conversions ari_world_conversions ari_world_speech)
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/dialogue_world.test DEPENDENCIES dialogue_node world_node)

@@ -1,8 +1,8 @@
 # docs/parameters.md, generated from the config structs of every module by parameter_docs, and the
 # test that keeps the committed page up to date.
-add_library(ari_parameters_page src/tools/parameter_docs/parameters_page.cpp)
-target_include_directories(ari_parameters_page PUBLIC src/tools/parameter_docs)
-target_link_libraries(ari_parameters_page PUBLIC ari_scenario ari_learning ari_physics ari_rendering
+add_library(ari_parameters_page src/parameters_page/parameters_page.cpp)
+target_include_directories(ari_parameters_page PUBLIC ${PROJECT_SOURCE_DIR}/src)
+target_link_libraries(ari_parameters_page PUBLIC ari_engine ari_learning ari_physics ari_rendering
   ari_mapping)
 
 add_executable(parameter_docs src/tools/parameter_docs/parameter_docs.cpp)

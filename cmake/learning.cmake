@@ -8,7 +8,7 @@ add_library(ari_learning
   src/learning/scenario_nav_env.cpp
   src/learning/social_score.cpp
   src/learning/vector_nav_env.cpp)
-target_link_libraries(ari_learning PUBLIC ari_scenario)
+target_link_libraries(ari_learning PUBLIC ari_engine)
 
 # catkin found the interpreter with FindPython3; pybind11 then needs its module development part.
 find_package(Python3 REQUIRED COMPONENTS Interpreter Development.Module)

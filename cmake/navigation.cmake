@@ -59,7 +59,7 @@ endif()
 
 # nav_benchmark: the navigation benchmark (a user-facing tool, `rosrun ari_social_sim nav_benchmark`).
 add_executable(nav_benchmark src/tools/nav_benchmark/nav_benchmark.cpp)
-target_link_libraries(nav_benchmark ari_learning)
+target_link_libraries(nav_benchmark ari_learning ari_batch)
 target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)
@@ -71,11 +71,11 @@ endif()
 
 # social_mpc_node: thin ROS adapter over the navigation core.
 add_library(ari_navigation_conversions
-  src/nodes/conversions/navigation_msgs.cpp
-  src/nodes/measured_ari.cpp)
+  src/navigation_conversions/measured_ari.cpp
+  src/navigation_conversions/navigation_msgs.cpp)
 target_link_libraries(ari_navigation_conversions PUBLIC ari_navigation ari_world_conversions)
 add_executable(social_mpc_node src/nodes/social_mpc_node.cpp)
-target_link_libraries(social_mpc_node ari_navigation_conversions ari_perceived_persons)
+target_link_libraries(social_mpc_node ari_navigation_conversions ari_perception_conversions)
 
 if(CATKIN_ENABLE_TESTING)
   add_rostest_gtest(test_social_navigation test/integration/social_navigation.test

@@ -45,25 +45,22 @@ install(TARGETS detect_groups RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATI
 
 # hri_perception_node and group_detection_node: thin ROS adapters over the perception core
 # (ROS4HRI topics, tf, markers).
+# With PerceivedPersons: what the nodes that act on perceived people (social_mpc_node,
+# scenario_node, group_detection_node) read of ROS4HRI.
 add_library(ari_perception_conversions
-  src/nodes/conversions/group_markers.cpp
-  src/nodes/conversions/hri_messages.cpp
-  src/nodes/conversions/perception_markers.cpp)
+  src/perception_conversions/group_markers.cpp
+  src/perception_conversions/hri_messages.cpp
+  src/perception_conversions/perceived_persons.cpp
+  src/perception_conversions/perception_markers.cpp)
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)
 
-# What the nodes that act on perceived people (social_mpc_node, scenario_node,
-# group_detection_node) read of ROS4HRI.
-add_library(ari_perceived_persons src/nodes/perceived_persons.cpp)
-target_link_libraries(ari_perceived_persons PUBLIC ari_perception_conversions)
-
-add_executable(hri_perception_node src/nodes/hri_perception_node.cpp
-  src/nodes/conversions/image.cpp)
+add_executable(hri_perception_node src/nodes/hri_perception_node.cpp)
 target_link_libraries(hri_perception_node ari_perception_conversions ari_rendering)
 install(TARGETS hri_perception_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # group_detection_node: GCFF on whichever persons /humans/persons/tracked lists, placed from tf.
 add_executable(group_detection_node src/nodes/group_detection_node.cpp)
-target_link_libraries(group_detection_node ari_perceived_persons)
+target_link_libraries(group_detection_node ari_perception_conversions)
 install(TARGETS group_detection_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
@@ -138,7 +135,7 @@ if(benchmark_FOUND)
   # every per-id container (docs/PERFORMANCE.md, "Soak"). A plain program (it prints a table over
   # time rather than timing a case), built with the benchmarks.
   add_executable(perception_soak EXCLUDE_FROM_ALL bench/perception_soak.cpp)
-  target_link_libraries(perception_soak ari_perception ari_navigation ari_scenario ari_world)
+  target_link_libraries(perception_soak ari_perception ari_navigation ari_engine ari_world)
   target_include_directories(perception_soak PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
   set_target_properties(perception_soak PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
   add_dependencies(benchmarks perception_soak)

@@ -32,18 +32,13 @@ set(ari_urdf "${PROJECT_SOURCE_DIR}/urdf/ari.urdf")
 # ari_physics_node: thin ROS adapter over the physics core.
 add_executable(ari_physics_node
   src/nodes/ari_physics_node.cpp
-  src/nodes/camera_interface.cpp
-  src/nodes/conversions/image.cpp
-  src/nodes/conversions/joint_trajectory.cpp
+  src/nodes/physics/camera_interface.cpp
   src/nodes/physics/controller_interface.cpp
+  src/nodes/physics/joint_trajectory.cpp
   src/nodes/physics/odom_frame.cpp
   src/nodes/physics/point_head_interface.cpp)
-target_include_directories(ari_physics_node PRIVATE ${CATKIN_DEVEL_PREFIX}/include
-  ${catkin_INCLUDE_DIRS})
-# ari_rendering and ari_mapping: the cameras' core (cmake/cameras.cmake).
-target_link_libraries(ari_physics_node ari_physics ari_rendering ari_mapping ari_world_conversions
-  ${catkin_LIBRARIES})
-add_dependencies(ari_physics_node ${PROJECT_NAME}_generate_messages_cpp)
+# ari_rendering and ari_mapping: the cameras' cores (cmake/rendering.cmake).
+target_link_libraries(ari_physics_node ari_physics ari_rendering ari_mapping ari_world_conversions)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_physics

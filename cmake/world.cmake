@@ -48,20 +48,30 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(test_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
+# What every node shares (node_support/): parameters, input counters, a renewing tf buffer, one
+# publisher per topic, image messages, the frames' names and the common main. Its headers, like
+# those of every ROS-side library, are included by folder ("node_support/frames.hpp").
+find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
+add_library(ari_node_support
+  src/node_support/image.cpp
+  src/node_support/input_counters.cpp
+  src/node_support/renewing_tf_buffer.cpp
+  src/node_support/ros_params.cpp
+  src/node_support/single_publisher.cpp)
+target_include_directories(ari_node_support PUBLIC ${PROJECT_SOURCE_DIR}/src
+  ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS} ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(ari_node_support PUBLIC ari_core ${catkin_LIBRARIES} opencv_core opencv_imgproc
+  opencv_imgcodecs)
+add_dependencies(ari_node_support ${PROJECT_NAME}_generate_messages_cpp)
+
 # world_node: thin ROS adapter over the world core.
 add_library(ari_world_conversions
-  src/nodes/conversions/ari_base.cpp
-  src/nodes/conversions/marker_builder.cpp
-  src/nodes/conversions/world_markers.cpp
-  src/nodes/conversions/transform.cpp
-  src/nodes/conversions/world_state.cpp
-  src/nodes/input_counters.cpp
-  src/nodes/renewing_tf_buffer.cpp
-  src/nodes/ros_params.cpp
-  src/nodes/single_publisher.cpp)
-target_include_directories(ari_world_conversions PUBLIC ${CATKIN_DEVEL_PREFIX}/include ${catkin_INCLUDE_DIRS})
-target_link_libraries(ari_world_conversions PUBLIC ari_world ${catkin_LIBRARIES})
-add_dependencies(ari_world_conversions ${PROJECT_NAME}_generate_messages_cpp)
+  src/world_conversions/ari_base.cpp
+  src/world_conversions/marker_builder.cpp
+  src/world_conversions/world_markers.cpp
+  src/world_conversions/transform.cpp
+  src/world_conversions/world_state.cpp)
+target_link_libraries(ari_world_conversions PUBLIC ari_world ari_node_support)
 
 add_executable(world_node src/nodes/world_node.cpp)
 target_link_libraries(world_node ari_world_conversions)

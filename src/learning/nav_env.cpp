@@ -9,6 +9,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/engine/ari_observation.hpp"
 #include "ari_social_sim/learning/ground_truth.hpp"
 #include "ari_social_sim/learning/scenario_nav_env.hpp"
 #include "ari_social_sim/model/ari_limits.hpp"
@@ -16,7 +17,6 @@
 #include "ari_social_sim/navigation/signed_distance_field.hpp"
 #include "ari_social_sim/perception/group_candidates.hpp"
 #include "ari_social_sim/perception/tracked_persons.hpp"
-#include "ari_social_sim/scenario/ari_observation.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
@@ -73,7 +73,7 @@ std::shared_ptr<const NavEnvSetup> NavEnvSetup::load(const std::string& package_
   setup->worlds = EpisodeWorlds::load(package_dir + "/worlds");
   if (setup->task.task == NavTask::kScenario) {
     setup->scenario = scenario::load_scenario_file(setup->task.scenario);
-    setup->episode = scenario::EpisodeConfig::load(package_dir + "/config");
+    setup->episode = engine::EpisodeConfig::load(package_dir + "/config");
     setup->episode->perception.errors_enabled = setup->task.perception_errors;
   }
   return setup;
@@ -117,7 +117,7 @@ NavEnv::NavEnv(std::shared_ptr<const NavEnvSetup> setup)
 NavEnv::~NavEnv() = default;
 
 navigation::RobotObservation NavEnv::robot() const {
-  return scenario::observe_ari(*episode_.simulation->ari());
+  return engine::observe_ari(*episode_.simulation->ari());
 }
 
 void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {

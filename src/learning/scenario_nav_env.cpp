@@ -52,7 +52,7 @@ double ScenarioNavEnv::goal_distance() const {
 
 void ScenarioNavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   const uint64_t episode_seed = seeds_.take(seed);
-  episode_ = std::make_unique<scenario::Episode>(*setup_->scenario, episode_seed, config_);
+  episode_ = std::make_unique<engine::Episode>(*setup_->scenario, episode_seed, config_);
   score_ = std::make_unique<SocialScore>(footprint_, setup_->navigation.mpc.personal_space,
                                          std::vector<std::string>{}, "",
                                          setup_->navigation.scene.group_stride_m);

@@ -25,20 +25,20 @@
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
-#include "ari_social_sim/physics/renderer.hpp"
+#include "ari_social_sim/rendering/renderer.hpp"
 #include "ari_social_sim/world/scene.hpp"
-#include "camera_interface.hpp"
-#include "conversions/ari_base.hpp"
-#include "frames.hpp"
-#include "input_counters.hpp"
-#include "node_main.hpp"
-#include "physics/controller_interface.hpp"
-#include "physics/odom_frame.hpp"
-#include "physics/point_head_interface.hpp"
-#include "physics/sim_clock.hpp"
-#include "renewing_tf_buffer.hpp"
-#include "ros_params.hpp"
-#include "single_publisher.hpp"
+#include "node_support/frames.hpp"
+#include "node_support/input_counters.hpp"
+#include "node_support/node_main.hpp"
+#include "node_support/renewing_tf_buffer.hpp"
+#include "node_support/ros_params.hpp"
+#include "node_support/single_publisher.hpp"
+#include "nodes/physics/camera_interface.hpp"
+#include "nodes/physics/controller_interface.hpp"
+#include "nodes/physics/odom_frame.hpp"
+#include "nodes/physics/point_head_interface.hpp"
+#include "nodes/physics/sim_clock.hpp"
+#include "world_conversions/ari_base.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -85,10 +85,10 @@ class PhysicsNode {
     if (config_.cameras_enabled) {
       try {
         cameras_ = std::make_unique<CameraInterface>(nh_, config_, world, *physics_);
-      } catch (const physics::RenderError& e) {
-        throw physics::RenderError(std::string(e.what()) +
-                                   " (run with _cameras_enabled:=false to simulate without "
-                                   "cameras)");
+      } catch (const rendering::RenderError& e) {
+        throw rendering::RenderError(std::string(e.what()) +
+                                     " (run with _cameras_enabled:=false to simulate without "
+                                     "cameras)");
       }
     }
     if (config_.clock == physics::ClockSource::kOwn) {

@@ -16,15 +16,15 @@
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 #include "ari_social_sim/perception/perception_frame.hpp"
-#include "ari_social_sim/scenario/world_speech_stage.hpp"
-#include "conversions/world_state.hpp"
-#include "dialogue/asr_stage.hpp"
-#include "dialogue/live_dialogue_node.hpp"
-#include "dialogue/rl_env_services.hpp"
-#include "dialogue/sim_say_client.hpp"
-#include "node_main.hpp"
-#include "ros_params.hpp"
-#include "single_publisher.hpp"
+#include "ari_social_sim/world_speech/world_speech_stage.hpp"
+#include "node_support/node_main.hpp"
+#include "node_support/ros_params.hpp"
+#include "node_support/single_publisher.hpp"
+#include "nodes/dialogue/asr_stage.hpp"
+#include "nodes/dialogue/live_dialogue_node.hpp"
+#include "nodes/dialogue/rl_env_services.hpp"
+#include "nodes/dialogue/sim_say_client.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -103,7 +103,7 @@ int run_world_mode(ros::NodeHandle& nh, const DialogueNodeSetup& loaded,
   if (!run.humans) {
     ROS_INFO("dialogue_node: no simulated humans (~humans false): /tts voices ARI only");
   }
-  scenario::WorldSpeechStage stage(cast.robot_id, cast.human_ids, SimSayClient(nh));
+  world_speech::WorldSpeechStage stage(cast.robot_id, cast.human_ids, SimSayClient(nh));
   std::unique_ptr<LiveDialogueNode> node;
   // Subscribed before the node is built, so that no state is missed meanwhile. Every state
   // counts: a word lasts 8 steps at 150 wpm and 0.05 s, an act at least that.

@@ -18,12 +18,12 @@
 #include "ari_social_sim/perception/group_detection_run_config.hpp"
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
-#include "conversions/group_markers.hpp"
-#include "conversions/hri_messages.hpp"
-#include "node_main.hpp"
-#include "perceived_persons.hpp"
-#include "renewing_tf_buffer.hpp"
-#include "ros_params.hpp"
+#include "node_support/node_main.hpp"
+#include "node_support/renewing_tf_buffer.hpp"
+#include "node_support/ros_params.hpp"
+#include "perception_conversions/group_markers.hpp"
+#include "perception_conversions/hri_messages.hpp"
+#include "perception_conversions/perceived_persons.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {

@@ -29,19 +29,19 @@
 #include "ari_social_sim/perception/perception_run_config.hpp"
 #include "ari_social_sim/perception/rate_gate.hpp"
 #include "ari_social_sim/perception/sound_map.hpp"
-#include "ari_social_sim/physics/drawn_people.hpp"
-#include "ari_social_sim/physics/people_crops.hpp"
-#include "conversions/hri_messages.hpp"
-#include "conversions/image.hpp"
-#include "conversions/perception_markers.hpp"
-#include "conversions/transform.hpp"
-#include "conversions/world_state.hpp"
-#include "input_counters.hpp"
-#include "node_main.hpp"
-#include "per_id_handle.hpp"
-#include "renewing_tf_buffer.hpp"
-#include "ros_params.hpp"
-#include "single_publisher.hpp"
+#include "ari_social_sim/rendering/drawn_people.hpp"
+#include "ari_social_sim/rendering/people_crops.hpp"
+#include "node_support/image.hpp"
+#include "node_support/input_counters.hpp"
+#include "node_support/node_main.hpp"
+#include "node_support/per_id_handle.hpp"
+#include "node_support/renewing_tf_buffer.hpp"
+#include "node_support/ros_params.hpp"
+#include "node_support/single_publisher.hpp"
+#include "perception_conversions/hri_messages.hpp"
+#include "perception_conversions/perception_markers.hpp"
+#include "world_conversions/transform.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -300,9 +300,9 @@ class HriPerceptionNode {
     if (!X_map_optical) {
       return;
     }
-    const physics::PinholeModel& camera = *head_camera_;
+    const rendering::PinholeModel& camera = *head_camera_;
     for (const auto& [id, box] :
-         physics::face_boxes(drawn_->pose_at(stamp.toSec()), camera, *X_map_optical)) {
+         rendering::face_boxes(drawn_->pose_at(stamp.toSec()), camera, *X_map_optical)) {
       perception::ImageRegion roi;
       roi.xmin = double(box.x) / camera.width;
       roi.ymin = double(box.y) / camera.height;
@@ -313,7 +313,7 @@ class HriPerceptionNode {
   }
 
   void on_camera_info(const sensor_msgs::CameraInfo::ConstPtr& msg) {
-    const std::optional<physics::PinholeModel> model = pinhole_of(*msg);
+    const std::optional<rendering::PinholeModel> model = pinhole_of(*msg);
     if (!model) {
       ROS_WARN_THROTTLE(5.0, "hri_perception_node: %s: no usable intrinsics", kHeadInfoTopic);
       return;
@@ -433,18 +433,18 @@ class HriPerceptionNode {
                         kHeadImageTopic, msg.encoding.c_str());
       return;
     }
-    std::map<model::ObjectId, const physics::PosedPerson*> posed;
-    for (const physics::PosedPerson& person : drawn_->pose_at(msg.header.stamp.toSec())) {
+    std::map<model::ObjectId, const rendering::PosedPerson*> posed;
+    for (const rendering::PosedPerson& person : drawn_->pose_at(msg.header.stamp.toSec())) {
       posed[static_cast<model::ObjectId>(person.id)] = &person;
     }
-    const physics::CameraView view{image, *head_camera_, X_map_optical};
+    const rendering::CameraView view{image, *head_camera_, X_map_optical};
     for (const auto& [id, human] : tracked_faces_) {
       const auto found = posed.find(human);
       if (found == posed.end()) {
         continue;
       }
       FaceTopics& topics = faces_.of(id, tracked_time_s_);
-      const std::optional<physics::FaceImages> images = physics::face_images(
+      const std::optional<rendering::FaceImages> images = rendering::face_images(
           *found->second, view, face_size_, {wanted(topics.cropped), wanted(topics.aligned)});
       if (images && !images->cropped.empty()) {
         topics.cropped.publish(image_msg(images->cropped, msg.header));
@@ -459,7 +459,7 @@ class HriPerceptionNode {
       if (found == posed.end() || !wanted(topics.cropped)) {
         continue;
       }
-      if (const std::optional<cv::Mat> body = physics::body_image(*found->second, view)) {
+      if (const std::optional<cv::Mat> body = rendering::body_image(*found->second, view)) {
         topics.cropped.publish(image_msg(*body, msg.header));
       }
     }
@@ -605,14 +605,14 @@ class HriPerceptionNode {
   static constexpr double kMaxRoiPoseAge_s = 0.5;
   static constexpr double kMaxImageWait_s = 0.5;
   sensor_msgs::Image::ConstPtr pending_image_;
-  std::optional<physics::DrawnPeople> drawn_;
+  std::optional<rendering::DrawnPeople> drawn_;
   // The last perceived frame's faces and bodies, with the human each belongs to.
   std::vector<std::pair<std::string, model::ObjectId>> tracked_faces_, tracked_bodies_;
   double tracked_time_s_{-1.0};
   std::map<model::ObjectId, perception::ImageRegion> projected_faces_;  // this state's
   std::string head_camera_frame_;
   int face_size_{kDefaultFaceSize};
-  std::optional<physics::PinholeModel> head_camera_;
+  std::optional<rendering::PinholeModel> head_camera_;
   std::unique_ptr<RenewingTfBuffer> tf_buffer_;
   ros::Subscriber image_sub_, info_sub_;
 };

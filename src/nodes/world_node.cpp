@@ -46,13 +46,13 @@
 #include "ari_social_sim/world/service_requests.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
-#include "conversions/ari_base.hpp"
-#include "conversions/world_markers.hpp"
-#include "conversions/world_state.hpp"
-#include "frames.hpp"
-#include "input_counters.hpp"
-#include "node_main.hpp"
-#include "ros_params.hpp"
+#include "node_support/frames.hpp"
+#include "node_support/input_counters.hpp"
+#include "node_support/node_main.hpp"
+#include "node_support/ros_params.hpp"
+#include "world_conversions/ari_base.hpp"
+#include "world_conversions/world_markers.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {

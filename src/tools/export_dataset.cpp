@@ -30,18 +30,18 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/batch/batch_plan.hpp"
+#include "ari_social_sim/batch/progress_bar.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/format_text.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/progress_journal.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
-#include "ari_social_sim/physics/camera_rig.hpp"
-#include "ari_social_sim/physics/snapshot_cameras.hpp"
-#include "ari_social_sim/scenario/batch_plan.hpp"
-#include "ari_social_sim/scenario/coco_dataset.hpp"
-#include "ari_social_sim/scenario/episode.hpp"
-#include "ari_social_sim/scenario/progress_bar.hpp"
+#include "ari_social_sim/dataset/coco_dataset.hpp"
+#include "ari_social_sim/engine/episode.hpp"
+#include "ari_social_sim/rendering/camera_rig.hpp"
+#include "ari_social_sim/rendering/snapshot_cameras.hpp"
 
 namespace {
 
@@ -92,8 +92,8 @@ writing fails, 130 after SIGINT and 143 after SIGTERM.
 
 struct Options {
   std::string scenario;
-  scenario::BatchPlan plan;
-  scenario::PlanOptionsGiven given;
+  batch::BatchPlan plan;
+  batch::PlanOptionsGiven given;
   std::vector<std::string> cameras;  // rig names, in --cameras' order
   std::string out;
   std::optional<double> every_s;
@@ -147,7 +147,7 @@ Options parse_options(int argc, char** argv) {
     } else if (arg == "--every") {
       options.every_s = kEvery.parse(value);
     } else {
-      scenario::read_plan_option(arg, value, options.plan, options.given);
+      batch::read_plan_option(arg, value, options.plan, options.given);
     }
   }
   if (options.scenario.empty() || !options.given.episodes || options.cameras.empty() ||
@@ -209,19 +209,19 @@ struct Export {
   Options options;
   scenario::Scenario scenario;
   std::string scenario_file;
-  scenario::EpisodeConfig config;
+  engine::EpisodeConfig config;
   OutputPaths paths;
-  physics::CameraRigConfig rig;
+  rendering::CameraRigConfig rig;
   std::optional<core::ProgressJournal> journal;  // unset when the export is complete already
 };
 
 // What the COCO file's "info" says of the export, from the cameras the rig will render.
-scenario::DatasetSettings dataset_settings(const Export& run) {
-  scenario::DatasetSettings settings;
+dataset::DatasetSettings dataset_settings(const Export& run) {
+  dataset::DatasetSettings settings;
   settings.scenario = run.scenario.name;
   settings.plan = run.options.plan;
   settings.every_s = run.options.every_s;
-  for (const physics::CameraSpec& spec : run.rig.cameras) {
+  for (const rendering::CameraSpec& spec : run.rig.cameras) {
     if (spec.enabled) {
       settings.cameras.push_back(spec.name);
       settings.frame_rate_hz.push_back(spec.rate_hz);
@@ -233,17 +233,17 @@ scenario::DatasetSettings dataset_settings(const Export& run) {
 // The first line of the progress file: the COCO "info" and the digests of the scenario and
 // configuration files, so that --resume adds only episodes made the same way.
 std::string progress_settings(const Export& run) {
-  return "export_dataset " + scenario::CocoDataset(dataset_settings(run)).info_json() +
+  return "export_dataset " + dataset::CocoDataset(dataset_settings(run)).info_json() +
          " scenario_digest " +
-         scenario::digest_files({run.scenario_file, run.scenario.scene.world_path}) +
-         " config_digest " + scenario::digest_files(scenario::files_under(ARI_CONFIG_DIR, ".yaml"));
+         batch::digest_files({run.scenario_file, run.scenario.scene.world_path}) +
+         " config_digest " + batch::digest_files(batch::files_under(ARI_CONFIG_DIR, ".yaml"));
 }
 
 // --resume of an export whose annotations are written: nothing to run if they were made with these
 // options. Throws core::ConfigError otherwise.
 void check_complete_export(const Export& run) {
   const std::string info =
-      "\n\"info\": " + scenario::CocoDataset(dataset_settings(run)).info_json() + ",\n";
+      "\n\"info\": " + dataset::CocoDataset(dataset_settings(run)).info_json() + ",\n";
   std::ifstream in(run.paths.annotations, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
@@ -319,14 +319,14 @@ Export prepare(int argc, char** argv) {
     throw core::ConfigError("--scenario: " + run.scenario_file +
                             ": expected a scenario with ARI (the cameras are ARI's), got none");
   }
-  run.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
+  run.config = engine::EpisodeConfig::load(ARI_CONFIG_DIR);
   if (!options.given.seed) {
     options.plan.first_seed = run.scenario.scene.seed;
   }
   options.plan.validate("");
 
   // Only the chosen cameras render; --every sets their rate, so that CameraRig::due keeps time.
-  for (physics::CameraSpec& spec : run.rig.cameras) {
+  for (rendering::CameraSpec& spec : run.rig.cameras) {
     spec.enabled = std::find(options.cameras.begin(), options.cameras.end(), spec.name) !=
                    options.cameras.end();
     if (spec.enabled && options.every_s) {
@@ -389,9 +389,9 @@ class BadEpisode : public core::Error {
   using core::Error::Error;
 };
 
-std::unique_ptr<scenario::Episode> start_episode(const Export& run, uint64_t index, uint64_t seed) {
+std::unique_ptr<engine::Episode> start_episode(const Export& run, uint64_t index, uint64_t seed) {
   try {
-    return std::make_unique<scenario::Episode>(run.scenario, seed, run.config);
+    return std::make_unique<engine::Episode>(run.scenario, seed, run.config);
   } catch (const core::Error& e) {
     const bool bad_input = dynamic_cast<const core::ConfigError*>(&e) != nullptr ||
                            dynamic_cast<const core::RequestError*>(&e) != nullptr;
@@ -406,20 +406,20 @@ std::unique_ptr<scenario::Episode> start_episode(const Export& run, uint64_t ind
 // Renders one episode's frames due, writing each image as it is made (its path added to
 // `written`), until the episode ends (true) or a stop signal comes (false). Throws BadEpisode, or
 // core::Error when rendering or writing fails.
-bool export_episode(const Export& run, physics::CameraRig& rig, scenario::CocoDataset& dataset,
+bool export_episode(const Export& run, rendering::CameraRig& rig, dataset::CocoDataset& dataset,
                     uint64_t index, std::vector<std::string>& written) {
   const uint64_t seed = run.options.plan.seed_of(index);
-  const std::unique_ptr<scenario::Episode> episode = start_episode(run, index, seed);
+  const std::unique_ptr<engine::Episode> episode = start_episode(run, index, seed);
   // The looks vary from episode to episode and come back with the seed.
-  physics::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
+  rendering::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
   std::vector<uint64_t> frames(rig.cameras().size(), 0);  // per camera, for the file names
   uint64_t ordinal = 0;                                   // images of the episode, for the ids
   // The initial state first (frame 0 at time 0), then after every step.
   while (true) {
-    for (physics::LabelledImage& image : cameras.render_due(episode->snapshot())) {
+    for (rendering::LabelledImage& image : cameras.render_due(episode->snapshot())) {
       const std::string& camera = rig.cameras()[image.camera].name;
-      scenario::DatasetImage entry;
-      entry.id = scenario::DatasetIds::image(index, ordinal++);
+      dataset::DatasetImage entry;
+      entry.id = dataset::DatasetIds::image(index, ordinal++);
       entry.file_name = run.paths.image(camera, seed, frames[image.camera]++);
       entry.width = image.colour.cols;
       entry.height = image.colour.rows;
@@ -466,9 +466,9 @@ int export_episodes(Export& run) {
                 planned.size(), run.paths.annotations.c_str());
     return 0;
   }
-  physics::CameraRig rig(run.rig);
-  rig.set_world(run.scenario.scene.world, physics::SceneStyle{});
-  scenario::CocoDataset dataset(dataset_settings(run));
+  rendering::CameraRig rig(run.rig);
+  rig.set_world(run.scenario.scene.world, rendering::SceneStyle{});
+  dataset::CocoDataset dataset(dataset_settings(run));
   std::set<std::string> done;
   for (const core::ProgressJournal::Entry& entry : run.journal->kept()) {
     dataset.add_entries(entry.lines, run.journal->path());
@@ -488,7 +488,7 @@ int export_episodes(Export& run) {
     if (core::g_stop_signal != 0) {
       return report_stop(run, done.size(), planned.size(), dataset.image_count(), std::nullopt, 0);
     }
-    const scenario::CocoDataset::Mark mark = dataset.mark();
+    const dataset::CocoDataset::Mark mark = dataset.mark();
     std::vector<std::string> written;
     if (!export_episode(run, rig, dataset, index, written)) {
       for (const std::string& path : written) {
@@ -502,7 +502,7 @@ int export_episodes(Export& run) {
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cerr << (terminal ? "\r" : "")
-              << scenario::progress_line(done.size(), planned.size(), elapsed_s)
+              << batch::progress_line(done.size(), planned.size(), elapsed_s)
               << (terminal ? "" : "\n") << std::flush;
   }
   std::cerr << (terminal ? "\n" : "");
@@ -512,8 +512,8 @@ int export_episodes(Export& run) {
   run.journal->remove();
   std::printf("%s: %zu episodes, %zu images, %zu person and %zu face annotations in %s\n",
               run.scenario.name.c_str(), planned.size(), dataset.image_count(),
-              dataset.count(scenario::CocoDataset::kPersonCategory),
-              dataset.count(scenario::CocoDataset::kFaceCategory), run.paths.annotations.c_str());
+              dataset.count(dataset::CocoDataset::kPersonCategory),
+              dataset.count(dataset::CocoDataset::kFaceCategory), run.paths.annotations.c_str());
   return 0;
 }
 

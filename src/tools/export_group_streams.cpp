@@ -23,15 +23,15 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/batch/group_streams.hpp"
+#include "ari_social_sim/batch/progress_bar.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/sim_timer.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
+#include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/model/world_file.hpp"
-#include "ari_social_sim/scenario/episode.hpp"
-#include "ari_social_sim/scenario/group_streams.hpp"
-#include "ari_social_sim/scenario/progress_bar.hpp"
 #include "ari_social_sim/scenario/random_group_scene.hpp"
 
 namespace {
@@ -170,7 +170,7 @@ Options parse_options(int argc, char** argv) {
 // A checked run, ready to go.
 struct Export {
   Options options;
-  scenario::EpisodeConfig config;
+  engine::EpisodeConfig config;
   scenario::RandomGroupSceneSpec scene;
 };
 
@@ -180,7 +180,7 @@ Export prepare(int argc, char** argv) {
   Export run;
   Options& options = run.options;
   options = parse_options(argc, argv);
-  run.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
+  run.config = engine::EpisodeConfig::load(ARI_CONFIG_DIR);
   run.config.perception.errors_enabled = options.errors;
   run.scene.world = model::load_world_file(kWorld);
   run.scene.world_path = kWorld;
@@ -238,7 +238,7 @@ int report_stop(const Options& options, uint64_t done) {
 // built, core::Error when writing fails.
 int export_scenes(const Export& run) {
   const Options& options = run.options;
-  scenario::GroupStreams streams;
+  batch::GroupStreams streams;
   // How much ARI moved among the groups, for the summary.
   double path_m = 0.0;
   int goals = 0;
@@ -249,8 +249,8 @@ int export_scenes(const Export& run) {
     const uint64_t seed = options.first_seed + i;
     const scenario::Scenario scene =
         building_scene(i, seed, [&] { return scenario::make_random_group_scene(run.scene, seed); });
-    const std::unique_ptr<scenario::Episode> episode = building_scene(
-        i, seed, [&] { return std::make_unique<scenario::Episode>(scene, seed, run.config); });
+    const std::unique_ptr<engine::Episode> episode = building_scene(
+        i, seed, [&] { return std::make_unique<engine::Episode>(scene, seed, run.config); });
     core::SimTimer sampler(1.0 / options.every_s);
     // A sample falls due on a world step; it takes the first frame perception reports from then
     // on (at the default rates, that step's own).
@@ -273,14 +273,14 @@ int export_scenes(const Export& run) {
     failed_goals += episode->metrics().navigation_failures;
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cerr << (terminal ? "\r" : "") << scenario::progress_line(i + 1, options.scenes, elapsed_s)
+    std::cerr << (terminal ? "\r" : "") << batch::progress_line(i + 1, options.scenes, elapsed_s)
               << (terminal ? "" : "\n") << std::flush;
   }
   std::cerr << (terminal ? "\n" : "");
   write_file(options.out + "/features.csv", streams.features_csv());
   write_file(options.out + "/groundtruth.csv", streams.groundtruth_csv());
   write_file(options.out + "/frames.csv", streams.frames_csv());
-  const scenario::GroupStreamCounts& counts = streams.counts();
+  const batch::GroupStreamCounts& counts = streams.counts();
   std::printf(
       "export_group_streams: %llu scenes, %zu frames, %zu perceived people, %zu true groups of "
       "%zu (two or more members perceived), in %s\n",

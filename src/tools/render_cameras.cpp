@@ -15,8 +15,8 @@
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/model/world_file.hpp"
-#include "ari_social_sim/physics/camera_rig.hpp"
-#include "ari_social_sim/physics/people_figures.hpp"
+#include "ari_social_sim/rendering/camera_rig.hpp"
+#include "ari_social_sim/rendering/people_figures.hpp"
 
 namespace {
 
@@ -100,14 +100,14 @@ struct Shot {
   core::Pose2 ari;
   double head_pan{0.0};
   double head_tilt{0.0};
-  std::vector<physics::FigureInput> people;
+  std::vector<rendering::FigureInput> people;
 };
 
-physics::FigureInput person(uint32_t id, double age, model::Gender gender, bool mask,
-                            const core::Pose2& pose, double face_yaw,
-                            const Eigen::Vector2d& velocity = Eigen::Vector2d::Zero(),
-                            bool speaking = false) {
-  physics::FigureInput input;
+rendering::FigureInput person(uint32_t id, double age, model::Gender gender, bool mask,
+                              const core::Pose2& pose, double face_yaw,
+                              const Eigen::Vector2d& velocity = Eigen::Vector2d::Zero(),
+                              bool speaking = false) {
+  rendering::FigureInput input;
   input.traits = {id, age, gender, mask};
   input.pose = pose;
   input.face_yaw_rad = face_yaw;
@@ -164,7 +164,7 @@ std::vector<std::string> pictures_of(const Shot& shot, const std::string& camera
 struct Job {
   model::WorldDescription world;
   std::string out_dir;
-  physics::CameraRigConfig config;
+  rendering::CameraRigConfig config;
   std::vector<std::string> pictures;  // every file the job writes
 };
 
@@ -174,13 +174,13 @@ Job prepare(const std::string& world_path, const std::string& out_dir, bool over
   Job job;
   job.world = model::load_world_file(world_path);
   job.out_dir = out_dir;
-  for (physics::CameraSpec& spec : job.config.cameras) {
+  for (rendering::CameraSpec& spec : job.config.cameras) {
     spec.enabled = true;
   }
   core::prepare_output_directory("--out", out_dir);
   job.pictures = {out_dir + "/camera_torso_depth.png"};
   for (const Shot& shot : shots()) {
-    for (const physics::CameraSpec& spec : job.config.cameras) {
+    for (const rendering::CameraSpec& spec : job.config.cameras) {
       for (const std::string& name : pictures_of(shot, spec.name)) {
         job.pictures.push_back(out_dir + "/" + name + ".png");
       }
@@ -205,20 +205,20 @@ int report_stop(const Job& job, size_t written) {
 // Renders every shot's pictures, one whole file at a time, until done (0) or a stop signal comes
 // (the exit code of report_stop). Throws core::Error when rendering or writing fails.
 int render(const Job& job) {
-  physics::CameraRig rig(job.config);
+  rendering::CameraRig rig(job.config);
   std::printf("renderer: %s\n", rig.renderer().device_name().c_str());
-  rig.set_world(job.world, physics::SceneStyle{});
+  rig.set_world(job.world, rendering::SceneStyle{});
   size_t written = 0;
-  physics::CameraFrame frame;
+  rendering::CameraFrame frame;
   for (const Shot& shot : shots()) {
-    physics::PeopleFigures figures(kAppearanceSeed);
+    rendering::PeopleFigures figures(kAppearanceSeed);
     // Half a second of walking so that walkers are mid-stride.
     for (double t = 0.0; t <= 0.5; t += 0.05) {
       figures.update(t, shot.people);
     }
     rig.set_dynamic_mesh(figures.mesh());
     for (size_t i = 0; i < rig.cameras().size(); ++i) {
-      const physics::CameraSpec& spec = rig.cameras()[i];
+      const rendering::CameraSpec& spec = rig.cameras()[i];
       const std::vector<std::string> names = pictures_of(shot, spec.name);
       if (names.empty()) {
         continue;
@@ -226,7 +226,8 @@ int render(const Job& job) {
       if (core::g_stop_signal != 0) {
         return report_stop(job, written);
       }
-      rig.render(i, physics::X_world_optical(spec, shot.ari, shot.head_pan, shot.head_tilt), frame);
+      rig.render(i, rendering::X_world_optical(spec, shot.ari, shot.head_pan, shot.head_tilt),
+                 frame);
       cv::Mat bgr;
       cv::cvtColor(frame.colour, bgr, cv::COLOR_RGB2BGR);
       write_png(job.out_dir + "/" + names.front() + ".png", bgr);

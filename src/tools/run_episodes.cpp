@@ -29,15 +29,15 @@
 #include <sstream>
 #include <string>
 
+#include "ari_social_sim/batch/batch_plan.hpp"
+#include "ari_social_sim/batch/episode_csv.hpp"
+#include "ari_social_sim/batch/progress_bar.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
-#include "ari_social_sim/scenario/batch_plan.hpp"
-#include "ari_social_sim/scenario/episode.hpp"
-#include "ari_social_sim/scenario/episode_csv.hpp"
-#include "ari_social_sim/scenario/progress_bar.hpp"
-#include "episode_bag.hpp"
+#include "ari_social_sim/engine/episode.hpp"
+#include "episode_bag/episode_bag.hpp"
 
 namespace {
 
@@ -59,8 +59,8 @@ constexpr size_t kFailuresNamed = 5;
 
 struct Options {
   std::string scenario;
-  scenario::BatchPlan plan;
-  scenario::PlanOptionsGiven given;
+  batch::BatchPlan plan;
+  batch::PlanOptionsGiven given;
   std::string out{"episodes"};
   bool bags{true};
   bool overwrite{false};
@@ -71,8 +71,8 @@ void print_usage() {
   std::cerr << "usage: run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
                "                    [--out DIR] [--no-bags] [--overwrite | --resume]\n"
             << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n"
-            << "  N in " << scenario::episodes_option_range() << ", S in "
-            << scenario::seed_option_range()
+            << "  N in " << batch::episodes_option_range() << ", S in "
+            << batch::seed_option_range()
             << " (the last seed, S + N - 1, too)\n"
                "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
                "  --resume (finish it: same settings, --episodes and --seed default to its own)\n"
@@ -106,7 +106,7 @@ Options parse_options(int argc, char** argv) {
     } else if (arg == "--out") {
       options.out = value;
     } else {
-      scenario::read_plan_option(arg, value, options.plan, options.given);
+      batch::read_plan_option(arg, value, options.plan, options.given);
     }
   }
   if (options.scenario.empty() || (!options.given.episodes && !options.resume)) {
@@ -169,10 +169,10 @@ void remove_earlier_run(const OutputPaths& paths, const std::vector<uint64_t>& s
   size_t rows = 0;
   if (fs::exists(paths.csv())) {
     try {
-      const scenario::EpisodeCsvContents earlier =
-          scenario::read_episode_csv(read_file(paths.csv()), paths.csv());
+      const batch::EpisodeCsvContents earlier =
+          batch::read_episode_csv(read_file(paths.csv()), paths.csv());
       rows = earlier.rows.size();
-      for (const scenario::EpisodeCsvRow& row : earlier.rows) {
+      for (const batch::EpisodeCsvRow& row : earlier.rows) {
         bag_seeds.insert(row.seed);
       }
     } catch (const core::ConfigError&) {
@@ -197,9 +197,9 @@ void remove_earlier_run(const OutputPaths& paths, const std::vector<uint64_t>& s
 // --resume: checks the earlier run (its settings `there`, if any) against this one's and returns
 // the rows to keep; cuts a row left half-written off the CSV and deletes the .active files of
 // episodes to redo. Throws core::ConfigError naming every difference.
-std::vector<scenario::EpisodeCsvRow> resume_earlier_run(
-    const OutputPaths& paths, const std::optional<scenario::BatchSettings>& there,
-    const scenario::BatchSettings& now, bool& csv_has_header) {
+std::vector<batch::EpisodeCsvRow> resume_earlier_run(
+    const OutputPaths& paths, const std::optional<batch::BatchSettings>& there,
+    const batch::BatchSettings& now, bool& csv_has_header) {
   if (!there) {
     throw core::ConfigError("--resume: " + paths.csv() + " has no settings file " +
                             paths.settings() +
@@ -216,11 +216,11 @@ std::vector<scenario::EpisodeCsvRow> resume_earlier_run(
         "--resume: " + paths.csv() + " was made with other settings (" + paths.settings() +
         "):" + text + "\npass the same options, --overwrite to start again, or another --out");
   }
-  const scenario::EpisodeCsvContents contents =
-      scenario::read_episode_csv(read_file(paths.csv()), paths.csv());
+  const batch::EpisodeCsvContents contents =
+      batch::read_episode_csv(read_file(paths.csv()), paths.csv());
   const std::vector<uint64_t> planned = now.plan.episode_indices();
   const std::set<uint64_t> plan(planned.begin(), planned.end());
-  for (const scenario::EpisodeCsvRow& row : contents.rows) {
+  for (const batch::EpisodeCsvRow& row : contents.rows) {
     if (row.scenario != now.scenario || plan.count(row.episode) == 0 ||
         row.seed != now.plan.seed_of(row.episode)) {
       throw core::ConfigError("--resume: " + paths.csv() + ": the row of episode " +
@@ -237,7 +237,7 @@ std::vector<scenario::EpisodeCsvRow> resume_earlier_run(
   }
   csv_has_header = contents.complete_bytes > 0;
   std::set<uint64_t> done;
-  for (const scenario::EpisodeCsvRow& row : contents.rows) {
+  for (const batch::EpisodeCsvRow& row : contents.rows) {
     done.insert(row.episode);
     if (now.bags && !fs::exists(paths.bag(row.seed))) {
       std::cerr << "--resume: warning: " << paths.bag(row.seed)
@@ -256,10 +256,10 @@ std::vector<scenario::EpisodeCsvRow> resume_earlier_run(
 struct Batch {
   Options options;
   scenario::Scenario scenario;
-  scenario::EpisodeConfig config;
+  engine::EpisodeConfig config;
   OutputPaths paths;
-  std::vector<scenario::EpisodeCsvRow> kept;  // rows of an earlier run that --resume keeps
-  std::ofstream csv;                          // open for appending, the header written
+  std::vector<batch::EpisodeCsvRow> kept;  // rows of an earlier run that --resume keeps
+  std::ofstream csv;                       // open for appending, the header written
 };
 
 // Checks everything the user gave and deals with the earlier output before the first episode, so
@@ -271,7 +271,7 @@ Batch prepare(int argc, char** argv) {
   const std::string scenario_file = scenario::scenario_file_of(options.scenario, ARI_SCENARIO_DIR);
   core::check_input_file("--scenario", scenario_file);
   batch.scenario = scenario::load_scenario_file(scenario_file);
-  batch.config = scenario::EpisodeConfig::load(ARI_CONFIG_DIR);
+  batch.config = engine::EpisodeConfig::load(ARI_CONFIG_DIR);
   if (fs::exists(options.out) && !fs::is_directory(options.out)) {
     throw core::ConfigError("--out: " + options.out + ": expected a directory, got a file");
   }
@@ -284,9 +284,9 @@ Batch prepare(int argc, char** argv) {
                                  : "");
 
   // The plan: --resume goes on with the earlier run's count and seeds unless told otherwise.
-  std::optional<scenario::BatchSettings> earlier;
+  std::optional<batch::BatchSettings> earlier;
   if (options.resume && fs::exists(paths.settings())) {
-    earlier = scenario::BatchSettings::parse(read_file(paths.settings()), paths.settings());
+    earlier = batch::BatchSettings::parse(read_file(paths.settings()), paths.settings());
   }
   if (!options.given.episodes && !earlier) {
     throw core::ConfigError("--resume: " + paths.settings() +
@@ -299,12 +299,11 @@ Batch prepare(int argc, char** argv) {
     options.plan.first_seed = earlier ? earlier->plan.first_seed : batch.scenario.scene.seed;
   }
   options.plan.validate("");
-  scenario::BatchSettings settings;
+  batch::BatchSettings settings;
   settings.scenario = batch.scenario.name;
   settings.scenario_file = scenario_file;
-  settings.scenario_digest =
-      scenario::digest_files({scenario_file, batch.scenario.scene.world_path});
-  settings.config_digest = scenario::digest_files(scenario::files_under(ARI_CONFIG_DIR, ".yaml"));
+  settings.scenario_digest = batch::digest_files({scenario_file, batch.scenario.scene.world_path});
+  settings.config_digest = batch::digest_files(batch::files_under(ARI_CONFIG_DIR, ".yaml"));
   settings.plan = options.plan;
   settings.bags = options.bags;
 
@@ -337,7 +336,7 @@ Batch prepare(int argc, char** argv) {
     throw core::ConfigError("--out: cannot write " + paths.csv());
   }
   if (!csv_has_header) {
-    batch.csv << scenario::csv_header() << "\n" << std::flush;
+    batch.csv << batch::csv_header() << "\n" << std::flush;
   }
   return batch;
 }
@@ -345,9 +344,9 @@ Batch prepare(int argc, char** argv) {
 // The exit code of a run that went to its end: 0 when every row of the CSV (kept by --resume or
 // new) is a success, else 1 after saying how many failed and, for the first few, why; a user or a
 // job array sees a failed episode without reading the CSV.
-int verdict(const std::vector<scenario::EpisodeCsvRow>& rows, const std::string& csv) {
-  std::vector<const scenario::EpisodeCsvRow*> failed;
-  for (const scenario::EpisodeCsvRow& row : rows) {
+int verdict(const std::vector<batch::EpisodeCsvRow>& rows, const std::string& csv) {
+  std::vector<const batch::EpisodeCsvRow*> failed;
+  for (const batch::EpisodeCsvRow& row : rows) {
     if (!row.success) {
       failed.push_back(&row);
     }
@@ -358,7 +357,7 @@ int verdict(const std::vector<scenario::EpisodeCsvRow>& rows, const std::string&
   std::cerr << "run_episodes: " << failed.size() << " of " << rows.size() << " episodes in " << csv
             << " failed:\n";
   for (size_t i = 0; i < std::min(failed.size(), kFailuresNamed); ++i) {
-    const scenario::EpisodeCsvRow& row = *failed[i];
+    const batch::EpisodeCsvRow& row = *failed[i];
     std::cerr << "  seed " << row.seed << ": failed "
               << (row.final_state.empty() ? "before the script started"
                                           : "in state " + row.final_state)
@@ -384,7 +383,7 @@ struct PendingEpisodes {
 
 PendingEpisodes pending_episodes(const Batch& batch) {
   std::set<uint64_t> done;
-  for (const scenario::EpisodeCsvRow& row : batch.kept) {
+  for (const batch::EpisodeCsvRow& row : batch.kept) {
     done.insert(row.episode);
   }
   PendingEpisodes pending;
@@ -405,12 +404,12 @@ struct RunTotals {
 
 // Runs episode `index` to its bag and then its row in the CSV and `rows`. False when a stop signal
 // ended it first: its bag deletes its .active file and it gets no row. Throws core::Error.
-bool run_episode(Batch& batch, uint64_t index, std::vector<scenario::EpisodeCsvRow>& rows,
+bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>& rows,
                  RunTotals& totals) {
   const OutputPaths& paths = batch.paths;
   const uint64_t seed = batch.options.plan.seed_of(index);
   const auto episode_start = std::chrono::steady_clock::now();
-  scenario::Episode episode(batch.scenario, seed, batch.config);
+  engine::Episode episode(batch.scenario, seed, batch.config);
   std::unique_ptr<tools::EpisodeBag> bag;
   if (batch.options.bags) {
     bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), paths.name);
@@ -428,25 +427,25 @@ bool run_episode(Batch& batch, uint64_t index, std::vector<scenario::EpisodeCsvR
   if (bag) {
     bag->finish();
   }
-  const auto summary = scenario::EpisodeSummary::of(
-      paths.name, index, seed, episode.runner(), episode.metrics(), seconds_since(episode_start));
-  batch.csv << scenario::csv_row(summary) << "\n" << std::flush;
+  const auto summary = batch::EpisodeSummary::of(paths.name, index, seed, episode.runner(),
+                                                 episode.metrics(), seconds_since(episode_start));
+  batch.csv << batch::csv_row(summary) << "\n" << std::flush;
   if (!batch.csv) {
     throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
                       " failed");
   }
-  rows.push_back(scenario::EpisodeCsvRow::of(summary));
+  rows.push_back(batch::EpisodeCsvRow::of(summary));
   totals.successes += summary.outcome.success ? 1 : 0;
   totals.sim_time_s += summary.outcome.end_time_s;
   return true;
 }
 
 // Stopped by a signal: what is kept, and how to go on. Returns the exit code, 128 + the signal.
-int report_stop(const Batch& batch, const std::vector<scenario::EpisodeCsvRow>& rows,
-                size_t planned, std::optional<uint64_t> dropped_seed) {
+int report_stop(const Batch& batch, const std::vector<batch::EpisodeCsvRow>& rows, size_t planned,
+                std::optional<uint64_t> dropped_seed) {
   const OutputPaths& paths = batch.paths;
   size_t bags = 0;
-  for (const scenario::EpisodeCsvRow& row : rows) {
+  for (const batch::EpisodeCsvRow& row : rows) {
     bags += fs::exists(paths.bag(row.seed)) ? 1 : 0;
   }
   std::cerr << "run_episodes: interrupted by " << core::stop_signal_name(g_stop_signal) << " after "
@@ -468,7 +467,7 @@ int report_stop(const Batch& batch, const std::vector<scenario::EpisodeCsvRow>& 
 int run(Batch& batch) {
   const Options& options = batch.options;
   const OutputPaths& paths = batch.paths;
-  std::vector<scenario::EpisodeCsvRow> rows = batch.kept;  // every row in the CSV, kept or new
+  std::vector<batch::EpisodeCsvRow> rows = batch.kept;  // every row in the CSV, kept or new
   const PendingEpisodes pending = pending_episodes(batch);
   const std::vector<uint64_t>& episodes = pending.indices;
   const size_t planned = pending.planned;
@@ -501,8 +500,7 @@ int run(Batch& batch) {
                 << "): " << e.what() << "\n";
       return bad_input ? kBadInputExit : kWriteFailedExit;
     }
-    const std::string line =
-        scenario::progress_line(ran + 1, episodes.size(), seconds_since(start));
+    const std::string line = batch::progress_line(ran + 1, episodes.size(), seconds_since(start));
     std::cerr << (terminal ? "\r" : "") << line << (terminal ? "" : "\n") << std::flush;
   }
   const double wall_s = seconds_since(start);

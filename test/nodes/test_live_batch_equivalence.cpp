@@ -33,29 +33,29 @@
 #include <cstdio>
 #include <memory>
 
-#include "../../src/nodes/conversions/ari_base.hpp"
-#include "../../src/nodes/conversions/dialogue.hpp"
-#include "../../src/nodes/conversions/hri_messages.hpp"
-#include "../../src/nodes/conversions/navigation_msgs.hpp"
-#include "../../src/nodes/conversions/world_state.hpp"
-#include "../../src/nodes/hri_ids.hpp"
-#include "../../src/nodes/measured_ari.hpp"
-#include "../../src/nodes/perceived_persons.hpp"
 #include "ari_social_sim/core/sim_timer.hpp"
+#include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/navigation/navigation_session.hpp"
 #include "ari_social_sim/perception/candidate_matches.hpp"
 #include "ari_social_sim/perception/group_candidates.hpp"
-#include "ari_social_sim/scenario/episode.hpp"
 #include "ari_social_sim/scenario/group_memory.hpp"
 #include "ari_social_sim/world/service_requests.hpp"
+#include "dialogue_conversions/dialogue.hpp"
+#include "navigation_conversions/measured_ari.hpp"
+#include "navigation_conversions/navigation_msgs.hpp"
+#include "node_support/hri_ids.hpp"
+#include "perception_conversions/hri_messages.hpp"
+#include "perception_conversions/perceived_persons.hpp"
+#include "world_conversions/ari_base.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
 
 const std::string kSource = ARI_SOURCE_DIR;
 
-const scenario::EpisodeConfig& episode_config() {
-  static const scenario::EpisodeConfig config = scenario::EpisodeConfig::load(kSource + "/config");
+const engine::EpisodeConfig& episode_config() {
+  static const engine::EpisodeConfig config = engine::EpisodeConfig::load(kSource + "/config");
   return config;
 }
 
@@ -67,8 +67,7 @@ double clock_s(double time_s) {
 // The nodes of the suite composed without ROS transport between them.
 class LiveChain {
  public:
-  LiveChain(const scenario::Scenario& scenario, uint64_t seed,
-            const scenario::EpisodeConfig& config)
+  LiveChain(const scenario::Scenario& scenario, uint64_t seed, const engine::EpisodeConfig& config)
       : scenario_(scenario),
         config_(config),
         perception_(seeded(config.perception, seed)),
@@ -77,7 +76,7 @@ class LiveChain {
         group_detection_(perception_.config().groups),
         measured_(input_counters_),
         session_(config.navigation),
-        dialogue_run_(scenario::dialogue_run_for(scenario.script, config.dialogue_run)),
+        dialogue_run_(engine::dialogue_run_for(scenario.script, config.dialogue_run)),
         believed_groups_(config.group_timeout_s),
         runner_(scenario, seed, config.dialogue.get()),
         commands_(*this) {
@@ -92,8 +91,8 @@ class LiveChain {
     session_.set_map(from_msg(map_msg));
     tf_.setTransform(map_to_odom(0.0), "world_node", /*is_static=*/true);
     dialogue_run_.seed = seed;
-    stage_ = scenario::in_process_speech_stage(
-        *world_, scenario::dialogue_cast(dialogue_run_, *config.dialogue, *world_, scenario));
+    stage_ = engine::in_process_speech_stage(
+        *world_, engine::dialogue_cast(dialogue_run_, *config.dialogue, *world_, scenario));
     dialogue_ = std::make_unique<dialogue::SpokenDialogue>(*config.dialogue, *config.nlu,
                                                            dialogue_run_, *stage_);
   }
@@ -301,7 +300,7 @@ class LiveChain {
   void apply(const navigation::SessionOutput& out) {
     for (const navigation::GoalChange& change : out.goals) {
       if (change.goal == goal_) {
-        navigation_status_ = scenario::as_seen_by_the_script(change.status);
+        navigation_status_ = engine::as_seen_by_the_script(change.status);
       }
     }
     for (const navigation::BaseCommand& command : out.commands) {
@@ -351,7 +350,7 @@ class LiveChain {
   }
 
   const scenario::Scenario& scenario_;
-  const scenario::EpisodeConfig& config_;
+  const engine::EpisodeConfig& config_;
   std::unique_ptr<world::Simulation> world_;
   world::WorldSnapshot snapshot_;
   WorldState state_msg_;
@@ -372,7 +371,7 @@ class LiveChain {
   scenario::NavigationStatus navigation_status_;
   std::vector<navigation::BaseCommand> sent_;
   dialogue::DialogueRunConfig dialogue_run_;
-  std::unique_ptr<scenario::WorldSpeechStage> stage_;
+  std::unique_ptr<world_speech::WorldSpeechStage> stage_;
   std::unique_ptr<dialogue::SpokenDialogue> dialogue_;
   std::vector<dialogue::Perception> heard_;  // since the script last ran
   std::optional<scenario::DialogueEnd> dialogue_end_;
@@ -486,9 +485,9 @@ TEST_P(LiveBatchEquivalence, SameWorldsFramesAndCommandsAtEveryStep) {
   const scenario::Scenario scenario =
       scenario::load_scenario_file(kSource + "/scenarios/" + GetParam().scenario + ".yaml");
   const uint64_t seed = GetParam().seed;
-  scenario::EpisodeConfig config = episode_config();
+  engine::EpisodeConfig config = episode_config();
   config.simulation.step_s = GetParam().step_s;
-  scenario::Episode engine(scenario, seed, config);
+  engine::Episode engine(scenario, seed, config);
   LiveChain live(scenario, seed, config);
   Deviations most;
   int steps = 0, frames = 0, commands = 0;

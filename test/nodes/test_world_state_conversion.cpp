@@ -5,10 +5,10 @@
 #include <functional>
 #include <limits>
 
-#include "../../src/nodes/conversions/world_state.hpp"
 #include "ari_social_sim/core/clock_time.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/scene.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "../../src/nodes/conversions/world_state.hpp"
 #include "ari_social_sim/world/scene.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {

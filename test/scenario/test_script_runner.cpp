@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "ari_social_sim/batch/episode_csv.hpp"
 #include "ari_social_sim/core/error.hpp"
-#include "ari_social_sim/scenario/episode_csv.hpp"
 #include "ari_social_sim/scenario/script_runner.hpp"
 
 namespace ari_social_sim::scenario {
@@ -384,7 +384,7 @@ VisitRecord run_for_an_hour(const std::string& states) {
     stage.tick(runner, commands, 0.5);
   }
   return {runner.visits(), runner.unrecorded_visits(),
-          EpisodeSummary::of("inline", 0, 2, runner, {}, 1.0).states};
+          batch::EpisodeSummary::of("inline", 0, 2, runner, {}, 1.0).states};
 }
 
 // A state that polls by re-entering itself every tick, for an hour of sim time: one visit with

@@ -32,14 +32,22 @@ def test_the_documented_layers_are_the_configured_ones():
     assert documented_layers() == cmake_layers()
 
 
-def configure_probe(tmp_path, links):
+def configure_probe(tmp_path, links, sources=None, folders=()):
     """Configures a project of empty libraries with the project's layers and `links`
-    ({library: [libraries it links]}); returns (exit code, output)."""
-    (tmp_path / "empty.c").write_text("int probe;\n")
-    lines = ["cmake_minimum_required(VERSION 3.16)", "project(layer_probe C)",
+    ({library: [libraries it links]}); each library ari_X compiles src/X/x.cpp unless `sources`
+    ({library: [files]}) says otherwise, and `folders` are made in src/ besides. Returns (exit
+    code, output)."""
+    sources = sources or {}
+    lines = ["cmake_minimum_required(VERSION 3.16)", "project(layer_probe CXX)",
              "include(%s)" % LAYERS_CMAKE]
     for library in links:
-        lines.append("add_library(%s STATIC empty.c)" % library)
+        files = sources.get(library, ["src/%s/x.cpp" % library[len("ari_"):]])
+        for name in files:
+            (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+            (tmp_path / name).write_text("int %s_probe;\n" % library)
+        lines.append("add_library(%s STATIC %s)" % (library, " ".join(files)))
+    for folder in folders:
+        (tmp_path / "src" / folder).mkdir(parents=True, exist_ok=True)
     for library, linked in links.items():
         if linked:
             lines.append("target_link_libraries(%s PUBLIC %s)" % (library, " ".join(linked)))
@@ -47,7 +55,7 @@ def configure_probe(tmp_path, links):
     (tmp_path / "CMakeLists.txt").write_text("\n".join(lines) + "\n")
     run = subprocess.run(["cmake", "-S", str(tmp_path), "-B", str(tmp_path / "build")],
                          capture_output=True, text=True)
-    return run.returncode, run.stdout + run.stderr
+    return run.returncode, " ".join((run.stdout + run.stderr).split())
 
 
 SOUND = {"ari_core": [], "ari_model": ["ari_core"], "ari_world": ["ari_model"],
@@ -66,13 +74,43 @@ def test_an_upward_link_stops_the_configure_step(tmp_path):
     print(output)
     assert code != 0
     assert ("ari_navigation (layer simulation) links ari_scenario, which is in the layer above "
-            "it, engine") in " ".join(output.split())
+            "it, engine") in output
 
 
 def test_a_library_without_a_layer_stops_the_configure_step(tmp_path):
     code, output = configure_probe(tmp_path, dict(SOUND, ari_gadget=["ari_core"]))
     assert code != 0
-    assert "library ari_gadget is in no layer" in " ".join(output.split())
+    assert "library ari_gadget is in no layer" in output
+
+
+def test_a_source_outside_its_library_folder_stops_the_configure_step(tmp_path):
+    code, output = configure_probe(tmp_path, SOUND, sources={
+        "ari_world": ["src/world/x.cpp", "src/model/borrowed.cpp"]})
+    assert code != 0
+    assert "ari_world compiles src/model/borrowed.cpp, which is library ari_model's folder" in output
+
+
+def test_a_folder_without_its_library_stops_the_configure_step(tmp_path):
+    code, output = configure_probe(tmp_path, SOUND, folders=["gadgets"])
+    assert code != 0
+    assert "src/gadgets/ or include/ari_social_sim/gadgets/ builds no library ari_gadgets" in output
+
+
+def test_the_program_folders_need_no_library(tmp_path):
+    code, output = configure_probe(tmp_path, SOUND, folders=["nodes", "tools", "python"])
+    assert code == 0, output
+
+
+def test_each_folder_of_the_repository_is_one_library():
+    """The real tree: every folder of src/ but the programs' names a library of the layer table,
+    and the headers' folders are the same set."""
+    order, members = cmake_layers()
+    libraries = {lib[len("ari_"):] for layer in order for lib in members[layer]}
+    programs = {"nodes", "tools", "python"}
+    folders = {d.name for d in (ROOT / "src").iterdir() if d.is_dir()}
+    assert folders - programs == libraries
+    headers = {d.name for d in (ROOT / "include" / "ari_social_sim").iterdir() if d.is_dir()}
+    assert headers <= libraries
 
 
 if __name__ == "__main__":

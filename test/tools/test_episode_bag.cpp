@@ -9,7 +9,7 @@
 #include <map>
 #include <set>
 
-#include "../../src/tools/episode_bag.hpp"
+#include "episode_bag/episode_bag.hpp"
 
 namespace ari_social_sim::tools {
 namespace {
@@ -38,9 +38,8 @@ scenario::Scenario random_group_scenario() {
 std::string run_to_bag(const scenario::Scenario& scenario, uint64_t seed, const std::string& name) {
   const std::string path = ::testing::TempDir() + name + ".bag";
   {
-    static const scenario::EpisodeConfig config =
-        scenario::EpisodeConfig::load(kSource + "/config");
-    scenario::Episode episode(scenario, seed, config);
+    static const engine::EpisodeConfig config = engine::EpisodeConfig::load(kSource + "/config");
+    engine::Episode episode(scenario, seed, config);
     EpisodeBag bag(path, scenario.name);
     while (!episode.finished()) {
       episode.step();
@@ -65,13 +64,13 @@ TEST(EpisodeBag, SameSeedSameBytesOtherSeedOtherBytes) {
 TEST(EpisodeBag, CompleteUnderItsNameOrAbsent) {
   namespace fs = std::filesystem;
   const scenario::Scenario scenario = random_group_scenario();
-  static const scenario::EpisodeConfig config = scenario::EpisodeConfig::load(kSource + "/config");
+  static const engine::EpisodeConfig config = engine::EpisodeConfig::load(kSource + "/config");
   const std::string done = ::testing::TempDir() + "finished.bag";
   const std::string cut = ::testing::TempDir() + "interrupted.bag";
   fs::remove(done);
   fs::remove(cut);
   {
-    scenario::Episode episode(scenario, 4, config);
+    engine::Episode episode(scenario, 4, config);
     EpisodeBag finished(done, scenario.name);
     EpisodeBag interrupted(cut, scenario.name);
     for (int step = 0; step < 40; ++step) {  // 2 s of the 6 s chat

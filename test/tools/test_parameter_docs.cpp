@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "parameters_page.hpp"
+#include "parameters_page/parameters_page.hpp"
 
 namespace ari_social_sim::tools {
 namespace {

@@ -45,7 +45,7 @@ inline constexpr RngStreams kGroupStance{
 
 // Physics (physics/).
 inline constexpr RngStreams kHumanAppearance{"human_appearance",
-                                             "physics::appearance_of, a human's looks by id",
+                                             "rendering::appearance_of, a human's looks by id",
                                              2 * kPerObjectId, kPerObjectId};
 inline constexpr RngStreams kImuNoise{"imu_noise", "physics::AriPhysics, the torso IMU's noise",
                                       kSingles + 12};

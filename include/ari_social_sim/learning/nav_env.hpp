@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/rng.hpp"
+#include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/learning/nav_task_config.hpp"
 #include "ari_social_sim/learning/navigation_episodes.hpp"
 #include "ari_social_sim/learning/social_score.hpp"
@@ -21,7 +22,6 @@
 #include "ari_social_sim/perception/group_perception.hpp"
 #include "ari_social_sim/perception/perception_config.hpp"
 #include "ari_social_sim/perception/perception_pipeline.hpp"
-#include "ari_social_sim/scenario/episode.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 
 namespace ari_social_sim::learning {
@@ -36,7 +36,7 @@ struct NavEnvSetup {
   EpisodeWorlds worlds;
   /// Task scenario: the scenario file, and the batch engine's settings (run_episodes').
   std::optional<scenario::Scenario> scenario;
-  std::optional<scenario::EpisodeConfig> episode;
+  std::optional<engine::EpisodeConfig> episode;
 
   /// From the package's config and worlds directories; `task_file` is a task file
   /// (config/learning/<task>.yaml) and `overrides` YAML text read over it (make()'s options,

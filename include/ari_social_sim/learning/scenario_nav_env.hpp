@@ -4,10 +4,10 @@
 #include <optional>
 #include <vector>
 
+#include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/learning/nav_env.hpp"
 #include "ari_social_sim/learning/social_score.hpp"
 #include "ari_social_sim/navigation/policy.hpp"
-#include "ari_social_sim/scenario/episode.hpp"
 
 namespace ari_social_sim::learning {
 
@@ -74,8 +74,8 @@ class ScenarioNavEnv : public Env {
   ActionBounds bounds_;
   navigation::FootprintModel footprint_;
   std::shared_ptr<ExternalPolicy> policy_;
-  scenario::EpisodeConfig config_;
-  std::unique_ptr<scenario::Episode> episode_;
+  engine::EpisodeConfig config_;
+  std::unique_ptr<engine::Episode> episode_;
   std::unique_ptr<SocialScore> score_;
   std::array<float, kActionSize> last_action_{};
   std::optional<double> last_distance_m_;

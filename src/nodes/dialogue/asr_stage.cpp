@@ -1,4 +1,4 @@
-#include "dialogue/asr_stage.hpp"
+#include "asr_stage.hpp"
 
 #include <ros/time.h>
 #include <std_msgs/Bool.h>

@@ -1,10 +1,10 @@
-#include "dialogue/live_dialogue_node.hpp"
+#include "live_dialogue_node.hpp"
 
 #include "ari_social_sim/DialogueOutcome.h"
 #include "ari_social_sim/DialogueUtterance.h"
 #include "ari_social_sim/core/error.hpp"
-#include "conversions/dialogue.hpp"
-#include "dialogue/request_checks.hpp"
+#include "dialogue_conversions/dialogue.hpp"
+#include "request_checks.hpp"
 
 namespace ari_social_sim::nodes {
 

@@ -1,4 +1,4 @@
-#include "dialogue/request_checks.hpp"
+#include "request_checks.hpp"
 
 #include <cmath>
 

@@ -1,8 +1,8 @@
-#include "dialogue/rl_env_services.hpp"
+#include "rl_env_services.hpp"
 
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/dialogue/robot_action_request.hpp"
-#include "conversions/dialogue.hpp"
+#include "dialogue_conversions/dialogue.hpp"
 
 namespace ari_social_sim::nodes {
 

@@ -1,4 +1,4 @@
-#include "dialogue/sim_say_client.hpp"
+#include "sim_say_client.hpp"
 
 #include <ros/console.h>
 

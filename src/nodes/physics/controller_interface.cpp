@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "../conversions/joint_trajectory.hpp"
 #include "ari_social_sim/core/error.hpp"
+#include "joint_trajectory.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "../frames.hpp"
+#include "node_support/frames.hpp"
 
 namespace ari_social_sim::nodes {
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../conversions/transform.hpp"
-#include "../frames.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/format_text.hpp"
+#include "node_support/frames.hpp"
 #include "odom_frame.hpp"
+#include "world_conversions/transform.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {

@@ -9,11 +9,11 @@
 #include <string>
 #include <unordered_map>
 
-#include "../renewing_tf_buffer.hpp"
 #include "ari_social_sim/PointHeadAction.h"
 #include "ari_social_sim/physics/ari_physics.hpp"
 #include "ari_social_sim/physics/point_head.hpp"
 #include "ari_social_sim/physics/point_head_goal.hpp"
+#include "node_support/renewing_tf_buffer.hpp"
 #include "sim_clock.hpp"
 
 namespace ari_social_sim::nodes {

@@ -19,19 +19,19 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/batch/batch_plan.hpp"
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/progress_journal.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
+#include "ari_social_sim/engine/ari_observation.hpp"
 #include "ari_social_sim/learning/ground_truth.hpp"
 #include "ari_social_sim/learning/navigation_episodes.hpp"
 #include "ari_social_sim/navigation/episode_scorer.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
-#include "ari_social_sim/scenario/ari_observation.hpp"
-#include "ari_social_sim/scenario/batch_plan.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 
 namespace {
@@ -335,7 +335,7 @@ bool drive_episode(NavigationEpisode& episode, const navigation::NavigationConfi
     if (sim.time_s() >= next_control_s - 1e-9) {
       next_control_s += control_period;
       const navigation::NavigatorStep step =
-          navigator.update(sim.time_s(), scenario::observe_ari(*sim.ari()), scene);
+          navigator.update(sim.time_s(), engine::observe_ari(*sim.ari()), scene);
       if (step.replanned) {
         record.solve_times_s.push_back(navigator.plan().solve_cpu_s);
         record.solve_wall_times_s.push_back(navigator.plan().solve_time_s);
@@ -416,7 +416,7 @@ std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
                                    episode.exempt_people, episode.exempt_group);
   try {
     navigator.start(episode.target, learning::true_scene(sim, config.scene.group_stride_m),
-                    scenario::observe_ari(*sim.ari()), sim.time_s());
+                    engine::observe_ari(*sim.ari()), sim.time_s());
   } catch (const core::Error& e) {
     record.outcome = "rejected";
     record.reason = e.what();
@@ -760,8 +760,8 @@ std::string progress_settings(const Options& options) {
          " seed=" + std::to_string(options.seed) + " types=" + types +
          " controllers=" + controllers + " solver=" + options.solver +
          " profile=" + world::reaction_name(options.profile) +
-         " config_digest=" + scenario::digest_files({options.config}) +
-         " worlds_digest=" + scenario::digest_files(scenario::files_under(options.worlds, ".yaml"));
+         " config_digest=" + batch::digest_files({options.config}) +
+         " worlds_digest=" + batch::digest_files(batch::files_under(options.worlds, ".yaml"));
 }
 
 // A checked benchmark, ready to go.

@@ -8,7 +8,7 @@
 
 #include <iostream>
 
-#include "parameters_page.hpp"
+#include "parameters_page/parameters_page.hpp"
 
 int main(int argc, char** argv) {
   if (argc > 1) {

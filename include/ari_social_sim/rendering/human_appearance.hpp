@@ -1,0 +1,56 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "ari_social_sim/model/person_attributes.hpp"
+
+namespace ari_social_sim::rendering {
+
+/// What the world says about a person that shapes how they look.
+struct HumanTraits {
+  uint32_t id{0};
+  double age_years{35.0};
+  model::Gender gender{model::Gender::kNonIdentified};
+  bool mask{false};
+
+  bool operator==(const HumanTraits& other) const {
+    return id == other.id && age_years == other.age_years && gender == other.gender &&
+           mask == other.mask;
+  }
+  bool operator!=(const HumanTraits& other) const { return !(*this == other); }
+};
+
+enum class HairStyle { kShort, kLong, kBald };
+
+/// How one person looks: stature and head size, and the colours of skin, hair, clothes and mask.
+/// Colours are display RGB in [0, 1], as the renderer takes them.
+struct HumanAppearance {
+  double height_m{1.70};
+  double head_height_m{0.22};  // chin to crown
+  double build{1.0};           // width of shoulders and hips relative to the average build
+  bool female_build{false};    // narrower shoulders, wider hips
+  HairStyle hair_style{HairStyle::kShort};
+  bool short_sleeves{false};
+  bool mask{false};
+  Eigen::Vector3f skin{0.88f, 0.70f, 0.57f};
+  Eigen::Vector3f hair{0.24f, 0.16f, 0.10f};
+  Eigen::Vector3f iris{0.25f, 0.16f, 0.10f};
+  Eigen::Vector3f top{0.2f, 0.35f, 0.75f};
+  Eigen::Vector3f trousers{0.15f, 0.18f, 0.28f};
+  Eigen::Vector3f shoes{0.1f, 0.08f, 0.07f};
+  Eigen::Vector3f mask_colour{0.62f, 0.78f, 0.88f};
+};
+
+/// Draws a person's appearance from their traits and a seed; the same (traits, seed) always gives
+/// the same look, and a person's look does not depend on who else is in the scene.
+///   - Stature: adult means 1.75 m (men) and 1.62 m (women), standard deviation 0.07 m, as
+///     in national surveys of European adults; children grow about 6 cm a year from 77 cm at
+///     birth-to-two (Weech's rule) and reach the adult stature at 18; people over 60 lose about
+///     1 cm per decade.
+///   - Head: 0.13 of an adult's stature (chin to crown), up to 0.21 for a toddler.
+///   - Skin: six tones from light to dark in about equal shares; hair darker on average and grey
+///     or white more often with age; clothes from everyday colours.
+HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed);
+
+}  // namespace ari_social_sim::rendering

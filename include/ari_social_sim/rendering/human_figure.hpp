@@ -1,0 +1,115 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/rendering/human_appearance.hpp"
+#include "ari_social_sim/rendering/render_mesh.hpp"
+
+namespace ari_social_sim::rendering {
+
+/// A figure's pose at one instant.
+struct FigurePose {
+  core::Pose2 body;  // map frame: feet centre and heading
+  double head_yaw_rad{
+      0.0};  // map frame; the head turns to it, at most kMaxHeadTurnRad off the body
+  double gait_phase_rad{0.0};  // where the legs are in a stride: 0 and pi are mid-stance
+  double gait_amplitude{0.0};  // 0 standing still, 1 a brisk walk
+  double mouth_open{0.0};      // 0 closed, 1 open as on a stressed syllable
+};
+
+/// A person drawn as an articulated solid: feet, lower and upper legs, pelvis, torso, shoulders,
+/// upper arms, forearms, hands, neck and a head with ears, hair and a face (eye sockets, eyes,
+/// brows, nose, lips, a mouth that opens, a mask over nose and mouth when worn). Proportions are
+/// shares of stature (Drillis and Contini's segment lengths) below the chin and the appearance's
+/// head above it. Every part is tessellated once, in its joint's frame; posing moves the parts.
+class HumanFigure {
+ public:
+  static constexpr double kMaxHeadTurnRad = 1.2;
+
+  explicit HumanFigure(const HumanAppearance& look);
+
+  const HumanAppearance& appearance() const { return look_; }
+
+  /// Appends the figure's triangles in `pose`: the face's (head skin and features) labelled
+  /// face_label, every other part body_label.
+  void append_posed(const FigurePose& pose, float body_label, float face_label,
+                    RenderMesh& out) const;
+
+  /// The head in the map: origin at the head's centre, x out of the face, z up.
+  Eigen::Isometry3d head_frame(const FigurePose& pose) const;
+
+  /// Points of the face in the head frame: hairline, chin and both cheeks. The face's box in an
+  /// image is the box around their images (the tighter box a face detector draws; what a camera
+  /// sees of the face is face_surface's box, figure_regions.hpp).
+  const std::vector<Eigen::Vector3d>& face_outline() const { return face_outline_; }
+
+  /// The face's vertices in the head frame with their outward normals: every face part's (skin,
+  /// eyes, brows, nose, lips, a mask) where the hair does not cover it, the jaw's both closed and
+  /// fully open. Those facing a camera are what it sees of the face (face_label's pixels), so their
+  /// images bound the face's.
+  struct SurfacePoint {
+    Eigen::Vector3d point;
+    Eigen::Vector3d normal;
+  };
+  const std::vector<SurfacePoint>& face_surface() const { return face_surface_; }
+
+  /// The irises' centres in the head frame: the figure's right eye, then its left.
+  const std::array<Eigen::Vector3d, 2>& eyes() const { return eyes_; }
+
+ private:
+  enum Joint {
+    kPelvis,
+    kHead,
+    kJaw,
+    kLeftHip,
+    kLeftKnee,
+    kLeftAnkle,
+    kRightHip,
+    kRightKnee,
+    kRightAnkle,
+    kLeftShoulder,
+    kLeftElbow,
+    kRightShoulder,
+    kRightElbow,
+    kJointCount
+  };
+  struct Part {
+    Joint joint;
+    bool face;
+    RenderMesh mesh;  // in the joint's frame
+  };
+  using JointFrames = std::array<Eigen::Isometry3f, kJointCount>;
+
+  JointFrames joint_frames(const FigurePose& pose) const;
+  void add_part(Joint joint, bool face, const RenderPrimitive& primitive);
+  void build_legs();
+  void build_trunk_and_arms();
+  void build_head();
+  // build_head's stages. An ellipsoid is (centre, diameters) in the head frame.
+  using Ellipsoid = std::pair<Eigen::Vector3d, Eigen::Vector3d>;
+  /// How far in front of the head's centre its surface is at (y, z) of the head frame.
+  double face_front(double y, double z) const;
+  std::vector<Ellipsoid> add_hair();  ///< The hair's ellipsoids, which hide the skin inside them.
+  void add_eyes_and_brows();
+  void add_mask();
+  void add_nose_and_mouth();
+  void collect_face_surface(const std::vector<Ellipsoid>& hair);
+
+  HumanAppearance look_;
+  // Lengths (m), from the appearance.
+  double scale_{1.0};  // stature below the chin / 0.87: a segment of share k is k * scale_ long
+  double chin_z_{0.0}, head_centre_z_{0.0}, shoulder_z_{0.0}, hip_z_{0.0};
+  double thigh_m_{0.0}, shin_m_{0.0}, upper_arm_m_{0.0}, forearm_m_{0.0};
+  double hip_joint_y_{0.0}, shoulder_joint_y_{0.0};
+  Eigen::Vector3d head_radii_{Eigen::Vector3d::Zero()};
+  std::vector<Part> parts_;
+  std::vector<Eigen::Vector3d> face_outline_;
+  std::vector<SurfacePoint> face_surface_;
+  std::array<Eigen::Vector3d, 2> eyes_{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+};
+
+}  // namespace ari_social_sim::rendering

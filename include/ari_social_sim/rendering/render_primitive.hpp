@@ -1,0 +1,35 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace ari_social_sim::rendering {
+
+/// Solid shapes the renderer draws. Every shape is centred on its frame's origin with its height
+/// along the frame's z axis.
+enum class PrimitiveShape {
+  kBox,       // size = full extents along x, y, z
+  kCylinder,  // size = (diameter along x, diameter along y, length along z): an elliptic cylinder
+  kSphere,    // size = diameters: an ellipsoid
+  kPrism,     // convex outline (frame xy) extruded from z = -size.z / 2 to +size.z / 2
+};
+
+/// How a surface reflects light: matte; matte with a 0.5 m checker pattern over world x, y
+/// (floors, so that images show motion and distance); or skin, which also has a colourless
+/// highlight where it faces the light (what keeps the features of dark skin visible).
+enum class Surface { kMatte = 0, kChecker = 1, kSkin = 2 };
+
+/// One solid in the world frame with a flat colour. Floors carry a checker pattern so that images
+/// show motion and distance.
+struct RenderPrimitive {
+  PrimitiveShape shape{PrimitiveShape::kBox};
+  Eigen::Isometry3d X_world_shape{Eigen::Isometry3d::Identity()};
+  Eigen::Vector3d size{Eigen::Vector3d::Ones()};  // m
+  std::vector<Eigen::Vector2d> outline;           // m, prisms only, convex, either winding
+  Eigen::Vector3f colour{0.7f, 0.7f, 0.7f};       // linear RGB in [0, 1]
+  Surface surface{Surface::kMatte};
+  int round_segments{32};  // facets around a cylinder's or ellipsoid's axis; small parts need fewer
+};
+
+}  // namespace ari_social_sim::rendering

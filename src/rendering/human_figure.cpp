@@ -1,0 +1,408 @@
+#include "ari_social_sim/rendering/human_figure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "ari_social_sim/core/angles.hpp"
+
+namespace ari_social_sim::rendering {
+namespace {
+
+// Facets around the axis: limbs are narrow in any image, the head is what face detectors read.
+constexpr int kLimbSegments = 8;
+constexpr int kTrunkSegments = 12;
+constexpr int kHeadSegments = 16;
+constexpr int kFeatureSegments = 6;
+
+// Segment lengths and heights as shares of stature (Drillis and Contini, 1966).
+constexpr double kChinShare = 0.870;
+constexpr double kShoulderShare = 0.818;
+constexpr double kHipShare = 0.530;
+constexpr double kKneeShare = 0.285;
+constexpr double kAnkleShare = 0.039;
+constexpr double kUpperArmShare = 0.186;
+constexpr double kForearmShare = 0.146;
+constexpr double kHandShare = 0.108;
+constexpr double kShoulderWidthShare = 0.259;
+constexpr double kHipWidthShare = 0.191;
+constexpr double kFootLengthShare = 0.152;
+constexpr double kFootWidthShare = 0.055;
+
+// How far the limbs swing at a gait amplitude of 1 (rad).
+constexpr double kHipSwingRad = 0.42;
+constexpr double kKneeFlexRad = 0.75;
+constexpr double kShoulderSwingRad = 0.38;
+constexpr double kArmAbductionRad = 0.14;     // arms hang a little away from the body
+constexpr double kStanceAbductionRad = 0.07;  // standing feet a little apart
+constexpr double kJawDropShare = 0.06;        // of the head's height, the mouth fully open
+
+RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre,
+                      const Eigen::Vector3d& size, const Eigen::Vector3f& colour, int segments) {
+  RenderPrimitive primitive;
+  primitive.shape = kind;
+  primitive.X_world_shape = Eigen::Translation3d(centre) * Eigen::Isometry3d::Identity();
+  primitive.size = size;
+  primitive.colour = colour;
+  primitive.round_segments = segments;
+  return primitive;
+}
+
+RenderPrimitive glossy(RenderPrimitive primitive) {
+  primitive.surface = Surface::kSkin;
+  return primitive;
+}
+
+Eigen::Vector3f darker(const Eigen::Vector3f& colour, float factor) {
+  return colour * factor;
+}
+Eigen::Vector3f lighter(const Eigen::Vector3f& colour, float factor) {
+  return (colour * factor).cwiseMin(1.0f);
+}
+
+Eigen::Isometry3f rotation_y(double angle) {
+  return Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(angle), Eigen::Vector3f::UnitY()));
+}
+Eigen::Isometry3f rotation_x(double angle) {
+  return Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(angle), Eigen::Vector3f::UnitX()));
+}
+Eigen::Isometry3f translation(double x, double y, double z) {
+  return Eigen::Isometry3f(
+      Eigen::Translation3f(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)));
+}
+
+}  // namespace
+
+HumanFigure::HumanFigure(const HumanAppearance& look) : look_(look) {
+  chin_z_ = look.height_m - look.head_height_m;
+  scale_ = chin_z_ / kChinShare;
+  head_centre_z_ = chin_z_ + 0.5 * look.head_height_m;
+  shoulder_z_ = kShoulderShare * scale_;
+  hip_z_ = kHipShare * scale_;
+  thigh_m_ = (kHipShare - kKneeShare) * scale_;
+  shin_m_ = (kKneeShare - kAnkleShare) * scale_;
+  upper_arm_m_ = kUpperArmShare * scale_;
+  forearm_m_ = kForearmShare * scale_;
+  const double shoulder_width =
+      kShoulderWidthShare * scale_ * look.build * (look.female_build ? 0.92 : 1.0);
+  shoulder_joint_y_ = 0.5 * shoulder_width - 0.03 * scale_;
+  hip_joint_y_ = 0.25 * kHipWidthShare * scale_ * look.build * (look.female_build ? 1.05 : 1.0);
+  // Chin to crown is the head's height; it is 0.85 of that deep and 0.68 of that wide.
+  head_radii_ = 0.5 * look.head_height_m * Eigen::Vector3d(0.85, 0.68, 1.0);
+  build_legs();
+  build_trunk_and_arms();
+  build_head();
+}
+
+void HumanFigure::add_part(Joint joint, bool face, const RenderPrimitive& primitive) {
+  Part part{joint, face, {}};
+  append_primitive(primitive, part.mesh);
+  parts_.push_back(std::move(part));
+}
+
+void HumanFigure::build_legs() {
+  const double s = scale_;
+  const double thigh_radius = 0.045 * s * look_.build;
+  const double shin_radius = 0.034 * s * look_.build;
+  for (const auto& [hip, knee, ankle] :
+       {std::array<Joint, 3>{kLeftHip, kLeftKnee, kLeftAnkle},
+        std::array<Joint, 3>{kRightHip, kRightKnee, kRightAnkle}}) {
+    add_part(hip, false,
+             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * thigh_m_},
+                   {2.0 * thigh_radius, 2.0 * thigh_radius, thigh_m_ + thigh_radius},
+                   look_.trousers, kLimbSegments));
+    add_part(knee, false,
+             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * shin_m_},
+                   {2.0 * shin_radius, 2.0 * shin_radius, shin_m_ + shin_radius},
+                   darker(look_.trousers, 0.95f), kLimbSegments));
+    const double foot_length = kFootLengthShare * s;
+    // From the sole on the floor (when standing) to 2 cm above the ankle.
+    const double foot_height = kAnkleShare * s + 0.02;
+    add_part(ankle, false,
+             shape(PrimitiveShape::kBox, {0.3 * foot_length, 0.0, 0.02 - 0.5 * foot_height},
+                   {foot_length, kFootWidthShare * s, foot_height}, look_.shoes, kLimbSegments));
+  }
+}
+
+void HumanFigure::build_trunk_and_arms() {
+  const double s = scale_;
+  const double width = (look_.female_build ? 0.19 : 0.205) * s * look_.build;
+  const double depth = 0.13 * s * look_.build;
+  const double hip_width = kHipWidthShare * s * look_.build * (look_.female_build ? 1.05 : 1.0);
+  // Pelvis in the trousers' colour, torso and shoulders in the top's.
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {0.0, 0.0, hip_z_ + 0.02 * s},
+                 {depth * 0.95, std::max(width, hip_width * 0.9), 0.12 * s}, look_.trousers,
+                 kTrunkSegments));
+  const double torso_bottom = hip_z_ + 0.03 * s;
+  const double torso_top = shoulder_z_ - 0.04 * s;
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kCylinder, {0.0, 0.0, 0.5 * (torso_bottom + torso_top)},
+                 {depth, width, torso_top - torso_bottom}, look_.top, kTrunkSegments));
+  // Chest and seat give the side view its curves: the chest ahead of the waist, the seat behind.
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {0.015 * s, 0.0, 0.70 * s},
+                 {depth * 1.15, width * 0.9, 0.22 * s}, look_.top, kTrunkSegments));
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {-0.02 * s, 0.0, hip_z_ - 0.01 * s},
+                 {depth * 1.1, std::max(width, hip_width * 0.9), 0.16 * s}, look_.trousers,
+                 kTrunkSegments));
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {0.0, 0.0, torso_top},
+                 {depth * 0.95, 2.0 * (shoulder_joint_y_ + 0.025 * s), 0.09 * s}, look_.top,
+                 kTrunkSegments));
+  // The trapezius slopes from the shoulders up to the neck: the head-and-shoulders outline people
+  // detectors look for.
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kSphere, {-0.01 * s, 0.0, shoulder_z_ - 0.005 * s},
+                 {depth * 0.8, 1.3 * shoulder_joint_y_, 0.09 * s}, look_.top, kTrunkSegments));
+  // Neck from inside the shoulders to inside the head.
+  const double neck_bottom = shoulder_z_ - 0.03 * s;
+  const double neck_top = chin_z_ + 0.3 * look_.head_height_m;
+  add_part(kPelvis, false,
+           shape(PrimitiveShape::kCylinder, {-0.01 * s, 0.0, 0.5 * (neck_bottom + neck_top)},
+                 {0.062 * s, 0.062 * s, neck_top - neck_bottom}, darker(look_.skin, 0.9f),
+                 kLimbSegments));
+
+  const double upper_arm_radius = 0.031 * s * look_.build;
+  const double forearm_radius = 0.025 * s * look_.build;
+  const Eigen::Vector3f forearm_colour = look_.short_sleeves ? look_.skin : look_.top;
+  for (const auto& [shoulder, elbow] : {std::array<Joint, 2>{kLeftShoulder, kLeftElbow},
+                                        std::array<Joint, 2>{kRightShoulder, kRightElbow}}) {
+    add_part(
+        shoulder, false,
+        shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * upper_arm_m_},
+              {2.0 * upper_arm_radius, 2.0 * upper_arm_radius, upper_arm_m_ + upper_arm_radius},
+              look_.top, kLimbSegments));
+    add_part(elbow, false,
+             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * forearm_m_},
+                   {2.0 * forearm_radius, 2.0 * forearm_radius, forearm_m_ + forearm_radius},
+                   forearm_colour, kLimbSegments));
+    const double hand = kHandShare * s;
+    add_part(elbow, false,
+             shape(PrimitiveShape::kSphere, {0.0, 0.0, -forearm_m_ - 0.45 * hand},
+                   {0.045 * s, 0.028 * s, hand}, look_.skin, kFeatureSegments));
+  }
+}
+
+void HumanFigure::build_head() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3d& r = head_radii_;
+  // The head's skin is the face: seen from behind, the hair covers it.
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), 2.0 * r, look_.skin, kHeadSegments));
+  for (double side : {-1.0, 1.0}) {
+    add_part(kHead, false,
+             shape(PrimitiveShape::kSphere, {-0.05 * h, side * r.y(), 0.0},
+                   {0.08 * h, 0.05 * h, 0.26 * h}, darker(look_.skin, 0.93f), kFeatureSegments));
+  }
+  const std::vector<Ellipsoid> hair = add_hair();
+  // The face box: hairline to chin, side to side of the head at the eyes.
+  for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
+                                    Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
+    face_outline_.emplace_back(face_front(yz.x(), yz.y()), yz.x(), yz.y());
+  }
+  add_eyes_and_brows();
+  if (look_.mask) {
+    add_mask();
+  } else {
+    add_nose_and_mouth();
+  }
+  collect_face_surface(hair);
+}
+
+double HumanFigure::face_front(double y, double z) const {
+  const Eigen::Vector3d& r = head_radii_;
+  const double inside = 1.0 - (y * y) / (r.y() * r.y()) - (z * z) / (r.z() * r.z());
+  return r.x() * std::sqrt(std::max(0.0, inside));
+}
+
+std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3d& r = head_radii_;
+  // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline;
+  // long hair falls behind the neck to the shoulders.
+  std::vector<Ellipsoid> hair;
+  if (look_.hair_style != HairStyle::kBald) {
+    hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
+                      Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
+  }
+  if (look_.hair_style == HairStyle::kLong) {
+    hair.emplace_back(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.45 * h),
+                      Eigen::Vector3d(1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h));
+  }
+  for (const auto& [centre, diameters] : hair) {
+    add_part(kHead, false,
+             shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, kHeadSegments));
+  }
+  return hair;
+}
+
+// Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's base
+// at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h. Detectors read a face by its contrasts
+// (Viola and Jones' features): eye sockets and brows darker than the forehead and the cheeks, a
+// bright nose bridge between the eyes, a dark mouth.
+void HumanFigure::add_eyes_and_brows() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3f& skin = look_.skin;
+  const double eye_y = 0.137 * h;
+  // Brows darker than the skin whatever the hair's colour: fair hair has darker brows.
+  const Eigen::Vector3f brow = darker(look_.hair, 0.5f).cwiseMin(darker(skin, 0.35f));
+  for (double side : {-1.0, 1.0}) {
+    const double y = side * eye_y;
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.02 * h) - 0.014, y, 0.02 * h},
+                   {0.06 * h, 0.25 * h, 0.17 * h}, darker(skin, 0.4f), kFeatureSegments));
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.0) - 0.005, y, 0.0},
+                   {0.04 * h, 0.15 * h, 0.07 * h}, Eigen::Vector3f(0.9f, 0.88f, 0.84f),
+                   kFeatureSegments));
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.0) + 0.003, y, 0.0},
+                   {0.02 * h, 0.07 * h, 0.07 * h}, look_.iris * 0.5f, kFeatureSegments));
+    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(face_front(y, 0.0) + 0.003, y, 0.0);
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {face_front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
+                   {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
+  }
+}
+
+// Over nose and mouth, ear to ear: a shell in front of the lower face.
+void HumanFigure::add_mask() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3d& r = head_radii_;
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, -0.27 * h},
+            {2.0 * 0.82 * r.x(), 2.0 * r.y() * 0.98, 0.5 * h}, look_.mask_colour, kHeadSegments));
+  // A surgical mask's three pleats: bands standing 3 mm proud of the mask, following it.
+  for (const double z : {-0.17 * h, -0.27 * h, -0.37 * h}) {
+    const double dz = (z + 0.27 * h) / (0.25 * h);
+    const double across = std::sqrt(1.0 - dz * dz);
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, {0.35 * r.x(), 0.0, z},
+                   {2.0 * (0.82 * r.x() * across + 0.003), 2.0 * (0.98 * r.y() * across + 0.003),
+                    0.035 * h},
+                   darker(look_.mask_colour, 0.72f), kTrunkSegments));
+  }
+}
+
+void HumanFigure::add_nose_and_mouth() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3f& skin = look_.skin;
+  add_part(kHead, true,
+           glossy(shape(PrimitiveShape::kSphere, {face_front(0.0, -0.08 * h), 0.0, -0.08 * h},
+                        {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
+  add_part(kHead, true,
+           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
+                 {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
+  const Eigen::Vector3f lips = darker(skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
+  add_part(kHead, true,
+           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
+                 {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
+  add_part(
+      kHead, true,
+      shape(PrimitiveShape::kSphere, {face_front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
+            {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f), kFeatureSegments));
+  // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
+  add_part(kJaw, true,
+           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
+                 {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
+}
+
+// What a camera can see of the face: the vertices of every face part (skin and features) not
+// under the hair, in the head frame; the jaw's twice, with the mouth closed and fully open.
+void HumanFigure::collect_face_surface(const std::vector<Ellipsoid>& hair) {
+  const double h = look_.head_height_m;
+  std::set<std::array<float, 6>> seen;
+  for (const Part& part : parts_) {
+    if (!part.face || (part.joint != kHead && part.joint != kJaw)) {
+      continue;
+    }
+    const RenderMesh& mesh = part.mesh;
+    for (size_t i = 0; i < mesh.vertex_count(); ++i) {
+      const float* v = &mesh.vertices[i * RenderMesh::kFloatsPerVertex];
+      const Eigen::Vector3d point(v[0], v[1], v[2]);
+      bool covered = false;
+      for (const auto& [centre, diameters] : hair) {
+        covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
+      }
+      if (covered) {
+        continue;
+      }
+      for (const double drop : {0.0, part.joint == kJaw ? kJawDropShare * h : 0.0}) {
+        const std::array<float, 6> key{v[0], v[1], static_cast<float>(v[2] - drop),
+                                       v[3], v[4], v[5]};
+        if (seen.insert(key).second) {
+          face_surface_.push_back({Eigen::Vector3d(key[0], key[1], key[2]),
+                                   Eigen::Vector3d(key[3], key[4], key[5]).normalized()});
+        }
+      }
+    }
+  }
+}
+
+HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const {
+  JointFrames frames;
+  const Eigen::Isometry3f body =
+      translation(pose.body.position.x(), pose.body.position.y(), 0.0) *
+      Eigen::Isometry3f(
+          Eigen::AngleAxisf(static_cast<float>(pose.body.theta), Eigen::Vector3f::UnitZ()));
+  frames[kPelvis] = body;
+  const double head_turn = std::clamp(core::angle_difference(pose.head_yaw_rad, pose.body.theta),
+                                      -kMaxHeadTurnRad, kMaxHeadTurnRad);
+  frames[kHead] =
+      body * translation(0.0, 0.0, head_centre_z_) *
+      Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(head_turn), Eigen::Vector3f::UnitZ()));
+  frames[kJaw] = frames[kHead] * translation(0.0, 0.0,
+                                             -kJawDropShare * look_.head_height_m *
+                                                 std::clamp(pose.mouth_open, 0.0, 1.0));
+  const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
+  const double phase = pose.gait_phase_rad;
+  // Legs swing in antiphase; a knee bends while its leg swings forward. Arms swing against the
+  // leg on their side.
+  for (const double side : {1.0, -1.0}) {
+    const double leg_phase = side > 0.0 ? phase : phase + M_PI;
+    // Standing, the feet are a little apart and the left one a little ahead (a relaxed stance);
+    // the stance fades as the stride takes over.
+    const double stance = 1.0 - amplitude;
+    const double hip_pitch =
+        amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
+    const double knee_flex =
+        amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
+    const Eigen::Isometry3f hip = body * translation(0.0, side * hip_joint_y_, hip_z_) *
+                                  rotation_x(side * stance * kStanceAbductionRad) *
+                                  rotation_y(-hip_pitch);
+    const Eigen::Isometry3f knee = hip * translation(0.0, 0.0, -thigh_m_) * rotation_y(knee_flex);
+    // The foot stays flat on its heading whatever the leg does.
+    Eigen::Isometry3f ankle = body;
+    ankle.translation() = (knee * translation(0.0, 0.0, -shin_m_)).translation();
+    const double arm_pitch = -amplitude * kShoulderSwingRad * std::sin(leg_phase);
+    const Eigen::Isometry3f shoulder =
+        body * translation(0.0, side * shoulder_joint_y_, shoulder_z_ - 0.03 * scale_) *
+        rotation_x(side * kArmAbductionRad) * rotation_y(-arm_pitch);
+    const Eigen::Isometry3f elbow =
+        shoulder * translation(0.0, 0.0, -upper_arm_m_) * rotation_y(-(0.15 + 0.3 * amplitude));
+    frames[side > 0.0 ? kLeftHip : kRightHip] = hip;
+    frames[side > 0.0 ? kLeftKnee : kRightKnee] = knee;
+    frames[side > 0.0 ? kLeftAnkle : kRightAnkle] = ankle;
+    frames[side > 0.0 ? kLeftShoulder : kRightShoulder] = shoulder;
+    frames[side > 0.0 ? kLeftElbow : kRightElbow] = elbow;
+  }
+  return frames;
+}
+
+void HumanFigure::append_posed(const FigurePose& pose, float body_label, float face_label,
+                               RenderMesh& out) const {
+  const JointFrames frames = joint_frames(pose);
+  for (const Part& part : parts_) {
+    append_moved(part.mesh, frames[part.joint], part.face ? face_label : body_label, out);
+  }
+}
+
+Eigen::Isometry3d HumanFigure::head_frame(const FigurePose& pose) const {
+  return joint_frames(pose)[kHead].cast<double>();
+}
+
+}  // namespace ari_social_sim::rendering

@@ -1,0 +1,342 @@
+#include "ari_social_sim/rendering/renderer.hpp"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+#include "ari_social_sim/rendering/render_mesh.hpp"
+#include "egl_context.hpp"
+
+namespace ari_social_sim::rendering {
+namespace {
+
+// Shading is deliberately plain (ambient, one directional light, a fill light at the camera):
+// enough for people, walls and furniture to be told apart in images and by detectors, cheap on
+// llvmpipe.
+constexpr const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec3 colour;
+layout(location = 3) in float surface;
+layout(location = 4) in float label;
+uniform mat4 world_to_optical;
+uniform mat4 projection;
+out vec3 v_world;
+out vec3 v_normal;
+out vec3 v_colour;
+flat out float v_surface;
+out float v_depth;
+flat out float v_label;
+void main() {
+  vec4 p = world_to_optical * vec4(position, 1.0);
+  v_world = position;
+  v_normal = normal;
+  v_colour = colour;
+  v_surface = surface;
+  v_depth = p.z;
+  v_label = label;
+  gl_Position = projection * p;
+}
+)";
+
+constexpr const char* kFragmentShader = R"(#version 330 core
+in vec3 v_world;
+in vec3 v_normal;
+in vec3 v_colour;
+flat in float v_surface;
+in float v_depth;
+flat in float v_label;
+layout(location = 0) out vec4 out_colour;
+layout(location = 1) out float out_depth;
+layout(location = 2) out float out_label;
+uniform vec3 camera_position;
+const vec3 sun = normalize(vec3(0.35, 0.55, 1.0));
+void main() {
+  // Ambient light, a sun, the ceiling's light from straight above (forehead and brows bright,
+  // under them darker, as indoors) and a fill light at the camera, so that surfaces facing the
+  // camera stay bright.
+  vec3 n = normalize(v_normal);
+  vec3 to_camera = normalize(camera_position - v_world);
+  float fill = max(dot(n, to_camera), 0.0);
+  float lighting = 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
+  vec3 c = v_colour;
+  if (v_surface > 0.5 && v_surface < 1.5) {
+    ivec2 cell = ivec2(floor(v_world.xy / 0.5));
+    if (((cell.x + cell.y) & 1) == 1) c *= 0.8;
+  }
+  // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
+  float highlight = v_surface > 1.5 ? 0.22 * pow(fill, 12.0) : 0.0;
+  // Colours are display (sRGB) values and light adds up linearly: shade in linear terms.
+  out_colour = vec4(min(c * pow(lighting, 1.0 / 2.2) + highlight, vec3(1.0)), 1.0);
+  out_depth = v_depth;
+  out_label = v_label;
+}
+)";
+
+// Background where nothing is hit: a pale grey-blue, and depth 0 (turned into NaN on readback).
+constexpr float kBackground[4] = {0.78f, 0.84f, 0.9f, 1.0f};
+
+GLuint compile(GLenum stage, const char* source) {
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048];
+    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+    throw RenderError(std::string("shader compilation failed: ") + log);
+  }
+  return shader;
+}
+
+GLuint link_program() {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader);
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048];
+    glGetProgramInfoLog(program, sizeof(log), nullptr, log);
+    throw RenderError(std::string("shader linking failed: ") + log);
+  }
+  return program;
+}
+
+// Maps the optical frame (x right, y down, z forward) to clip space so that window pixel
+// (u + 0.5, v + 0.5) is pixel (u, v) of the pinhole model, with v = 0 in the first row read back.
+Eigen::Matrix4f projection_of(const PinholeModel& m, double near_m, double far_m) {
+  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
+  p(0, 0) = 2.0 * m.fx / m.width;
+  p(0, 2) = 2.0 * (m.cx + 0.5) / m.width - 1.0;
+  p(1, 1) = 2.0 * m.fy / m.height;
+  p(1, 2) = 2.0 * (m.cy + 0.5) / m.height - 1.0;
+  p(2, 2) = (far_m + near_m) / (far_m - near_m);
+  p(2, 3) = -2.0 * far_m * near_m / (far_m - near_m);
+  p(3, 2) = 1.0;
+  return p.cast<float>();
+}
+
+// A vertex buffer with its attribute layout.
+struct GpuMesh {
+  GLuint array{0};
+  GLuint buffer{0};
+  GLsizei vertex_count{0};
+
+  void create() {
+    glGenVertexArrays(1, &array);
+    glGenBuffers(1, &buffer);
+    glBindVertexArray(array);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    const GLsizei stride = RenderMesh::kFloatsPerVertex * sizeof(float);
+    const int offsets[5] = {0, 3, 6, 9, RenderMesh::kLabelOffset};
+    const int sizes[5] = {3, 3, 3, 1, 1};
+    for (GLuint i = 0; i < 5; ++i) {
+      glEnableVertexAttribArray(i);
+      // OpenGL takes a buffer offset as a pointer.
+      // NOLINTNEXTLINE(performance-no-int-to-ptr)
+      const void* offset = reinterpret_cast<void*>(offsets[i] * sizeof(float));
+      glVertexAttribPointer(i, sizes[i], GL_FLOAT, GL_FALSE, stride, offset);
+    }
+  }
+  void upload(const RenderMesh& mesh) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.vertices.size() * sizeof(float)),
+                 mesh.vertices.data(), GL_DYNAMIC_DRAW);
+    vertex_count = static_cast<GLsizei>(mesh.vertex_count());
+  }
+  void draw() const { draw(0, vertex_count); }
+  void draw(GLint first, GLsizei count) const {
+    if (count > 0) {
+      glBindVertexArray(array);
+      glDrawArrays(GL_TRIANGLES, first, count);
+    }
+  }
+  void destroy() {
+    glDeleteBuffers(1, &buffer);
+    glDeleteVertexArrays(1, &array);
+  }
+};
+
+// Off-screen target of one size: RGBA8 colour, R32F optical depth, R32F labels, 32-bit float
+// depth buffer.
+struct Framebuffer {
+  static constexpr int kBuffers = 4;
+  GLuint framebuffer{0};
+  GLuint renderbuffers[kBuffers]{0, 0, 0, 0};
+
+  void create(int width, int height) {
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glGenRenderbuffers(kBuffers, renderbuffers);
+    const GLenum formats[kBuffers] = {GL_RGBA8, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F};
+    const GLenum attachments[kBuffers] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                          GL_COLOR_ATTACHMENT2, GL_DEPTH_ATTACHMENT};
+    for (int i = 0; i < kBuffers; ++i) {
+      glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers[i]);
+      glRenderbufferStorage(GL_RENDERBUFFER, formats[i], width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachments[i], GL_RENDERBUFFER, renderbuffers[i]);
+    }
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw RenderError("framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
+                        " is incomplete");
+    }
+  }
+  void destroy() {
+    glDeleteRenderbuffers(kBuffers, renderbuffers);
+    glDeleteFramebuffers(1, &framebuffer);
+  }
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+  EglContext context;
+  std::string device_name;
+  GLuint program{0};
+  GLint world_to_optical_location{-1};
+  GLint projection_location{-1};
+  GLint camera_position_location{-1};
+  GpuMesh static_mesh;
+  GpuMesh dynamic_mesh;
+  // One framebuffer per image size: a rig alternates between cameras of different sizes.
+  std::map<std::pair<int, int>, Framebuffer> framebuffers;
+  cv::Mat label_scratch;  // CV_32FC1, the label attachment as read back
+
+  Framebuffer& framebuffer_of(int width, int height) {
+    auto found = framebuffers.find({width, height});
+    if (found == framebuffers.end()) {
+      found = framebuffers.emplace(std::make_pair(width, height), Framebuffer{}).first;
+      found->second.create(width, height);
+    }
+    return found->second;
+  }
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
+  impl_->context.make_current();
+  const GLubyte* name = glGetString(GL_RENDERER);
+  impl_->device_name = name != nullptr ? reinterpret_cast<const char*>(name) : "unknown";
+  impl_->program = link_program();
+  impl_->world_to_optical_location = glGetUniformLocation(impl_->program, "world_to_optical");
+  impl_->projection_location = glGetUniformLocation(impl_->program, "projection");
+  impl_->camera_position_location = glGetUniformLocation(impl_->program, "camera_position");
+  impl_->static_mesh.create();
+  impl_->dynamic_mesh.create();
+}
+
+Renderer::~Renderer() {
+  impl_->context.make_current();
+  for (auto& [size, framebuffer] : impl_->framebuffers) {
+    framebuffer.destroy();
+  }
+  impl_->static_mesh.destroy();
+  impl_->dynamic_mesh.destroy();
+  glDeleteProgram(impl_->program);
+}
+
+const std::string& Renderer::device_name() const {
+  return impl_->device_name;
+}
+
+void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primitives) {
+  impl_->context.make_current();
+  impl_->static_mesh.upload(mesh_of(primitives));
+}
+
+void Renderer::set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives) {
+  set_dynamic_mesh(mesh_of(primitives));
+}
+
+void Renderer::set_dynamic_mesh(const RenderMesh& mesh) {
+  impl_->context.make_current();
+  impl_->dynamic_mesh.upload(mesh);
+}
+
+void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_world_optical,
+                      const ViewOptions& options, RenderedImage& out) {
+  impl_->context.make_current();
+  Framebuffer& target = impl_->framebuffer_of(model.width, model.height);
+  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+  // Only the outputs asked for are written: a colour-only camera skips the depth and label
+  // attachments' bandwidth, which is a good part of llvmpipe's cost per pixel.
+  const GLenum draw_buffers[3] = {options.colour ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE},
+                                  options.depth ? GLenum{GL_COLOR_ATTACHMENT1} : GLenum{GL_NONE},
+                                  options.labels ? GLenum{GL_COLOR_ATTACHMENT2} : GLenum{GL_NONE}};
+  glDrawBuffers(3, draw_buffers);
+  glViewport(0, 0, model.width, model.height);
+
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  if (options.colour) {
+    glClearBufferfv(GL_COLOR, 0, kBackground);
+  }
+  if (options.depth) {
+    glClearBufferfv(GL_COLOR, 1, zero);
+  }
+  if (options.labels) {
+    glClearBufferfv(GL_COLOR, 2, zero);
+  }
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  // Outward faces are counter-clockwise in the world; the y-down image flip makes them clockwise
+  // on screen.
+  glEnable(GL_CULL_FACE);
+  glFrontFace(GL_CW);
+  glCullFace(GL_BACK);
+
+  glUseProgram(impl_->program);
+  const Eigen::Matrix4f world_to_optical = X_world_optical.inverse().matrix().cast<float>();
+  const Eigen::Matrix4f projection = projection_of(model, options.near_m, options.far_m);
+  glUniformMatrix4fv(impl_->world_to_optical_location, 1, GL_FALSE, world_to_optical.data());
+  glUniformMatrix4fv(impl_->projection_location, 1, GL_FALSE, projection.data());
+  const Eigen::Vector3f camera_position = X_world_optical.translation().cast<float>();
+  glUniform3fv(impl_->camera_position_location, 1, camera_position.data());
+  if (options.only_dynamic) {
+    impl_->dynamic_mesh.draw(static_cast<GLint>(options.only_dynamic->first),
+                             static_cast<GLsizei>(options.only_dynamic->count));
+  } else {
+    impl_->static_mesh.draw();
+    impl_->dynamic_mesh.draw();
+  }
+
+  // Read back; the first row read is window y = 0, which the projection made image row v = 0.
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (options.colour) {
+    out.colour.create(model.height, model.width, CV_8UC3);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, model.width, model.height, GL_RGB, GL_UNSIGNED_BYTE, out.colour.data);
+  }
+  if (options.depth) {
+    out.depth.create(model.height, model.width, CV_32FC1);
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, model.width, model.height, GL_RED, GL_FLOAT, out.depth.data);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    float* depth = out.depth.ptr<float>();
+    const size_t count = out.depth.total();
+    for (size_t i = 0; i < count; ++i) {
+      if (depth[i] <= 0.0f) {
+        depth[i] = nan;
+      }
+    }
+  }
+  if (options.labels) {
+    impl_->label_scratch.create(model.height, model.width, CV_32FC1);
+    glReadBuffer(GL_COLOR_ATTACHMENT2);
+    glReadPixels(0, 0, model.width, model.height, GL_RED, GL_FLOAT, impl_->label_scratch.data);
+    impl_->label_scratch.convertTo(out.labels, CV_16UC1);
+  }
+}
+
+}  // namespace ari_social_sim::rendering

@@ -1,0 +1,78 @@
+#include "ari_social_sim/rendering/world_scene.hpp"
+
+#include <Eigen/Geometry>
+
+namespace ari_social_sim::rendering {
+namespace {
+
+const Eigen::Vector3f kFloorColour{0.72f, 0.70f, 0.66f};
+const Eigen::Vector3f kWallColour{0.86f, 0.85f, 0.80f};
+const Eigen::Vector3f kFurnitureColour{0.55f, 0.40f, 0.28f};
+
+Eigen::Isometry3d planar(const Eigen::Vector2d& xy, double z, double yaw) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.translation() = Eigen::Vector3d(xy.x(), xy.y(), z);
+  X.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return X;
+}
+
+RenderPrimitive solid(PrimitiveShape shape, const Eigen::Isometry3d& X_world_shape,
+                      const Eigen::Vector3d& size, const Eigen::Vector3f& colour) {
+  RenderPrimitive primitive;
+  primitive.shape = shape;
+  primitive.X_world_shape = X_world_shape;
+  primitive.size = size;
+  primitive.colour = colour;
+  return primitive;
+}
+
+}  // namespace
+
+std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
+                                                  const SceneStyle& style) {
+  std::vector<RenderPrimitive> out;
+  // The floor is a thin slab whose top face is z = 0.
+  constexpr double kFloorThickness = 0.02;
+  RenderPrimitive floor = solid(
+      PrimitiveShape::kBox, planar(world.origin + 0.5 * world.size, -0.5 * kFloorThickness, 0.0),
+      Eigen::Vector3d(world.size.x(), world.size.y(), kFloorThickness), kFloorColour);
+  floor.surface = Surface::kChecker;
+  out.push_back(floor);
+
+  for (const model::StaticObject& object : world.objects) {
+    const bool is_wall = object.type == model::ShapeType::kWall;
+    // The world file's height (the physics collides with the same solid); the style's for
+    // objects built in code without one.
+    const double height = object.height_m > 0.0
+                              ? object.height_m
+                              : (is_wall ? style.wall_height_m : style.furniture_height_m);
+    const Eigen::Vector3f colour = is_wall ? kWallColour : kFurnitureColour;
+    const Eigen::Isometry3d X = planar(object.pose.position, 0.5 * height, object.pose.theta);
+    switch (object.type) {
+      case model::ShapeType::kWall:
+      case model::ShapeType::kBox:
+        out.push_back(solid(PrimitiveShape::kBox, X,
+                            Eigen::Vector3d(object.size.x(), object.size.y(), height), colour));
+        break;
+      case model::ShapeType::kCircle:
+        out.push_back(solid(PrimitiveShape::kCylinder, X,
+                            Eigen::Vector3d(2.0 * object.radius_m, 2.0 * object.radius_m, height),
+                            colour));
+        break;
+      case model::ShapeType::kPolygon: {
+        // Polygon vertices are in the map frame; the prism's frame sits on their centroid.
+        RenderPrimitive prism =
+            solid(PrimitiveShape::kPrism, planar(object.pose.position, 0.5 * height, 0.0),
+                  Eigen::Vector3d(1.0, 1.0, height), colour);
+        for (const Eigen::Vector2d& point : object.points) {
+          prism.outline.emplace_back(point - object.pose.position);
+        }
+        out.push_back(prism);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace ari_social_sim::rendering

@@ -1,0 +1,86 @@
+// DrawnPeople: the figures posed where ari_physics_node drew them, one world step ahead of the
+// world state an image falls before.
+
+#include <gtest/gtest.h>
+
+#include "ari_social_sim/rendering/drawn_people.hpp"
+
+namespace ari_social_sim::rendering {
+namespace {
+
+world::HumanSnapshot walker(model::ObjectId id, const Eigen::Vector2d& position,
+                            const Eigen::Vector2d& velocity_mps, double angular_velocity_rps) {
+  world::HumanSnapshot human;
+  human.id = id;
+  human.age_years = 30.0;
+  human.pose = {position, 0.0};
+  human.velocity_mps = velocity_mps;
+  human.angular_velocity_rps = angular_velocity_rps;
+  return human;
+}
+
+const PosedPerson& only(const std::vector<PosedPerson>& posed) {
+  EXPECT_EQ(posed.size(), 1u);
+  return posed.front();
+}
+
+TEST(DrawnPeople, OneStateIsWalkedOnFromADefaultStepBeforeIt) {
+  DrawnPeople drawn(1);
+  EXPECT_TRUE(drawn.empty());
+  drawn.add_state(1.0, {walker(4, {2.0, 0.5}, {1.0, 0.0}, 0.0)});
+  EXPECT_FALSE(drawn.empty());
+  // Received at 1.0 - 0.05 s: at 1.05 s the figure has walked 0.1 s at 1 m/s.
+  const PosedPerson& person = only(drawn.pose_at(1.05));
+  EXPECT_EQ(person.id, 4u);
+  EXPECT_NEAR(person.pose.body.position.x(), 2.1, 1e-12);
+  EXPECT_NEAR(person.pose.body.position.y(), 0.5, 1e-12);
+}
+
+TEST(DrawnPeople, AnImageShowsTheNextStateWalkedOnFromThePreviousStamp) {
+  DrawnPeople drawn(1);
+  drawn.add_state(1.0, {walker(4, {2.0, 0.0}, {0.0, 0.0}, 0.0)});
+  drawn.add_state(1.05, {walker(4, {3.0, 0.0}, {0.0, -2.0}, 0.5)});
+  // An image at 1.02 s falls before the state of 1.05 s, received at 1.0 s: 0.02 s ahead of it.
+  const PosedPerson& between = only(drawn.pose_at(1.02));
+  EXPECT_NEAR(between.pose.body.position.x(), 3.0, 1e-12);
+  EXPECT_NEAR(between.pose.body.position.y(), -0.04, 1e-12);
+  EXPECT_NEAR(between.pose.body.theta, 0.01, 1e-12);
+  // An image at a state's own stamp is that state one step (0.05 s) on.
+  const PosedPerson& at_state = only(drawn.pose_at(1.05));
+  EXPECT_NEAR(at_state.pose.body.position.y(), -0.1, 1e-12);
+  // Later than the last state: the last, walked on from the stamp before it.
+  const PosedPerson& later = only(drawn.pose_at(1.2));
+  EXPECT_NEAR(later.pose.body.position.y(), -0.4, 1e-12);
+}
+
+TEST(DrawnPeople, AnImageBeforeEveryStateIsNotWalkedBackwards) {
+  DrawnPeople drawn(1);
+  drawn.add_state(1.0, {walker(4, {2.0, 0.0}, {1.0, 0.0}, 0.0)});
+  const PosedPerson& person = only(drawn.pose_at(0.5));
+  EXPECT_NEAR(person.pose.body.position.x(), 2.0, 1e-12);
+}
+
+TEST(DrawnPeople, AnEarlierStateStartsTheHistoryAfresh) {
+  DrawnPeople drawn(1);
+  drawn.add_state(5.0, {walker(4, {9.0, 0.0}, {0.0, 0.0}, 0.0)});
+  drawn.add_state(5.05, {walker(4, {9.0, 0.0}, {0.0, 0.0}, 0.0)});
+  drawn.add_state(1.0, {walker(7, {2.0, 0.0}, {1.0, 0.0}, 0.0)});
+  // Only the reset's state is left: the one before it (5.05 s) would put it 4 s back in time.
+  const PosedPerson& person = only(drawn.pose_at(1.05));
+  EXPECT_EQ(person.id, 7u);
+  EXPECT_NEAR(person.pose.body.position.x(), 2.1, 1e-12);
+}
+
+TEST(DrawnPeople, KeepsTheLastStates) {
+  DrawnPeople drawn(1);
+  for (size_t k = 0; k < DrawnPeople::kHistory + 10; ++k) {
+    const double x = static_cast<double>(k);
+    drawn.add_state(0.05 * x, {walker(4, {x, 0.0}, {1.0, 0.0}, 0.0)});
+  }
+  // An image at time 0 falls before the oldest state kept (the 10th), walked on not at all.
+  const PosedPerson& person = only(drawn.pose_at(0.0));
+  EXPECT_NEAR(person.pose.body.position.x(), 10.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::rendering

@@ -1,0 +1,207 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/rendering/image_labels.hpp"
+#include "ari_social_sim/rendering/people_figures.hpp"
+#include "ari_social_sim/rendering/renderer.hpp"
+#include "render_test_scenes.hpp"
+
+namespace ari_social_sim::rendering {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+FigureInput standing_at(uint32_t id, const Eigen::Vector2d& position, double facing) {
+  FigureInput input;
+  input.traits.id = id;
+  input.pose = {position, facing};
+  input.face_yaw_rad = facing;
+  return input;
+}
+
+TEST(HumanAppearance, TheSameTraitsAndSeedGiveTheSameLookAndStaturesFollowTheSurveys) {
+  const HumanTraits traits{7, 40.0, model::Gender::kFemale, false};
+  const HumanAppearance a = appearance_of(traits, 3), b = appearance_of(traits, 3);
+  EXPECT_EQ(a.height_m, b.height_m);
+  EXPECT_TRUE(a.skin == b.skin && a.top == b.top && a.hair == b.hair);
+  EXPECT_NE(appearance_of(traits, 4).height_m, a.height_m);
+
+  // Adults: mean and spread of stature per gender; six skin tones in about equal shares.
+  for (const auto& [gender, mean] :
+       {std::pair{model::Gender::kMale, 1.75}, std::pair{model::Gender::kFemale, 1.62}}) {
+    double sum = 0.0, squares = 0.0;
+    std::map<std::array<float, 3>, int> tones;
+    constexpr int kPeople = 3000;
+    for (uint32_t id = 0; id < kPeople; ++id) {
+      const HumanAppearance look = appearance_of({id, 35.0, gender, false}, 11);
+      sum += look.height_m;
+      squares += look.height_m * look.height_m;
+      ++tones[{look.skin.x(), look.skin.y(), look.skin.z()}];
+    }
+    const double average = sum / kPeople;
+    const double spread = std::sqrt(squares / kPeople - average * average);
+    std::printf("%s: mean %.3f m, sd %.3f m, %zu skin tones\n",
+                gender == model::Gender::kMale ? "men" : "women", average, spread, tones.size());
+    EXPECT_NEAR(average, mean, 0.01);
+    EXPECT_NEAR(spread, 0.07, 0.01);
+    ASSERT_EQ(tones.size(), 6u);
+    for (const auto& [tone, count] : tones) {
+      EXPECT_NEAR(double(count) / kPeople, 1.0 / 6.0, 0.03);
+    }
+  }
+  // A six-year-old is about 1.13 m tall (Weech), with a head a larger share of it.
+  const HumanAppearance child = appearance_of({1, 6.0, model::Gender::kMale, false}, 1);
+  EXPECT_NEAR(child.height_m, 1.13, 0.1);
+  EXPECT_GT(child.head_height_m / child.height_m, 0.16);
+}
+
+// A person seen from the side 10 m away covers the image rows of their stature, plus at most 3 %
+// (hair, and the perspective of their near side).
+TEST(HumanFigure, RenderedFigureIsAsTallAsTheStatureAndStridesWhenWalking) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.0});
+  constexpr double kDistance = 10.0;
+  ViewOptions options;
+  options.labels = true;
+  RenderedImage image;
+  double standing_width_px = 0.0;
+  for (const double speed : {0.0, 1.3}) {
+    FigureInput person = standing_at(5, {kDistance, 0.0}, M_PI / 2);  // across the view
+    person.velocity_mps = {0.0, speed};
+    PeopleFigures figures;
+    figures.update(0.0, {person});
+    figures.update(0.4, {person});  // a quarter stride on: legs apart
+    renderer.set_dynamic_mesh(figures.mesh());
+    renderer.render(model, X_world_optical, options, image);
+    const cv::Rect box = cv::boundingRect(image.labels > 0);
+    const double height_m = box.height * kDistance / model.fy;
+    const double stature = figures.posed()[0].figure->appearance().height_m;
+    std::printf("speed %.1f: %d x %d px, %.3f m tall for a stature of %.3f m\n", speed, box.width,
+                box.height, height_m, stature);
+    if (speed == 0.0) {
+      EXPECT_GE(height_m, stature - kDistance / model.fy);
+      EXPECT_LE(height_m, 1.03 * stature);
+      standing_width_px = box.width;
+    } else {
+      // The stride opens the legs: the side view is at least 0.3 m wider than standing.
+      EXPECT_GT((box.width - standing_width_px) * kDistance / model.fx, 0.3);
+    }
+  }
+}
+
+TEST(PeopleFigures, HeadTurnsToTheGazeWithinItsRangeAndTheMouthMovesOnlyWhileSpeaking) {
+  FigureInput person = standing_at(2, {0.0, 0.0}, 0.0);
+  PeopleFigures figures;
+  for (const double gaze : {0.5, -0.9, 2.0}) {
+    person.face_yaw_rad = gaze;
+    figures.update(0.0, {person});
+    const PosedPerson& posed = figures.posed()[0];
+    const Eigen::Matrix3d R = posed.figure->head_frame(posed.pose).linear();
+    const double head_yaw = std::atan2(R(1, 0), R(0, 0));
+    EXPECT_NEAR(head_yaw,
+                std::clamp(gaze, -HumanFigure::kMaxHeadTurnRad, HumanFigure::kMaxHeadTurnRad),
+                1e-6);
+  }
+  double lowest = 1.0, highest = 0.0;
+  for (const bool speaking : {false, true}) {
+    person.speaking = speaking;
+    for (double t = 0.0; t < 1.0; t += 0.01) {
+      figures.update(t, {person});
+      const double open = figures.posed()[0].pose.mouth_open;
+      if (!speaking) {
+        EXPECT_EQ(open, 0.0);
+      } else {
+        lowest = std::min(lowest, open);
+        highest = std::max(highest, open);
+      }
+    }
+  }
+  EXPECT_LT(lowest, 0.05);
+  EXPECT_GT(highest, 0.95);
+}
+
+TEST(PeopleFigures, FiguresAreBuiltOncePerPersonAndTheSameInputsGiveTheSameMesh) {
+  std::vector<FigureInput> people{standing_at(1, {1.0, 0.0}, 0.0), standing_at(2, {2.0, 1.0}, 1.0)};
+  people[1].velocity_mps = {0.8, 0.3};
+  PeopleFigures a(5), b(5);
+  for (double t = 0.0; t < 1.0; t += 0.1) {
+    a.update(t, people);
+    b.update(t, people);
+  }
+  EXPECT_EQ(a.mesh().vertices, b.mesh().vertices);
+  const HumanFigure* first = a.posed()[0].figure;
+  a.update(1.1, people);
+  EXPECT_EQ(a.posed()[0].figure, first);  // kept, not rebuilt
+  people[0].traits.mask = true;
+  a.update(1.2, people);
+  EXPECT_TRUE(a.posed()[0].figure->appearance().mask);  // rebuilt when the traits change
+  a.update(1.3, {people[1]});
+  ASSERT_EQ(a.posed().size(), 1u);
+  EXPECT_EQ(a.posed()[0].id, 2u);
+  EXPECT_EQ(a.owner_of(a.posed()[0].face_label)->face, true);
+  EXPECT_FALSE(a.owner_of(5).has_value());
+}
+
+// One person 4 m away hides part of another 6 m away on the same line of sight: the labels give
+// the front one no occlusion and a face box, the back one an occlusion between 0.3 and 0.9 and,
+// turned away, no face box; depth at the front person's pixels is their distance.
+TEST(ImageLabels, OcclusionFaceBoxesAndDepthAgreeWithTheScene) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.5});
+  PeopleFigures figures;
+  figures.update(0.0, {standing_at(1, {4.0, 0.15}, M_PI), standing_at(2, {6.0, 0.0}, 0.0)});
+  renderer.set_dynamic_mesh(figures.mesh());
+  ViewOptions options;
+  options.labels = true;
+  options.depth = true;
+  RenderedImage image;
+  renderer.render(model, X_world_optical, options, image);
+  const std::vector<PersonLabel> labels =
+      label_people(renderer, model, X_world_optical, figures, image.labels);
+  ASSERT_EQ(labels.size(), 2u);
+  const PersonLabel& front = labels[0].person_id == 1 ? labels[0] : labels[1];
+  const PersonLabel& back = labels[0].person_id == 1 ? labels[1] : labels[0];
+  std::printf("front: occlusion %.2f, face yaw %.1f deg; back: occlusion %.2f, face yaw %.1f\n",
+              front.occlusion, front.face_yaw_deg, back.occlusion, back.face_yaw_deg);
+  EXPECT_EQ(front.occlusion, 0.0);
+  EXPECT_FALSE(front.truncated);
+  EXPECT_NEAR(front.distance_m, 4.0, 0.01);
+  ASSERT_TRUE(front.face_box.has_value());
+  EXPECT_LT(front.face_yaw_deg, 10.0);
+  EXPECT_GT(back.occlusion, 0.3);
+  EXPECT_LT(back.occlusion, 0.9);
+  EXPECT_FALSE(back.face_box.has_value());
+  // The face box holds the face's labelled pixels, but for a bald crown above the hairline.
+  const cv::Rect face(front.face_box->x, front.face_box->y, front.face_box->width,
+                      front.face_box->height);
+  const cv::Mat face_pixels = image.labels == figures.posed()[0].face_label;
+  EXPECT_GE(cv::countNonZero(face_pixels(face)), 0.85 * cv::countNonZero(face_pixels));
+  // Depth is consistent with the geometry: the front person's pixels lie within 0.4 m of 4 m (a
+  // foot forward in the stance, the back of the head behind).
+  double nearest = 1e9, farthest = 0.0;
+  for (int v = 0; v < image.depth.rows; ++v) {
+    for (int u = 0; u < image.depth.cols; ++u) {
+      if (image.labels.at<uint16_t>(v, u) == figures.posed()[0].body_label) {
+        nearest = std::min(nearest, double(image.depth.at<float>(v, u)));
+        farthest = std::max(farthest, double(image.depth.at<float>(v, u)));
+      }
+    }
+  }
+  std::printf("front person's depth %.3f to %.3f m\n", nearest, farthest);
+  EXPECT_GT(nearest, 3.6);
+  EXPECT_LT(farthest, 4.4);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::rendering

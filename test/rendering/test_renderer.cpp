@@ -1,0 +1,136 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "ari_social_sim/rendering/people_figures.hpp"
+#include "ari_social_sim/rendering/renderer.hpp"
+#include "ari_social_sim/rendering/world_scene.hpp"
+#include "render_test_scenes.hpp"
+
+namespace ari_social_sim::rendering {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+TEST(Renderer, OpensAHeadlessContext) {
+  Renderer renderer;
+  EXPECT_FALSE(renderer.device_name().empty());
+  std::printf("renderer: %s\n", renderer.device_name().c_str());
+}
+
+TEST(Renderer, WallFacingTheCameraAtItsDistance) {
+  Renderer renderer;
+  // The wall's near face is the plane x = 3.0 m; the camera at the origin, 1 m up, faces +x.
+  renderer.set_static_primitives({test::box({3.1, 0.0, 1.5}, {0.2, 20.0, 3.0})});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(848, 480, 69.4 * kDeg);
+  RenderedImage image;
+  ViewOptions options;
+  options.depth = true;
+  renderer.render(model, test::level_camera_facing_x({0.0, 0.0, 1.0}), options, image);
+  ASSERT_EQ(image.depth.rows, 480);
+  ASSERT_EQ(image.depth.cols, 848);
+  // Depth is along the optical axis, so every pixel on a plane facing the camera reads 3.0 m. The
+  // wall spans z in [0, 3] m: rows from v = 0 down to where the ray reaches z = 0, at
+  // v = cy + fy * 1 / 3 = 239.5 + 611.4 / 3 = 443.3.
+  double worst_error = 0.0;
+  int wall_pixels = 0;
+  for (int v = 0; v < image.depth.rows; ++v) {
+    for (int u = 0; u < image.depth.cols; ++u) {
+      const float depth = image.depth.at<float>(v, u);
+      if (std::isfinite(depth)) {
+        ++wall_pixels;
+        worst_error = std::max(worst_error, std::abs(depth - 3.0));
+      }
+    }
+  }
+  EXPECT_LT(worst_error, 0.01);
+  EXPECT_NEAR(wall_pixels, 444 * 848, 2 * 848);
+}
+
+TEST(Renderer, SlantedWallDepthMatchesRayIntersection) {
+  Renderer renderer;
+  // A wall turned 30 deg about z through (4, 0.5): the near face is the plane n . p = d.
+  const double yaw = 30.0 * kDeg;
+  const Eigen::Vector3d centre(4.0, 0.5, 1.5);
+  renderer.set_static_primitives({test::box(centre, {0.2, 30.0, 3.0}, yaw)});
+  const Eigen::Vector3d normal(std::cos(yaw), std::sin(yaw), 0.0);
+  const double plane = normal.dot(centre) - 0.1;
+
+  const PinholeModel model = PinholeModel::from_horizontal_fov(640, 480, 80.0 * kDeg);
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.2});
+  RenderedImage image;
+  ViewOptions options;
+  options.depth = true;
+  renderer.render(model, X_world_optical, options, image);
+  double worst_error = 0.0;
+  int checked = 0;
+  for (int v = 0; v < model.height; v += 7) {
+    for (int u = 0; u < model.width; u += 7) {
+      // Intersect the pixel's ray (z = 1 in the optical frame) with the plane, in the world.
+      const Eigen::Vector3d ray_world = X_world_optical.linear() * model.ray(u, v);
+      const Eigen::Vector3d origin = X_world_optical.translation();
+      const double t = (plane - normal.dot(origin)) / normal.dot(ray_world);
+      const Eigen::Vector3d hit = origin + t * ray_world;
+      const float depth = image.depth.at<float>(v, u);
+      if (hit.z() < 0.02 || hit.z() > 2.98) {
+        continue;  // off the wall's top or bottom edge
+      }
+      ASSERT_TRUE(std::isfinite(depth)) << "pixel " << u << "," << v;
+      worst_error = std::max(worst_error, std::abs(depth - t));  // t is the optical z of the hit
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 3000);
+  EXPECT_LT(worst_error, 0.01);
+}
+
+TEST(Renderer, PersonAppearsWhereTheProjectionPutsThem) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.5});
+  // A person 3 m ahead and 0.6 m to the left, facing the camera.
+  const Eigen::Vector2d position(3.0, 0.6);
+  const double facing = std::atan2(-position.y(), -position.x());
+  FigureInput person;
+  person.traits.id = 4;
+  person.pose = {position, facing};
+  person.face_yaw_rad = facing;
+  PeopleFigures figures;
+  figures.update(0.0, {person});
+  renderer.set_dynamic_mesh(figures.mesh());
+
+  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+  RenderedImage image;
+  ViewOptions options;
+  options.labels = true;
+  renderer.render(model, X_world_optical, options, image);
+  // The face's labelled pixels centre on the head's projection, within a tenth of its width.
+  const PosedPerson& posed = figures.posed()[0];
+  const cv::Mat face = image.labels == posed.face_label;
+  const cv::Moments moments = cv::moments(face, true);
+  ASSERT_GT(moments.m00, 1000);
+  const Eigen::Vector3d head_world = posed.figure->head_frame(posed.pose).translation();
+  const Eigen::Vector2d expected = *model.project(X_world_optical.inverse() * head_world);
+  const double head_width_px =
+      model.fx * posed.figure->appearance().head_height_m * 0.68 / position.norm();
+  std::printf("face centroid (%.1f, %.1f), head projected (%.1f, %.1f), head %.0f px wide\n",
+              moments.m10 / moments.m00, moments.m01 / moments.m00, expected.x(), expected.y(),
+              head_width_px);
+  EXPECT_NEAR(moments.m10 / moments.m00, expected.x(), 0.1 * head_width_px);
+  EXPECT_NEAR(moments.m01 / moments.m00, expected.y(), 0.1 * head_width_px);
+  // The label image and the colour image agree on where the person is: labelled pixels are
+  // exactly those not of the background's colour.
+  const cv::Vec3b background = image.colour.at<cv::Vec3b>(0, 0);
+  int disagreements = 0;
+  for (int v = 0; v < image.colour.rows; ++v) {
+    for (int u = 0; u < image.colour.cols; ++u) {
+      const bool drawn = image.colour.at<cv::Vec3b>(v, u) != background;
+      disagreements += drawn != (image.labels.at<uint16_t>(v, u) > 0) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(disagreements, 0);
+}
+
+}  // namespace
+}  // namespace ari_social_sim::rendering
