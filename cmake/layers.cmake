@@ -7,7 +7,7 @@ set(ari_layers foundation simulation robot_and_senses engine products ros)
 set(ari_layer_foundation ari_core ari_model)
 set(ari_layer_simulation ari_world ari_dialogue ari_navigation)
 set(ari_layer_robot_and_senses
-  ari_perception ari_physics ari_rendering ari_mapping ari_world_speech)
+  ari_perception ari_physics ari_rendering ari_mapping ari_audio ari_world_speech)
 set(ari_layer_engine ari_scenario ari_engine)
 set(ari_layer_products ari_batch ari_dataset ari_learning ari_parameters_page)
 set(ari_layer_ros

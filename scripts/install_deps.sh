@@ -32,8 +32,11 @@ packages=(
   # the habits scripts/test.sh enforces: formatting (check_format.sh) and clang_tidy.sh, which
   # asks git for the sources a change touches
   clang-format-14 clang-tidy-14 git
-  # inspection
-  rviz xvfb xauth imagemagick
+  # audio (docs/audio.md): voices synthesised with libespeak-ng, speech recognised with
+  # pocketsphinx and its US English model
+  libespeak-ng-dev libpocketsphinx-dev libsphinxbase-dev pocketsphinx-en-us
+  # inspection (sox reads, plays and draws the audio files; espeak-ng speaks a voice to try it)
+  rviz xvfb xauth imagemagick sox espeak-ng
   # rsvg-convert renders docs/architecture.svg to look at (ImageMagick reads no SVG without it)
   librsvg2-bin
 )

@@ -12,6 +12,7 @@ SpeechSnapshot snapshot_of(const SpeechGenerator& speech) {
   snapshot.word_index = static_cast<uint32_t>(speech.word_index());
   snapshot.is_speaking = speech.is_speaking();
   snapshot.start_s = speech.start_s();
+  snapshot.words_per_minute = speech.words_per_minute();
   if (const SpeechRecord* previous = speech.previous()) {
     snapshot.previous_act = previous->act;
     snapshot.previous_content = previous->content;

@@ -30,6 +30,7 @@ SpeechState to_msg(const world::SpeechSnapshot& speech) {
   msg.word_index = speech.word_index;
   msg.is_speaking = speech.is_speaking;
   msg.start_time = speech.start_s;
+  msg.words_per_minute = speech.words_per_minute;
   msg.previous_act = speech.previous_act;
   msg.previous_content = speech.previous_content;
   return msg;
@@ -43,6 +44,7 @@ world::SpeechSnapshot from_msg(const SpeechState& msg) {
   speech.word_index = msg.word_index;
   speech.is_speaking = msg.is_speaking;
   speech.start_s = msg.start_time;
+  speech.words_per_minute = msg.words_per_minute;
   speech.previous_act = msg.previous_act;
   speech.previous_content = msg.previous_content;
   return speech;

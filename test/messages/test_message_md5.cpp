@@ -17,6 +17,7 @@
 #include "actionlib_msgs/GoalID.h"
 #include "actionlib_msgs/GoalStatus.h"
 #include "actionlib_msgs/GoalStatusArray.h"
+#include "ari_social_sim/AudioData.h"
 #include "ari_social_sim/AudioFeatures.h"
 #include "ari_social_sim/BodyPosture.h"
 #include "ari_social_sim/EngagementLevel.h"
@@ -188,6 +189,12 @@ const std::vector<WireType> kPlayMotionMsgs = {
      message_md5<a::PlayMotionFeedback>()},
 };
 
+// audio_common_msgs 0.3.x: the audio driver's chunks.
+const std::vector<WireType> kAudioCommonMsgs = {
+    {"audio_common_msgs/AudioData", "f43a8e1b362b75baa741461b46adc7e0",
+     message_md5<a::AudioData>()},
+};
+
 // The dependencies Debian does package: the Debian types our copies
 // embed. If one of them drifted from the sums upstream was computed against, every copy that
 // nests it would stop connecting even with correct field lists.
@@ -229,16 +236,19 @@ INSTANTIATE_TEST_SUITE_P(ControlMsgs, WireMd5, ::testing::ValuesIn(kControlMsgs)
 INSTANTIATE_TEST_SUITE_P(PalInteractionMsgs, WireMd5, ::testing::ValuesIn(kPalInteractionMsgs),
                          type_name);
 INSTANTIATE_TEST_SUITE_P(PlayMotionMsgs, WireMd5, ::testing::ValuesIn(kPlayMotionMsgs), type_name);
+INSTANTIATE_TEST_SUITE_P(AudioCommonMsgs, WireMd5, ::testing::ValuesIn(kAudioCommonMsgs),
+                         type_name);
 INSTANTIATE_TEST_SUITE_P(DebianDependencies, WireMd5, ::testing::ValuesIn(kDebianDependencies),
                          type_name);
 
-// The tables above hold 17 + 19 + 11 + 7 + 8 rows; a row dropped by an edit must not pass
+// The tables above hold 17 + 19 + 11 + 7 + 1 + 8 rows; a row dropped by an edit must not pass
 // silently.
 TEST(WireMd5Tables, CoverEverySpecRow) {
   EXPECT_EQ(kHriMsgs.size(), 17u);
   EXPECT_EQ(kControlMsgs.size(), 19u);
   EXPECT_EQ(kPalInteractionMsgs.size(), 11u);
   EXPECT_EQ(kPlayMotionMsgs.size(), 7u);
+  EXPECT_EQ(kAudioCommonMsgs.size(), 1u);
   EXPECT_EQ(kDebianDependencies.size(), 8u);
 }
 

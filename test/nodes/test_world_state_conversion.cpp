@@ -51,6 +51,7 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
     EXPECT_EQ(b.speech.word_index, a.speech.word_index);
     EXPECT_EQ(b.speech.is_speaking, a.speech.is_speaking);
     EXPECT_EQ(b.speech.start_s, a.speech.start_s);
+    EXPECT_EQ(b.speech.words_per_minute, a.speech.words_per_minute);
   }
   EXPECT_TRUE(back.humans[2].speech.is_speaking);  // human 20
   // Human 21 avoids ARI.

@@ -47,6 +47,10 @@ inline constexpr RngStreams kGroupStance{
 inline constexpr RngStreams kHumanAppearance{"human_appearance",
                                              "rendering::appearance_of, a human's looks by id",
                                              2 * kPerObjectId, kPerObjectId};
+inline constexpr RngStreams kHumanVoice{"human_voice", "audio::voice_for, a human's voice by id",
+                                        3 * kPerObjectId, kPerObjectId};
+inline constexpr RngStreams kRoomNoise{
+    "room_noise", "audio::ArrayMixer, the diffuse background noise", kSingles + 13};
 inline constexpr RngStreams kImuNoise{"imu_noise", "physics::AriPhysics, the torso IMU's noise",
                                       kSingles + 12};
 
@@ -92,12 +96,12 @@ inline constexpr RngStreams kDialogueEpisodes{
     uint64_t{1} << 41, kPerObjectId};
 
 /// Every block, for the overlap test and the documentation.
-inline constexpr std::array kAll{kHumanGaze,           kHumanReaction,      kGroupStance,
-                                 kHumanAppearance,     kImuNoise,           kPerceptionTransientIds,
-                                 kPerceptionBodies,    kPerceptionFaces,    kPerceptionSpeech,
-                                 kPerceptionPersonIds, kPerceptionMatcher,  kNavEpisodeType,
-                                 kNavWalkers,          kNavigationEpisodes, kRandomGroups,
-                                 kRandomGroupScene,    kConversation,       kDialogueEpisodes};
+inline constexpr std::array kAll{
+    kHumanVoice,        kRoomNoise,        kHumanGaze,        kHumanReaction,
+    kGroupStance,       kHumanAppearance,  kImuNoise,         kPerceptionTransientIds,
+    kPerceptionBodies,  kPerceptionFaces,  kPerceptionSpeech, kPerceptionPersonIds,
+    kPerceptionMatcher, kNavEpisodeType,   kNavWalkers,       kNavigationEpisodes,
+    kRandomGroups,      kRandomGroupScene, kConversation,     kDialogueEpisodes};
 
 }  // namespace rng_streams
 

@@ -77,4 +77,14 @@ inline constexpr CameraGeometry kBackFisheyeCamera{848, 800, 163.0};
 /// ReSpeaker array in the torso (torso_mic_front_link), in base_footprint.
 inline constexpr MountPoint kMicrophoneInFootprint{-0.122, 0.0, kBaseLinkHeightM + 0.803};
 
+/// The ReSpeaker Mic Array v2.0's four microphones in its own frame (torso_mic_front_link): on a
+/// circle of 32 mm radius, at 90 degree steps, in the order of its raw channels 1-4 (ODAS's
+/// configuration of the array, docs/references.md#respeaker-mic-array-v20). Which way the board
+/// faces in ARI's torso is not published: microphone 3 (channel 3) is taken to face forward.
+inline constexpr MountPoint kArrayMicrophones[4] = {
+    {-0.032, 0.0, 0.0}, {0.0, -0.032, 0.0}, {0.032, 0.0, 0.0}, {0.0, 0.032, 0.0}};
+/// Its sample rate and channels (6-channel firmware: 0 processed, 1-4 raw, 5 playback).
+inline constexpr int kArraySampleRateHz = 16000;
+inline constexpr int kArrayChannels = 6;
+
 }  // namespace ari_social_sim::model

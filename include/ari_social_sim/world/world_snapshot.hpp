@@ -26,6 +26,7 @@ struct SpeechSnapshot {
   double start_s{0.0};
   std::string previous_act;
   std::string previous_content;
+  double words_per_minute{0.0};  // word k of content starts k * 60 / words_per_minute after start_s
 };
 
 struct GazeSnapshot {

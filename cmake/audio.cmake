@@ -1,0 +1,31 @@
+# audio/: what ARI's microphone array hears. Voices synthesised with espeak-ng, fitted to the
+# world's word timing, carried to the array's four microphones over direct and reflected paths
+# with a late tail and noise, and the direction of a sound found again by SRP-PHAT. ROS-free.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(ESPEAK_NG REQUIRED IMPORTED_TARGET espeak-ng)
+find_package(OpenCV REQUIRED COMPONENTS core)
+
+add_library(ari_audio
+  src/audio/array_mixer.cpp
+  src/audio/late_reverb.cpp
+  src/audio/resampler.cpp
+  src/audio/room_acoustics.cpp
+  src/audio/sound_localizer.cpp
+  src/audio/speech_synthesizer.cpp
+  src/audio/timed_speech.cpp
+  src/audio/voice.cpp
+  src/audio/world_audio.cpp)
+target_include_directories(ari_audio PUBLIC ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(ari_audio PUBLIC ari_world PRIVATE PkgConfig::ESPEAK_NG opencv_core)
+
+if(CATKIN_ENABLE_TESTING)
+  ari_add_gtest(test_audio
+    SOURCES
+      test/audio/test_array_mixer.cpp
+      test/audio/test_sound_localizer.cpp
+      test/audio/test_speech_synthesizer.cpp
+      test/audio/test_voice.cpp
+      test/audio/test_world_audio.cpp
+    LIBRARIES ari_audio)
+  target_include_directories(test_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+endif()

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ari_social_sim::audio {
+
+/// A wall of the room, floor to ceiling, between two points of the floor plan (world frame).
+struct Wall {
+  Eigen::Vector2d a{Eigen::Vector2d::Zero()};
+  Eigen::Vector2d b{Eigen::Vector2d::Zero()};
+};
+
+/// How the room sounds (docs/audio.md, "The room").
+struct RoomSettings {
+  double rt60_s{0.5};               // reverberation time of the late tail
+  double wall_reflection{0.7};      // pressure reflection coefficient of walls (absorption 0.51)
+  double floor_reflection{0.5};     // of the floor
+  double reverb_level{0.12};        // the late tail's send, relative to the direct sound at 1 m
+  double speech_level_dbfs{-26.0};  // a voice's level 1 m away, in dB full scale
+  double noise_level_dbfs{-65.0};   // the diffuse background noise at every microphone
+};
+
+/// Throws core::RequestError naming the field and bounds when a setting is out of range.
+void check_room_settings(const RoomSettings& settings);
+
+/// One way sound takes from a source to a microphone: its delay and its amplitude gain (1 at
+/// 1 m for the direct sound).
+struct SoundPath {
+  double delay_s{0.0};
+  double gain{0.0};
+};
+
+/// The speed of sound in air at 20 degrees Celsius.
+inline constexpr double kSpeedOfSoundMps = 343.0;
+
+/// The direct path and the first-order image sources (each wall whose mirror point lies on it,
+/// and the floor) from `source` to `microphone`, both in the world frame (z up from the floor);
+/// spherical spreading (1 / distance) and the reflection coefficients as gains.
+std::vector<SoundPath> sound_paths(const Eigen::Vector3d& source, const Eigen::Vector3d& microphone,
+                                   const std::vector<Wall>& walls, const RoomSettings& settings);
+
+}  // namespace ari_social_sim::audio

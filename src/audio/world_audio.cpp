@@ -1,0 +1,118 @@
+#include "ari_social_sim/audio/world_audio.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ari_social_sim/audio/timed_speech.hpp"
+#include "ari_social_sim/model/ari_sensor_geometry.hpp"
+
+namespace ari_social_sim::audio {
+namespace {
+
+// Where voices come from: an adult's mouth, a child's (under 14), and ARI's loudspeaker, which
+// PAL does not place publicly: taken in the torso below the head, in base_footprint.
+constexpr double kAdultMouthHeightM = 1.55;
+constexpr double kChildMouthHeightM = 1.15;
+constexpr double kAriLoudspeakerX = -0.15;
+constexpr double kAriLoudspeakerZ = 1.2;
+
+Eigen::Isometry3d planar_pose(const core::Pose2& pose) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.translation() = Eigen::Vector3d(pose.position.x(), pose.position.y(), 0.0);
+  X.linear() = Eigen::AngleAxisd(pose.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return X;
+}
+
+int64_t sample_of(double time_s) {
+  return static_cast<int64_t>(std::llround(time_s * kSampleRateHz));
+}
+
+int rate_of(const world::SpeechSnapshot& speech) {
+  return std::clamp(static_cast<int>(std::lround(speech.words_per_minute)), 80, 450);
+}
+
+size_t word_count(const std::string& content) {
+  size_t count = 0;
+  bool in_word = false;
+  for (const char c : content) {
+    const bool space = c == ' ' || c == '\t' || c == '\n';
+    count += !space && !in_word ? 1 : 0;
+    in_word = !space;
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<Wall> walls_of(const model::WorldDescription& world) {
+  std::vector<Wall> walls;
+  for (const model::StaticObject& object : world.objects) {
+    if (object.type != model::ShapeType::kWall) {
+      continue;
+    }
+    const Eigen::Vector2d along(std::cos(object.pose.theta), std::sin(object.pose.theta));
+    const Eigen::Vector2d centre = object.pose.position;
+    walls.push_back(
+        {centre - 0.5 * object.size.x() * along, centre + 0.5 * object.size.x() * along});
+  }
+  return walls;
+}
+
+WorldAudio::WorldAudio(const RoomSettings& room, std::vector<Wall> walls, uint64_t seed,
+                       std::shared_ptr<SpeechSynthesizer> synthesizer)
+    : mixer_(room, std::move(walls), seed), seed_(seed), synthesizer_(std::move(synthesizer)) {}
+
+void WorldAudio::follow_speaker(uint64_t id, const world::SpeechSnapshot& speech,
+                                const Voice& voice, bool from_ari) {
+  Utterance& placed = placed_[id];
+  const bool same = placed.start_s == speech.start_s && placed.content == speech.content;
+  if (!speech.is_speaking || !same) {
+    // Silent now, or saying something else: what was left of the last utterance is not said.
+    mixer_.stop_source(id, std::max(mixer_.next_sample(), sample_of(speech.start_s)));
+  }
+  if (!speech.is_speaking || same || speech.words_per_minute <= 0.0) {
+    return;
+  }
+  placed = {speech.start_s, speech.content};
+  Voice spoken = voice;
+  spoken.rate_wpm = rate_of(speech);
+  const std::shared_ptr<const Synthesis> synthesis =
+      synthesizer_->synthesize(speech.content, spoken);
+  truncated_ += synthesis->truncated ? 1 : 0;
+  const std::vector<double> onsets =
+      word_onsets_s(word_count(speech.content), speech.words_per_minute);
+  auto fitted = std::make_shared<const std::vector<float>>(fit_to_onsets(*synthesis, onsets));
+  mixer_.add({id, fitted, sample_of(speech.start_s), from_ari});
+}
+
+void WorldAudio::observe(const world::WorldSnapshot& snapshot) {
+  for (const world::HumanSnapshot& human : snapshot.humans) {
+    const double mouth = human.age_years < 14.0 ? kChildMouthHeightM : kAdultMouthHeightM;
+    mixer_.set_source_position(
+        human.id, Eigen::Vector3d(human.pose.position.x(), human.pose.position.y(), mouth));
+    follow_speaker(human.id, human.speech,
+                   voice_for(seed_, human.id, human.gender, human.age_years), false);
+  }
+  if (snapshot.ari) {
+    const Eigen::Isometry3d X_world_footprint = planar_pose(snapshot.ari->pose);
+    mixer_.set_source_position(
+        snapshot.ari->id,
+        X_world_footprint * Eigen::Vector3d(kAriLoudspeakerX, 0.0, kAriLoudspeakerZ));
+    Eigen::Isometry3d X_footprint_array = Eigen::Isometry3d::Identity();
+    X_footprint_array.translation() =
+        Eigen::Vector3d(model::kMicrophoneInFootprint.x_m, model::kMicrophoneInFootprint.y_m,
+                        model::kMicrophoneInFootprint.z_m);
+    mixer_.set_array_pose(X_world_footprint * X_footprint_array);
+    follow_speaker(snapshot.ari->id, snapshot.ari->speech, ari_voice(), true);
+  }
+}
+
+std::vector<ArrayChunk> WorldAudio::chunks_until(double time_s) {
+  std::vector<ArrayChunk> chunks;
+  while (mixer_.next_sample() + static_cast<int64_t>(kChunkSamples) <= sample_of(time_s)) {
+    chunks.push_back(mixer_.render(kChunkSamples));
+  }
+  return chunks;
+}
+
+}  // namespace ari_social_sim::audio
