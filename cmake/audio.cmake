@@ -7,6 +7,7 @@ find_package(OpenCV REQUIRED COMPONENTS core)
 
 add_library(ari_audio
   src/audio/array_mixer.cpp
+  src/audio/audio_run_config.cpp
   src/audio/late_reverb.cpp
   src/audio/resampler.cpp
   src/audio/room_acoustics.cpp
@@ -28,4 +29,12 @@ if(CATKIN_ENABLE_TESTING)
       test/audio/test_world_audio.cpp
     LIBRARIES ari_audio)
   target_include_directories(test_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+endif()
+
+# audio_node: thin ROS adapter over WorldAudio, ARI's /audio/* topics (launch/audio.launch).
+add_executable(audio_node src/nodes/audio_node.cpp)
+target_link_libraries(audio_node ari_audio ari_world_conversions)
+install(TARGETS audio_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+if(CATKIN_ENABLE_TESTING)
+  add_rostest(test/integration/audio_node.test DEPENDENCIES world_node audio_node)
 endif()

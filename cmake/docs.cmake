@@ -2,7 +2,7 @@
 # test that keeps the committed page up to date.
 add_library(ari_parameters_page src/parameters_page/parameters_page.cpp)
 target_include_directories(ari_parameters_page PUBLIC ${PROJECT_SOURCE_DIR}/src)
-target_link_libraries(ari_parameters_page PUBLIC ari_engine ari_learning ari_physics ari_rendering
+target_link_libraries(ari_parameters_page PUBLIC ari_engine ari_learning ari_audio ari_physics ari_rendering
   ari_mapping)
 
 add_executable(parameter_docs src/tools/parameter_docs/parameter_docs.cpp)

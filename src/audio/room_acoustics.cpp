@@ -2,23 +2,14 @@
 
 #include <algorithm>
 #include <optional>
-#include <string>
 
-#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/core/config_check.hpp"
 
 namespace ari_social_sim::audio {
 namespace {
 
 // Closer than this, a source is taken to be this far: no infinite gain at a microphone.
 constexpr double kMinDistanceM = 0.1;
-
-void check_between(const char* field, double value, double low, double high) {
-  if (!(value >= low && value <= high)) {
-    throw core::RequestError("audio room: " + std::string(field) + ": expected " +
-                             std::to_string(low) + ".." + std::to_string(high) + ", got " +
-                             std::to_string(value));
-  }
-}
 
 SoundPath path_over(double distance_m, double reflection) {
   const double distance = std::max(distance_m, kMinDistanceM);
@@ -54,12 +45,7 @@ std::optional<Eigen::Vector3d> image_in(const Wall& wall, const Eigen::Vector3d&
 }  // namespace
 
 void check_room_settings(const RoomSettings& settings) {
-  check_between("rt60_s", settings.rt60_s, 0.05, 5.0);
-  check_between("wall_reflection", settings.wall_reflection, 0.0, 1.0);
-  check_between("floor_reflection", settings.floor_reflection, 0.0, 1.0);
-  check_between("reverb_level", settings.reverb_level, 0.0, 1.0);
-  check_between("speech_level_dbfs", settings.speech_level_dbfs, -80.0, 0.0);
-  check_between("noise_level_dbfs", settings.noise_level_dbfs, -120.0, 0.0);
+  core::check_fields(settings, "RoomSettings");
 }
 
 std::vector<SoundPath> sound_paths(const Eigen::Vector3d& source, const Eigen::Vector3d& microphone,

@@ -1,5 +1,6 @@
 #include "parameters_page.hpp"
 
+#include "ari_social_sim/audio/audio_run_config.hpp"
 #include "ari_social_sim/core/parameter_table.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
@@ -90,6 +91,7 @@ std::string parameters_page() {
                  node_parameters<rendering::CameraRigConfig>("~cameras/")) +
          section("#### Mapping (`~mapping_params`)", "",
                  node_parameters<mapping::MappingConfig>("~mapping_params/")) +
+         section("### audio_node", "", node_parameters<audio::AudioRunConfig>()) +
          section("## Files", "", "") +
          section("### config/perception.yaml",
                  "hri_perception_node's `~config` (and group_detection_node's, which uses "

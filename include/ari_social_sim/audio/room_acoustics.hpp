@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "ari_social_sim/core/config_fields.hpp"
+
 namespace ari_social_sim::audio {
 
 /// A wall of the room, floor to ceiling, between two points of the floor plan (world frame).
@@ -19,9 +21,25 @@ struct RoomSettings {
   double reverb_level{0.12};        // the late tail's send, relative to the direct sound at 1 m
   double speech_level_dbfs{-26.0};  // a voice's level 1 m away, in dB full scale
   double noise_level_dbfs{-65.0};   // the diffuse background noise at every microphone
+
+  template <class V>
+  void visit(V& v) {
+    v.field("rt60_s", rt60_s, "reverberation time of the late tail (s)", core::Bounds{0.05, 5.0});
+    v.field("wall_reflection", wall_reflection, "pressure reflection coefficient of the walls",
+            core::Bounds{0.0, 1.0});
+    v.field("floor_reflection", floor_reflection, "pressure reflection coefficient of the floor",
+            core::Bounds{0.0, 1.0});
+    v.field("reverb_level", reverb_level,
+            "the late tail's level relative to the direct sound at 1 m", core::Bounds{0.0, 1.0});
+    v.field("speech_level_dbfs", speech_level_dbfs, "a voice's RMS level 1 m away (dB full scale)",
+            core::Bounds{-80.0, 0.0});
+    v.field("noise_level_dbfs", noise_level_dbfs,
+            "diffuse background noise at each microphone (dB full scale)",
+            core::Bounds{-120.0, 0.0});
+  }
 };
 
-/// Throws core::RequestError naming the field and bounds when a setting is out of range.
+/// Throws core::ConfigError naming the field and bounds when a setting is out of range.
 void check_room_settings(const RoomSettings& settings);
 
 /// One way sound takes from a source to a microphone: its delay and its amplitude gain (1 at
