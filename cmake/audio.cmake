@@ -38,3 +38,9 @@ install(TARGETS audio_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/audio_node.test DEPENDENCIES world_node audio_node)
 endif()
+
+if(benchmark_FOUND)
+  ari_add_benchmark(bench_audio SOURCES bench/bench_audio.cpp LIBRARIES ari_audio)
+  # The scenes are the world tests' own (test/world/scene_builders.hpp).
+  target_include_directories(bench_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+endif()
