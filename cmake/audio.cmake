@@ -1,34 +1,50 @@
 # audio/: what ARI's microphone array hears. Voices synthesised with espeak-ng, fitted to the
 # world's word timing, carried to the array's four microphones over direct and reflected paths
-# with a late tail and noise, and the direction of a sound found again by SRP-PHAT. ROS-free.
+# with a late tail and noise, the direction of a sound found again by SRP-PHAT, and speech
+# recognised with pocketsphinx. ROS-free.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(ESPEAK_NG REQUIRED IMPORTED_TARGET espeak-ng)
+# pocketsphinx.pc names /usr/include/sphinxbase, which Debian's multiarch layout does not have:
+# the headers are found where they are.
+find_path(POCKETSPHINX_INCLUDE_DIR pocketsphinx.h PATH_SUFFIXES pocketsphinx REQUIRED)
+find_path(SPHINXBASE_INCLUDE_DIR sphinxbase/logmath.h PATH_SUFFIXES x86_64-linux-gnu
+  ${CMAKE_LIBRARY_ARCHITECTURE} REQUIRED)
+find_library(POCKETSPHINX_LIBRARY pocketsphinx REQUIRED)
+find_library(SPHINXBASE_LIBRARY sphinxbase REQUIRED)
 find_package(OpenCV REQUIRED COMPONENTS core)
 
 add_library(ari_audio
   src/audio/array_mixer.cpp
   src/audio/audio_run_config.cpp
+  src/audio/domain_grammar.cpp
   src/audio/late_reverb.cpp
   src/audio/resampler.cpp
   src/audio/room_acoustics.cpp
   src/audio/sound_localizer.cpp
+  src/audio/speech_recognizer.cpp
   src/audio/speech_synthesizer.cpp
+  src/audio/time_stretch.cpp
   src/audio/timed_speech.cpp
   src/audio/voice.cpp
   src/audio/world_audio.cpp)
 target_include_directories(ari_audio PUBLIC ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(ari_audio PUBLIC ari_world PRIVATE PkgConfig::ESPEAK_NG opencv_core)
+target_include_directories(ari_audio SYSTEM PRIVATE ${POCKETSPHINX_INCLUDE_DIR}
+  ${SPHINXBASE_INCLUDE_DIR} ${SPHINXBASE_INCLUDE_DIR}/sphinxbase)
+target_link_libraries(ari_audio PUBLIC ari_world ari_dialogue
+  PRIVATE PkgConfig::ESPEAK_NG ${POCKETSPHINX_LIBRARY} ${SPHINXBASE_LIBRARY} opencv_core)
 
 if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_audio
     SOURCES
       test/audio/test_array_mixer.cpp
       test/audio/test_sound_localizer.cpp
+      test/audio/test_speech_recognizer.cpp
       test/audio/test_speech_synthesizer.cpp
       test/audio/test_voice.cpp
       test/audio/test_world_audio.cpp
     LIBRARIES ari_audio)
   target_include_directories(test_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+  target_compile_definitions(test_audio PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # audio_node: thin ROS adapter over WorldAudio, ARI's /audio/* topics (launch/audio.launch).

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+
+#include "ari_social_sim/audio/time_stretch.hpp"
 
 namespace ari_social_sim::audio {
 namespace {
@@ -22,19 +25,25 @@ size_t audible_from(const std::vector<float>& samples, size_t from, size_t to, f
   return from;
 }
 
-// Copies samples [from, to) of `source` to `out` at `at`, at most `room` of them, fading out the
-// last kFadeSamples when the copy is cut short.
+// The most a word is squeezed or drawn out to fill its slot; beyond, it is cut (with a fade) or
+// followed by silence.
+constexpr double kMaxStretch = 1.6;
+
+// Samples [from, to) of `source` fitted into `room` samples of `out` at `at`: stretched in time
+// (pitch kept) to fill the room, within kMaxStretch, then cut with a fade if still too long.
 void place(const std::vector<float>& source, size_t from, size_t to, size_t at, size_t room,
            std::vector<float>& out) {
-  const size_t length = std::min(to - from, room);
-  const bool cut = length < to - from;
+  const std::vector<float> word(source.begin() + static_cast<std::ptrdiff_t>(from),
+                                source.begin() + static_cast<std::ptrdiff_t>(to));
+  const double natural = static_cast<double>(word.size());
+  const size_t target = static_cast<size_t>(
+      std::clamp(static_cast<double>(room), natural / kMaxStretch, natural * kMaxStretch));
+  std::vector<float> fitted = stretch_to(word, target);
+  const size_t length = std::min(fitted.size(), room);
   out.resize(std::max(out.size(), at + length), 0.0f);
   for (size_t i = 0; i < length; ++i) {
-    float gain = 1.0f;
-    if (cut && length - i <= kFadeSamples) {
-      gain = static_cast<float>(length - i) / kFadeSamples;
-    }
-    out[at + i] = source[from + i] * gain;
+    const bool fading = length < fitted.size() && length - i <= kFadeSamples;
+    out[at + i] = fitted[i] * (fading ? static_cast<float>(length - i) / kFadeSamples : 1.0f);
   }
 }
 
