@@ -72,7 +72,7 @@ bool read_all(int fd, void* data, size_t bytes) {
   RawSpeech speech;
   g_child_speech = &speech;
   const int32_t rate = espeak_Initialize(AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr, 0);
-  const std::string name = "en+" + voice.variant;
+  const std::string name = "en-us+" + voice.variant;
   if (rate <= 0 || espeak_SetVoiceByName(name.c_str()) != EE_OK) {
     _exit(3);
   }
