@@ -11,14 +11,31 @@ namespace {
 
 constexpr size_t kFadeSamples = kSampleRateHz * 5 / 1000;
 // A word's segment starts where espeak-ng's word event is, often before a pause (after a comma,
-// before a stop consonant's closure); the word is heard from its first sample above this share
-// of the utterance's peak (-40 dB).
-constexpr float kAudibleShare = 0.01f;
+// before a stop consonant's closure). The word is heard from its energy onset: the first 10 ms
+// whose RMS reaches a tenth (-20 dB) of the utterance's loudest 10 ms. It is placed so that this
+// onset falls on the world's word time, its softer attack (at most 10 ms) just before it.
+constexpr size_t kWindow = kSampleRateHz / 100;
+constexpr size_t kLeadIn = kSampleRateHz / 100;
+constexpr double kOnsetShare = 0.1;
 
-// The first sample of [from, to) at least kAudibleShare of `peak`, or `from` if there is none.
-size_t audible_from(const std::vector<float>& samples, size_t from, size_t to, float peak) {
+// RMS of the kWindow samples from each index (shorter at the end).
+std::vector<double> window_rms(const std::vector<float>& samples) {
+  std::vector<double> prefix(samples.size() + 1, 0.0);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    prefix[i + 1] = prefix[i] + double(samples[i]) * samples[i];
+  }
+  std::vector<double> rms(samples.size());
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const size_t end = std::min(samples.size(), i + kWindow);
+    rms[i] = std::sqrt((prefix[end] - prefix[i]) / kWindow);
+  }
+  return rms;
+}
+
+// The energy onset in [from, to), or `from` when the word never gets that loud.
+size_t energy_onset(const std::vector<double>& rms, size_t from, size_t to, double threshold) {
   for (size_t i = from; i < to; ++i) {
-    if (std::abs(samples[i]) >= kAudibleShare * peak) {
+    if (rms[i] >= threshold) {
       return i;
     }
   }
@@ -59,22 +76,23 @@ std::vector<double> word_onsets_s(size_t word_count, double words_per_minute) {
 
 std::vector<float> fit_to_onsets(const Synthesis& synthesis, const std::vector<double>& onsets_s) {
   std::vector<float> out;
-  float peak = 0.0f;
-  for (const float s : synthesis.samples) {
-    peak = std::max(peak, std::abs(s));
-  }
+  const std::vector<double> rms = window_rms(synthesis.samples);
+  const double loudest = rms.empty() ? 0.0 : *std::max_element(rms.begin(), rms.end());
   const size_t words = std::min(synthesis.word_starts.size(), onsets_s.size());
   for (size_t k = 0; k < words; ++k) {
-    const size_t to = k + 1 < synthesis.word_starts.size() ? synthesis.word_starts[k + 1]
-                                                           : synthesis.samples.size();
-    const size_t from = audible_from(synthesis.samples, synthesis.word_starts[k],
-                                     std::min(to, synthesis.samples.size()), peak);
-    const size_t at = static_cast<size_t>(std::lround(onsets_s[k] * kSampleRateHz));
+    const size_t to = std::min(k + 1 < synthesis.word_starts.size() ? synthesis.word_starts[k + 1]
+                                                                    : synthesis.samples.size(),
+                               synthesis.samples.size());
+    const size_t word_start = std::min(synthesis.word_starts[k], to);
+    const size_t onset = energy_onset(rms, word_start, to, kOnsetShare * loudest);
+    const size_t slot = static_cast<size_t>(std::lround(onsets_s[k] * kSampleRateHz));
+    const size_t lead = std::min({kLeadIn, onset - word_start, slot});
+    const size_t at = slot - lead;
     const size_t next = k + 1 < words
                             ? static_cast<size_t>(std::lround(onsets_s[k + 1] * kSampleRateHz))
-                            : at + (to - from);
-    if (from < to && to <= synthesis.samples.size()) {
-      place(synthesis.samples, from, to, at, next - at, out);
+                            : at + (to - onset + lead);
+    if (onset - lead < to && next > at) {
+      place(synthesis.samples, onset - lead, to, at, next - at, out);
     }
   }
   return out;

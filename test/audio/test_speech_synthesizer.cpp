@@ -65,16 +65,20 @@ TEST(SpeechSynthesizer, ControlCharactersAreRefusedAndLongTextIsCutAtAWord) {
   EXPECT_TRUE(synthesizer.synthesize("   ", voice_at(150))->samples.empty());
 }
 
-// The first sample at least 30 dB below the utterance's peak, loud over 10 ms, at or after
-// `from`.
-size_t onset_after(const std::vector<float>& samples, size_t from, float peak) {
+// RMS of the 10 ms from `i`.
+double window_rms(const std::vector<float>& samples, size_t i) {
   const size_t window = kSampleRateHz / 100;
-  for (size_t i = from; i + window < samples.size(); ++i) {
-    double energy = 0.0;
-    for (size_t k = i; k < i + window; ++k) {
-      energy += double(samples[k]) * samples[k];
-    }
-    if (std::sqrt(energy / window) > peak * 0.0316) {
+  double energy = 0.0;
+  for (size_t k = i; k < std::min(samples.size(), i + window); ++k) {
+    energy += double(samples[k]) * samples[k];
+  }
+  return std::sqrt(energy / window);
+}
+
+// The first sample at or after `from` whose 10 ms reach `level` RMS.
+size_t onset_after(const std::vector<float>& samples, size_t from, double level) {
+  for (size_t i = from; i < samples.size(); ++i) {
+    if (window_rms(samples, i) >= level) {
       return i;
     }
   }
@@ -88,14 +92,16 @@ TEST(TimedSpeech, EachWordIsHeardWithin50MsOfTheWorldsWordEvent) {
   const auto synthesis = synthesizer.synthesize(kQuestion, voice_at(150));
   const std::vector<double> onsets = word_onsets_s(7, words_per_minute);
   const std::vector<float> fitted = fit_to_onsets(*synthesis, onsets);
-  float peak = 0.0f;
-  for (const float s : fitted) {
-    peak = std::max(peak, std::abs(s));
+  // Heard: its 10 ms first reach a tenth of the utterance's loudest 10 ms.
+  double loudest = 0.0;
+  for (size_t i = 0; i < fitted.size(); i += 40) {
+    loudest = std::max(loudest, window_rms(fitted, i));
   }
   double worst_ms = 0.0;
   for (const double onset : onsets) {
     const size_t at = static_cast<size_t>(std::lround(onset * kSampleRateHz));
-    const double heard_ms = (onset_after(fitted, at, peak) - double(at)) * 1000.0 / kSampleRateHz;
+    const double heard_ms =
+        (onset_after(fitted, at, 0.1 * loudest) - double(at)) * 1000.0 / kSampleRateHz;
     worst_ms = std::max(worst_ms, heard_ms);
   }
   std::printf("latest word heard %.1f ms after the world's word event\n", worst_ms);

@@ -10,8 +10,9 @@ namespace ari_social_sim::audio {
 /// after its start (world::SpeechGenerator's schedule).
 std::vector<double> word_onsets_s(size_t word_count, double words_per_minute);
 
-/// `synthesis` fitted to the world's schedule: each word's audio, from its first audible sample,
-/// moved to start exactly at its onset (relative to the utterance start, at kSampleRateHz) and
+/// `synthesis` fitted to the world's schedule: each word's audio moved so that its energy onset
+/// (its first 10 ms at a tenth of the utterance's loudest, after at most 10 ms of softer attack)
+/// falls exactly on its onset (relative to the utterance start, at kSampleRateHz) and
 /// stretched in time, pitch kept, to fill the time until the next word (squeezed or drawn out by
 /// at most 1.6; beyond, cut with a 5 ms fade or followed by silence), so that what is heard and
 /// the world's word events agree. The voice spoke at the world's rate, so the stretches are
