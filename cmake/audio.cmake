@@ -60,3 +60,10 @@ if(benchmark_FOUND)
   # The scenes are the world tests' own (test/world/scene_builders.hpp).
   target_include_directories(bench_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 endif()
+
+# asr_benchmark: pocketsphinx's word error rate on the array's channel 0 by distance, noise and a
+# second talker (docs/audio.md, "Speech recognition"); a program run by hand, not a test.
+add_executable(asr_benchmark bench/asr_benchmark.cpp)
+target_link_libraries(asr_benchmark ari_audio)
+target_compile_definitions(asr_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+set_target_properties(asr_benchmark PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)

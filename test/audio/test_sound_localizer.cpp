@@ -64,6 +64,50 @@ TEST(SoundLocalizer, FindsSpeakersAllRoundInAReverberantRoom) {
   EXPECT_LT(percentile(errors, 0.9), 20.0);
 }
 
+// Two people talking at once, 1.5 m at 30 deg and 2.5 m at -100 deg: each frame's direction is
+// one of theirs, mostly the nearer, louder one's.
+TEST(SoundLocalizer, WithTwoTalkersFindsOneOfThemInEachFrame) {
+  const std::vector<Wall> room{{{-4.0, -3.0}, {4.0, -3.0}},
+                               {{4.0, -3.0}, {4.0, 3.0}},
+                               {{4.0, 3.0}, {-4.0, 3.0}},
+                               {{-4.0, 3.0}, {-4.0, -3.0}}};
+  ArrayMixer mixer(RoomSettings{}, room, 2);
+  mixer.set_array_pose(array_at_origin());
+  const double azimuths[2] = {30.0 * M_PI / 180.0, -100.0 * M_PI / 180.0};
+  const double distances[2] = {1.5, 2.5};
+  for (uint64_t talker = 0; talker < 2; ++talker) {
+    mixer.add({talker + 1, noise_burst(1.2, 20 + talker), 0, false});
+    mixer.set_source_position(talker + 1, {distances[talker] * std::cos(azimuths[talker]),
+                                           distances[talker] * std::sin(azimuths[talker]), 1.6});
+  }
+  const auto heard = record(mixer, 1.1);
+  std::vector<double> errors;
+  int nearer = 0;
+  for (size_t start = 1024; start + 1024 <= heard[1].size(); start += 1024) {
+    std::array<std::vector<float>, 4> frame;
+    for (size_t m = 0; m < 4; ++m) {
+      frame[m].assign(heard[1 + m].begin() + start, heard[1 + m].begin() + start + 1024);
+    }
+    const std::optional<SoundDirection> found = locate_sound(frame);
+    ASSERT_TRUE(found.has_value());
+    double error_deg[2];
+    for (size_t talker = 0; talker < 2; ++talker) {
+      error_deg[talker] =
+          std::abs(std::remainder(found->azimuth_rad - azimuths[talker], 2.0 * M_PI)) * 180.0 /
+          M_PI;
+    }
+    nearer += error_deg[0] <= error_deg[1] ? 1 : 0;
+    errors.push_back(std::min(error_deg[0], error_deg[1]));
+  }
+  std::printf(
+      "two talkers: %zu frames, %d on the nearer; error to the closer talker median %.1f "
+      "deg, 90th percentile %.1f deg\n",
+      errors.size(), nearer, percentile(errors, 0.5), percentile(errors, 0.9));
+  EXPECT_LT(percentile(errors, 0.5), 5.0);
+  EXPECT_LT(percentile(errors, 0.9), 20.0);
+  EXPECT_GT(nearer, static_cast<int>(errors.size()) / 2);
+}
+
 TEST(SoundLocalizer, SilenceHasNoDirection) {
   std::array<std::vector<float>, 4> silent;
   for (auto& channel : silent) {
