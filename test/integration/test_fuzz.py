@@ -43,6 +43,7 @@ from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup
                                 SetPose, SetReaction, SetVelocity, SpawnHuman, StepSimulation)
 
 from fuzz_values import mutate
+from wall_clock import wait_wall
 
 SEED = 20261124
 SERVICE_REQUESTS = 1100
@@ -248,8 +249,12 @@ class Fuzz(unittest.TestCase):
                    "/social_mpc/approach": actionlib.SimpleActionClient("/social_mpc/approach",
                                                                          ApproachAction),
                    "/tts": actionlib.SimpleActionClient("/tts", TtsAction)}
-        for client in clients.values():
-            self.assertTrue(client.wait_for_server(rospy.Duration(30)))
+        # Waited for on the wall clock, a second of sim time at a time, and named: after the
+        # floods above a busy machine may take a while to answer (a CI run once timed out after
+        # 30 s of sim time, 15 s of wall time at the world's speed).
+        for name, client in clients.items():
+            self.assertTrue(wait_wall(lambda: client.wait_for_server(rospy.Duration(1.0)), 60.0),
+                            "%s: no action server after 60 s of wall time" % name)
         for _ in range(ACTION_GOALS):
             name = rng.choice(list(clients))
             goal = {"move_base": MoveBaseGoal(), "/social_mpc/approach":
