@@ -6,10 +6,10 @@
 //
 // usage: asr_benchmark [SENTENCES_PER_CONDITION]   (default 8)
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +20,7 @@
 #include "ari_social_sim/audio/timed_speech.hpp"
 #include "ari_social_sim/audio/world_audio.hpp"
 #include "ari_social_sim/dialogue/nlg.hpp"
+#include "ari_social_sim/world/speech_generator.hpp"
 
 namespace {
 
@@ -34,21 +35,12 @@ struct Condition {
   bool second_talker;
 };
 
-size_t word_count(const std::string& sentence) {
-  std::istringstream in(sentence);
-  size_t count = 0;
-  for (std::string word; in >> word;) {
-    ++count;
-  }
-  return count;
-}
-
 std::shared_ptr<const std::vector<float>> fitted(const std::string& sentence,
                                                  const audio::Voice& voice,
                                                  audio::SpeechSynthesizer& synthesizer) {
   const auto synthesis = synthesizer.synthesize(sentence, voice);
   return std::make_shared<const std::vector<float>>(audio::fit_to_onsets(
-      *synthesis, audio::word_onsets_s(word_count(sentence), kWordsPerMinute)));
+      *synthesis, audio::word_onsets_s(world::spoken_words(sentence).size(), kWordsPerMinute)));
 }
 
 // Channel 0 of the sentences said one after another by a woman ahead of ARI; with a second
@@ -123,12 +115,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> sentences;
   for (size_t i = 13; sentences.size() < per_condition; i += 997) {
     const std::string& sentence = all[i % all.size()];
-    std::istringstream words(sentence);
-    bool pronounceable = true;
-    for (std::string word; words >> word;) {
-      pronounceable = pronounceable && known.count(word) > 0;
-    }
-    if (pronounceable && word_count(sentence) >= 3) {
+    const std::vector<std::string> words = world::spoken_words(sentence);
+    const bool pronounceable = std::all_of(
+        words.begin(), words.end(), [&known](const auto& word) { return known.count(word) > 0; });
+    if (pronounceable && words.size() >= 3) {
       sentences.push_back(sentence);
     }
   }

@@ -3,6 +3,7 @@
 add_library(ari_core
   src/core/bounds.cpp
   src/core/command_line.cpp
+  src/core/control_characters.cpp
   src/core/data_sets.cpp
   src/core/format_text.cpp
   src/core/json_string.cpp

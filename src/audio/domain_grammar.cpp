@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::audio {
 namespace {
@@ -198,9 +199,8 @@ std::string arpa_of(const std::vector<std::string>& sentences,
   *left_out = 0;
   for (const std::string& sentence : sentences) {
     std::vector<std::string> words{"<s>"};
-    std::istringstream in(sentence);
-    for (std::string word; in >> word;) {
-      words.push_back(word);
+    for (std::string& word : dialogue::split_words(sentence)) {
+      words.push_back(std::move(word));
     }
     words.emplace_back("</s>");
     const bool known = std::all_of(words.begin() + 1, words.end() - 1,

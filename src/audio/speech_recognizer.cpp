@@ -5,24 +5,14 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/dialogue/text.hpp"
 
 namespace ari_social_sim::audio {
 namespace {
 
 constexpr const char* kDomainSearch = "domain";
-
-std::vector<std::string> words_of(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> words;
-  std::string word;
-  while (in >> word) {
-    words.push_back(word);
-  }
-  return words;
-}
 
 }  // namespace
 
@@ -127,8 +117,8 @@ std::vector<Recognition> SpeechRecognizer::flush() {
 }
 
 double word_error_rate(const std::string& reference, const std::string& hypothesis) {
-  const std::vector<std::string> ref = words_of(reference);
-  const std::vector<std::string> hyp = words_of(hypothesis);
+  const std::vector<std::string> ref = dialogue::split_words(reference);
+  const std::vector<std::string> hyp = dialogue::split_words(hypothesis);
   if (ref.empty()) {
     return hyp.empty() ? 0.0 : 1.0;
   }

@@ -6,10 +6,10 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 
 #include "ari_social_sim/audio/resampler.hpp"
+#include "ari_social_sim/core/control_characters.hpp"
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::audio {
@@ -140,15 +140,7 @@ Synthesis synthesize_fresh(const std::string& text, const Voice& voice) {
 }  // namespace
 
 std::string speakable_text(const std::string& text, bool* truncated) {
-  for (size_t i = 0; i < text.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7f) {
-      char byte[8];
-      std::snprintf(byte, sizeof(byte), "0x%02x", c);
-      throw core::RequestError("speech synthesis: text: expected no control characters, got byte " +
-                               std::string(byte) + " at offset " + std::to_string(i));
-    }
-  }
+  core::check_no_control_characters("speech synthesis: text", text, "\t\n");
   *truncated = text.size() > kMaxUtteranceBytes;
   if (!*truncated) {
     return text;

@@ -31,17 +31,6 @@ int rate_of(const world::SpeechSnapshot& speech) {
   return std::clamp(static_cast<int>(std::lround(speech.words_per_minute)), 80, 450);
 }
 
-size_t word_count(const std::string& content) {
-  size_t count = 0;
-  bool in_word = false;
-  for (const char c : content) {
-    const bool space = c == ' ' || c == '\t' || c == '\n';
-    count += !space && !in_word ? 1 : 0;
-    in_word = !space;
-  }
-  return count;
-}
-
 }  // namespace
 
 std::vector<Wall> walls_of(const model::WorldDescription& world) {
@@ -62,8 +51,7 @@ WorldAudio::WorldAudio(const RoomSettings& room, std::vector<Wall> walls, uint64
                        std::shared_ptr<SpeechSynthesizer> synthesizer)
     : mixer_(room, std::move(walls), seed), seed_(seed), synthesizer_(std::move(synthesizer)) {}
 
-void WorldAudio::follow_speaker(uint64_t id, const world::SpeechSnapshot& speech,
-                                const Voice& voice, bool from_ari) {
+bool WorldAudio::starts_utterance(uint64_t id, const world::SpeechSnapshot& speech) {
   Utterance& placed = placed_[id];
   const bool same = placed.start_s == speech.start_s && placed.content == speech.content;
   if (!speech.is_speaking || !same) {
@@ -71,16 +59,21 @@ void WorldAudio::follow_speaker(uint64_t id, const world::SpeechSnapshot& speech
     mixer_.stop_source(id, std::max(mixer_.next_sample(), sample_of(speech.start_s)));
   }
   if (!speech.is_speaking || same || speech.words_per_minute <= 0.0) {
-    return;
+    return false;
   }
   placed = {speech.start_s, speech.content};
+  return true;
+}
+
+void WorldAudio::place(uint64_t id, const world::SpeechSnapshot& speech, const Voice& voice,
+                       bool from_ari) {
   Voice spoken = voice;
   spoken.rate_wpm = rate_of(speech);
   const std::shared_ptr<const Synthesis> synthesis =
       synthesizer_->synthesize(speech.content, spoken);
   truncated_ += synthesis->truncated ? 1 : 0;
   const std::vector<double> onsets =
-      word_onsets_s(word_count(speech.content), speech.words_per_minute);
+      word_onsets_s(world::spoken_words(speech.content).size(), speech.words_per_minute);
   auto fitted = std::make_shared<const std::vector<float>>(fit_to_onsets(*synthesis, onsets));
   mixer_.add({id, fitted, sample_of(speech.start_s), from_ari});
 }
@@ -90,8 +83,10 @@ void WorldAudio::observe(const world::WorldSnapshot& snapshot) {
     const double mouth = human.age_years < 14.0 ? kChildMouthHeightM : kAdultMouthHeightM;
     mixer_.set_source_position(
         human.id, Eigen::Vector3d(human.pose.position.x(), human.pose.position.y(), mouth));
-    follow_speaker(human.id, human.speech,
-                   voice_for(seed_, human.id, human.gender, human.age_years), false);
+    if (starts_utterance(human.id, human.speech)) {
+      place(human.id, human.speech, voice_for(seed_, human.id, human.gender, human.age_years),
+            false);
+    }
   }
   if (snapshot.ari) {
     const Eigen::Isometry3d X_world_footprint = planar_pose(snapshot.ari->pose);
@@ -103,7 +98,9 @@ void WorldAudio::observe(const world::WorldSnapshot& snapshot) {
         Eigen::Vector3d(model::kMicrophoneInFootprint.x_m, model::kMicrophoneInFootprint.y_m,
                         model::kMicrophoneInFootprint.z_m);
     mixer_.set_array_pose(X_world_footprint * X_footprint_array);
-    follow_speaker(snapshot.ari->id, snapshot.ari->speech, ari_voice(), true);
+    if (starts_utterance(snapshot.ari->id, snapshot.ari->speech)) {
+      place(snapshot.ari->id, snapshot.ari->speech, ari_voice(), true);
+    }
   }
 }
 

@@ -2,11 +2,11 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <sstream>
 
 #include "ari_social_sim/core/check.hpp"
+#include "ari_social_sim/core/control_characters.hpp"
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::world {
@@ -15,7 +15,11 @@ namespace {
 // Tolerance (s) for comparing sim times built from step counts with word boundaries.
 constexpr double kTimeEpsilon = 1e-9;
 
-std::vector<std::string> split_words(const std::string& content) {
+const std::string kSilence;
+
+}  // namespace
+
+std::vector<std::string> spoken_words(const std::string& content) {
   std::istringstream in(content);
   std::vector<std::string> words;
   std::string word;
@@ -25,36 +29,15 @@ std::vector<std::string> split_words(const std::string& content) {
   return words;
 }
 
-const std::string kSilence;
-
-}  // namespace
-
 SpeechGenerator::SpeechGenerator(double words_per_minute) : words_per_minute_(words_per_minute) {
   ARI_CHECK(words_per_minute > 0.0);
 }
 
 double SpeechGenerator::duration_s(const std::string& content) const {
-  return static_cast<double>(split_words(content).size()) * 60.0 / words_per_minute_;
+  return static_cast<double>(spoken_words(content).size()) * 60.0 / words_per_minute_;
 }
 
 namespace {
-
-// Throws core::RequestError naming `field` for a control character in `text` (NUL included: a
-// string that C code, a log or a bag reader would cut or show garbled), the whitespace of
-// `allowed_whitespace` excepted.
-void check_no_control_characters(const std::string& field, const std::string& text,
-                                 const char* allowed_whitespace) {
-  for (size_t i = 0; i < text.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    const bool allowed = c != '\0' && std::strchr(allowed_whitespace, c) != nullptr;
-    if ((c < 0x20 || c == 0x7f) && !allowed) {
-      char byte[8];
-      std::snprintf(byte, sizeof(byte), "0x%02x", c);
-      throw core::RequestError("say: " + field + ": expected no control characters, got byte " +
-                               byte + " at offset " + std::to_string(i));
-    }
-  }
-}
 
 // Throws core::RequestError unless `act` is one act or several in the notations the suite uses:
 // a name with optional bracketed arguments (QUESTION:TIME, greet(), request(location(toilet)),
@@ -100,8 +83,8 @@ void check_act_grammar(const std::string& act) {
 void SpeechGenerator::say(const std::string& act, const std::string& content, double now_s) {
   // Words are split at spaces, tabs and newlines; nothing else below 0x20 is text. An act is one
   // token (QUESTION:TIME, greet(), inform(time=now)): no whitespace at all.
-  check_no_control_characters("content", content, "\t\n");
-  check_no_control_characters("act", act, "");
+  core::check_no_control_characters("say: content", content, "\t\n");
+  core::check_no_control_characters("say: act", act, "");
   if (content.size() > kMaxContentBytes) {
     throw core::RequestError("say: content: expected at most " + std::to_string(kMaxContentBytes) +
                              " bytes, got " + std::to_string(content.size()));
@@ -110,7 +93,7 @@ void SpeechGenerator::say(const std::string& act, const std::string& content, do
     throw core::RequestError("say: act: expected at most " + std::to_string(kMaxActBytes) +
                              " bytes, got " + std::to_string(act.size()));
   }
-  std::vector<std::string> words = split_words(content);
+  std::vector<std::string> words = spoken_words(content);
   if (words.empty()) {
     throw core::RequestError("say: content has no words");
   }

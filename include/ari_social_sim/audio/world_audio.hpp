@@ -9,6 +9,7 @@
 #include "ari_social_sim/audio/array_mixer.hpp"
 #include "ari_social_sim/audio/speech_synthesizer.hpp"
 #include "ari_social_sim/model/world_description.hpp"
+#include "ari_social_sim/world/speech_generator.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::audio {
@@ -45,8 +46,10 @@ class WorldAudio {
     double start_s{-1.0};
     std::string content;
   };
-  void follow_speaker(uint64_t id, const world::SpeechSnapshot& speech, const Voice& voice,
-                      bool from_ari);
+  // Stops what `id` no longer says; true when `speech` is an utterance begun since the last
+  // snapshot, to be placed (the voice is drawn only then).
+  bool starts_utterance(uint64_t id, const world::SpeechSnapshot& speech);
+  void place(uint64_t id, const world::SpeechSnapshot& speech, const Voice& voice, bool from_ari);
 
   ArrayMixer mixer_;
   uint64_t seed_;

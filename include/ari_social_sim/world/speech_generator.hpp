@@ -23,6 +23,9 @@ struct SpeechRecord {
 /// current during [start + i * 60 / wpm, start + (i + 1) * 60 / wpm); the act ends at the first
 /// step at or after start + n * 60 / wpm, so an n-word act lasts n * 60 / wpm plus at most one
 /// step.
+/// The words of an utterance as the world says them, one at a time: runs of non-whitespace.
+std::vector<std::string> spoken_words(const std::string& content);
+
 class SpeechGenerator : public Component {
  public:
   static constexpr size_t kHistoryLength = 32;
