@@ -21,11 +21,13 @@ add_library(ari_audio
   src/audio/resampler.cpp
   src/audio/room_acoustics.cpp
   src/audio/sound_localizer.cpp
+  src/audio/speech_recognition_run_config.cpp
   src/audio/speech_recognizer.cpp
   src/audio/speech_synthesizer.cpp
   src/audio/time_stretch.cpp
   src/audio/timed_speech.cpp
   src/audio/voice.cpp
+  src/audio/voice_tracks.cpp
   src/audio/world_audio.cpp)
 target_include_directories(ari_audio PUBLIC ${OpenCV_INCLUDE_DIRS})
 target_include_directories(ari_audio SYSTEM PRIVATE ${POCKETSPHINX_INCLUDE_DIR}
@@ -41,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
       test/audio/test_speech_recognizer.cpp
       test/audio/test_speech_synthesizer.cpp
       test/audio/test_voice.cpp
+      test/audio/test_voice_tracks.cpp
       test/audio/test_world_audio.cpp
     LIBRARIES ari_audio)
   target_include_directories(test_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
@@ -53,6 +56,18 @@ target_link_libraries(audio_node ari_audio ari_world_conversions)
 install(TARGETS audio_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 if(CATKIN_ENABLE_TESTING)
   add_rostest(test/integration/audio_node.test DEPENDENCIES world_node audio_node)
+endif()
+
+# speech_recognition_node: pocketsphinx on /audio/channel0 as ROS4HRI voices (speech:=audio).
+add_executable(speech_recognition_node src/nodes/speech_recognition_node.cpp)
+target_link_libraries(speech_recognition_node ari_audio ari_scenario ari_node_support)
+install(TARGETS speech_recognition_node RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+if(CATKIN_ENABLE_TESTING)
+  foreach(seed 1 2)
+    add_rostest(test/integration/group_discussion_audio.test ARGS seed:=${seed}
+      DEPENDENCIES world_node hri_perception_node group_detection_node social_mpc_node
+        dialogue_node scenario_node audio_node speech_recognition_node)
+  endforeach()
 endif()
 
 if(benchmark_FOUND)

@@ -1,3 +1,4 @@
+find_library(SNDFILE_LIBRARY sndfile REQUIRED)
 # The batch libraries and tools: plans and outputs, rosbags of episodes, labelled image data sets.
 
 # batch/: what the batch tools share: batch plans (episodes, seeds, shards, resuming), episode CSV
@@ -37,9 +38,9 @@ target_compile_definitions(run_episodes PRIVATE
 
 # export_dataset: labelled images of ARI's cameras from a scenario's episodes as a COCO dataset,
 # the engine and the renderer in one process (docs/cameras.md, "Labelled datasets").
-# dataset/: the COCO data set of labelled camera images.
-add_library(ari_dataset src/dataset/coco_dataset.cpp)
-target_link_libraries(ari_dataset PUBLIC ari_batch ari_rendering)
+# dataset/: the data sets: COCO of labelled camera images, and an episode's audio (WAV, RTTM, CTM).
+add_library(ari_dataset src/dataset/coco_dataset.cpp src/dataset/episode_audio.cpp)
+target_link_libraries(ari_dataset PUBLIC ari_batch ari_rendering ari_audio PRIVATE ${SNDFILE_LIBRARY})
 add_executable(export_dataset src/tools/export_dataset.cpp)
 target_link_libraries(export_dataset ari_dataset)
 target_compile_definitions(export_dataset PRIVATE

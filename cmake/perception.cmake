@@ -50,6 +50,7 @@ install(TARGETS detect_groups RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATI
 add_library(ari_perception_conversions
   src/perception_conversions/group_markers.cpp
   src/perception_conversions/hri_messages.cpp
+  src/perception_conversions/heard_speech.cpp
   src/perception_conversions/perceived_persons.cpp
   src/perception_conversions/perception_markers.cpp)
 target_link_libraries(ari_perception_conversions PUBLIC ari_perception ari_world_conversions)

@@ -7,6 +7,7 @@ add_library(ari_scenario
   src/scenario/episode_metrics.cpp
   src/scenario/episode_report.cpp
   src/scenario/group_memory.cpp
+  src/scenario/heard_lines.cpp
   src/scenario/observations.cpp
   src/scenario/person_identities.cpp
   src/scenario/random_group.cpp

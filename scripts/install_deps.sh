@@ -33,8 +33,8 @@ packages=(
   # asks git for the sources a change touches
   clang-format-14 clang-tidy-14 git
   # audio (docs/audio.md): voices synthesised with libespeak-ng, speech recognised with
-  # pocketsphinx and its US English model
-  libespeak-ng-dev libpocketsphinx-dev libsphinxbase-dev pocketsphinx-en-us
+  # pocketsphinx and its US English model, audio data sets written with libsndfile
+  libespeak-ng-dev libpocketsphinx-dev libsphinxbase-dev pocketsphinx-en-us libsndfile1-dev
   # inspection (sox reads, plays and draws the audio files; espeak-ng speaks a voice to try it)
   rviz xvfb xauth imagemagick sox espeak-ng
   # rsvg-convert renders docs/architecture.svg to look at (ImageMagick reads no SVG without it)

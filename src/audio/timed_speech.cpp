@@ -13,9 +13,10 @@ constexpr size_t kFadeSamples = kSampleRateHz * 5 / 1000;
 // A word's segment starts where espeak-ng's word event is, often before a pause (after a comma,
 // before a stop consonant's closure). The word is heard from its energy onset: the first 10 ms
 // whose RMS reaches a tenth (-20 dB) of the utterance's loudest 10 ms. It is placed so that this
-// onset falls on the world's word time, its softer attack (at most 10 ms) just before it.
+// onset falls on the world's word time, its softer attack (at most 60 ms: an /h/, an /f/ or a
+// /s/ before the vowel, which a recogniser needs) just before it.
 constexpr size_t kWindow = kSampleRateHz / 100;
-constexpr size_t kLeadIn = kSampleRateHz / 100;
+constexpr size_t kLeadIn = kSampleRateHz * 60 / 1000;
 constexpr double kOnsetShare = 0.1;
 
 // RMS of the kWindow samples from each index (shorter at the end).
@@ -75,10 +76,14 @@ std::vector<double> word_onsets_s(size_t word_count, double words_per_minute) {
 }
 
 std::vector<float> fit_to_onsets(const Synthesis& synthesis, const std::vector<double>& onsets_s) {
-  std::vector<float> out;
   const std::vector<double> rms = window_rms(synthesis.samples);
   const double loudest = rms.empty() ? 0.0 : *std::max_element(rms.begin(), rms.end());
   const size_t words = std::min(synthesis.word_starts.size(), onsets_s.size());
+  // Where each word's audio begins (its attack) and ends in the synthesis, and where it goes.
+  struct Span {
+    size_t from, to, at;
+  };
+  std::vector<Span> spans;
   for (size_t k = 0; k < words; ++k) {
     const size_t to = std::min(k + 1 < synthesis.word_starts.size() ? synthesis.word_starts[k + 1]
                                                                     : synthesis.samples.size(),
@@ -87,12 +92,15 @@ std::vector<float> fit_to_onsets(const Synthesis& synthesis, const std::vector<d
     const size_t onset = energy_onset(rms, word_start, to, kOnsetShare * loudest);
     const size_t slot = static_cast<size_t>(std::lround(onsets_s[k] * kSampleRateHz));
     const size_t lead = std::min({kLeadIn, onset - word_start, slot});
-    const size_t at = slot - lead;
-    const size_t next = k + 1 < words
-                            ? static_cast<size_t>(std::lround(onsets_s[k + 1] * kSampleRateHz))
-                            : at + (to - onset + lead);
-    if (onset - lead < to && next > at) {
-      place(synthesis.samples, onset - lead, to, at, next - at, out);
+    spans.push_back({onset - lead, to, slot - lead});
+  }
+  std::vector<float> out;
+  for (size_t k = 0; k < spans.size(); ++k) {
+    const Span& word = spans[k];
+    // Each word fills the time until the next one's attack begins.
+    const size_t next = k + 1 < spans.size() ? spans[k + 1].at : word.at + (word.to - word.from);
+    if (word.from < word.to && next > word.at) {
+      place(synthesis.samples, word.from, word.to, word.at, next - word.at, out);
     }
   }
   return out;

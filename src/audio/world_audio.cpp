@@ -78,26 +78,51 @@ void WorldAudio::place(uint64_t id, const world::SpeechSnapshot& speech, const V
   mixer_.add({id, fitted, sample_of(speech.start_s), from_ari});
 }
 
+namespace {
+
+Eigen::Vector3d mouth_of(const world::HumanSnapshot& human) {
+  const double mouth = human.age_years < 14.0 ? kChildMouthHeightM : kAdultMouthHeightM;
+  return {human.pose.position.x(), human.pose.position.y(), mouth};
+}
+
+Eigen::Isometry3d array_pose_of(const world::AriSnapshot& ari) {
+  Eigen::Isometry3d X_footprint_array = Eigen::Isometry3d::Identity();
+  X_footprint_array.translation() =
+      Eigen::Vector3d(model::kMicrophoneInFootprint.x_m, model::kMicrophoneInFootprint.y_m,
+                      model::kMicrophoneInFootprint.z_m);
+  return planar_pose(ari.pose) * X_footprint_array;
+}
+
+}  // namespace
+
+std::vector<SpeakerDirection> speaker_directions(const world::WorldSnapshot& snapshot) {
+  std::vector<SpeakerDirection> directions;
+  if (!snapshot.ari) {
+    return directions;
+  }
+  const Eigen::Isometry3d X_array_world = array_pose_of(*snapshot.ari).inverse();
+  for (const world::HumanSnapshot& human : snapshot.humans) {
+    if (human.speech.is_speaking) {
+      const Eigen::Vector3d mouth = X_array_world * mouth_of(human);
+      directions.push_back({human.id, std::atan2(mouth.y(), mouth.x()), mouth.norm()});
+    }
+  }
+  return directions;
+}
+
 void WorldAudio::observe(const world::WorldSnapshot& snapshot) {
   for (const world::HumanSnapshot& human : snapshot.humans) {
-    const double mouth = human.age_years < 14.0 ? kChildMouthHeightM : kAdultMouthHeightM;
-    mixer_.set_source_position(
-        human.id, Eigen::Vector3d(human.pose.position.x(), human.pose.position.y(), mouth));
+    mixer_.set_source_position(human.id, mouth_of(human));
     if (starts_utterance(human.id, human.speech)) {
       place(human.id, human.speech, voice_for(seed_, human.id, human.gender, human.age_years),
             false);
     }
   }
   if (snapshot.ari) {
-    const Eigen::Isometry3d X_world_footprint = planar_pose(snapshot.ari->pose);
     mixer_.set_source_position(
         snapshot.ari->id,
-        X_world_footprint * Eigen::Vector3d(kAriLoudspeakerX, 0.0, kAriLoudspeakerZ));
-    Eigen::Isometry3d X_footprint_array = Eigen::Isometry3d::Identity();
-    X_footprint_array.translation() =
-        Eigen::Vector3d(model::kMicrophoneInFootprint.x_m, model::kMicrophoneInFootprint.y_m,
-                        model::kMicrophoneInFootprint.z_m);
-    mixer_.set_array_pose(X_world_footprint * X_footprint_array);
+        planar_pose(snapshot.ari->pose) * Eigen::Vector3d(kAriLoudspeakerX, 0.0, kAriLoudspeakerZ));
+    mixer_.set_array_pose(array_pose_of(*snapshot.ari));
     if (starts_utterance(snapshot.ari->id, snapshot.ari->speech)) {
       place(snapshot.ari->id, snapshot.ari->speech, ari_voice(), true);
     }

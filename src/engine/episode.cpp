@@ -223,8 +223,10 @@ void Episode::perceive() {
     navigation_->perceive(*perceived_);
   }
   detect_groups(now_s);
+  observations_.transcripts.clear();
   if (perceived_ != nullptr) {
     identify();
+    hear();
   }
   observations_.perceived_groups = believed_groups_.believed_at(now_s, identities_);
 }
@@ -248,6 +250,17 @@ void Episode::detect_groups(double now_s) {
 void Episode::identify() {
   identities_.update(observations_.world, scenario::sightings_of(*perceived_));
   observations_.person_ids = identities_.person_ids();
+}
+
+// As scenario_node on /humans/voices/<id>/speech: the final transcripts of this frame.
+void Episode::hear() {
+  for (const perception::PerceivedVoice& voice : perceived_->voices) {
+    for (const perception::SpeechResult& result : voice.speech) {
+      if (!result.final_text.empty()) {
+        observations_.transcripts.push_back(result.final_text);
+      }
+    }
+  }
 }
 
 // As social_mpc_node's control timer, on what perception and group detection published last.

@@ -124,7 +124,11 @@ class HriPerceptionNode {
     }
     faces_tracked_ = nh_.advertise<IdsList>("/humans/faces/tracked", 1);
     bodies_tracked_ = nh_.advertise<IdsList>("/humans/bodies/tracked", 1);
-    voices_tracked_ = nh_.advertise<IdsList>("/humans/voices/tracked", 1);
+    if (run_.voices) {
+      voices_tracked_ = nh_.advertise<IdsList>("/humans/voices/tracked", 1);
+    } else {
+      pipeline_.stop_listening();  // the voices are another node's (speech:=audio)
+    }
     if (with_persons()) {
       persons_tracked_ = nh_.advertise<IdsList>("/humans/persons/tracked", 1, /*latch=*/true);
       persons_known_ = nh_.advertise<IdsList>("/humans/persons/known", 1, /*latch=*/true);
@@ -516,7 +520,9 @@ class HriPerceptionNode {
     }
     faces_tracked_.publish(messages.faces_tracked);
     bodies_tracked_.publish(messages.bodies_tracked);
-    voices_tracked_.publish(messages.voices_tracked);
+    if (run_.voices) {
+      voices_tracked_.publish(messages.voices_tracked);
+    }
     if (sim) {
       persons_tracked_.publish(messages.persons_tracked);
       persons_known_.publish(messages.persons_known);

@@ -55,6 +55,7 @@
 #include "node_support/renewing_tf_buffer.hpp"
 #include "node_support/ros_params.hpp"
 #include "node_support/single_publisher.hpp"
+#include "perception_conversions/heard_speech.hpp"
 #include "perception_conversions/perceived_persons.hpp"
 #include "scenario_conversions/scenario_status.hpp"
 #include "world_conversions/world_state.hpp"
@@ -405,6 +406,9 @@ class ScenarioNode {
       groups_sub_ =
           nh_.subscribe("/humans/interactions/groups", 100, &ScenarioNode::on_group, this);
     }
+    if (uses.speech_recognition) {
+      heard_speech_ = std::make_unique<HeardSpeech>(nh_);
+    }
     if (uses.dialogue) {
       // What ARI perceived of the humans' utterances, and how the dialogue ended (latched).
       utterances_sub_ =
@@ -473,6 +477,9 @@ class ScenarioNode {
     observations.perceived_groups = groups_.believed_at(observations.world.time_s, identities_);
     observations.heard = std::move(heard_);
     heard_.clear();
+    if (heard_speech_) {
+      observations.transcripts = heard_speech_->take();
+    }
     observations.dialogue_end = dialogue_end_;
     const size_t visits = runner_.visits().size();
     runner_.update(observations, commands_);
@@ -555,6 +562,7 @@ class ScenarioNode {
   scenario::RunWatchdog watchdog_;
   SinglePublisher state_publisher_{"/sim/world_state"};  // world_node's alone
   std::vector<dialogue::Perception> heard_;              // since the last world state
+  std::unique_ptr<HeardSpeech> heard_speech_;            // scripts waiting on what ARI heard
   std::optional<scenario::DialogueEnd> dialogue_end_;
   scenario::MetricsRecorder metrics_;
   scenario::GroupMemory groups_;

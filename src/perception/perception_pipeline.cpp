@@ -107,8 +107,10 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
     faces_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.faces);
     const model::OccupancyGrid* sound_map =
         sound_map_ ? &*sound_map_ : (sight_map_ ? &*sight_map_ : nullptr);
-    speech_.update(snapshot, frame_.sensors, sound_map, config_.occlusion.occupied_threshold,
-                   frame_.voices);
+    if (listening_) {
+      speech_.update(snapshot, frame_.sensors, sound_map, config_.occlusion.occupied_threshold,
+                     frame_.voices);
+    }
   }
   persons_.update(snapshot, snapshot.ari ? &frame_.sensors : nullptr, frame_.bodies, frame_.faces,
                   frame_.voices, frame_.persons);

@@ -7,14 +7,15 @@
 #include <sstream>
 
 #include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/scenario/heard_lines.hpp"
 #include "ari_social_sim/scenario/script_time_limit.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
 
 const std::vector<std::string> kConditionTypes = {
-    "distance_below",    "distance_above", "speech_finished", "goal_reached",
-    "navigation_failed", "time_elapsed",   "perceived_group", "dialogue_finished"};
+    "distance_below", "distance_above",  "speech_finished",   "goal_reached", "navigation_failed",
+    "time_elapsed",   "perceived_group", "dialogue_finished", "heard"};
 const std::vector<std::string> kActionTypes = {"say",
                                                "set_goal",
                                                "approach",
@@ -125,6 +126,7 @@ class ScriptReader {
     map.finish();
     check_names(script, map, next_fields);
     check_references();
+    check_heard_acts(script);
     return script;
   }
 
@@ -231,6 +233,8 @@ class ScriptReader {
       condition = TimeElapsedCondition{entry.required<double>("seconds", core::non_negative())};
     } else if (type == "dialogue_finished") {
       condition = DialogueFinishedCondition{};
+    } else if (type == "heard") {
+      condition = HeardCondition{read_text(entry, "act")};
     } else {
       PerceivedGroupCondition c;
       const std::vector<std::string> members = entry.required<std::vector<std::string>>("members");
@@ -434,6 +438,24 @@ class ScriptReader {
         if (!transition.next.empty() && names.count(transition.next) == 0) {
           throw core::ConfigError(field + ": expected " + known + ", got '" + transition.next +
                                   "'");
+        }
+      }
+    }
+  }
+
+  // A `heard` act no human line of the script has would wait for ever.
+  static void check_heard_acts(const Script& script) {
+    const HeardLines lines(script);
+    for (const State& state : script.states) {
+      for (const Transition& transition : state.transitions) {
+        for (const Condition& condition : transition.when) {
+          const auto* heard = std::get_if<HeardCondition>(&condition);
+          if (heard != nullptr && !lines.has_act(heard->act)) {
+            throw core::ConfigError(transition.field +
+                                    ".when: heard: expected the act of a line "
+                                    "a human of the script says, got '" +
+                                    heard->act + "'");
+          }
         }
       }
     }

@@ -30,6 +30,13 @@ size_t Script::state_index(const std::string& name) const {
   throw std::out_of_range("no state named " + name);
 }
 
+bool act_matches(const std::string& pattern, const std::string& act) {
+  if (!pattern.empty() && pattern.back() == '*') {
+    return act.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0;
+  }
+  return act == pattern;
+}
+
 ScriptInterfaces Script::interfaces() const {
   ScriptInterfaces uses;
   for (const State& state : states) {
@@ -45,6 +52,8 @@ ScriptInterfaces Script::interfaces() const {
             uses.perceived_groups || std::holds_alternative<PerceivedGroupCondition>(condition);
         uses.dialogue =
             uses.dialogue || std::holds_alternative<DialogueFinishedCondition>(condition);
+        uses.speech_recognition =
+            uses.speech_recognition || std::holds_alternative<HeardCondition>(condition);
       }
     }
   }

@@ -41,13 +41,6 @@ const world::HumanSnapshot* find_human(model::ObjectId id, const world::WorldSna
 
 }  // namespace
 
-bool act_matches(const std::string& pattern, const std::string& act) {
-  if (!pattern.empty() && pattern.back() == '*') {
-    return act.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0;
-  }
-  return act == pattern;
-}
-
 std::string describe(const Action& action) {
   return std::visit(
       Overloaded{
@@ -91,7 +84,7 @@ std::string describe(const Action& action) {
 
 ScriptRunner::ScriptRunner(const Scenario& scenario, uint64_t seed,
                            const dialogue::DialogueSetup* dialogue)
-    : scenario_(scenario), seed_(seed) {
+    : scenario_(scenario), seed_(seed), heard_lines_(scenario.script) {
   if (dialogue != nullptr) {
     conversation_.emplace(*dialogue,
                           core::rng_for(seed, core::rng_streams::kConversation).next_u64());
@@ -123,6 +116,11 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
   for (size_t line : finished_lines) {
     const TranscriptLine& said = transcript_.lines()[line];
     finished_in_state_.push_back({said.speaker, said.act});
+  }
+  for (const std::string& transcript : observations.transcripts) {
+    if (const std::optional<std::string> act = heard_lines_.act_of(transcript)) {
+      heard_in_state_.push_back(*act);
+    }
   }
   if (observations.dialogue_end && !dialogue_end_) {
     dialogue_end_ = observations.dialogue_end;
@@ -195,6 +193,7 @@ void ScriptRunner::enter(size_t state, const Observations& observations, Command
   state_ = state;
   state_enter_s_ = now_s_;
   finished_in_state_.clear();
+  heard_in_state_.clear();
   record_visit(scenario_.script.states[state].name);
   run(scenario_.script.states[state].on_enter, observations, commands);
 }
@@ -244,6 +243,10 @@ bool ScriptRunner::holds(const Condition& condition, const Observations& observa
           },
           [&](const TimeElapsedCondition& c) { return now_s_ - state_enter_s_ >= c.seconds; },
           [&](const DialogueFinishedCondition&) { return dialogue_end_.has_value(); },
+          [&](const HeardCondition& c) {
+            return std::any_of(heard_in_state_.begin(), heard_in_state_.end(),
+                               [&](const std::string& act) { return act_matches(c.act, act); });
+          },
           [&](const PerceivedGroupCondition& c) {
             return std::any_of(
                 observations.perceived_groups.begin(), observations.perceived_groups.end(),

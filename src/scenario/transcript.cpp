@@ -17,7 +17,8 @@ void Transcript::hear(const AgentRef& speaker, const std::string& name,
     finished_now_.push_back(playing->second.line);
   }
   if (speech.is_speaking) {
-    lines_.push_back({speaker, name, speech.act, speech.content, speech.start_s});
+    lines_.push_back(
+        {speaker, name, speech.act, speech.content, speech.start_s, -1.0, speech.words_per_minute});
     still_playing[speaker] = {speech.start_s, lines_.size() - 1};
   }
 }

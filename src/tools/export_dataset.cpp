@@ -1,7 +1,8 @@
 // export_dataset: labelled images of ARI's cameras from a scenario's episodes, as a COCO dataset.
 //
-//   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] --cameras head,torso
-//                  --out DIR [--every SECONDS] [--overwrite | --resume]
+//   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] [--cameras
+//   head,torso]
+//                  [--audio] --out DIR [--every SECONDS] [--overwrite | --resume]
 //
 // The episodes are run_episodes' (episode i with seed S + i, S defaulting to the scenario's seed;
 // --shard K/N takes the episodes with i % N == K - 1). At each frame due (each camera's rate, or
@@ -12,6 +13,8 @@
 // (core::ProgressJournal), from which --resume goes on. SIGINT or SIGTERM stops between two steps,
 // drops the episode under way (its images deleted) and exits with 128 + the signal's number. Exit
 // code 2 on bad input, 1 when rendering or writing fails (docs/cameras.md, "Labelled datasets").
+// --audio also writes each episode's microphone-array audio with its labels (dataset::EpisodeAudio,
+// docs/audio.md, "Audio data sets").
 #include <unistd.h>
 
 #include <algorithm>
@@ -39,6 +42,7 @@
 #include "ari_social_sim/core/progress_journal.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/dataset/coco_dataset.hpp"
+#include "ari_social_sim/dataset/episode_audio.hpp"
 #include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/rendering/camera_rig.hpp"
 #include "ari_social_sim/rendering/snapshot_cameras.hpp"
@@ -66,7 +70,7 @@ const std::vector<int> kPngParameters{cv::IMWRITE_PNG_COMPRESSION, 3, cv::IMWRIT
 
 constexpr const char* kUsage =
     "usage: export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
-    "                      --cameras head,torso --out DIR [--every SECONDS]\n"
+    "                      [--cameras head,torso] [--audio] --out DIR [--every SECONDS]\n"
     "                      [--overwrite | --resume]\n";
 
 constexpr const char* kHelp = R"(
@@ -77,6 +81,11 @@ time with --every. Writes DIR/images/CAMERA/NAME_SEED_FRAME.png and the labels a
 DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard). NAME is one of the
 package's scenarios or a scenario file; N in [1, 1000000]; seeds in [0, 2147483647]; SECONDS in
 [0.01, 86400]. Output of these seeds already in DIR is replaced only with --overwrite.
+
+--audio (with or without --cameras) writes each episode's audio as ARI's microphone array hears
+it: DIR/audio/NAME_SEED.wav (six channels, 16 kHz, 16 bits), NAME_SEED.rttm (who speaks when),
+NAME_SEED.ctm (every word's time) and NAME_SEED_directions.csv (each speaker's true direction
+from the array every 64 ms).
 
 Until every episode is done, the labels of the finished ones are kept in
 DIR/annotations.json.active; DIR/annotations.json appears, complete, at the end. SIGINT (Ctrl-C)
@@ -97,6 +106,7 @@ struct Options {
   std::vector<std::string> cameras;  // rig names, in --cameras' order
   std::string out;
   std::optional<double> every_s;
+  bool audio{false};  // each episode's array audio with its labels (docs/audio.md)
   bool overwrite{false};
   bool resume{false};
 };
@@ -131,12 +141,14 @@ Options parse_options(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--overwrite" || arg == "--resume") {
-      (arg == "--overwrite" ? options.overwrite : options.resume) = true;
+    if (arg == "--overwrite" || arg == "--resume" || arg == "--audio") {
+      (arg == "--overwrite" ? options.overwrite
+       : arg == "--resume"  ? options.resume
+                            : options.audio) = true;
       continue;
     }
     core::check_known_option(arg, {"--scenario", "--episodes", "--seed", "--shard", "--cameras",
-                                   "--out", "--every", "--overwrite", "--resume"});
+                                   "--audio", "--out", "--every", "--overwrite", "--resume"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
@@ -150,9 +162,10 @@ Options parse_options(int argc, char** argv) {
       batch::read_plan_option(arg, value, options.plan, options.given);
     }
   }
-  if (options.scenario.empty() || !options.given.episodes || options.cameras.empty() ||
-      options.out.empty()) {
-    throw core::ConfigError("expected --scenario, --episodes, --cameras and --out");
+  if (options.scenario.empty() || !options.given.episodes ||
+      (options.cameras.empty() && !options.audio) || options.out.empty()) {
+    throw core::ConfigError(
+        "expected --scenario, --episodes, --cameras or --audio (or both), and --out");
   }
   if (options.overwrite && options.resume) {
     throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
@@ -169,6 +182,10 @@ struct OutputPaths {
   // The labels of the finished episodes until `annotations` is written.
   std::string progress() const { return annotations + ".active"; }
   std::string image_dir(const std::string& camera) const { return "images/" + camera; }
+  // An episode's audio files without their endings (dataset::EpisodeAudio).
+  std::string audio_stem(uint64_t seed) const {
+    return dir + "/audio/" + scenario + "_" + std::to_string(seed);
+  }
   // Relative to dir, as the COCO file names it.
   std::string image(const std::string& camera, uint64_t seed, uint64_t frame) const {
     return image_dir(camera) + "/" + scenario + "_" + std::to_string(seed) + "_" +
@@ -213,6 +230,9 @@ struct Export {
   OutputPaths paths;
   rendering::CameraRigConfig rig;
   std::optional<core::ProgressJournal> journal;  // unset when the export is complete already
+  // With --audio: every episode's voices synthesised once per (voice, text) for the whole export.
+  std::shared_ptr<audio::SpeechSynthesizer> synthesizer =
+      std::make_shared<audio::SpeechSynthesizer>();
 };
 
 // What the COCO file's "info" says of the export, from the cameras the rig will render.
@@ -234,7 +254,7 @@ dataset::DatasetSettings dataset_settings(const Export& run) {
 // configuration files, so that --resume adds only episodes made the same way.
 std::string progress_settings(const Export& run) {
   return "export_dataset " + dataset::CocoDataset(dataset_settings(run)).info_json() +
-         " scenario_digest " +
+         (run.options.audio ? " audio" : "") + " scenario_digest " +
          batch::digest_files({run.scenario_file, run.scenario.scene.world_path}) +
          " config_digest " + batch::digest_files(batch::files_under(ARI_CONFIG_DIR, ".yaml"));
 }
@@ -357,6 +377,9 @@ Export prepare(int argc, char** argv) {
   for (const std::string& camera : options.cameras) {
     core::prepare_output_directory("--out", options.out + "/" + paths.image_dir(camera));
   }
+  if (options.audio) {
+    core::prepare_output_directory("--out", options.out + "/audio");
+  }
   core::check_output_file("--out", paths.annotations, /*replace=*/true);
   if (!run.journal) {
     run.journal = core::ProgressJournal::start("--out", paths.progress(), progress_settings(run));
@@ -414,8 +437,19 @@ bool export_episode(const Export& run, rendering::CameraRig& rig, dataset::CocoD
   rendering::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
   std::vector<uint64_t> frames(rig.cameras().size(), 0);  // per camera, for the file names
   uint64_t ordinal = 0;                                   // images of the episode, for the ids
+  std::unique_ptr<dataset::EpisodeAudio> audio;
+  if (run.options.audio) {
+    const std::string stem = run.paths.audio_stem(seed);
+    const std::vector<std::string> files = dataset::EpisodeAudio::files_of(stem);
+    written.insert(written.end(), files.begin(), files.end());  // dropped with the episode
+    audio = std::make_unique<dataset::EpisodeAudio>(stem, run.scenario.scene, seed,
+                                                    audio::RoomSettings{}, run.synthesizer);
+  }
   // The initial state first (frame 0 at time 0), then after every step.
   while (true) {
+    if (audio) {
+      audio->observe(episode->snapshot());
+    }
     for (rendering::LabelledImage& image : cameras.render_due(episode->snapshot())) {
       const std::string& camera = rig.cameras()[image.camera].name;
       dataset::DatasetImage entry;
@@ -431,6 +465,9 @@ bool export_episode(const Export& run, rendering::CameraRig& rig, dataset::CocoD
       dataset.add(entry, image.labels);
     }
     if (episode->finished()) {
+      if (audio) {
+        audio->finish();
+      }
       return true;
     }
     if (core::g_stop_signal != 0) {

@@ -97,6 +97,7 @@ TEST(Scenario, GroupDiscussionNeedsSpeechPerceivedGroupsAndBothNavigationActions
   EXPECT_TRUE(uses.approach);
   EXPECT_TRUE(uses.move_base);
   EXPECT_TRUE(uses.perceived_groups);
+  EXPECT_TRUE(uses.speech_recognition);  // ARI answers what it heard
 }
 
 TEST(Scenario, EveryConditionAndActionTypeReads) {
@@ -128,12 +129,14 @@ TEST(Scenario, EveryConditionAndActionTypeReads) {
       "            - {type: navigation_failed}\n"
       "            - {type: time_elapsed, seconds: 3}\n"
       "            - {type: perceived_group, members: [ari, 10, 21]}\n"
+      "            - {type: heard, act: 'greet*'}\n"
       "          do: [{type: stop, success: true, reason: done}]\n"
       "        - when: []\n"
       "          next: a\n"));
   const State& a = s.script.states[0];
   EXPECT_EQ(a.on_enter.size(), 11u);
-  EXPECT_EQ(a.transitions[0].when.size(), 7u);
+  EXPECT_EQ(a.transitions[0].when.size(), 8u);
+  EXPECT_EQ(std::get<HeardCondition>(a.transitions[0].when[7]).act, "greet*");
   EXPECT_TRUE(a.transitions[0].next.empty());
   EXPECT_TRUE(a.transitions[1].when.empty());
   const auto& added = std::get<AddHumanAction>(a.on_enter[6]).human;
@@ -208,6 +211,11 @@ TEST(Scenario, ConditionErrorsNameTheCondition) {
                   {at, "unknown field(s) minutes"});
   expect_rejected(when("{type: perceived_group, members: [10, bob]}"),
                   {at + ".members", "ari or human ids", "'bob'"});
+  expect_rejected(when("{type: heard}"), {at + ".act", "required"});
+  // No human of the script says it: the state would wait for ever.
+  expect_rejected(when("{type: heard, act: 'QUESTION:*'}"),
+                  {"script.states[0].transitions[0].when: heard", "a line a human of the script",
+                   "'QUESTION:*'"});
 }
 
 TEST(Scenario, ActionErrorsNameTheAction) {

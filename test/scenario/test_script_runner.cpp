@@ -132,10 +132,15 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   EXPECT_EQ(runner.state(), "ask_time");
   EXPECT_EQ(commands.log.back(), "say human 11 QUESTION:TIME");
 
+  // ARI answers what it heard: Irene's question said is not enough, a transcript near it is.
   stage.start(irene, "QUESTION:TIME");
   stage.tick(runner, commands, 1.5);
   stage.stop(irene);
   stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "ask_time");
+  stage.obs.transcripts = {"oh yes what is the lifts"};  // two words wrong, one missing
+  stage.tick(runner, commands);
+  stage.obs.transcripts.clear();
   EXPECT_EQ(commands.log.back(), "say ARI ANSWER:TIME");
   stage.start(ari, "ANSWER:TIME");
   stage.tick(runner, commands, 1.0);
@@ -160,9 +165,9 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   EXPECT_TRUE(runner.outcome()->success);
   EXPECT_EQ(runner.outcome()->reason, "ARI left the group");
   EXPECT_EQ(runner.outcome()->final_state, "leave");
-  // The first tick starts the script; then 2 approach ticks, 4 ticks that end an utterance and 2
-  // return ticks of 0.05 s each, and 2.0 + 1.5 + 1.0 + 1.0 s of speech.
-  EXPECT_NEAR(runner.outcome()->end_time_s, 5.5 + 8 * 0.05, 1e-9);
+  // The first tick starts the script; then 2 approach ticks, 4 ticks that end an utterance, one
+  // that hears and 2 return ticks of 0.05 s each, and 2.0 + 1.5 + 1.0 + 1.0 s of speech.
+  EXPECT_NEAR(runner.outcome()->end_time_s, 5.5 + 9 * 0.05, 1e-9);
 
   std::vector<std::string> visited;
   for (const StateVisit& v : runner.visits()) {
@@ -194,6 +199,44 @@ TEST_F(GroupDiscussionRunner, AnActFinishedBeforeTheStateWasEnteredDoesNotCount)
     stage.tick(runner, commands);
   }
   EXPECT_EQ(runner.state(), "ask_help");
+}
+
+TEST_F(GroupDiscussionRunner, OnlyATranscriptHeardInTheStateAndNearIreneLineCounts) {
+  stage.tick(runner, commands);
+  stage.obs.transcripts = {"hello yes what is the time"};  // heard before ARI asked: too early
+  stage.obs.world.ari->pose.position = {4.0, 3.0};
+  stage.tick(runner, commands);
+  stage.obs.transcripts.clear();
+  stage.start(AgentRef::ari(), "QUESTION:HELP");
+  stage.tick(runner, commands);
+  stage.stop(AgentRef::ari());
+  stage.tick(runner, commands);
+  ASSERT_EQ(runner.state(), "ask_time");
+  // Irene's goodbye, and words sharing too little with the question, are not the question.
+  for (const std::string heard : {"thank you good bye", "what a big dog", ""}) {
+    stage.obs.transcripts = {heard};
+    stage.tick(runner, commands);
+    EXPECT_EQ(runner.state(), "ask_time") << heard;
+  }
+  stage.obs.transcripts = {"what is the time"};
+  stage.tick(runner, commands);
+  EXPECT_EQ(runner.state(), "answer_time");
+}
+
+TEST(HeardLines, ATranscriptIsTheActOfTheNearestHumanLine) {
+  const Scenario scenario = load_scenario_file(kSource + "/scenarios/group_discussion.yaml");
+  const HeardLines lines(scenario.script);
+  EXPECT_EQ(lines.texts(),
+            (std::vector<std::string>{"Hello. Yes. What is the time?", "Thank you. Good bye."}));
+  EXPECT_EQ(lines.act_of("Hello, yes: what is the time?"), "QUESTION:TIME");
+  EXPECT_EQ(lines.act_of("thank you good bye"), "GOODBYE");
+  // 3 of 6 words shared with a 6-word transcript: cosine 0.5, the least that counts.
+  EXPECT_EQ(lines.act_of("brilliant what a big the time"), "QUESTION:TIME");
+  EXPECT_EQ(lines.act_of("brilliant what a big dog time"), std::nullopt);
+  // ARI's lines are not the humans'.
+  EXPECT_EQ(lines.act_of("it is fourteen thirty"), std::nullopt);
+  EXPECT_TRUE(lines.has_act("QUESTION:*"));
+  EXPECT_FALSE(lines.has_act("ANSWER:TIME"));
 }
 
 TEST_F(GroupDiscussionRunner, AriSpeechThroughTtsTakesTheScriptsAct) {

@@ -131,6 +131,37 @@ std::set<std::string> image_names(const std::string& path) {
   return names;
 }
 
+// Checks an episode's audio files written with --audio, with sox (soxi) for the WAV's format and
+// numpy for its samples, and prints `channels C rate R seconds D segments S words W
+// worst_onset_ms O`: for each RTTM segment, the first 10 ms of its speaker's channel (ARI's
+// playback, 5; a person's processed channel, 0) whose RMS reaches a tenth of the segment's loudest,
+// against the segment's (and its first CTM word's) start.
+constexpr const char* kAudioCheckScript = R"PY(
+import subprocess, sys, wave
+import numpy as np
+stem = sys.argv[1]
+def soxi(flag):
+    return subprocess.run(["soxi", flag, stem + ".wav"], check=True, capture_output=True,
+                          text=True).stdout.strip()
+channels, rate, seconds = int(soxi("-c")), int(soxi("-r")), float(soxi("-D"))
+with wave.open(stem + ".wav") as w:
+    samples = np.frombuffer(w.readframes(w.getnframes()), dtype="<i2").reshape(-1, channels)
+segments = [line.split() for line in open(stem + ".rttm")]
+words = [line.split() for line in open(stem + ".ctm")]
+worst = 0.0
+for segment in segments:
+    start, duration, speaker = float(segment[3]), float(segment[4]), segment[7]
+    first_word = min(float(w[2]) for w in words if abs(float(w[2]) - start) < 1e-6)
+    channel = samples[:, 5 if speaker == "ARI" else 0].astype(float)
+    a, b = int((start - 0.2) * rate), int((start + duration) * rate)
+    windows = channel[a:b][: (b - a) // 160 * 160].reshape(-1, 160)
+    energy = (windows ** 2).mean(axis=1)
+    onset = a / rate + np.argmax(energy >= 0.01 * energy.max()) * 0.01  # RMS a tenth: -20 dB
+    worst = max(worst, abs(onset - first_word))
+print("channels %d rate %d seconds %.2f segments %d words %d worst_onset_ms %.1f"
+      % (channels, rate, seconds, len(segments), len(words), 1000 * worst))
+)PY";
+
 TEST(ExportDataset, BadOptionsExitWithTwoNamingTheOption) {
   const std::string dir = ::testing::TempDir() + "export_dataset_bad";
   fs::remove_all(dir);
@@ -158,7 +189,7 @@ TEST(ExportDataset, BadOptionsExitWithTwoNamingTheOption) {
            {"--scenario join_group --episodes 2 --cameras head --out /etc/hostname",
             "--out: /etc/hostname: expected a directory, got a file"},
            {"--scenario join_group --episodes 2 --out " + dir,
-            "expected --scenario, --episodes, --cameras and --out"},
+            "expected --scenario, --episodes, --cameras or --audio (or both), and --out"},
            {base + " --cameras head --zoom 2",
             "--zoom: unknown option, expected one of --scenario"},
            // Last, it is still unknown, not an option missing its value.
@@ -357,6 +388,41 @@ TEST(ExportDataset, AnInterruptedExportKeepsFinishedEpisodesAndResumesToTheSameB
   const ProgramRun after_kill = run(kSmallExport + killed + " --resume");
   ASSERT_EQ(after_kill.status, 0) << after_kill.err;
   expect_same_files(killed, reference);
+}
+
+TEST(ExportDataset, AudioIsAWavSoxReadsWithLabelsOnTheWorldsTimesTheSameEachRun) {
+  const std::string dir = ::testing::TempDir() + "export_dataset_audio";
+  fs::remove_all(dir);
+  const std::string audio = "--scenario group_discussion --episodes 1 --audio --out " + dir;
+  const ProgramRun first = run(audio);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string stem = dir + "/audio/group_discussion_1";
+  const std::string script = ::testing::TempDir() + "check_audio.py";
+  std::ofstream(script) << kAudioCheckScript;
+  const ProgramRun check = run_program("/usr/bin/python3", script + " " + stem);
+  ASSERT_EQ(check.status, 0) << check.err;
+  std::printf("%s", check.out.c_str());
+  int channels = 0, rate = 0, segments = 0, words = 0;
+  double seconds = 0.0, worst_onset_ms = 1e9;
+  ASSERT_EQ(std::sscanf(check.out.c_str(),
+                        "channels %d rate %d seconds %lf segments %d words %d worst_onset_ms %lf",
+                        &channels, &rate, &seconds, &segments, &words, &worst_onset_ms),
+            6);
+  EXPECT_EQ(channels, 6);
+  EXPECT_EQ(rate, 16000);
+  EXPECT_GT(seconds, 20.0);  // ARI walks back after the goodbyes
+  // ARI's three lines and Irene's two; 8 + 6 + 3 + 4 + 2 words.
+  EXPECT_EQ(segments, 5);
+  EXPECT_EQ(words, 23);
+  EXPECT_LE(worst_onset_ms, 50.0);
+  const std::string directions = read_all(stem + "_directions.csv");
+  EXPECT_EQ(directions.rfind("time_s,human_id,azimuth_deg,distance_m\n", 0), 0u);
+  EXPECT_NE(directions.find(",11,"), std::string::npos);  // Irene, while she speaks
+
+  // Again: the same bytes.
+  const std::map<std::string, std::string> files = files_under(dir + "/audio");
+  ASSERT_EQ(run(audio + " --overwrite").status, 0);
+  EXPECT_EQ(files_under(dir + "/audio"), files);
 }
 
 }  // namespace

@@ -21,6 +21,16 @@ inline constexpr size_t kChunkSamples = 1024;
 /// The world's walls as the acoustics' walls (floor-to-ceiling segments along each wall's length).
 std::vector<Wall> walls_of(const model::WorldDescription& world);
 
+/// Where a speaking person's mouth is from ARI's array: the truth a localiser is measured against.
+struct SpeakerDirection {
+  uint64_t human_id{0};
+  double azimuth_rad{0.0};  // counter-clockwise from the array's forward (torso_mic_front_link x)
+  double distance_m{0.0};
+};
+
+/// The direction of every human speaking in `snapshot`; none without ARI.
+std::vector<SpeakerDirection> speaker_directions(const world::WorldSnapshot& snapshot);
+
 /// What ARI's microphone array hears of a world, followed snapshot by snapshot: the same core for
 /// the live audio node and the in-process engine, so both produce the same samples for the same
 /// run (docs/audio.md).

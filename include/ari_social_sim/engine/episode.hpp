@@ -150,6 +150,7 @@ class Episode {
   void perceive();
   void detect_groups(double now_s);
   void identify();
+  void hear();
   void navigate();
   void converse();
 

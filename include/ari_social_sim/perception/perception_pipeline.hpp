@@ -53,6 +53,10 @@ class PerceptionPipeline {
   /// The static map that blocks sound (walls only). Without one the sight map does.
   void set_sound_map(model::OccupancyGrid grid);
 
+  /// From now on no voice or speech is perceived: voices come from elsewhere (speech recognition
+  /// on the array's audio, a real ASR), and persons are made from faces and bodies.
+  void stop_listening() { listening_ = false; }
+
   /// Perceives one snapshot. The reference stays valid until the next call.
   const PerceptionFrame& update(const world::WorldSnapshot& snapshot);
 
@@ -76,6 +80,7 @@ class PerceptionPipeline {
   std::optional<model::OccupancyGrid> sound_map_;
   std::vector<Eigen::Vector2d> people_;
   std::optional<double> last_time_s_;
+  bool listening_{true};
   PerceptionFrame frame_;
 };
 

@@ -31,6 +31,7 @@ struct PerceptionRunConfig {
   double id_linger_s{1.0};
   double marker_rate_hz{10.0};
   bool crops{false};
+  bool voices{true};
   std::optional<uint64_t> appearance_seed;
 
   template <class V>
@@ -63,6 +64,9 @@ struct PerceptionRunConfig {
             "3D mode: cut REP-155's face (cropped, aligned) and body (cropped) images from ARI's "
             "head camera for the tracked faces and bodies; subscribing makes ari_physics_node "
             "render that camera");
+    v.field("voices", voices,
+            "false: no simulated voices or speech, for speech recognition on the array's audio "
+            "(speech:=audio, docs/audio.md) or a real ASR to publish /humans/voices/...");
     v.field(core::unset_by_minus_one("appearance_seed"), appearance_seed,
             "with crops: ari_physics_node's appearance_seed, which sizes the people it draws; "
             "unset: read /ari_physics_node/appearance_seed, 1 (its default) when that is unset",

@@ -52,6 +52,9 @@ struct Observations {
   /// Human utterances of the dialogue that started since the previous observation, as ARI
   /// perceived them (the dialogue's error layer applied).
   std::vector<dialogue::Perception> heard;
+  /// Final transcripts of ARI's speech recognition since the previous observation, any voice
+  /// (ROS4HRI's /humans/voices/<id>/speech; in process, the perception pipeline's voices).
+  std::vector<std::string> transcripts;
   /// Set once the dialogue has ended.
   std::optional<DialogueEnd> dialogue_end;
 };

@@ -58,9 +58,16 @@ struct PerceivedGroupCondition {
 /// The dialogue with the simulated humans (dialogue_node) has ended.
 struct DialogueFinishedCondition {};
 
+/// ARI's speech recognition gave, after the current state was entered, a final transcript taken
+/// for a human line of the script whose act matches `act` (HeardLines; exact, or a prefix ending
+/// in `*`). Unlike speech_finished, it waits for what ARI heard, not for what was said.
+struct HeardCondition {
+  std::string act;
+};
+
 using Condition = std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
                                NavigationFailedCondition, TimeElapsedCondition,
-                               PerceivedGroupCondition, DialogueFinishedCondition>;
+                               PerceivedGroupCondition, DialogueFinishedCondition, HeardCondition>;
 
 // ---- Actions: what entering a state or firing a transition does (section 5) ----
 
@@ -168,12 +175,16 @@ struct State {
 /// The run interfaces a script uses beyond the world's services, so that a runner waits for
 /// exactly those before it starts.
 struct ScriptInterfaces {
-  bool text_to_speech{false};    // ARI says something (/tts)
-  bool move_base{false};         // ARI goes to a pose
-  bool approach{false};          // ARI approaches a person or joins a group
-  bool perceived_groups{false};  // a condition on /humans/interactions/groups
-  bool dialogue{false};          // ARI converses or a condition waits for the dialogue's end
+  bool text_to_speech{false};      // ARI says something (/tts)
+  bool move_base{false};           // ARI goes to a pose
+  bool approach{false};            // ARI approaches a person or joins a group
+  bool perceived_groups{false};    // a condition on /humans/interactions/groups
+  bool dialogue{false};            // ARI converses or a condition waits for the dialogue's end
+  bool speech_recognition{false};  // a condition on what ARI heard (/humans/voices/*/speech)
 };
+
+/// Whether a speech act matches a script's pattern: exact, a prefix ending in `*`, or `*` alone.
+bool act_matches(const std::string& pattern, const std::string& act);
 
 /// The scripted part of a scenario (D6.4's Script, §3.7, as data).
 struct Script {

@@ -7,6 +7,7 @@
 
 #include "ari_social_sim/scenario/commands.hpp"
 #include "ari_social_sim/scenario/conversation.hpp"
+#include "ari_social_sim/scenario/heard_lines.hpp"
 #include "ari_social_sim/scenario/observations.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 #include "ari_social_sim/scenario/transcript.hpp"
@@ -103,6 +104,8 @@ class ScriptRunner {
   size_t state_{0};
   double state_enter_s_{0.0};
   std::vector<FinishedAct> finished_in_state_;  // utterances that ended since entering the state
+  HeardLines heard_lines_;
+  std::vector<std::string> heard_in_state_;  // acts ARI heard since entering the state
   std::vector<SayAction> ari_says_;  // ARI's utterances asked for and not yet heard, in order
   size_t lines_labelled_{0};
   std::vector<StateVisit> visits_;
@@ -113,9 +116,6 @@ class ScriptRunner {
   std::optional<DialogueEnd> dialogue_end_;
   std::optional<Outcome> outcome_;
 };
-
-/// Whether a speech act matches a script's pattern: exact, a prefix ending in `*`, or `*` alone.
-bool act_matches(const std::string& pattern, const std::string& act);
 
 /// A short description of an action for messages, e.g. `say (ARI, QUESTION:HELP)`.
 std::string describe(const Action& action);

@@ -16,7 +16,8 @@ struct TranscriptLine {
   std::string act;
   std::string text;
   double start_s{0.0};
-  double end_s{-1.0};  // sim time the act finished or was cut off; < 0 while it plays
+  double end_s{-1.0};            // sim time the act finished or was cut off; < 0 while it plays
+  double words_per_minute{0.0};  // word k was said at start_s + k * 60 / words_per_minute
 
   bool finished() const { return end_s >= 0.0; }
 };
