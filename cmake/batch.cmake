@@ -31,7 +31,7 @@ target_link_libraries(ari_episode_bag
 
 # run_episodes: the batch tool (cores in one process, rosbags written without a master).
 add_executable(run_episodes src/tools/run_episodes.cpp)
-target_link_libraries(run_episodes ari_episode_bag)
+target_link_libraries(run_episodes ari_episode_bag ari_dataset)
 target_compile_definitions(run_episodes PRIVATE
   ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios"
   ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
@@ -77,7 +77,7 @@ if(CATKIN_ENABLE_TESTING)
   # Issue 14: the engine and the nodes' cores composed as the nodes compose them, step by step.
   ari_add_gtest(test_live_batch_equivalence
     SOURCES test/nodes/test_live_batch_equivalence.cpp
-    LIBRARIES ari_episode_bag)
+    LIBRARIES ari_episode_bag ari_audio)
   target_compile_definitions(test_live_batch_equivalence PRIVATE
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 

@@ -35,8 +35,9 @@ packages=(
   # audio (docs/audio.md): voices synthesised with libespeak-ng, speech recognised with
   # pocketsphinx and its US English model, audio data sets written with libsndfile
   libespeak-ng-dev libpocketsphinx-dev libsphinxbase-dev pocketsphinx-en-us libsndfile1-dev
-  # inspection (sox reads, plays and draws the audio files; espeak-ng speaks a voice to try it)
-  rviz xvfb xauth imagemagick sox espeak-ng
+  # inspection (sox reads, plays and draws the audio files, scripts/draw_audio.py writes its
+  # labels in DejaVu; espeak-ng speaks a voice to try it)
+  rviz xvfb xauth imagemagick sox espeak-ng fonts-dejavu-core
   # rsvg-convert renders docs/architecture.svg to look at (ImageMagick reads no SVG without it)
   librsvg2-bin
 )

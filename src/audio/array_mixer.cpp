@@ -114,7 +114,8 @@ bool ArrayMixer::voice_at(int64_t sample) const {
 void ArrayMixer::add_sound(const PlacedSound& sound, size_t count,
                            std::array<std::vector<float>, kMicrophones>& heard,
                            std::vector<float>& playback) const {
-  const double level = db_to_gain(settings_.speech_level_dbfs);
+  const double level =
+      db_to_gain(sound.from_ari ? settings_.ari_speech_level_dbfs : settings_.speech_level_dbfs);
   const double offset = static_cast<double>(next_sample_ - sound.start_sample);
   if (sound.from_ari) {
     for (size_t n = 0; n < count; ++n) {

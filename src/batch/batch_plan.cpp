@@ -204,6 +204,10 @@ std::vector<std::string> BatchSettings::differences(const BatchSettings& now) co
     lines.push_back(std::string("--no-bags: ") + (bags ? "bags" : "no bags") + " there, " +
                     (now.bags ? "bags" : "no bags") + " now");
   }
+  if (audio != now.audio) {
+    lines.push_back(std::string("--audio: ") + (audio ? "audio" : "no audio") + " there, " +
+                    (now.audio ? "audio" : "no audio") + " now");
+  }
   return lines;
 }
 

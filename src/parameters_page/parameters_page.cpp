@@ -1,6 +1,7 @@
 #include "parameters_page.hpp"
 
 #include "ari_social_sim/audio/audio_run_config.hpp"
+#include "ari_social_sim/audio/speech_recognition_run_config.hpp"
 #include "ari_social_sim/core/parameter_table.hpp"
 #include "ari_social_sim/dialogue/dialogue_config.hpp"
 #include "ari_social_sim/dialogue/dialogue_run_config.hpp"
@@ -92,6 +93,8 @@ std::string parameters_page() {
          section("#### Mapping (`~mapping_params`)", "",
                  node_parameters<mapping::MappingConfig>("~mapping_params/")) +
          section("### audio_node", "", node_parameters<audio::AudioRunConfig>()) +
+         section("### speech_recognition_node", "",
+                 node_parameters<audio::SpeechRecognitionRunConfig>()) +
          section("## Files", "", "") +
          section("### config/perception.yaml",
                  "hri_perception_node's `~config` (and group_detection_node's, which uses "

@@ -3,7 +3,7 @@
 // of metrics per episode, with a progress line on standard error.
 //
 //   run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] [--out DIR]
-//                [--no-bags] [--overwrite | --resume]
+//                [--no-bags] [--audio] [--overwrite | --resume]
 //
 // Episode i runs with seed S + i (S defaults to the scenario file's seed), so that it can be
 // replayed live with `roslaunch ari_social_sim NAME.launch seed:=S+i`. --shard K/N runs the
@@ -13,9 +13,10 @@
 // (checks the settings, keeps the rows there and runs the missing episodes). Each bag is written
 // as NAME_SEED.bag.active and renamed when complete; SIGINT or SIGTERM stops between two steps,
 // drops the episode under way (its .active file deleted, no row) and exits with 128 + the
-// signal's number. Exit code 0 when every episode of the CSV succeeded, 1 when any failed (the
-// first few named on standard error), 2 on bad input, 3 when writing fails (docs/scenario.md,
-// section 6).
+// signal's number. --audio adds each episode's array audio and labels, DIR/audio/NAME_SEED.*
+// (dataset::EpisodeAudio, as export_dataset --audio). Exit code 0 when every episode of the CSV
+// succeeded, 1 when any failed (the first few named on standard error), 2 on bad input, 3 when
+// writing fails (docs/scenario.md, section 6).
 #include <unistd.h>
 
 #include <algorithm>
@@ -36,6 +37,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 #include "ari_social_sim/core/stop_signal.hpp"
+#include "ari_social_sim/dataset/episode_audio.hpp"
 #include "ari_social_sim/engine/episode.hpp"
 #include "episode_bag/episode_bag.hpp"
 
@@ -63,17 +65,20 @@ struct Options {
   batch::PlanOptionsGiven given;
   std::string out{"episodes"};
   bool bags{true};
+  bool audio{false};  // each episode's microphone-array audio and its labels (docs/audio.md)
   bool overwrite{false};
   bool resume{false};
 };
 
 void print_usage() {
   std::cerr << "usage: run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
-               "                    [--out DIR] [--no-bags] [--overwrite | --resume]\n"
+               "                    [--out DIR] [--no-bags] [--audio] [--overwrite | --resume]\n"
             << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n"
             << "  N in " << batch::episodes_option_range() << ", S in "
             << batch::seed_option_range()
             << " (the last seed, S + N - 1, too)\n"
+               "  --audio: DIR/audio/NAME_SEED.wav (the array's six channels), .rttm, .ctm and\n"
+               "  _directions.csv per episode (docs/audio.md, \"Audio data sets\")\n"
                "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
                "  --resume (finish it: same settings, --episodes and --seed default to its own)\n"
                "  SIGINT (Ctrl-C) or SIGTERM stops between two steps, keeping the finished\n"
@@ -90,6 +95,10 @@ Options parse_options(int argc, char** argv) {
       options.bags = false;
       continue;
     }
+    if (arg == "--audio") {
+      options.audio = true;
+      continue;
+    }
     if (arg == "--overwrite") {
       options.overwrite = true;
       continue;
@@ -99,7 +108,7 @@ Options parse_options(int argc, char** argv) {
       continue;
     }
     core::check_known_option(arg, {"--scenario", "--episodes", "--seed", "--shard", "--out",
-                                   "--no-bags", "--overwrite", "--resume"});
+                                   "--no-bags", "--audio", "--overwrite", "--resume"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
@@ -135,6 +144,10 @@ struct OutputPaths {
 
   std::string csv() const { return dir + "/" + stem + ".csv"; }
   std::string settings() const { return dir + "/" + stem + ".settings.yaml"; }
+  // An episode's audio files without their endings (dataset::EpisodeAudio).
+  std::string audio_stem(uint64_t seed) const {
+    return dir + "/audio/" + name + "_" + std::to_string(seed);
+  }
   std::string bag(uint64_t seed) const {
     return dir + "/" + name + "_" + std::to_string(seed) + ".bag";
   }
@@ -260,6 +273,9 @@ struct Batch {
   OutputPaths paths;
   std::vector<batch::EpisodeCsvRow> kept;  // rows of an earlier run that --resume keeps
   std::ofstream csv;                       // open for appending, the header written
+  // With --audio: the voices synthesised once per (voice, text) for the whole batch.
+  std::shared_ptr<audio::SpeechSynthesizer> synthesizer =
+      std::make_shared<audio::SpeechSynthesizer>();
 };
 
 // Checks everything the user gave and deals with the earlier output before the first episode, so
@@ -306,6 +322,7 @@ Batch prepare(int argc, char** argv) {
   settings.config_digest = batch::digest_files(batch::files_under(ARI_CONFIG_DIR, ".yaml"));
   settings.plan = options.plan;
   settings.bags = options.bags;
+  settings.audio = options.audio;
 
   // The earlier output: resumed, replaced, or a reason to stop.
   std::vector<uint64_t> seeds;
@@ -328,6 +345,9 @@ Batch prepare(int argc, char** argv) {
 
   // Settings first, then the CSV: a CSV is never without the settings that made it.
   core::prepare_output_directory("--out", options.out);
+  if (options.audio) {
+    core::prepare_output_directory("--out", options.out + "/audio");
+  }
   core::OutputFile settings_file("--out", paths.settings());
   settings_file.stream() << settings.to_yaml();
   settings_file.commit();
@@ -414,18 +434,35 @@ bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>
   if (batch.options.bags) {
     bag = std::make_unique<tools::EpisodeBag>(paths.bag(seed), paths.name);
   }
+  std::unique_ptr<dataset::EpisodeAudio> audio;
+  if (batch.options.audio) {
+    audio = std::make_unique<dataset::EpisodeAudio>(paths.audio_stem(seed), batch.scenario.scene,
+                                                    seed, audio::RoomSettings{}, batch.synthesizer);
+  }
   while (!episode.finished() && g_stop_signal == 0) {
     episode.step();
     if (bag) {
       bag->record_step(episode);
     }
+    if (audio) {
+      audio->observe(episode.snapshot());
+    }
   }
   if (g_stop_signal != 0) {
+    if (audio) {
+      audio.reset();
+      for (const std::string& file : dataset::EpisodeAudio::files_of(paths.audio_stem(seed))) {
+        fs::remove(file);
+      }
+    }
     return false;
   }
-  // The bag under its name first, then the row: a row always has its bag.
+  // The bag and the audio under their names first, then the row: a row always has its files.
   if (bag) {
     bag->finish();
+  }
+  if (audio) {
+    audio->finish();
   }
   const auto summary = batch::EpisodeSummary::of(paths.name, index, seed, episode.runner(),
                                                  episode.metrics(), seconds_since(episode_start));

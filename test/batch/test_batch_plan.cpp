@@ -132,7 +132,7 @@ TEST(BatchSettings, FilesOfEarlierVersionsStillRead) {
   const BatchSettings expected = example_settings();
   EXPECT_EQ(read.scenario_file, expected.scenario_file);
   EXPECT_EQ(read.plan.episodes, expected.plan.episodes);
-  EXPECT_TRUE(expected.differences(read).empty());
+  EXPECT_TRUE(expected.differences(read).empty());  // audio too: written before --audio was
 }
 
 std::string refusal(const BatchSettings& settings) {
@@ -164,13 +164,14 @@ TEST(BatchSettings, NameEveryDifferenceButTheEpisodeCount) {
   now.plan.first_seed = 5;
   now.plan.shard_index = 1;
   now.bags = true;
+  now.audio = true;
   now.config_digest = "0";
   EXPECT_EQ(there.differences(now),
             (std::vector<std::string>{
                 "config: the configuration files changed since (digest 1234567890abcdef there, "
                 "0 now)",
                 "--seed: first seed 7 there, 5 now", "--shard: 2/4 there, 1/4 now",
-                "--no-bags: no bags there, bags now"}));
+                "--no-bags: no bags there, bags now", "--audio: no audio there, audio now"}));
 }
 
 TEST(BatchSettings, BadFilesAreNamed) {

@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "ari_social_sim/audio/world_audio.hpp"
 #include "ari_social_sim/core/sim_timer.hpp"
 #include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/navigation/navigation_session.hpp"
@@ -248,6 +249,15 @@ class LiveChain {
       tracked_.push_back({id, person->body_id});
     }
     has_tracked_list_ = true;
+    // What scenario_node's HeardSpeech keeps of each voice's /humans/voices/<id>/speech.
+    for (const perception::PerceivedVoice& voice : frame_->voices) {
+      for (const perception::SpeechResult& result : voice.speech) {
+        const LiveSpeech speech = speech_msg(result, "en-GB", state_msg_.header);
+        if (!speech.final.empty()) {
+          transcripts_.push_back(speech.final);
+        }
+      }
+    }
   }
 
   // The persons tracked, each at their body frame in the map from tf (social_mpc_node).
@@ -345,6 +355,8 @@ class LiveChain {
         believed_groups_.believed_at(observations.world.time_s, identities_);
     observations.heard = std::move(heard_);
     heard_.clear();
+    observations.transcripts = std::move(transcripts_);
+    transcripts_.clear();
     observations.dialogue_end = dialogue_end_;
     runner_.update(observations, commands_);
   }
@@ -354,6 +366,7 @@ class LiveChain {
   std::unique_ptr<world::Simulation> world_;
   world::WorldSnapshot snapshot_;
   WorldState state_msg_;
+  std::vector<std::string> transcripts_;  // final transcripts since the script last ran
   tf2_ros::Buffer tf_;
   perception::PerceptionPipeline perception_;
   perception::RateGate perception_gate_;
@@ -519,6 +532,48 @@ TEST_P(LiveBatchEquivalence, SameWorldsFramesAndCommandsAtEveryStep) {
       engine.runner().outcome()->reason.c_str(), most.world, most.perception, most.commands);
   // The runs are long enough to matter: the script ran to its end, ARI moved.
   EXPECT_GT(commands, 50);
+}
+
+// Issue 30: the audio of a run is the same live and in batch. audio_node's WorldAudio follows the
+// live chain's /sim/world_state as received (from_msg); the batch tools' follows the engine's
+// snapshots. Every sample of every channel must be equal.
+TEST(LiveBatchAudio, AudioNodeHearsTheSamplesTheBatchToolsWrite) {
+  const scenario::Scenario scenario =
+      scenario::load_scenario_file(kSource + "/scenarios/group_discussion.yaml");
+  const engine::EpisodeConfig config = episode_config();
+  engine::Episode engine(scenario, 1, config);
+  LiveChain live(scenario, 1, config);
+  const std::vector<audio::Wall> walls = audio::walls_of(scenario.scene.world);
+  audio::WorldAudio batch_audio({}, walls, 1, std::make_shared<audio::SpeechSynthesizer>());
+  audio::WorldAudio node_audio({}, walls, 1, std::make_shared<audio::SpeechSynthesizer>());
+  size_t chunks = 0, differing_samples = 0;
+  double loudest = 0.0;
+  while (!engine.finished()) {
+    engine.step();
+    live.step();
+    batch_audio.observe(engine.snapshot());
+    node_audio.observe(from_msg(to_msg(live.snapshot(), kMapFrame)));
+    const std::vector<audio::ArrayChunk> batch = batch_audio.chunks_until(engine.snapshot().time_s);
+    const std::vector<audio::ArrayChunk> node = node_audio.chunks_until(live.snapshot().time_s);
+    ASSERT_EQ(batch.size(), node.size());
+    for (size_t i = 0; i < batch.size(); ++i, ++chunks) {
+      for (size_t c = 0; c < batch[i].channels.size(); ++c) {
+        for (size_t k = 0; k < batch[i].channels[c].size(); ++k) {
+          if (batch[i].channels[c][k] != node[i].channels[c][k] && differing_samples++ == 0) {
+            std::printf("first difference: chunk %zu channel %zu sample %zu at %.3f s: %d %d\n",
+                        chunks, c, k, engine.snapshot().time_s, batch[i].channels[c][k],
+                        node[i].channels[c][k]);
+          }
+          loudest = std::max(loudest, std::abs(double(batch[i].channels[c][k])));
+        }
+      }
+    }
+  }
+  std::printf("%zu chunks of 6 channels compared, %zu samples differ, loudest %.0f\n", chunks,
+              differing_samples, loudest);
+  EXPECT_GT(chunks, 400u);     // the whole run, about 30 s
+  EXPECT_GT(loudest, 3000.0);  // with voices in it, not only noise
+  EXPECT_EQ(differing_samples, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenarios, LiveBatchEquivalence,

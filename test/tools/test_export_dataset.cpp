@@ -133,9 +133,9 @@ std::set<std::string> image_names(const std::string& path) {
 
 // Checks an episode's audio files written with --audio, with sox (soxi) for the WAV's format and
 // numpy for its samples, and prints `channels C rate R seconds D segments S words W
-// worst_onset_ms O`: for each RTTM segment, the first 10 ms of its speaker's channel (ARI's
-// playback, 5; a person's processed channel, 0) whose RMS reaches a tenth of the segment's loudest,
-// against the segment's (and its first CTM word's) start.
+// worst_onset_ms O clipped K`: for each RTTM segment, the first 10 ms of its speaker's channel
+// (ARI's playback, 5; a person's processed channel, 0) whose RMS reaches a tenth of the segment's
+// loudest, against the segment's (and its first CTM word's) start; K samples at full scale.
 constexpr const char* kAudioCheckScript = R"PY(
 import subprocess, sys, wave
 import numpy as np
@@ -158,8 +158,9 @@ for segment in segments:
     energy = (windows ** 2).mean(axis=1)
     onset = a / rate + np.argmax(energy >= 0.01 * energy.max()) * 0.01  # RMS a tenth: -20 dB
     worst = max(worst, abs(onset - first_word))
-print("channels %d rate %d seconds %.2f segments %d words %d worst_onset_ms %.1f"
-      % (channels, rate, seconds, len(segments), len(words), 1000 * worst))
+clipped = int((np.abs(samples.astype(int)) >= 32767).sum())
+print("channels %d rate %d seconds %.2f segments %d words %d worst_onset_ms %.1f clipped %d"
+      % (channels, rate, seconds, len(segments), len(words), 1000 * worst, clipped))
 )PY";
 
 TEST(ExportDataset, BadOptionsExitWithTwoNamingTheOption) {
@@ -402,12 +403,15 @@ TEST(ExportDataset, AudioIsAWavSoxReadsWithLabelsOnTheWorldsTimesTheSameEachRun)
   const ProgramRun check = run_program("/usr/bin/python3", script + " " + stem);
   ASSERT_EQ(check.status, 0) << check.err;
   std::printf("%s", check.out.c_str());
-  int channels = 0, rate = 0, segments = 0, words = 0;
+  int channels = 0, rate = 0, segments = 0, words = 0, clipped = -1;
   double seconds = 0.0, worst_onset_ms = 1e9;
-  ASSERT_EQ(std::sscanf(check.out.c_str(),
-                        "channels %d rate %d seconds %lf segments %d words %d worst_onset_ms %lf",
-                        &channels, &rate, &seconds, &segments, &words, &worst_onset_ms),
-            6);
+  ASSERT_EQ(
+      std::sscanf(
+          check.out.c_str(),
+          "channels %d rate %d seconds %lf segments %d words %d worst_onset_ms %lf clipped %d",
+          &channels, &rate, &seconds, &segments, &words, &worst_onset_ms, &clipped),
+      7);
+  EXPECT_EQ(clipped, 0);  // not even ARI's own voice, 0.4 m from the array
   EXPECT_EQ(channels, 6);
   EXPECT_EQ(rate, 16000);
   EXPECT_GT(seconds, 20.0);  // ARI walks back after the goodbyes

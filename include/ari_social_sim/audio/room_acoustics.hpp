@@ -20,7 +20,10 @@ struct RoomSettings {
   double floor_reflection{0.5};     // of the floor
   double reverb_level{0.12};        // the late tail's send, relative to the direct sound at 1 m
   double speech_level_dbfs{-26.0};  // a voice's level 1 m away, in dB full scale
-  double noise_level_dbfs{-65.0};   // the diffuse background noise at every microphone
+  // ARI's voice 1 m from its loudspeaker: set below a person's so that the array, 0.4 m from the
+  // loudspeaker, does not clip on it (at -26 dBFS its peaks did).
+  double ari_speech_level_dbfs{-34.0};
+  double noise_level_dbfs{-65.0};  // the diffuse background noise at every microphone
 
   template <class V>
   void visit(V& v) {
@@ -32,6 +35,10 @@ struct RoomSettings {
     v.field("reverb_level", reverb_level,
             "the late tail's level relative to the direct sound at 1 m", core::Bounds{0.0, 1.0});
     v.field("speech_level_dbfs", speech_level_dbfs, "a voice's RMS level 1 m away (dB full scale)",
+            core::Bounds{-80.0, 0.0});
+    v.field("ari_speech_level_dbfs", ari_speech_level_dbfs,
+            "ARI's voice RMS level 1 m from its loudspeaker (dB full scale); the array is 0.4 m "
+            "from it",
             core::Bounds{-80.0, 0.0});
     v.field("noise_level_dbfs", noise_level_dbfs,
             "diffuse background noise at each microphone (dB full scale)",

@@ -85,8 +85,8 @@ std::string seed_option_range();
 
 /// What a batch's rows were made with, kept beside its CSV (`NAME.settings.yaml`), so that a
 /// resumed run (`run_episodes --resume`) adds only rows made the same way: the same scenario and
-/// configuration files (by digest), seeds, shard and bags. The episode count is the one asked for
-/// last: a resumed run may extend it.
+/// configuration files (by digest), seeds, shard, bags and audio. The episode count is the one
+/// asked for last: a resumed run may extend it.
 struct BatchSettings {
   std::string scenario;
   std::string scenario_file;
@@ -94,6 +94,7 @@ struct BatchSettings {
   std::string config_digest;
   BatchPlan plan;
   bool bags{true};
+  bool audio{false};
 
   template <class V>
   void visit(V& v) {
@@ -107,6 +108,7 @@ struct BatchSettings {
             "digest_files of the configuration files the episodes read");
     plan.visit(v);  // beside the other keys, not a section of its own
     v.field(core::required("bags"), bags, "a rosbag per episode (false: --no-bags)");
+    v.field("audio", audio, "the microphone array's audio and its labels per episode (--audio)");
   }
 
   /// Throws core::ConfigError naming the field outside what visit allows (an empty string too),
