@@ -45,6 +45,21 @@ TEST(SpeechSynthesizer, EachWordHasItsStartAndTheRateSetsTheDuration) {
   EXPECT_LT(seconds(*slow) / seconds(*fast), 2.5);
 }
 
+TEST(SpeechSynthesizer, AnUnknownVoiceIsAnErrorNamingIt) {
+  SpeechSynthesizer synthesizer;
+  try {
+    synthesizer.synthesize("where is the toilet", Voice{"nosuchvoice", 50, 50, 150});
+    FAIL() << "an unknown voice spoke";
+  } catch (const core::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "variant: expected one of m1..m7, f1..f5 or klatt, got 'nosuchvoice'"),
+              std::string::npos)
+        << e.what();
+  }
+  // The synthesiser goes on with the voices it has.
+  EXPECT_GT(synthesizer.synthesize("where is the toilet", voice_at(150))->samples.size(), 1000u);
+}
+
 TEST(SpeechSynthesizer, ControlCharactersAreRefusedAndLongTextIsCutAtAWord) {
   SpeechSynthesizer synthesizer;
   try {
