@@ -16,6 +16,7 @@ find_package(OpenCV REQUIRED COMPONENTS core)
 add_library(ari_audio
   src/audio/array_mixer.cpp
   src/audio/audio_run_config.cpp
+  src/audio/chunk_analysis.cpp
   src/audio/domain_grammar.cpp
   src/audio/late_reverb.cpp
   src/audio/resampler.cpp
@@ -78,6 +79,13 @@ endif()
 
 # asr_benchmark: pocketsphinx's word error rate on the array's channel 0 by distance, noise and a
 # second talker (docs/audio.md, "Speech recognition"); a program run by hand, not a test.
+# doa_benchmark: the localiser's direction error in the shipped scenes (docs/audio.md, "Direction
+# of arrival"); run by hand.
+add_executable(doa_benchmark bench/doa_benchmark.cpp)
+target_link_libraries(doa_benchmark ari_audio ari_engine)
+target_compile_definitions(doa_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+set_target_properties(doa_benchmark PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
+
 add_executable(asr_benchmark bench/asr_benchmark.cpp)
 target_link_libraries(asr_benchmark ari_audio)
 target_compile_definitions(asr_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

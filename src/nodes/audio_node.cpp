@@ -18,6 +18,7 @@
 #include "ari_social_sim/AudioData.h"
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/audio/audio_run_config.hpp"
+#include "ari_social_sim/audio/chunk_analysis.hpp"
 #include "ari_social_sim/audio/sound_localizer.hpp"
 #include "ari_social_sim/audio/world_audio.hpp"
 #include "ari_social_sim/world/scene.hpp"
@@ -29,9 +30,6 @@ namespace ari_social_sim::nodes {
 namespace {
 
 constexpr const char* kArrayFrame = "torso_mic_front_link";
-// A chunk is voice when its processed channel is this far above the room's noise (dB): the
-// array's own VAD decides on the signal, not on who the world says is talking.
-constexpr double kVoiceAboveNoiseDb = 12.0;
 
 AudioData audio_msg(const std::vector<int16_t>& samples) {
   AudioData msg;
@@ -42,14 +40,6 @@ AudioData audio_msg(const std::vector<int16_t>& samples) {
     msg.data[2 * i + 1] = static_cast<uint8_t>(bits >> 8);
   }
   return msg;
-}
-
-double rms_dbfs(const std::vector<int16_t>& samples) {
-  double sum = 0.0;
-  for (const int16_t s : samples) {
-    sum += double(s) * s;
-  }
-  return 10.0 * std::log10(sum / std::max<size_t>(samples.size(), 1) / (32768.0 * 32768.0) + 1e-20);
 }
 
 class AudioNode {
@@ -91,8 +81,7 @@ class AudioNode {
       channels_[c].publish(audio_msg(chunk.channels[c]));
     }
     raw_.publish(audio_msg(chunk.channels[0]));
-    const bool voice =
-        rms_dbfs(chunk.channels[0]) > run_.room.noise_level_dbfs + kVoiceAboveNoiseDb;
+    const bool voice = audio::voice_in(chunk, run_.room);
     if (!voice_published_ || *voice_published_ != voice) {
       std_msgs::Bool msg;
       msg.data = voice;
@@ -107,13 +96,8 @@ class AudioNode {
   // The direction of the chunk's loudest source, in the array's frame, as respeaker_ros gives it:
   // whole degrees on /audio/sound_direction and a pose whose yaw points at it.
   void publish_direction(const audio::ArrayChunk& chunk) {
-    std::array<std::vector<float>, 4> microphones;
-    for (size_t m = 0; m < 4; ++m) {
-      for (const int16_t s : chunk.channels[1 + m]) {
-        microphones[m].push_back(s / 32768.0f);
-      }
-    }
-    const std::optional<audio::SoundDirection> found = audio::locate_sound(microphones);
+    const std::optional<audio::SoundDirection> found =
+        audio::locate_sound(audio::raw_microphones(chunk));
     if (!found) {
       return;
     }
