@@ -50,7 +50,9 @@ void Navigator::start(const NavigationTarget& target, const PerceivedScene& scen
   geodesic_ = std::move(std::get<std::unique_ptr<GeodesicField>>(field));
   target_ = target;
   target_members_.clear();
+  target_person_seen_at_.reset();
   follow_relabelled_group(scene);
+  follow_relabelled_person(scene);
   state_ = NavigationState::kActive;
   target_seen_s_ = time_s;
   aligning_ = false;
@@ -86,6 +88,38 @@ void Navigator::follow_relabelled_group(const PerceivedScene& scene) {
   if (best != nullptr) {
     target->group_id = best->id;
     target_members_ = best->members;
+  }
+}
+
+void Navigator::follow_relabelled_person(const PerceivedScene& scene) {
+  std::string* person_id = nullptr;
+  if (auto* person = std::get_if<PersonTarget>(&*target_)) {
+    person_id = &person->person_id;
+  } else if (auto* member = std::get_if<GroupOfPersonTarget>(&*target_)) {
+    person_id = &member->person_id;
+  }
+  if (person_id == nullptr) {
+    return;
+  }
+  if (const PersonEstimate* person = scene.find_person(*person_id)) {
+    target_person_seen_at_ = person->position;
+    return;
+  }
+  if (!target_person_seen_at_) {
+    return;
+  }
+  const PersonEstimate* nearest = nullptr;
+  double nearest_m = kReidentifiedWithinM;
+  for (const PersonEstimate& person : scene.people) {
+    const double distance_m = (person.position - *target_person_seen_at_).norm();
+    if (distance_m <= nearest_m) {
+      nearest = &person;
+      nearest_m = distance_m;
+    }
+  }
+  if (nearest != nullptr) {
+    *person_id = nearest->id;
+    target_person_seen_at_ = nearest->position;
   }
 }
 
@@ -238,6 +272,7 @@ NavigatorStep Navigator::update(double time_s, const RobotObservation& robot,
 
   // Resolve the target into a goal; keep the last goal while the target is briefly unseen.
   follow_relabelled_group(scene);
+  follow_relabelled_person(scene);
   const std::optional<GoalFailure> failure = follow_target(time_s, robot.pose, scene);
   const bool target_visible = !failure;
   if (failure) {

@@ -375,5 +375,39 @@ TEST(Navigator, FollowsATargetGroupThatPerceptionRelabels) {
   EXPECT_NE(step.reason.find("group g2 lost for 5.5 s"), std::string::npos) << step.reason;
 }
 
+TEST(Navigator, FollowsATargetPersonThatThePersonManagerRenames) {
+  PerceivedScene scene;
+  for (int i = 0; i < 3; ++i) {
+    const double a = M_PI / 2 + 2.0 * M_PI * i / 3.0;
+    scene.people.push_back(test::person("p" + std::to_string(i), 5.0 + 0.64 * std::cos(a),
+                                        5.0 + 0.64 * std::sin(a), a + M_PI));
+  }
+  scene.groups.push_back(estimate_group("g1", scene.people, 0.64));
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
+  navigator.start(GroupOfPersonTarget{"p1"}, scene, robot, 0.0);
+  // The person manager now calls p1 anon_x, 0.1 m from where p1 stood: for 10 s, twice the
+  // lost-target timeout, ARI keeps joining their group under the new id.
+  PerceivedScene renamed = scene;
+  renamed.people[1].id = "anon_x";
+  renamed.people[1].position += Eigen::Vector2d(0.1, 0.0);
+  renamed.groups = {estimate_group("g1", renamed.people, 0.64)};
+  for (double t = 0.5; t <= 10.0; t += 0.5) {
+    ASSERT_EQ(navigator.update(t, robot, renamed).state, NavigationState::kActive) << t;
+  }
+  EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "anon_x");
+  // Gone, and no one within 0.5 m of where they were (p0 and p2 are 1.1 m away): ARI gives up
+  // after the timeout.
+  PerceivedScene gone = scene;
+  gone.people.erase(gone.people.begin() + 1);
+  gone.groups = {estimate_group("g1", gone.people, 0.64)};
+  NavigatorStep step;
+  for (double t = 10.5; t <= 16.0 && step.state != NavigationState::kAborted; t += 0.5) {
+    step = navigator.update(t, robot, gone);
+  }
+  EXPECT_EQ(step.state, NavigationState::kAborted);
+  EXPECT_NE(step.reason.find("person anon_x is not tracked"), std::string::npos) << step.reason;
+}
+
 }  // namespace
 }  // namespace ari_social_sim::navigation

@@ -74,6 +74,12 @@ class Navigator : public GoalController {
   /// the most of its last members (at least two): group detection gives a group a new id when
   /// its membership changes for a moment (a member hidden from ARI), and the group is still there.
   void follow_relabelled_group(const PerceivedScene& scene);
+  /// A person target (or the person whose group is joined) whose id perception no longer tracks
+  /// continues as the tracked person nearest to where the target was last seen, within
+  /// kReidentifiedWithinM: a person manager gives a person a new id when it merges or restarts
+  /// their tracks (hri_person_manager's anonymous persons), and the person is still there.
+  void follow_relabelled_person(const PerceivedScene& scene);
+  static constexpr double kReidentifiedWithinM = 0.5;
   /// True when base_footprint at `robot` is within goal_tolerance of the goal, and, for a join,
   /// at most join_shortfall_tolerance short of it along the goal's heading (toward the centre).
   bool at_goal_position(const core::Pose2& robot) const;
@@ -95,9 +101,10 @@ class Navigator : public GoalController {
   std::unique_ptr<GeodesicField> geodesic_;
   std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
-  std::vector<std::string> target_members_;  // of a group target, when last reported
-  bool aligning_{false};                     // at the goal position, turning to the goal heading
-  std::optional<double> jump_since_s_;       // since when the goal finder wants a distant new goal
+  std::vector<std::string> target_members_;               // of a group target, when last reported
+  std::optional<Eigen::Vector2d> target_person_seen_at_;  // of a person's target, when last seen
+  bool aligning_{false};                // at the goal position, turning to the goal heading
+  std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
   double best_distance_m_{0.0};
   double best_distance_time_s_{0.0};
   // Progress that restarts patience; once personal spaces have given way it only counts with
