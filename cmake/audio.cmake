@@ -75,6 +75,7 @@ if(benchmark_FOUND)
   ari_add_benchmark(bench_audio SOURCES bench/bench_audio.cpp LIBRARIES ari_audio)
   # The scenes are the world tests' own (test/world/scene_builders.hpp).
   target_include_directories(bench_audio PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+  target_compile_definitions(bench_audio PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
 
 # asr_benchmark: pocketsphinx's word error rate on the array's channel 0 by distance, noise and a
