@@ -19,7 +19,6 @@
 #include "ari_social_sim/audio/speech_synthesizer.hpp"
 #include "ari_social_sim/audio/timed_speech.hpp"
 #include "ari_social_sim/audio/world_audio.hpp"
-#include "ari_social_sim/dialogue/nlg.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
 
 namespace {
@@ -103,10 +102,8 @@ double stream_wer(const std::vector<std::string>& sentences, const std::vector<i
 int main(int argc, char** argv) {
   const size_t per_condition = argc > 1 ? std::stoul(argv[1]) : 8;
   const std::string config = std::string(ARI_SOURCE_DIR) + "/config/dialogue/";
-  const dialogue::Nlg nlg(dialogue::NlgTemplates::load(config + "nlg_templates.yaml"), nullptr,
-                          dialogue::NlgMode::kTemplate);
   const std::vector<std::string> all =
-      audio::domain_sentences(nlg, dialogue::Domain::load(config + "hospital_domain.yaml"));
+      audio::read_domain_sentences(config + "nlg_templates.yaml", config + "hospital_domain.yaml");
   size_t left_out = 0;
   const std::set<std::string> known =
       audio::dictionary_words(std::string(audio::kPocketsphinxModelDir) + "/cmudict-en-us.dict");

@@ -14,7 +14,6 @@
 #include "ari_social_sim/audio/domain_grammar.hpp"
 #include "ari_social_sim/audio/speech_recognizer.hpp"
 #include "ari_social_sim/audio/world_audio.hpp"
-#include "ari_social_sim/dialogue/nlg.hpp"
 #include "ari_social_sim/world/simulation.hpp"
 #include "scene_builders.hpp"
 
@@ -94,16 +93,12 @@ void BM_RecognizerOnChannelZero(benchmark::State& state) {
     }
   });
   const std::string config = std::string(ARI_SOURCE_DIR) + "/config/dialogue/";
-  const dialogue::Nlg nlg(dialogue::NlgTemplates::load(config + "nlg_templates.yaml"), nullptr,
-                          dialogue::NlgMode::kTemplate);
   size_t left_out = 0;
   audio::SpeechRecognizer recognizer(
       {audio::kPocketsphinxModelDir,
-       audio::arpa_of(
-           audio::domain_sentences(nlg, dialogue::Domain::load(config + "hospital_domain.yaml")),
-           audio::dictionary_words(std::string(audio::kPocketsphinxModelDir) +
-                                   "/cmudict-en-us.dict"),
-           &left_out)});
+       audio::language_model_for(audio::read_domain_sentences(config + "nlg_templates.yaml",
+                                                              config + "hospital_domain.yaml"),
+                                 audio::kPocketsphinxModelDir, &left_out)});
   for (auto _ : state) {
     for (size_t i = 0; i + audio::kChunkSamples <= channel.size(); i += audio::kChunkSamples) {
       benchmark::DoNotOptimize(recognizer.process(channel.data() + i, audio::kChunkSamples));

@@ -214,4 +214,16 @@ std::string arpa_of(const std::vector<std::string>& sentences,
   return counts.arpa();
 }
 
+std::vector<std::string> read_domain_sentences(const std::string& templates_file,
+                                               const std::string& domain_file) {
+  const dialogue::Nlg nlg(dialogue::NlgTemplates::load(templates_file), nullptr,
+                          dialogue::NlgMode::kTemplate);
+  return domain_sentences(nlg, dialogue::Domain::load(domain_file));
+}
+
+std::string language_model_for(const std::vector<std::string>& sentences,
+                               const std::string& model_dir, size_t* left_out) {
+  return arpa_of(sentences, dictionary_words(model_dir + "/cmudict-en-us.dict"), left_out);
+}
+
 }  // namespace ari_social_sim::audio

@@ -31,6 +31,19 @@ int rate_of(const world::SpeechSnapshot& speech) {
   return std::clamp(static_cast<int>(std::lround(speech.words_per_minute)), 80, 450);
 }
 
+Eigen::Vector3d mouth_of(const world::HumanSnapshot& human) {
+  const double mouth = human.age_years < 14.0 ? kChildMouthHeightM : kAdultMouthHeightM;
+  return {human.pose.position.x(), human.pose.position.y(), mouth};
+}
+
+Eigen::Isometry3d array_pose_of(const world::AriSnapshot& ari) {
+  Eigen::Isometry3d X_footprint_array = Eigen::Isometry3d::Identity();
+  X_footprint_array.translation() =
+      Eigen::Vector3d(model::kMicrophoneInFootprint.x_m, model::kMicrophoneInFootprint.y_m,
+                      model::kMicrophoneInFootprint.z_m);
+  return planar_pose(ari.pose) * X_footprint_array;
+}
+
 }  // namespace
 
 std::vector<Wall> walls_of(const model::WorldDescription& world) {
@@ -77,23 +90,6 @@ void WorldAudio::place(uint64_t id, const world::SpeechSnapshot& speech, const V
   auto fitted = std::make_shared<const std::vector<float>>(fit_to_onsets(*synthesis, onsets));
   mixer_.add({id, fitted, sample_of(speech.start_s), from_ari});
 }
-
-namespace {
-
-Eigen::Vector3d mouth_of(const world::HumanSnapshot& human) {
-  const double mouth = human.age_years < 14.0 ? kChildMouthHeightM : kAdultMouthHeightM;
-  return {human.pose.position.x(), human.pose.position.y(), mouth};
-}
-
-Eigen::Isometry3d array_pose_of(const world::AriSnapshot& ari) {
-  Eigen::Isometry3d X_footprint_array = Eigen::Isometry3d::Identity();
-  X_footprint_array.translation() =
-      Eigen::Vector3d(model::kMicrophoneInFootprint.x_m, model::kMicrophoneInFootprint.y_m,
-                      model::kMicrophoneInFootprint.z_m);
-  return planar_pose(ari.pose) * X_footprint_array;
-}
-
-}  // namespace
 
 std::vector<SpeakerDirection> speaker_directions(const world::WorldSnapshot& snapshot) {
   std::vector<SpeakerDirection> directions;

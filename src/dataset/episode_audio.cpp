@@ -155,6 +155,10 @@ void EpisodeAudio::finish() {
   }
 }
 
+std::string EpisodeAudio::stem_of(const std::string& dir, const std::string& name, uint64_t seed) {
+  return dir + "/audio/" + name + "_" + std::to_string(seed);
+}
+
 std::vector<std::string> EpisodeAudio::files_of(const std::string& stem) {
   return {stem + ".wav", stem + ".rttm", stem + ".ctm", stem + "_directions.csv"};
 }

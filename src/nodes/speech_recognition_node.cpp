@@ -49,12 +49,9 @@ audio::RecognizerSettings recognizer_settings(const audio::SpeechRecognitionRunC
   if (run.language_model == audio::SpeechRecognitionRunConfig::LanguageModel::kGeneral) {
     return settings;
   }
-  const dialogue::Nlg nlg(dialogue::NlgTemplates::load(
-                              package_file(run.templates, "config/dialogue/nlg_templates.yaml")),
-                          nullptr, dialogue::NlgMode::kTemplate);
-  std::vector<std::string> sentences = audio::domain_sentences(
-      nlg,
-      dialogue::Domain::load(package_file(run.domain, "config/dialogue/hospital_domain.yaml")));
+  std::vector<std::string> sentences = audio::read_domain_sentences(
+      package_file(run.templates, "config/dialogue/nlg_templates.yaml"),
+      package_file(run.domain, "config/dialogue/hospital_domain.yaml"));
   if (!run.scenario.empty()) {
     for (const std::string& line :
          scenario::HeardLines(scenario::load_scenario_file(run.scenario).script).texts()) {
@@ -62,8 +59,8 @@ audio::RecognizerSettings recognizer_settings(const audio::SpeechRecognitionRunC
     }
   }
   size_t left_out = 0;
-  settings.language_model_arpa = audio::arpa_of(
-      sentences, audio::dictionary_words(settings.model_dir + "/cmudict-en-us.dict"), &left_out);
+  settings.language_model_arpa =
+      audio::language_model_for(sentences, settings.model_dir, &left_out);
   ROS_INFO(
       "speech_recognition_node: language model of %zu sentences (%zu with a word pocketsphinx "
       "cannot pronounce left out)",

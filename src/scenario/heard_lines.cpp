@@ -28,18 +28,12 @@ double cosine(const std::vector<std::string>& a, const std::vector<std::string>&
 }  // namespace
 
 HeardLines::HeardLines(const Script& script) {
-  auto note = [this](const Action& action) {
+  script.for_each_action([this](const Action& action) {
     const auto* say = std::get_if<SayAction>(&action);
     if (say != nullptr && !say->speaker.is_ari()) {
       lines_.push_back({word_set(say->text), say->text, say->act});
     }
-  };
-  for (const State& state : script.states) {
-    std::for_each(state.on_enter.begin(), state.on_enter.end(), note);
-    for (const Transition& transition : state.transitions) {
-      std::for_each(transition.actions.begin(), transition.actions.end(), note);
-    }
-  }
+  });
 }
 
 std::optional<std::string> HeardLines::act_of(const std::string& transcript) const {

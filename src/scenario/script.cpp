@@ -1,5 +1,6 @@
 #include "ari_social_sim/scenario/script.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace ari_social_sim::scenario {
@@ -37,16 +38,20 @@ bool act_matches(const std::string& pattern, const std::string& act) {
   return act == pattern;
 }
 
+void Script::for_each_action(const std::function<void(const Action&)>& visit) const {
+  for (const State& state : states) {
+    std::for_each(state.on_enter.begin(), state.on_enter.end(), visit);
+    for (const Transition& transition : state.transitions) {
+      std::for_each(transition.actions.begin(), transition.actions.end(), visit);
+    }
+  }
+}
+
 ScriptInterfaces Script::interfaces() const {
   ScriptInterfaces uses;
+  for_each_action([&uses](const Action& action) { note(action, uses); });
   for (const State& state : states) {
-    for (const Action& action : state.on_enter) {
-      note(action, uses);
-    }
     for (const Transition& transition : state.transitions) {
-      for (const Action& action : transition.actions) {
-        note(action, uses);
-      }
       for (const Condition& condition : transition.when) {
         uses.perceived_groups =
             uses.perceived_groups || std::holds_alternative<PerceivedGroupCondition>(condition);

@@ -182,10 +182,6 @@ struct OutputPaths {
   // The labels of the finished episodes until `annotations` is written.
   std::string progress() const { return annotations + ".active"; }
   std::string image_dir(const std::string& camera) const { return "images/" + camera; }
-  // An episode's audio files without their endings (dataset::EpisodeAudio).
-  std::string audio_stem(uint64_t seed) const {
-    return dir + "/audio/" + scenario + "_" + std::to_string(seed);
-  }
   // Relative to dir, as the COCO file names it.
   std::string image(const std::string& camera, uint64_t seed, uint64_t frame) const {
     return image_dir(camera) + "/" + scenario + "_" + std::to_string(seed) + "_" +
@@ -439,7 +435,8 @@ bool export_episode(const Export& run, rendering::CameraRig& rig, dataset::CocoD
   uint64_t ordinal = 0;                                   // images of the episode, for the ids
   std::unique_ptr<dataset::EpisodeAudio> audio;
   if (run.options.audio) {
-    const std::string stem = run.paths.audio_stem(seed);
+    const std::string stem =
+        dataset::EpisodeAudio::stem_of(run.paths.dir, run.paths.scenario, seed);
     const std::vector<std::string> files = dataset::EpisodeAudio::files_of(stem);
     written.insert(written.end(), files.begin(), files.end());  // dropped with the episode
     audio = std::make_unique<dataset::EpisodeAudio>(stem, run.scenario.scene, seed,

@@ -144,10 +144,6 @@ struct OutputPaths {
 
   std::string csv() const { return dir + "/" + stem + ".csv"; }
   std::string settings() const { return dir + "/" + stem + ".settings.yaml"; }
-  // An episode's audio files without their endings (dataset::EpisodeAudio).
-  std::string audio_stem(uint64_t seed) const {
-    return dir + "/audio/" + name + "_" + std::to_string(seed);
-  }
   std::string bag(uint64_t seed) const {
     return dir + "/" + name + "_" + std::to_string(seed) + ".bag";
   }
@@ -436,8 +432,9 @@ bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>
   }
   std::unique_ptr<dataset::EpisodeAudio> audio;
   if (batch.options.audio) {
-    audio = std::make_unique<dataset::EpisodeAudio>(paths.audio_stem(seed), batch.scenario.scene,
-                                                    seed, audio::RoomSettings{}, batch.synthesizer);
+    audio = std::make_unique<dataset::EpisodeAudio>(
+        dataset::EpisodeAudio::stem_of(paths.dir, paths.name, seed), batch.scenario.scene, seed,
+        audio::RoomSettings{}, batch.synthesizer);
   }
   while (!episode.finished() && g_stop_signal == 0) {
     episode.step();
@@ -451,7 +448,8 @@ bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>
   if (g_stop_signal != 0) {
     if (audio) {
       audio.reset();
-      for (const std::string& file : dataset::EpisodeAudio::files_of(paths.audio_stem(seed))) {
+      for (const std::string& file : dataset::EpisodeAudio::files_of(
+               dataset::EpisodeAudio::stem_of(paths.dir, paths.name, seed))) {
         fs::remove(file);
       }
     }

@@ -4,7 +4,6 @@
 #include "ari_social_sim/audio/speech_recognizer.hpp"
 #include "ari_social_sim/audio/speech_synthesizer.hpp"
 #include "ari_social_sim/audio/timed_speech.hpp"
-#include "ari_social_sim/dialogue/nlg.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
 #include "audio_scenes.hpp"
 
@@ -14,9 +13,8 @@ namespace {
 const std::string kDialogueConfig = std::string(ARI_SOURCE_DIR) + "/config/dialogue/";
 
 std::vector<std::string> shipped_domain_sentences() {
-  const dialogue::Nlg nlg(dialogue::NlgTemplates::load(kDialogueConfig + "nlg_templates.yaml"),
-                          nullptr, dialogue::NlgMode::kTemplate);
-  return domain_sentences(nlg, dialogue::Domain::load(kDialogueConfig + "hospital_domain.yaml"));
+  return read_domain_sentences(kDialogueConfig + "nlg_templates.yaml",
+                               kDialogueConfig + "hospital_domain.yaml");
 }
 
 TEST(WordErrorRate, CountsSubstitutionsInsertionsAndDeletions) {
@@ -30,8 +28,7 @@ TEST(WordErrorRate, CountsSubstitutionsInsertionsAndDeletions) {
 TEST(DomainLanguageModel, HoldsTheSentencesOfTheDialoguesPeople) {
   const std::vector<std::string> sentences = shipped_domain_sentences();
   size_t left_out = 0;
-  arpa_of(sentences, dictionary_words(std::string(kPocketsphinxModelDir) + "/cmudict-en-us.dict"),
-          &left_out);
+  language_model_for(sentences, kPocketsphinxModelDir, &left_out);
   std::printf("%zu domain sentences, %zu with a word outside cmudict left out\n", sentences.size(),
               left_out);
   EXPECT_GT(sentences.size(), 100u);
@@ -47,9 +44,7 @@ TEST(SpeechRecognizer, TheFirstUtteranceOfAStreamIsRecognised) {
   std::vector<std::string> sentences = shipped_domain_sentences();
   sentences.insert(sentences.end(), 100, question);  // as a scenario's line weighs in the node
   size_t left_out = 0;
-  const std::string model = arpa_of(
-      sentences, dictionary_words(std::string(kPocketsphinxModelDir) + "/cmudict-en-us.dict"),
-      &left_out);
+  const std::string model = language_model_for(sentences, kPocketsphinxModelDir, &left_out);
   SpeechSynthesizer synthesizer;
   double total_error = 0.0;
   for (const Voice& voice :

@@ -376,18 +376,12 @@ TEST(Navigator, FollowsATargetGroupThatPerceptionRelabels) {
 }
 
 TEST(Navigator, FollowsATargetPersonThatThePersonManagerRenames) {
-  PerceivedScene scene;
-  for (int i = 0; i < 3; ++i) {
-    const double a = M_PI / 2 + 2.0 * M_PI * i / 3.0;
-    scene.people.push_back(test::person("p" + std::to_string(i), 5.0 + 0.64 * std::cos(a),
-                                        5.0 + 0.64 * std::sin(a), a + M_PI));
-  }
-  scene.groups.push_back(estimate_group("g1", scene.people, 0.64));
+  const PerceivedScene scene = group_of_three(Eigen::Vector2d::Zero());
   Navigator navigator(NavigationConfig{}, test::room_map(8.0));
   const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
-  navigator.start(GroupOfPersonTarget{"p1"}, scene, robot, 0.0);
-  // The person manager now calls p1 anon_x, 0.1 m from where p1 stood: for 10 s, twice the
-  // lost-target timeout, ARI keeps joining their group under the new id.
+  navigator.start(GroupOfPersonTarget{"human11"}, scene, robot, 0.0);
+  // The person manager now calls human11 anon_x, 0.1 m from where human11 stood: for 10 s, twice
+  // the lost-target timeout, ARI keeps joining their group under the new id.
   PerceivedScene renamed = scene;
   renamed.people[1].id = "anon_x";
   renamed.people[1].position += Eigen::Vector2d(0.1, 0.0);
@@ -396,8 +390,8 @@ TEST(Navigator, FollowsATargetPersonThatThePersonManagerRenames) {
     ASSERT_EQ(navigator.update(t, robot, renamed).state, NavigationState::kActive) << t;
   }
   EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "anon_x");
-  // Gone, and no one within 0.5 m of where they were (p0 and p2 are 1.1 m away): ARI gives up
-  // after the timeout.
+  // Gone, and no one within 0.5 m of where they were (the two others are 1.1 m away): ARI gives
+  // up after the timeout.
   PerceivedScene gone = scene;
   gone.people.erase(gone.people.begin() + 1);
   gone.groups = {estimate_group("g1", gone.people, 0.64)};

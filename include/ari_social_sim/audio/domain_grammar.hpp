@@ -15,6 +15,11 @@ namespace ari_social_sim::audio {
 /// lower case, without punctuation, each once, sorted.
 std::vector<std::string> domain_sentences(const dialogue::Nlg& nlg, const dialogue::Domain& domain);
 
+/// domain_sentences of the template NLG read from `templates_file` (NlgTemplates) over the domain
+/// read from `domain_file`; throws core::ConfigError naming a file that does not load.
+std::vector<std::string> read_domain_sentences(const std::string& templates_file,
+                                               const std::string& domain_file);
+
 /// The words of a pronunciation dictionary (cmudict's format: a word, then its phones; variants
 /// as word(2) are the same word).
 std::set<std::string> dictionary_words(const std::string& dictionary_path);
@@ -26,6 +31,11 @@ std::set<std::string> dictionary_words(const std::string& dictionary_path);
 /// time and worse: pocketsphinx prunes its large finite-state search.)
 std::string arpa_of(const std::vector<std::string>& sentences,
                     const std::set<std::string>& known_words, size_t* left_out);
+
+/// arpa_of `sentences` against the dictionary of the pocketsphinx model in `model_dir`
+/// (cmudict-en-us.dict, as RecognizerSettings::model_dir holds it).
+std::string language_model_for(const std::vector<std::string>& sentences,
+                               const std::string& model_dir, size_t* left_out);
 
 /// `text` as the recogniser writes it: lower case, words of letters, digits and apostrophes.
 std::string recognizer_words(const std::string& text);

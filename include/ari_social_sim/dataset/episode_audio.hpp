@@ -44,6 +44,9 @@ class EpisodeAudio {
   /// Writes the labels and closes the files, the audio up to the last snapshot's time.
   void finish();
 
+  /// The stem of episode `seed` of scenario `name` in a batch tool's output `dir`:
+  /// DIR/audio/NAME_SEED.
+  static std::string stem_of(const std::string& dir, const std::string& name, uint64_t seed);
   /// The files this writes, STEM.wav first.
   static std::vector<std::string> files_of(const std::string& stem);
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <optional>
 #include <string>
 #include <variant>
@@ -196,6 +197,9 @@ struct Script {
   /// Index of the state with this name; throws std::out_of_range when there is none.
   size_t state_index(const std::string& name) const;
   ScriptInterfaces interfaces() const;
+  /// Calls `visit` with every action of the script: each state's entry actions, then its
+  /// transitions' actions, in the order written.
+  void for_each_action(const std::function<void(const Action&)>& visit) const;
 };
 
 }  // namespace ari_social_sim::scenario

@@ -17,15 +17,15 @@ struct SpeechRecord {
   bool interrupted{false};
 };
 
+/// The words of an utterance as the world says them, one at a time: runs of non-whitespace.
+std::vector<std::string> spoken_words(const std::string& content);
+
 /// D6.4 §3.3.3: plays an utterance word by word at a words-per-minute rate and keeps the history of
 /// acts with their start and end times: the last kHistoryLength of them, so that a speaker who
 /// talks for hours does not grow without bound (only the previous act is published). Word i is
 /// current during [start + i * 60 / wpm, start + (i + 1) * 60 / wpm); the act ends at the first
 /// step at or after start + n * 60 / wpm, so an n-word act lasts n * 60 / wpm plus at most one
 /// step.
-/// The words of an utterance as the world says them, one at a time: runs of non-whitespace.
-std::vector<std::string> spoken_words(const std::string& content);
-
 class SpeechGenerator : public Component {
  public:
   static constexpr size_t kHistoryLength = 32;
