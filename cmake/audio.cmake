@@ -41,6 +41,7 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES
       test/audio/test_array_mixer.cpp
       test/audio/test_sound_localizer.cpp
+      test/audio/test_speech_recognition_run_config.cpp
       test/audio/test_speech_recognizer.cpp
       test/audio/test_speech_synthesizer.cpp
       test/audio/test_voice.cpp
