@@ -96,7 +96,9 @@ class WorldNode {
     paused_ = config_.start_paused;
 
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10);
+    // Latched: a node that comes up while the world is paused (by /sim/pause, a debugger or a
+    // test) gets the last state at once instead of waiting for the next step.
+    state_pub_ = nh_.advertise<WorldState>("/sim/world_state", 10, /*latch=*/true);
     map_pub_ = nh_.advertise<nav_msgs::OccupancyGrid>("/map", 1, /*latch=*/true);
     marker_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("/sim/markers", 1);
     diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);

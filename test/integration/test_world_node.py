@@ -216,6 +216,10 @@ class WorldNodeContract(unittest.TestCase):
         self.assertTrue(stepped.success, stepped.message)
         self.assertAlmostEqual(stepped.sim_time, before + 10 * STEP_S, places=6)
         self.clock.wait(lambda m: abs(m.clock.to_sec() - stepped.sim_time) < 1e-6)
+        # A node that comes up while the world is paused gets the last state (latched): a dialogue
+        # node started late in CI once waited for a state that a paused world never sent.
+        late = rospy.wait_for_message("/sim/world_state", WorldState, timeout=10)
+        self.assertAlmostEqual(late.header.stamp.to_sec(), stepped.sim_time, places=6)
 
     def test_06_cmd_vel_drives_ari(self):
         pub = rospy.Publisher("/mobile_base_controller/cmd_vel", Twist, queue_size=1)
