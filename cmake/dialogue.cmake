@@ -25,7 +25,9 @@ add_library(ari_dialogue
   src/dialogue/rule_policy.cpp
   src/dialogue/dialogue_runner.cpp
   src/dialogue/json_lines.cpp
+  src/dialogue/exemplar_index.cpp
   src/dialogue/robot_nlu.cpp
+  src/dialogue/human_nlu.cpp
   src/dialogue/live_dialogue.cpp
   src/dialogue/dialogue_run_config.cpp
   src/dialogue/playback_stage.cpp
@@ -79,6 +81,7 @@ if(CATKIN_ENABLE_TESTING)
       test/dialogue/test_dialogue_env.cpp
       test/dialogue/test_dialogue_runner.cpp
       test/dialogue/test_robot_nlu.cpp
+      test/dialogue/test_human_nlu.cpp
       test/dialogue/test_live_dialogue.cpp
       test/dialogue/test_dialogue_run_config.cpp
       test/dialogue/test_speech_playback.cpp

@@ -1,11 +1,11 @@
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
 #include "ari_social_sim/dialogue/dialogue_act.hpp"
 #include "ari_social_sim/dialogue/domain.hpp"
+#include "ari_social_sim/dialogue/exemplar_index.hpp"
 #include "ari_social_sim/dialogue/mpgt_corpus.hpp"
 #include "ari_social_sim/dialogue/nlg.hpp"
 
@@ -34,34 +34,14 @@ class RobotNlu {
   DialogueAct in_domain_form(const DialogueAct& act) const;
 
   /// Number of exemplars (for tests and logs).
-  size_t exemplar_count() const { return exemplars_.size(); }
+  size_t exemplar_count() const { return index_.size(); }
 
  private:
-  struct Exemplar {
-    std::map<int, double> weights;  ///< word id -> TF-IDF weight, L2-normalised
-    std::vector<DialogueAct> acts;
-  };
-  struct Match {
-    double similarity{0.0};
-    const Exemplar* exemplar{nullptr};
-  };
-
   void add_exemplar(const std::string& text, const std::vector<DialogueAct>& acts);
-  void weigh_exemplars();
-  std::map<int, double> weigh(const std::vector<std::string>& words) const;
-  Match best_match(const std::string& sentence) const;
 
   const Domain* domain_;
   double min_similarity_;
-  std::map<std::string, int> word_ids_;
-  std::vector<double> idf_;
-  std::vector<std::vector<std::string>> exemplar_words_;
-  std::vector<Exemplar> exemplars_;
+  ExemplarIndex index_;
 };
-
-/// Lower-case words of `text` without punctuation (apostrophes kept: "there's").
-std::vector<std::string> normalised_words(const std::string& text);
-/// `text` cut into sentences at '.', '?' and '!' (each kept with its words only).
-std::vector<std::string> split_sentences(const std::string& text);
 
 }  // namespace ari_social_sim::dialogue
