@@ -18,6 +18,7 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES
       test/engine/test_episode_config.cpp
       test/engine/test_episode_requests.cpp
+      test/engine/test_recognised_hearing.cpp
     LIBRARIES ari_engine)
   target_compile_definitions(test_engine PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(test_engine PRIVATE ${PROJECT_SOURCE_DIR}/test/world)

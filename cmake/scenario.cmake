@@ -12,6 +12,7 @@ add_library(ari_scenario
   src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
   src/scenario/random_group_scene.cpp
+  src/scenario/recognised_speech.cpp
   src/scenario/run_watchdog.cpp
   src/scenario/scenario.cpp
   src/scenario/scenario_run_config.cpp
@@ -38,6 +39,7 @@ if(CATKIN_ENABLE_TESTING)
       test/scenario/test_person_identities.cpp
       test/scenario/test_random_group.cpp
       test/scenario/test_random_group_scene.cpp
+      test/scenario/test_recognised_speech.cpp
       test/scenario/test_scenario.cpp
       test/scenario/test_run_watchdog.cpp
       test/scenario/test_scenario_run_config.cpp

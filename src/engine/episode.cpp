@@ -164,7 +164,7 @@ Episode::Episode(const scenario::Scenario& scenario, uint64_t seed, const Episod
       group_timer_(config.group_detection_rate_hz),
       believed_groups_(config.group_timeout_s),
       dialogue_run_(dialogue_run_for(scenario.script, config.dialogue_run)),
-      runner_(scenario, seed, config.dialogue.get()) {
+      runner_(scenario, seed, config.dialogue.get(), config.hearing) {
   if (!config.dialogue || !config.nlu) {
     throw core::ConfigError(
         "episode: expected the dialogue settings (EpisodeConfig::load), got none");
@@ -257,7 +257,7 @@ void Episode::hear() {
   for (const perception::PerceivedVoice& voice : perceived_->voices) {
     for (const perception::SpeechResult& result : voice.speech) {
       if (!result.final_text.empty()) {
-        observations_.transcripts.push_back(result.final_text);
+        observations_.transcripts.push_back({voice.voice_id, result.final_text, result.confidence});
       }
     }
   }

@@ -352,7 +352,8 @@ class ScenarioNode {
       : config_(config),
         scenario_(std::move(scenario)),
         dialogue_(std::move(dialogue)),
-        runner_(scenario_, config.seed.value_or(scenario_.scene.seed), dialogue_.get()),
+        runner_(scenario_, config.seed.value_or(scenario_.scene.seed), dialogue_.get(),
+                config.hearing),
         watchdog_(config.wall_time_limit_for(scenario_.script.time_limit_s), config.world_timeout_s,
                   ros::WallTime::now().toSec()),
         groups_(config.group_timeout_s) {
@@ -406,7 +407,8 @@ class ScenarioNode {
       groups_sub_ =
           nh_.subscribe("/humans/interactions/groups", 100, &ScenarioNode::on_group, this);
     }
-    if (uses.speech_recognition) {
+    if (uses.speech_recognition ||
+        (uses.dialogue && config_.hearing == scenario::Hearing::kRecognised)) {
       heard_speech_ = std::make_unique<HeardSpeech>(nh_);
     }
     if (uses.dialogue) {

@@ -152,10 +152,18 @@ class SpeechRecognitionNode {
     voice(id).is_speaking.publish(msg);
   }
 
-  // voice_<id> at voice_range along the direction the voice was last heard from.
+  // voice_<id> at voice_range along the direction the voice was last heard from. At most once
+  // per stamp: audio arrives in bursts between two clock ticks, and tf refuses (and every
+  // listener warns about) a second transform of a frame at the same time.
   void place_voice(const std::string& id) {
+    const ros::Time now = ros::Time::now();
+    ros::Time& placed = placed_at_[id];
+    if (placed == now) {
+      return;
+    }
+    placed = now;
     geometry_msgs::TransformStamped t;
-    t.header.stamp = ros::Time::now();
+    t.header.stamp = now;
     t.header.frame_id = kArrayFrame;
     t.child_frame_id = "voice_" + id;
     t.transform.translation.x = run_.voice_range_m * std::cos(direction_rad_);
@@ -172,6 +180,7 @@ class SpeechRecognitionNode {
   std::optional<std::string> speaking_;  // the voice of the utterance going on
   std::map<std::string, VoiceTopics> voices_;
   tf2_ros::TransformBroadcaster broadcaster_;
+  std::map<std::string, ros::Time> placed_at_;  // the stamp of each voice frame last sent
   ros::Publisher tracked_;
   ros::Subscriber direction_sub_, audio_sub_;
 };

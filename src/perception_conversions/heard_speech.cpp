@@ -9,8 +9,8 @@ HeardSpeech::HeardSpeech(const ros::NodeHandle& nh, double forget_after_s)
   tracked_sub_ = nh_.subscribe("/humans/voices/tracked", 10, &HeardSpeech::on_tracked, this);
 }
 
-std::vector<std::string> HeardSpeech::take() {
-  std::vector<std::string> finals;
+std::vector<perception::VoiceTranscript> HeardSpeech::take() {
+  std::vector<perception::VoiceTranscript> finals;
   finals.swap(finals_);
   return finals;
 }
@@ -22,8 +22,9 @@ void HeardSpeech::on_tracked(const IdsList& msg) {
     followed.last_tracked_s = now_s;
     if (!followed.speech_sub) {
       ros::NodeHandle handle = per_id_handle(nh_);
-      followed.speech_sub =
-          handle.subscribe("/humans/voices/" + id + "/speech", 10, &HeardSpeech::on_speech, this);
+      followed.speech_sub = handle.subscribe<LiveSpeech>(
+          "/humans/voices/" + id + "/speech", 10,
+          [this, id](const LiveSpeech::ConstPtr& msg) { on_speech(id, *msg); });
     }
   }
   for (auto it = followed_.begin(); it != followed_.end();) {
@@ -31,9 +32,9 @@ void HeardSpeech::on_tracked(const IdsList& msg) {
   }
 }
 
-void HeardSpeech::on_speech(const LiveSpeech& msg) {
+void HeardSpeech::on_speech(const std::string& voice_id, const LiveSpeech& msg) {
   if (!msg.final.empty()) {
-    finals_.push_back(msg.final);
+    finals_.push_back({voice_id, msg.final, msg.confidence});
   }
 }
 

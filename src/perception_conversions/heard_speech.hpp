@@ -8,6 +8,7 @@
 
 #include "ari_social_sim/IdsList.h"
 #include "ari_social_sim/LiveSpeech.h"
+#include "ari_social_sim/perception/voice_transcript.hpp"
 
 namespace ari_social_sim::nodes {
 
@@ -24,7 +25,7 @@ class HeardSpeech {
   HeardSpeech& operator=(const HeardSpeech&) = delete;
 
   /// The final transcripts that arrived since the last call, in order.
-  std::vector<std::string> take();
+  std::vector<perception::VoiceTranscript> take();
 
  private:
   struct Followed {
@@ -32,13 +33,13 @@ class HeardSpeech {
     double last_tracked_s{0.0};
   };
   void on_tracked(const IdsList& msg);
-  void on_speech(const LiveSpeech& msg);
+  void on_speech(const std::string& voice_id, const LiveSpeech& msg);
 
   ros::NodeHandle nh_;
   double forget_after_s_;
   ros::Subscriber tracked_sub_;
   std::map<std::string, Followed> followed_;
-  std::vector<std::string> finals_;
+  std::vector<perception::VoiceTranscript> finals_;
 };
 
 }  // namespace ari_social_sim::nodes

@@ -2,8 +2,12 @@
 
 namespace ari_social_sim::scenario {
 
-Conversation::Conversation(const dialogue::DialogueSetup& setup, uint64_t seed)
-    : setup_(setup), policy_(setup.domain), rng_(seed) {}
+Conversation::Conversation(const dialogue::DialogueSetup& setup, uint64_t seed, Hearing hearing)
+    : setup_(setup), policy_(setup.domain), rng_(seed) {
+  if (hearing == Hearing::kRecognised) {
+    recognised_.emplace(setup);
+  }
+}
 
 void Conversation::start() {
   policy_.reset();
@@ -34,7 +38,11 @@ std::optional<SayAction> Conversation::update(const Observations& observations) 
     active_ = false;
     return std::nullopt;
   }
-  pending_.insert(pending_.end(), observations.heard.begin(), observations.heard.end());
+  if (recognised_) {
+    recognised_->hear(observations.transcripts, pending_);
+  } else {
+    pending_.insert(pending_.end(), observations.heard.begin(), observations.heard.end());
+  }
   // ARI's own utterance must have played before it takes another turn (live, /tts waits for the
   // floor, so it may start late).
   const bool ari_speaking = observations.world.ari && observations.world.ari->speech.is_speaking;

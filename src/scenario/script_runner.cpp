@@ -83,11 +83,11 @@ std::string describe(const Action& action) {
 }
 
 ScriptRunner::ScriptRunner(const Scenario& scenario, uint64_t seed,
-                           const dialogue::DialogueSetup* dialogue)
+                           const dialogue::DialogueSetup* dialogue, Hearing hearing)
     : scenario_(scenario), seed_(seed), heard_lines_(scenario.script) {
   if (dialogue != nullptr) {
-    conversation_.emplace(*dialogue,
-                          core::rng_for(seed, core::rng_streams::kConversation).next_u64());
+    conversation_.emplace(
+        *dialogue, core::rng_for(seed, core::rng_streams::kConversation).next_u64(), hearing);
   } else if (scenario.script.interfaces().dialogue) {
     throw core::ConfigError(scenario.scene.path +
                             ": script: expected the dialogue settings for `converse` and "
@@ -117,8 +117,8 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
     const TranscriptLine& said = transcript_.lines()[line];
     finished_in_state_.push_back({said.speaker, said.act});
   }
-  for (const std::string& transcript : observations.transcripts) {
-    if (const std::optional<std::string> act = heard_lines_.act_of(transcript)) {
+  for (const perception::VoiceTranscript& transcript : observations.transcripts) {
+    if (const std::optional<std::string> act = heard_lines_.act_of(transcript.text)) {
       heard_in_state_.push_back(*act);
     }
   }

@@ -60,8 +60,8 @@ TEST_F(HumanNluTest, EveryRequestOfTheDomainIsUnderstoodFromRecognisedText) {
     }
   }
   const double share = static_cast<double>(right) / forms;
-  std::printf("[ measured ] %d of %d request forms understood as their goal (%.3f)\n", right,
-              forms, share);
+  std::printf("[ measured ] %d of %d request forms understood as their goal (%.3f)\n", right, forms,
+              share);
   EXPECT_GT(forms, 1000);  // 1,131 of 11,301
   EXPECT_GE(share, 0.95);
 }

@@ -254,7 +254,7 @@ class LiveChain {
       for (const perception::SpeechResult& result : voice.speech) {
         const LiveSpeech speech = speech_msg(result, "en-GB", state_msg_.header);
         if (!speech.final.empty()) {
-          transcripts_.push_back(speech.final);
+          transcripts_.push_back({voice.voice_id, speech.final, speech.confidence});
         }
       }
     }
@@ -366,7 +366,8 @@ class LiveChain {
   std::unique_ptr<world::Simulation> world_;
   world::WorldSnapshot snapshot_;
   WorldState state_msg_;
-  std::vector<std::string> transcripts_;  // final transcripts since the script last ran
+  std::vector<perception::VoiceTranscript>
+      transcripts_;  // final transcripts since the script last ran
   tf2_ros::Buffer tf_;
   perception::PerceptionPipeline perception_;
   perception::RateGate perception_gate_;

@@ -48,7 +48,7 @@ class ConversationTest : public ::testing::Test {
 };
 
 TEST_F(ConversationTest, OpensWithTheGreetingThenAnswersWhatIsAddressedToAri) {
-  Conversation conversation(*setup, 3);
+  Conversation conversation(*setup, 3, Hearing::kSimulated);
   conversation.start();
   commands.take(conversation.update(obs));
   ASSERT_EQ(commands.acts.size(), 1u);
@@ -91,7 +91,7 @@ TEST_F(ConversationTest, OpensWithTheGreetingThenAnswersWhatIsAddressedToAri) {
 }
 
 TEST_F(ConversationTest, WaitsForItsOwnUtteranceToPlay) {
-  Conversation conversation(*setup, 3);
+  Conversation conversation(*setup, 3, Hearing::kSimulated);
   conversation.start();
   commands.take(
       conversation.update(obs));  // greeting sent, not yet playing (/tts waits for the floor)
@@ -105,6 +105,24 @@ TEST_F(ConversationTest, WaitsForItsOwnUtteranceToPlay) {
   commands.take(conversation.update(obs));  // played: now it answers the request it kept
   ASSERT_EQ(commands.acts.size(), 2u);
   EXPECT_EQ(commands.acts[1], "inform(directions(toilet))");  // the domain's answer
+}
+
+TEST_F(ConversationTest, HearsTheRecogniserWhenToldTo) {
+  // speech:=audio: the dialogue's simulated perceptions are ignored, the transcripts understood.
+  Conversation conversation(*setup, 3, Hearing::kRecognised);
+  conversation.start();
+  commands.take(conversation.update(obs));  // the greeting
+  set_speaking(true, false);
+  commands.take(conversation.update(obs));
+  set_speaking(false, false);
+  obs.heard = {request("request(location(toilet))")};
+  commands.take(conversation.update(obs));
+  EXPECT_EQ(commands.acts.size(), 1u) << "ARI answered a simulated perception";
+  obs.heard.clear();
+  obs.transcripts = {{"voice2", "excuse me where is the cafeteria please", 0.6}};
+  commands.take(conversation.update(obs));
+  ASSERT_EQ(commands.acts.size(), 2u);
+  EXPECT_EQ(commands.acts[1], "inform(directions(cafe))");
 }
 
 }  // namespace

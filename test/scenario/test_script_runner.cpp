@@ -138,7 +138,8 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   stage.stop(irene);
   stage.tick(runner, commands);
   EXPECT_EQ(runner.state(), "ask_time");
-  stage.obs.transcripts = {"oh yes what is the lifts"};  // two words wrong, one missing
+  stage.obs.transcripts = {
+      {"voice1", "oh yes what is the lifts", 0.5}};  // two words wrong, one missing
   stage.tick(runner, commands);
   stage.obs.transcripts.clear();
   EXPECT_EQ(commands.log.back(), "say ARI ANSWER:TIME");
@@ -203,7 +204,8 @@ TEST_F(GroupDiscussionRunner, AnActFinishedBeforeTheStateWasEnteredDoesNotCount)
 
 TEST_F(GroupDiscussionRunner, OnlyATranscriptHeardInTheStateAndNearIreneLineCounts) {
   stage.tick(runner, commands);
-  stage.obs.transcripts = {"hello yes what is the time"};  // heard before ARI asked: too early
+  stage.obs.transcripts = {
+      {"voice1", "hello yes what is the time", 0.5}};  // heard before ARI asked: too early
   stage.obs.world.ari->pose.position = {4.0, 3.0};
   stage.tick(runner, commands);
   stage.obs.transcripts.clear();
@@ -214,11 +216,11 @@ TEST_F(GroupDiscussionRunner, OnlyATranscriptHeardInTheStateAndNearIreneLineCoun
   ASSERT_EQ(runner.state(), "ask_time");
   // Irene's goodbye, and words sharing too little with the question, are not the question.
   for (const std::string heard : {"thank you good bye", "what a big dog", ""}) {
-    stage.obs.transcripts = {heard};
+    stage.obs.transcripts = {{"voice1", heard, 0.5}};
     stage.tick(runner, commands);
     EXPECT_EQ(runner.state(), "ask_time") << heard;
   }
-  stage.obs.transcripts = {"what is the time"};
+  stage.obs.transcripts = {{"voice1", "what is the time", 0.5}};
   stage.tick(runner, commands);
   EXPECT_EQ(runner.state(), "answer_time");
 }

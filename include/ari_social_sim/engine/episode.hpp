@@ -43,6 +43,8 @@ struct EpisodeConfig {
   double group_detection_rate_hz{20.0};  // group_detection_node's ~rate
   double group_timeout_s{
       scenario::ScenarioRunConfig{}.group_timeout_s};  // scenario_node's ~group_timeout
+  /// scenario_node's ~hearing: recognised hears the perception's simulated voices' transcripts.
+  scenario::Hearing hearing{scenario::ScenarioRunConfig{}.hearing};
   /// social_mpc_node's parameters (config/social_mpc.yaml).
   navigation::NavigationConfig navigation;
   /// dialogue_node's settings (config/dialogue/simulation.yaml) and parameters in world mode;
@@ -64,6 +66,7 @@ struct EpisodeConfig {
     v.field("group_detection_rate", group_detection_rate_hz, "group_detection_node's ~rate",
             perception::GroupDetectionRunConfig::kRateBounds);
     v.field("group_timeout", group_timeout_s, "scenario_node's ~group_timeout", core::positive());
+    v.choice("hearing", hearing, "scenario_node's ~hearing", scenario::kHearings);
     v.section("navigation", navigation, "social_mpc_node's config/social_mpc.yaml");
     v.section("dialogue_run", dialogue_run, "dialogue_node's parameters");
   }

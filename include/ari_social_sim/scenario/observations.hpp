@@ -7,6 +7,7 @@
 
 #include "ari_social_sim/dialogue/spoken_dialogue.hpp"
 #include "ari_social_sim/dialogue/utterance.hpp"
+#include "ari_social_sim/perception/voice_transcript.hpp"
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "ari_social_sim/scenario/person_identities.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
@@ -54,7 +55,7 @@ struct Observations {
   std::vector<dialogue::Perception> heard;
   /// Final transcripts of ARI's speech recognition since the previous observation, any voice
   /// (ROS4HRI's /humans/voices/<id>/speech; in process, the perception pipeline's voices).
-  std::vector<std::string> transcripts;
+  std::vector<perception::VoiceTranscript> transcripts;
   /// Set once the dialogue has ended.
   std::optional<DialogueEnd> dialogue_end;
 };

@@ -6,6 +6,7 @@
 
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
+#include "ari_social_sim/scenario/hearing.hpp"
 #include "ari_social_sim/scenario/script_time_limit.hpp"
 
 namespace ari_social_sim::scenario {
@@ -22,6 +23,7 @@ struct ScenarioRunConfig {
   std::optional<double> time_limit_s;
   std::optional<double> wall_time_limit_s;
   double world_timeout_s{10.0};
+  Hearing hearing{Hearing::kSimulated};
 
   template <class V>
   void visit(V& v) {
@@ -58,6 +60,11 @@ struct ScenarioRunConfig {
             "unpaused it, or from the first state when another node starts it) after which the "
             "run ends as a failure naming the wait",
             core::positive());
+    v.choice("hearing", hearing,
+             "what ARI's `converse` hears the people by: simulated (dialogue_node's perceptions, "
+             "acts through the error layer) or recognised (the final transcripts of "
+             "/humans/voices/<id>/speech, understood by ARI's own NLU; speech:=audio)",
+             kHearings);
   }
 
   /// The script's sim-time limit: the time_limit parameter if set, else the file's.

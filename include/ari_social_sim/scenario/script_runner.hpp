@@ -44,9 +44,11 @@ class ScriptRunner {
  public:
   /// `seed` draws the random groups and ARI's words when it converses (the scene's seed, or the
   /// episode's in batch runs). `dialogue` is needed by scripts that converse; throws
-  /// core::ConfigError when such a script gets none.
+  /// core::ConfigError when such a script gets none. `hearing` is where ARI's side of `converse`
+  /// takes what the people said from.
   ScriptRunner(const Scenario& scenario, uint64_t seed,
-               const dialogue::DialogueSetup* dialogue = nullptr);
+               const dialogue::DialogueSetup* dialogue = nullptr,
+               Hearing hearing = Hearing::kSimulated);
 
   /// One tick, with observations at least once per world step. The first call adds the random
   /// groups and enters the start state. Does nothing once the run has ended.
