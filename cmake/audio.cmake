@@ -70,6 +70,9 @@ if(CATKIN_ENABLE_TESTING)
       DEPENDENCIES world_node hri_perception_node group_detection_node social_mpc_node
         dialogue_node scenario_node audio_node speech_recognition_node)
   endforeach()
+  add_rostest(test/integration/waiting_room_audio.test
+    DEPENDENCIES world_node hri_perception_node group_detection_node social_mpc_node
+      dialogue_node scenario_node audio_node speech_recognition_node)
 endif()
 
 if(benchmark_FOUND)

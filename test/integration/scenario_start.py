@@ -21,11 +21,17 @@ def unpause_when_scenario_node_listens(caller_id, timeout_s=90.0):
     return rospy.ServiceProxy("/sim/pause", SetBool)(False).success
 
 
-def wait_until_finished(recorder, timeout_s):
-    """Waits until recorder.status (a ScenarioStatus, under recorder.lock) says finished."""
+def wait_until(recorder, condition, timeout_s):
+    """Waits until condition() holds, called under recorder.lock."""
     limit = time.monotonic() + timeout_s
     while time.monotonic() < limit:
         with recorder.lock:
-            if recorder.status is not None and recorder.status.finished:
+            if condition():
                 return
         time.sleep(0.1)
+
+
+def wait_until_finished(recorder, timeout_s):
+    """Waits until recorder.status (a ScenarioStatus, under recorder.lock) says finished."""
+    wait_until(recorder, lambda: recorder.status is not None and recorder.status.finished,
+               timeout_s)
