@@ -54,6 +54,7 @@ RobotNlu::RobotNlu(const Nlg& nlg, const Domain& domain, const MpgtCorpus* corpu
 
 void RobotNlu::add_exemplar(const std::string& text, const std::vector<DialogueAct>& acts) {
   std::vector<DialogueAct> in_domain;
+  in_domain.reserve(acts.size());
   for (const DialogueAct& act : acts) {
     in_domain.push_back(in_domain_form(act));
   }
