@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "ari_social_sim/dialogue/dialogue_runner.hpp"
+#include "ari_social_sim/dialogue/human_nlu.hpp"
 #include "ari_social_sim/dialogue/json_lines.hpp"
 #include "ari_social_sim/dialogue/robot_nlu.hpp"
 
@@ -115,6 +116,22 @@ void BM_RobotNluUnderstand(benchmark::State& state) {
   state.counters["exemplars"] = static_cast<double>(nlu.exemplar_count());
 }
 BENCHMARK(BM_RobotNluUnderstand);
+
+// One recogniser transcript (lower case, no punctuation: one sentence) understood against every
+// exemplar of the people's side, as ARI's `converse` does for each final transcript.
+void BM_HumanNluUnderstand(benchmark::State& state) {
+  std::string missing;
+  const DialogueSetup* with_corpus = retrieval_setup(&missing);
+  const DialogueSetup& setup = with_corpus != nullptr ? *with_corpus : template_setup();
+  const HumanNlu nlu(*setup.nlg, setup.domain, setup.corpus_or_null());
+  const std::string text = "excuse me where can we find the cafeteria please";
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(nlu.understand(text));
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["exemplars"] = static_cast<double>(nlu.exemplar_count());
+}
+BENCHMARK(BM_HumanNluUnderstand);
 
 }  // namespace
 
