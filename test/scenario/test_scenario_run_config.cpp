@@ -22,6 +22,8 @@ TEST(ScenarioRunConfig, DefaultsAndOverrides) {
   EXPECT_EQ(set.seed, std::optional<uint64_t>(12));
   EXPECT_DOUBLE_EQ(set.server_timeout_s, 5.0);
   EXPECT_DOUBLE_EQ(set.group_timeout_s, 0.5);
+  EXPECT_EQ(defaults.hearing, Hearing::kSimulated);
+  EXPECT_EQ(read("{scenario: a, hearing: recognised}").hearing, Hearing::kRecognised);
 }
 
 TEST(ScenarioRunConfig, WallTimeLimitDefaultsToThreeScriptLimitsPlusTheServerWait) {
@@ -55,6 +57,8 @@ TEST(ScenarioRunConfig, EveryBadParameterIsNamed) {
                                    {"wall_time_limit", ">= 0", "-1"});
   world::test::expect_config_error([] { read("{scenario: a, world_timeout: 0}"); }, source,
                                    {"world_timeout", "> 0", "0"});
+  world::test::expect_config_error([] { read("{scenario: a, hearing: heard}"); }, source,
+                                   {"hearing", "simulated", "recognised", "heard"});
   world::test::expect_config_error([] { read("{scenario: a, group_timout: 1}"); }, source,
                                    {"unknown field(s) group_timout"});
 }
