@@ -15,10 +15,8 @@ HumanNlu::HumanNlu(const Nlg& nlg, const Domain& domain, const MpgtCorpus* corpu
                    double min_similarity)
     : min_similarity_(min_similarity) {
   // Acts with a template of their own: greet(), thank(), r-repet(), bye(), ...
-  for (const auto& entry : nlg.templates().human) {
-    if (entry.first.find('*') == std::string::npos && entry.first != "none") {
-      add_template_texts(nlg, parse_act(entry.first, "human template"), index_);
-    }
+  for (const DialogueAct& act : nlg.own_template_acts(false)) {
+    add_template_texts(nlg, act, index_);
   }
   // Every way of asking for every goal of the domain.
   for (const PredicateSpec& predicate : domain.predicates()) {

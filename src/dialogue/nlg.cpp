@@ -143,6 +143,16 @@ std::string Nlg::from_template(bool robot, const DialogueAct* act, core::Rng& rn
   return replace_all(act->intent, "-", " ") + " " + surface(act->path()) + ".";
 }
 
+std::vector<DialogueAct> Nlg::own_template_acts(bool robot) const {
+  std::vector<DialogueAct> acts;
+  for (const auto& entry : robot ? templates_.robot : templates_.human) {
+    if (entry.first.find('*') == std::string::npos && entry.first != "none") {
+      acts.push_back(parse_act(entry.first, robot ? "robot template" : "human template"));
+    }
+  }
+  return acts;
+}
+
 std::vector<std::string> Nlg::template_texts(bool robot, const DialogueAct& act) const {
   const TemplateMatch match = find_template(robot, act);
   std::vector<std::string> texts;

@@ -8,12 +8,9 @@ RobotNlu::RobotNlu(const Nlg& nlg, const Domain& domain, const MpgtCorpus* corpu
                    double min_similarity)
     : domain_(&domain), min_similarity_(min_similarity) {
   // Acts with a template of their own: greetings, closings, cant-help(), offer-help(), ...
-  for (const auto& entry : nlg.templates().robot) {
-    if (entry.first.find('*') == std::string::npos && entry.first != "none") {
-      const DialogueAct act = parse_act(entry.first, "robot template");
-      for (const std::string& text : nlg.template_texts(true, act)) {
-        add_exemplar(text, {act});
-      }
+  for (const DialogueAct& act : nlg.own_template_acts(true)) {
+    for (const std::string& text : nlg.template_texts(true, act)) {
+      add_exemplar(text, {act});
     }
   }
   // The answer to every goal of the domain, and its repetition.

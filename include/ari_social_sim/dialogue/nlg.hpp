@@ -55,6 +55,9 @@ class Nlg {
   /// kMaxFormsPerText forms gives a cover of its alternatives, TemplateText::expand); empty when
   /// no key matches.
   std::vector<std::string> template_texts(bool robot, const DialogueAct& act) const;
+  /// The acts with a template of their own on ARI's or the humans' side (keys without `*`, not
+  /// `none`): greet(), thank(), offer-help(), ... in key order.
+  std::vector<DialogueAct> own_template_acts(bool robot) const;
   const NlgTemplates& templates() const { return templates_; }
 
   NlgMode mode() const { return mode_; }
