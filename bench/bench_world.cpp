@@ -13,6 +13,7 @@
 #include "ari_social_sim/world/group_report.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/simulation.hpp"
+#include "ari_social_sim/world_speech/small_talk_lines.hpp"
 #include "scene_builders.hpp"
 
 namespace {
@@ -55,11 +56,15 @@ const std::vector<std::string> kSentences = {
 // through its requests, as any client of the world does.
 class CrowdActivity {
  public:
-  CrowdActivity(double side_m, uint64_t seed) : side_m_(side_m), rng_(seed) {}
+  /// `groups_left_alone`: group members are not made to speak (their groups converse on their
+  /// own); only the others are.
+  CrowdActivity(double side_m, uint64_t seed, bool groups_left_alone)
+      : side_m_(side_m), rng_(seed), groups_left_alone_(groups_left_alone) {}
 
   void step(world::Simulation& simulation) {
     for (const world::Human* human : simulation.humans()) {
-      if (!human->speech().is_speaking()) {
+      const bool left_alone = groups_left_alone_ && human->group_id() != model::kNoObject;
+      if (!left_alone && !human->speech().is_speaking()) {
         simulation.say(human->id(), "STATEMENT", kSentences[rng_.uniform_index(kSentences.size())]);
       }
       if (human->motion_mode() == world::MotionMode::kNavigation && human->goal() &&
@@ -81,6 +86,7 @@ class CrowdActivity {
  private:
   double side_m_;
   core::Rng rng_;
+  bool groups_left_alone_;
 };
 
 // Sizes of 2 to 5 adding up to `total` (>= 2), never leaving a single person over.
@@ -140,11 +146,22 @@ struct Crowd {
   }
 };
 
+// How the benchmark crowd talks.
+enum class Talk {
+  kNonStop,     // everyone without pause, made to by CrowdActivity; groups silent on their own
+  kConversing,  // everyone stands in a group that converses (docs/world.md section 12)
+  kGroupsMadeToTalk,  // the same groups, conversation off, made to talk as kNonStop: before
+};
+
 // The benchmark scene: `count` humans in a square room at kAreaPerHumanM2 each (side
-// sqrt(4 N) + 2 m). Half of them stand in groups of 2-5 (the humans nearest each o-space centre)
-// and look at the other members; the rest walk between random goals and look at three random
-// people. Everyone talks without pause (CrowdActivity). Warmed up by kWarmUpSteps.
-Crowd make_crowd(size_t count, uint64_t seed) {
+// sqrt(4 N) + 2 m). With kNonStop, half of them stand in groups of 2-5 (the humans nearest each
+// o-space centre) and look at the other members, the rest walk between random goals and look at
+// three random people, and everyone talks without pause (CrowdActivity). With kConversing,
+// everyone stands in a group of 2-5 and the groups converse with the package's small talk; with
+// kGroupsMadeToTalk, the same groups' conversation is off (ConversationSpec::enabled false) and
+// CrowdActivity makes everyone talk without pause, as the world's groups talked before issue 31.
+// Warmed up by kWarmUpSteps.
+Crowd make_crowd(size_t count, uint64_t seed, Talk talk) {
   const double side_m = std::sqrt(static_cast<double>(count) * kAreaPerHumanM2) + 2.0;
   world::SimulationConfig config;
   config.step_s = kStepS;
@@ -154,8 +171,15 @@ Crowd make_crowd(size_t count, uint64_t seed) {
   const std::vector<ObjectId> ids = world::test::add_random_humans(
       *simulation, static_cast<int>(count), side_m, kSpawnMarginM, rng);
 
+  const bool conversing = talk == Talk::kConversing;
+  const bool all_in_groups = talk != Talk::kNonStop;
+  const bool groups_left_alone = talk == Talk::kConversing;
+  if (conversing) {
+    simulation->set_conversation_lines(
+        world_speech::SmallTalkLines::load(std::string(ARI_SOURCE_DIR) + "/config"));
+  }
   // Groups: each takes the still unassigned humans nearest its centre.
-  const std::vector<size_t> sizes = group_sizes(count / 2, rng);
+  const std::vector<size_t> sizes = group_sizes(all_in_groups ? count : count / 2, rng);
   const std::vector<Eigen::Vector2d> centres = group_centres(sizes.size(), side_m, rng);
   std::vector<ObjectId> free_ids = ids;
   ObjectId group_id = 1;
@@ -171,6 +195,7 @@ Crowd make_crowd(size_t count, uint64_t seed) {
     spec.id = group_id++;
     spec.members.assign(free_ids.begin(), free_ids.begin() + static_cast<long>(sizes[g]));
     spec.centre = centre;
+    spec.conversation.enabled = conversing;
     free_ids.erase(free_ids.begin(), free_ids.begin() + static_cast<long>(sizes[g]));
     for (ObjectId member : spec.members) {
       std::vector<ObjectId> others;
@@ -182,7 +207,7 @@ Crowd make_crowd(size_t count, uint64_t seed) {
   }
 
   // Walkers: a random goal each and three random other people to look at.
-  Crowd crowd{std::move(simulation), CrowdActivity(side_m, seed + 1)};
+  Crowd crowd{std::move(simulation), CrowdActivity(side_m, seed + 1, groups_left_alone)};
   for (ObjectId id : free_ids) {
     crowd.simulation->set_human_goal(id, crowd.activity.random_pose());
     std::vector<ObjectId> targets;
@@ -222,9 +247,9 @@ double formed_group_share(const world::Simulation& simulation) {
 // CrowdActivity after it. The scene is warmed up once and then keeps running (a Simulation cannot
 // be copied to restore it); after the warm-up it is in a steady state (formed groups, walkers,
 // constant talk), so consecutive steps cost alike. Items = steps.
-void BM_WorldStep(benchmark::State& state) {
+void measure_steps(benchmark::State& state, Talk talk) {
   const size_t count = static_cast<size_t>(state.range(0));
-  Crowd crowd = make_crowd(count, kSeed);
+  Crowd crowd = make_crowd(count, kSeed, talk);
   const double formed_at_start = formed_group_share(*crowd.simulation);
   const double start_s = thread_cpu_s();
   for (auto _ : state) {
@@ -240,6 +265,11 @@ void BM_WorldStep(benchmark::State& state) {
   state.counters["human_steps_per_s"] = static_cast<double>(count) / step_cpu_s;
   state.counters["ns_per_human_step"] = 1e9 * step_cpu_s / static_cast<double>(count);
   state.counters["groups_formed"] = formed_at_start;
+  state.counters["groups"] = static_cast<double>(crowd.simulation->groups().size());
+}
+
+void BM_WorldStep(benchmark::State& state) {
+  measure_steps(state, Talk::kNonStop);
 }
 BENCHMARK(BM_WorldStep)
     ->ArgName("humans")
@@ -248,6 +278,20 @@ BENCHMARK(BM_WorldStep)
     ->Arg(200)
     ->Arg(500)
     ->Unit(benchmark::kMicrosecond);
+
+// Everyone in a conversation group (issue 31): the turn-taking, the conversation gaze and the
+// small talk on top of the world step.
+void BM_WorldStepConversing(benchmark::State& state) {
+  measure_steps(state, Talk::kConversing);
+}
+BENCHMARK(BM_WorldStepConversing)->ArgName("humans")->Arg(200)->Unit(benchmark::kMicrosecond);
+
+// The same scene with every group's conversation off and everyone made to talk without pause, as
+// before issue 31: what BM_WorldStepConversing costs on top of it.
+void BM_WorldStepGroupsMadeToTalk(benchmark::State& state) {
+  measure_steps(state, Talk::kGroupsMadeToTalk);
+}
+BENCHMARK(BM_WorldStepGroupsMadeToTalk)->ArgName("humans")->Arg(200)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

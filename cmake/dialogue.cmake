@@ -14,6 +14,7 @@ add_library(ari_dialogue
   src/dialogue/dialogue_stats.cpp
   src/dialogue/error_model.cpp
   src/dialogue/turn_timing.cpp
+  src/dialogue/small_talk.cpp
   src/dialogue/template_text.cpp
   src/dialogue/nlg.cpp
   src/dialogue/agenda.cpp

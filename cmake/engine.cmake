@@ -1,7 +1,7 @@
 # world_speech/: the world's speakers as a dialogue stage (WorldSpeechStage), the world stage of
 # dialogue_node and of the engine: a library of its own so that dialogue_node links neither
 # perception nor navigation.
-add_library(ari_world_speech src/world_speech/world_speech_stage.cpp)
+add_library(ari_world_speech src/world_speech/small_talk_lines.cpp src/world_speech/world_speech_stage.cpp)
 target_link_libraries(ari_world_speech PUBLIC ari_dialogue ari_world)
 
 # engine/: the in-process engine. Episode runs a scenario's script against the world, perception,
@@ -22,4 +22,10 @@ if(CATKIN_ENABLE_TESTING)
     LIBRARIES ari_engine)
   target_compile_definitions(test_engine PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(test_engine PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
+
+  ari_add_gtest(test_conversation
+    SOURCES test/world_speech/test_group_conversation.cpp
+    LIBRARIES ari_world_speech)
+  target_compile_definitions(test_conversation PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  target_include_directories(test_conversation PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 endif()

@@ -11,6 +11,7 @@ add_library(ari_scenario
   src/scenario/observations.cpp
   src/scenario/person_identities.cpp
   src/scenario/random_group.cpp
+  src/scenario/group_mix.cpp
   src/scenario/random_group_scene.cpp
   src/scenario/recognised_speech.cpp
   src/scenario/run_watchdog.cpp

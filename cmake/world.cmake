@@ -3,14 +3,19 @@ add_library(ari_world
   src/world/agent_grid.cpp
   src/world/ari.cpp
   src/world/box2d_shapes.cpp
+  src/world/conversation_gaze.cpp
+  src/world/conversation_metrics.cpp
   src/world/differential_drive.cpp
   src/world/formation_layout.cpp
   src/world/gaze_generator.cpp
+  src/world/group_conversation.cpp
+  src/world/group_turnover.cpp
   src/world/group_navigation.cpp
   src/world/group_report.cpp
   src/world/head_pan_controller.cpp
   src/world/human.cpp
   src/world/human_navigation.cpp
+  src/world/member_manner.cpp
   src/world/map_sensor.cpp
   src/world/object.cpp
   src/world/request_check.cpp
@@ -34,6 +39,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_gaze_generator.cpp
       test/world/test_group_arrangements.cpp
       test/world/test_group_navigation.cpp
+      test/world/test_group_turnover.cpp
       test/world/test_map_sensor.cpp
       test/world/test_request_check.cpp
       test/world/test_robot_reaction.cpp
@@ -74,12 +80,13 @@ add_library(ari_world_conversions
 target_link_libraries(ari_world_conversions PUBLIC ari_world ari_node_support)
 
 add_executable(world_node src/nodes/world_node.cpp)
-target_link_libraries(world_node ari_world_conversions)
+target_link_libraries(world_node ari_world_conversions ari_world_speech)
 
 if(benchmark_FOUND)
   ari_add_benchmark(bench_world
     SOURCES bench/bench_world.cpp
-    LIBRARIES ari_world)
+    LIBRARIES ari_world_speech)
+  target_compile_definitions(bench_world PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   # The scenes are the world tests' own (test/world/scene_builders.hpp).
   target_include_directories(bench_world PRIVATE ${PROJECT_SOURCE_DIR}/test/world)
 endif()

@@ -40,6 +40,9 @@ packages=(
   rviz xvfb xauth imagemagick sox espeak-ng fonts-dejavu-core
   # rsvg-convert renders docs/architecture.svg to look at (ImageMagick reads no SVG without it)
   librsvg2-bin
+  # batch work and training on a SLURM cluster (issue 32): the tests start a single-host cluster
+  # of these daemons, each on ports and folders of its own (munge authenticates the daemons)
+  slurmctld slurmd slurm-client munge
 )
 
 installer=install_deps

@@ -127,7 +127,9 @@ EpisodeSummary EpisodeSummary::of(const std::string& scenario, uint64_t episode,
 std::string csv_header() {
   return "scenario,episode,seed,success,reason,final_state,duration_s,states,"
          "ari_path_length_m,min_clearance_m,contacts,personal_space_time_s,navigation_time_s,"
-         "navigation_goals,navigation_failures,utterances,ari_utterances,wall_time_s";
+         "navigation_goals,navigation_failures,utterances,ari_utterances,turn_transitions,"
+         "overlap_share,listener_gaze_at_speaker,ari_floor_share,ari_interruptions,"
+         "ari_addressed_after_s,ari_entered_in_pause,wall_time_s";
 }
 
 EpisodeCsvRow EpisodeCsvRow::of(const EpisodeSummary& s) {
@@ -141,6 +143,7 @@ EpisodeCsvRow EpisodeCsvRow::of(const EpisodeSummary& s) {
 
 std::string csv_row(const EpisodeSummary& s) {
   const scenario::EpisodeMetrics& m = s.metrics;
+  const world::ConversationFigures& talk = m.group_talk;
   const EpisodeCsvRow row = EpisodeCsvRow::of(s);
   return quoted(row.scenario) + "," + std::to_string(row.episode) + "," + std::to_string(row.seed) +
          "," + (row.success ? "1" : "0") + "," + quoted(row.reason) + "," +
@@ -149,7 +152,11 @@ std::string csv_row(const EpisodeSummary& s) {
          std::to_string(m.contacts) + "," + number(m.personal_space_time_s) + "," +
          number(m.navigation_time_s) + "," + std::to_string(m.navigation_goals) + "," +
          std::to_string(m.navigation_failures) + "," + std::to_string(s.utterances) + "," +
-         std::to_string(s.ari_utterances) + "," + number(s.wall_time_s, 4);
+         std::to_string(s.ari_utterances) + "," + std::to_string(talk.turn_transitions) + "," +
+         number(talk.overlap_share) + "," + number(talk.listener_gaze_at_speaker) + "," +
+         number(talk.ari_floor_share) + "," + std::to_string(talk.ari_interruptions) + "," +
+         number(talk.ari_addressed_after_s) + "," + std::to_string(talk.ari_entered_in_pause) +
+         "," + number(s.wall_time_s, 4);
 }
 
 EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& source) {

@@ -3,6 +3,7 @@
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/perception/group_candidates.hpp"
+#include "ari_social_sim/world_speech/small_talk_lines.hpp"
 
 namespace ari_social_sim::engine {
 
@@ -139,6 +140,7 @@ EpisodeConfig EpisodeConfig::load(const std::string& config_dir) {
   config.nlu = std::make_shared<const dialogue::RobotNlu>(*setup->nlg, setup->domain,
                                                           setup->corpus_or_null());
   config.dialogue = std::move(setup);
+  config.conversation_lines = world_speech::SmallTalkLines::load(config_dir);
   return config;
 }
 
@@ -172,6 +174,7 @@ Episode::Episode(const scenario::Scenario& scenario, uint64_t seed, const Episod
   world::Scene scene = scenario.scene;
   scene.seed = seed;
   simulation_ = world::build_simulation(scene, config.simulation);
+  simulation_->set_conversation_lines(config.conversation_lines);
   map_ = world::rasterize_static_map(scene.world, config.simulation.map_resolution_m);
   // hri_perception_node sees through /map: walls and furniture block sight and sound.
   perception_.set_sight_map(map_);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/check.hpp"
 #include "ari_social_sim/core/config_check.hpp"
 #include "ari_social_sim/core/config_reader.hpp"
 #include "ari_social_sim/core/error.hpp"
@@ -19,6 +20,7 @@
 #include "ari_social_sim/perception/tracked_persons.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
+#include "ari_social_sim/world_speech/small_talk_lines.hpp"
 
 namespace ari_social_sim::learning {
 namespace {
@@ -29,12 +31,16 @@ constexpr double kMapResolution_m = 0.1;
 // Attempts at a seed's episode before giving up: a few draws leave no free place to stand.
 constexpr int kEpisodeAttempts = 10;
 
-EpisodeType episode_type_for(NavTask task, uint64_t seed) {
-  switch (task) {
+EpisodeType episode_type_for(const NavTaskConfig& task, uint64_t seed) {
+  switch (task.task) {
     case NavTask::kGoToPose:
       return EpisodeType::kPose;
     case NavTask::kApproachPerson:
       return EpisodeType::kApproach;
+    case NavTask::kJoinConversation:
+      return task.conversation.group_size == 2   ? EpisodeType::kJoin2
+             : task.conversation.group_size == 3 ? EpisodeType::kJoin3
+                                                 : EpisodeType::kJoin4;
     case NavTask::kJoinGroup:
     case NavTask::kScenario:  // ScenarioNavEnv's
       break;
@@ -76,6 +82,9 @@ std::shared_ptr<const NavEnvSetup> NavEnvSetup::load(const std::string& package_
     setup->episode = engine::EpisodeConfig::load(package_dir + "/config");
     setup->episode->perception.errors_enabled = setup->task.perception_errors;
   }
+  if (setup->task.task == NavTask::kJoinConversation) {
+    setup->conversation_lines = world_speech::SmallTalkLines::load(package_dir + "/config");
+  }
   return setup;
 }
 
@@ -89,6 +98,23 @@ ActionBounds action_bounds() {
                  static_cast<float>(limits.max_angular_rps),
                  static_cast<float>(limits.head_pan_limit_rad)};
   return bounds;
+}
+
+int action_size(NavTask task) {
+  return task == NavTask::kJoinConversation ? kConversationActionSize : kActionSize;
+}
+
+const char* action_name(int index) {
+  return index < kActionSize ? kActionNames[index] : kSpeakName;
+}
+
+float checked_speak(float speak) {
+  if (!std::isfinite(speak)) {
+    throw core::RequestError(std::string("learning: action[") + std::to_string(kActionSize) +
+                             "] (" + kSpeakName + "): expected a finite number in [0, 1], got " +
+                             std::to_string(speak));
+  }
+  return std::clamp(speak, 0.0f, 1.0f);
 }
 
 std::array<float, kActionSize> checked_action(const float* action, const ActionBounds& bounds) {
@@ -123,7 +149,7 @@ navigation::RobotObservation NavEnv::robot() const {
 void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   const uint64_t episode_seed = seeds_.take(seed);
   const NavTaskConfig& task = setup_->task;
-  const EpisodeType type = episode_type_for(task.task, episode_seed);
+  const EpisodeType type = episode_type_for(task, episode_seed);
   for (int attempt = 0;; ++attempt) {
     episode_ = make_episode(type, attempt, episode_seed, setup_->worlds);
     map_ = world::rasterize_static_map(episode_.simulation->world(), kMapResolution_m);
@@ -164,9 +190,11 @@ void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   perceived_goal_.reset();
   next_goal_update_s_ = 0.0;
   last_action_ = {};
+  arrived_before_ = false;
   metrics_ = {};
   metrics_.episode_seed = episode_seed;
-  perceive();
+  start_conversation();
+  perceive(world::WorldSnapshot::of(*episode_.simulation));
   place_goals(true);
   last_distance_m_ = (true_goal_->pose.position - robot().pose.position).norm();
   metrics_.distance_to_goal_m = last_distance_m_;
@@ -176,12 +204,33 @@ void NavEnv::reset(std::optional<uint64_t> seed, float* observation) {
   write_observation(observation);
 }
 
+// join_conversation: the joined group talks with the shipped small talk (the other group too:
+// the room is not silent), and the task follows the joined one.
+void NavEnv::start_conversation() {
+  conversation_.reset();
+  if (setup_->task.task != NavTask::kJoinConversation) {
+    return;
+  }
+  world::Simulation& sim = *episode_.simulation;
+  sim.set_conversation_lines(setup_->conversation_lines);
+  for (const world::GroupSnapshot& group : world::WorldSnapshot::of(sim).groups) {
+    if (group_id(group.id) == episode_.exempt_group) {
+      conversation_ =
+          std::make_unique<ConversationTask>(setup_->task.conversation, group.id, group.members);
+    }
+  }
+  ARI_CHECK(conversation_ != nullptr);  // join episodes always name their group
+  metrics_.conversation = conversation_->metrics();
+}
+
 // As hri_perception_node, group_detection_node and social_mpc_node's look at perception, at
 // every step: the perception frame, GCFF on its persons at their bodies, and the filtered scene.
-void NavEnv::perceive() {
-  const world::Simulation& sim = *episode_.simulation;
-  const double now_s = sim.time_s();
-  const perception::PerceptionFrame& frame = perception_->update(world::WorldSnapshot::of(sim));
+void NavEnv::perceive(const world::WorldSnapshot& snapshot) {
+  const double now_s = snapshot.time_s;
+  const perception::PerceptionFrame& frame = perception_->update(snapshot);
+  if (conversation_) {
+    conversation_->hear(frame);
+  }
   groups_->update(perception::group_candidates_of(frame), detected_);
   navigation::PerceptionReport report;
   model::TrackedPersons tracked = perception::tracked_persons_of(frame);
@@ -214,10 +263,26 @@ void NavEnv::place_goals(bool force) {
   }
 }
 
+int NavEnv::observation_size() const {
+  return observation_.size() +
+         (setup_->task.task == NavTask::kJoinConversation ? ConversationTask::kObservationSize : 0);
+}
+
+std::vector<navigation::ObservationField> NavEnv::observation_fields() const {
+  std::vector<navigation::ObservationField> fields = observation_.fields();
+  if (setup_->task.task == NavTask::kJoinConversation) {
+    fields.push_back(ConversationTask::field(observation_.size()));
+  }
+  return fields;
+}
+
 void NavEnv::write_observation(float* out) const {
   const bool perceived = perceived_goal_.has_value();
   observation_.build(robot(), scene_, perceived ? perceived_goal_ : instructed_goal_, perceived,
                      map_, out);
+  if (conversation_) {
+    conversation_->write_observation(out + observation_.size());
+  }
 }
 
 NavStepResult NavEnv::step(const float* action, float* observation) {
@@ -228,17 +293,23 @@ NavStepResult NavEnv::step(const float* action, float* observation) {
     throw core::RequestError("learning: step() after the episode ended; call reset()");
   }
   const std::array<float, kActionSize> command = checked_action(action, bounds_);
+  const NavTaskConfig& task = setup_->task;
+  const float speak = conversation_ ? checked_speak(action[kActionSize]) : 0.0f;
   world::Simulation& sim = *episode_.simulation;
   sim.command_ari_twist(command[0], command[1]);
   sim.command_ari_head_pan(command[2]);
+  double talk_reward = conversation_ ? conversation_->act(sim, speak, task.rewards) : 0.0;
   keep_walking(episode_, walk_rng_);
   sim.step();
   const double dt = sim.config().step_s;
 
-  perceive();
+  const world::WorldSnapshot snapshot = world::WorldSnapshot::of(sim);
+  perceive(snapshot);
   place_goals(false);
+  if (conversation_) {
+    talk_reward += conversation_->observe(snapshot, task.rewards);
+  }
 
-  const NavTaskConfig& task = setup_->task;
   const SocialScore::Step social = score_->add(sim, dt, task.rewards);
   const core::Pose2 pose = sim.ari()->pose();
   const double distance = (true_goal_->pose.position - pose.position).norm();
@@ -246,20 +317,28 @@ NavStepResult NavEnv::step(const float* action, float* observation) {
   const bool arrived = distance <= task.arrival.position_tolerance_m &&
                        heading_error <= task.arrival.heading_tolerance_rad;
   const RewardWeights& w = task.rewards;
+  // join_conversation goes on after arriving, to be addressed: its arrival term counts once.
+  const bool first_arrival = arrived && !arrived_before_;
+  arrived_before_ = arrived_before_ || arrived;
   NavStepResult result;
-  result.reward = social.reward + w.progress * (last_distance_m_ - distance) +
+  result.reward = social.reward + talk_reward + w.progress * (last_distance_m_ - distance) +
                   w.smoothness * (std::abs(command[0] - last_action_[0]) +
                                   std::abs(command[1] - last_action_[1])) +
-                  (arrived ? w.arrival : 0.0);
-  result.terminated = arrived || (task.terminate_on_collision && social.collisions > 0);
+                  (first_arrival ? w.arrival : 0.0);
+  const bool finished = conversation_ ? conversation_->metrics().success : arrived;
+  result.terminated = finished || (task.terminate_on_collision && social.collisions > 0);
   result.truncated = !result.terminated && sim.time_s() >= episode_.time_limit_s - 1e-9;
   last_distance_m_ = distance;
   last_action_ = command;
 
-  metrics_.arrived = arrived;
+  // join_conversation goes on after arriving: its `arrived` is having reached the place.
+  metrics_.arrived = conversation_ ? arrived_before_ : arrived;
   score_->fill(metrics_, sim.time_s());
   metrics_.distance_to_goal_m = distance;
   metrics_.goal_perceived = perceived_goal_.has_value();
+  if (conversation_) {
+    metrics_.conversation = conversation_->metrics();
+  }
   done_ = result.terminated || result.truncated;
   if (done_ && task.task == NavTask::kJoinGroup) {
     metrics_.gcff_includes_ari = gcff_includes_ari(sim, footprint_, episode_.exempt_people) ? 1 : 0;

@@ -100,7 +100,9 @@ std::vector<ObjectId> place_group(world::Simulation& sim, core::Rng& rng, Object
   spec.id = group;
   spec.centre = centre;
   const double radius = world::GroupNavigation::ospace_radius_for(
-      static_cast<size_t>(size), spec.member_spacing_m, spec.min_ospace_radius_m);
+      static_cast<size_t>(size),
+      world::GroupNavigation::member_spacing_for(spec, static_cast<size_t>(size)),
+      spec.min_ospace_radius_m);
   const double phase = rng.uniform(-kPi, kPi);
   for (int i = 0; i < size; ++i) {
     // Evenly spread with some jitter, as people who gathered a moment ago stand.

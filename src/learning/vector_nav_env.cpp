@@ -53,12 +53,13 @@ void VectorNavEnv::reset(std::optional<uint64_t> seed, float* observations) {
 }
 
 void VectorNavEnv::step(const float* actions, const VectorStepOutput& out) {
+  const int width = action_size();
   for (int i = 0; i < num_envs(); ++i) {
-    for (int k = 0; k < kActionSize; ++k) {
-      const float value = actions[i * kActionSize + k];
+    for (int k = 0; k < width; ++k) {
+      const float value = actions[i * width + k];
       if (!std::isfinite(value)) {
         throw core::RequestError("learning: actions[" + std::to_string(i) + ", " +
-                                 std::to_string(k) + "] (" + kActionNames[k] +
+                                 std::to_string(k) + "] (" + action_name(k) +
                                  "): expected a finite number, got " + std::to_string(value));
       }
     }
@@ -67,7 +68,7 @@ void VectorNavEnv::step(const float* actions, const VectorStepOutput& out) {
   for_each_env([&](int i) {
     Env& env = *envs_[i];
     float* observation = out.observations + i * size;
-    const NavStepResult result = env.step(actions + i * kActionSize, observation);
+    const NavStepResult result = env.step(actions + i * width, observation);
     out.rewards[i] = result.reward;
     out.terminated[i] = result.terminated;
     out.truncated[i] = result.truncated;

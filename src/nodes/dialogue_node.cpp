@@ -8,6 +8,7 @@
 #include <ros/topic.h>
 
 #include <memory>
+#include <optional>
 
 #include "ari_social_sim/WorldState.h"
 #include "ari_social_sim/core/command_line.hpp"
@@ -109,17 +110,26 @@ int run_world_mode(ros::NodeHandle& nh, const DialogueNodeSetup& loaded,
   // counts: a word lasts 8 steps at 150 wpm and 0.05 s, an act at least that.
   // world_node's alone: a second world_node's states are refused.
   SinglePublisher state_publisher("/sim/world_state");
-  const ros::Subscriber states = nh.subscribe<WorldState>(
-      "/sim/world_state", 100,
+  // Named as a boost::function of a MessageEvent: a bare lambda would be wrapped as a ConstPtr
+  // callback, whose events name every publisher "unknown_publisher". A state that fails
+  // input_problem is dropped: from_msg assumes a checked message.
+  const boost::function<void(const ros::MessageEvent<const WorldState>&)> on_state =
       [&stage, &node, &state_publisher](const ros::MessageEvent<const WorldState>& event) {
+        const WorldState& msg = *event.getConstMessage();
         if (!state_publisher.accept(event.getPublisherName())) {
           return;
         }
-        stage.follow(from_msg(*event.getConstMessage()));
+        if (const std::optional<InputProblem> problem = input_problem(msg)) {
+          ROS_WARN_THROTTLE(5.0, "/sim/world_state: dropped a state: %s: %s",
+                            problem->field.c_str(), problem->what.c_str());
+          return;
+        }
+        stage.follow(from_msg(msg));
         if (node) {
           node->tick();
         }
-      });
+      };
+  const ros::Subscriber states = nh.subscribe<WorldState>("/sim/world_state", 100, on_state);
   node = std::make_unique<LiveDialogueNode>(nh, *loaded.setup, nlu, run, stage);
   ros::spin();
   return 0;

@@ -37,6 +37,7 @@
 #include "ari_social_sim/SetGoal.h"
 #include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
+#include "ari_social_sim/SetGroupConversation.h"
 #include "ari_social_sim/SetReaction.h"
 #include "ari_social_sim/SpawnHuman.h"
 #include "ari_social_sim/StepSimulation.h"
@@ -283,6 +284,13 @@ class RosCommands : public scenario::Commands {
     if (spec.heading_rad) {
       // The heading is not among create_group's fields: it follows as its own request.
       set_group_arrangement(service.response.id, spec.arrangement, spec.heading_rad);
+    }
+    if (!spec.conversation.enabled) {
+      // Nor is the conversation's switch (the script refuses its other fields).
+      SetGroupConversation quiet;
+      quiet.request.group_id = service.response.id;
+      quiet.request.enabled = false;
+      call("/sim/set_group_conversation", quiet);
     }
   }
 

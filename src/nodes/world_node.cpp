@@ -34,6 +34,7 @@
 #include "ari_social_sim/SetGoal.h"
 #include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
+#include "ari_social_sim/SetGroupConversation.h"
 #include "ari_social_sim/SetPose.h"
 #include "ari_social_sim/SetReaction.h"
 #include "ari_social_sim/SetVelocity.h"
@@ -46,6 +47,7 @@
 #include "ari_social_sim/world/service_requests.hpp"
 #include "ari_social_sim/world/world_run_config.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
+#include "ari_social_sim/world_speech/small_talk_lines.hpp"
 #include "node_support/frames.hpp"
 #include "node_support/input_counters.hpp"
 #include "node_support/node_main.hpp"
@@ -89,8 +91,11 @@ const std::string kJointPosition = std::string("position[") + kHeadPanJoint + "]
 
 class WorldNode {
  public:
-  WorldNode(const world::WorldRunConfig& config, world::Scene scene)
-      : config_(config), scene_(std::move(scene)) {
+  WorldNode(const world::WorldRunConfig& config, world::Scene scene,
+            std::shared_ptr<const world::ConversationLines> conversation_lines)
+      : config_(config),
+        scene_(std::move(scene)),
+        conversation_lines_(std::move(conversation_lines)) {
     rebuild();
     map_ = world::rasterize_static_map(scene_.world, config_.simulation.map_resolution_m);
     paused_ = config_.start_paused;
@@ -145,6 +150,8 @@ class WorldNode {
         nh_.advertiseService("/sim/add_group_members", &WorldNode::add_group_members, this));
     services_.push_back(
         nh_.advertiseService("/sim/set_group_centre", &WorldNode::set_group_centre, this));
+    services_.push_back(nh_.advertiseService("/sim/set_group_conversation",
+                                             &WorldNode::set_group_conversation, this));
     services_.push_back(nh_.advertiseService("/sim/set_group_arrangement",
                                              &WorldNode::set_group_arrangement, this));
     services_.push_back(nh_.advertiseService("/sim/join_group", &WorldNode::join_group, this));
@@ -225,6 +232,7 @@ class WorldNode {
 
   void rebuild() {
     simulation_ = world::build_simulation(scene_, config_.simulation);
+    simulation_->set_conversation_lines(conversation_lines_);
     reported_clamps_ = 0;
   }
 
@@ -412,6 +420,11 @@ class WorldNode {
     });
   }
 
+  bool set_group_conversation(SetGroupConversation::Request& req,
+                              SetGroupConversation::Response& res) {
+    return answer(res, [&] { simulation_->set_group_conversation(req.group_id, req.enabled); });
+  }
+
   bool set_group_arrangement(SetGroupArrangement::Request& req,
                              SetGroupArrangement::Response& res) {
     return answer(res, [&] {
@@ -482,6 +495,7 @@ class WorldNode {
 
   world::WorldRunConfig config_;
   world::Scene scene_;
+  std::shared_ptr<const world::ConversationLines> conversation_lines_;
   std::unique_ptr<world::Simulation> simulation_;
   model::OccupancyGrid map_;
   bool paused_{false};
@@ -524,7 +538,10 @@ int main(int argc, char** argv) {
                                          : "as fast as possible",
              config.ari_source == world::AriSource::kInternal ? "driven here (2D mode)"
                                                               : "from ari_physics_node (3D mode)");
-    nodes::WorldNode node(config, std::move(scene));
+    // What the conversation groups say: the package's small talk and dialogue domain.
+    nodes::WorldNode node(
+        config, std::move(scene),
+        world_speech::SmallTalkLines::load(ros::package::getPath("ari_social_sim") + "/config"));
     node.run();
     return 0;
   });

@@ -45,6 +45,27 @@ void check_shape(const std::string& name, const py::array& array,
   }
 }
 
+// join_conversation: success is joining and answering; arrival is the place in the group.
+void add_conversation(py::dict& d, const learning::ConversationTaskMetrics& c) {
+  d["arrived"] = d["success"];
+  d["success"] = c.success;
+  d["turn_transitions"] = c.group_talk.turn_transitions;
+  d["overlap_share"] = c.group_talk.overlap_share;
+  d["listener_gaze_at_speaker"] = c.group_talk.listener_gaze_at_speaker;
+  d["ari_floor_share"] = c.group_talk.ari_floor_share;
+  d["ari_interruptions"] = c.group_talk.ari_interruptions;
+  d["ari_addressed_after_s"] = c.group_talk.ari_addressed_after_s;
+  d["ari_entered_in_pause"] = c.group_talk.ari_entered_in_pause;
+  d["ari_lines"] = c.ari_lines;
+  d["interruptions"] = c.interruptions;
+  d["entries"] = c.entries;
+  d["intrusions"] = c.intrusions;
+  d["questions"] = c.questions;
+  d["answers"] = c.answers;
+  d["answer_delay_s"] = c.answer_delay_s;
+  d["joined"] = c.joined;
+}
+
 py::dict metrics_dict(const learning::NavMetrics& m) {
   py::dict d;
   d["success"] = m.arrived;
@@ -60,6 +81,9 @@ py::dict metrics_dict(const learning::NavMetrics& m) {
   d["goal_perceived"] = m.goal_perceived;
   d["gcff_includes_ari"] = m.gcff_includes_ari;
   d["episode_seed"] = m.episode_seed;
+  if (m.conversation) {
+    add_conversation(d, *m.conversation);
+  }
   return d;
 }
 
@@ -71,9 +95,9 @@ std::optional<uint64_t> seed_of(const py::object& seed) {
   return seed.cast<unsigned long long>();
 }
 
-py::list fields_of(const navigation::PolicyObservation& observation) {
+py::list fields_of(const std::vector<navigation::ObservationField>& observation_fields) {
   py::list fields;
-  for (const navigation::ObservationField& f : observation.fields()) {
+  for (const navigation::ObservationField& f : observation_fields) {
     fields.append(py::make_tuple(f.name, f.offset, f.size, f.low, f.high));
   }
   return fields;
@@ -209,7 +233,10 @@ void bind_nav_env_setup(py::module_& m) {
                                return d;
                              })
       .def_property_readonly(
-          "step_s", [](const learning::NavEnvSetup&) { return learning::NavEnv::step_s(); });
+          "step_s", [](const learning::NavEnvSetup&) { return learning::NavEnv::step_s(); })
+      .def_property_readonly("action_size", [](const learning::NavEnvSetup& s) {
+        return learning::action_size(s.task.task);
+      });
 }
 
 // The action space and the vector environment's limits.
@@ -223,6 +250,7 @@ void bind_nav_constants(py::module_& m) {
   m.attr("max_threads") = learning::VectorNavEnv::kMaxThreads;
   m.attr("action_names") = std::vector<std::string>(std::begin(learning::kActionNames),
                                                     std::end(learning::kActionNames));
+  m.attr("speak_name") = std::string(learning::kSpeakName);
 }
 
 void bind_nav_env(py::module_& m) {
@@ -231,8 +259,9 @@ void bind_nav_env(py::module_& m) {
         return learning::make_env(setup);
       }))
       .def_property_readonly("observation_size", &learning::Env::observation_size)
+      .def_property_readonly("action_size", &learning::Env::action_size)
       .def("observation_fields",
-           [](const learning::Env& env) { return fields_of(env.observation()); })
+           [](const learning::Env& env) { return fields_of(env.observation_fields()); })
       .def(
           "reset",
           [](learning::Env& env, const py::object& seed) {
@@ -250,7 +279,8 @@ void bind_nav_env(py::module_& m) {
              if (!action) {
                throw py::value_error("action: expected an array of numbers");
              }
-             check_shape("action", action, {learning::kActionSize}, "(3,)");
+             check_shape("action", action, {env.action_size()},
+                         "(" + std::to_string(env.action_size()) + ",)");
              FloatArray observation(env.observation_size());
              float* out = observation.mutable_data();
              const float* in = action.data();
@@ -275,7 +305,9 @@ void bind_vector_nav_env(py::module_& m) {
       .def_property_readonly("num_envs", &learning::VectorNavEnv::num_envs)
       .def_property_readonly("observation_size", &learning::VectorNavEnv::observation_size)
       .def("observation_fields",
-           [](const learning::VectorNavEnv& env) { return fields_of(env.env(0).observation()); })
+           [](const learning::VectorNavEnv& env) {
+             return fields_of(env.env(0).observation_fields());
+           })
       .def(
           "reset",
           [](learning::VectorNavEnv& env, const py::object& seed) {
@@ -293,8 +325,9 @@ void bind_vector_nav_env(py::module_& m) {
              if (!actions) {
                throw py::value_error("actions: expected an array of numbers");
              }
-             check_shape("actions", actions, {env.num_envs(), learning::kActionSize},
-                         "(" + std::to_string(env.num_envs()) + ", 3)");
+             check_shape("actions", actions, {env.num_envs(), env.action_size()},
+                         "(" + std::to_string(env.num_envs()) + ", " +
+                             std::to_string(env.action_size()) + ")");
              const py::ssize_t n = env.num_envs(), size = env.observation_size();
              FloatArray observations({n, size});
              FloatArray final_observations({n, size});

@@ -1,6 +1,13 @@
 #include "ari_social_sim/scenario/conversation.hpp"
 
 namespace ari_social_sim::scenario {
+namespace {
+
+// How far (m) from ARI a speaker holds the floor of ARI's conversation: a conversation group
+// stands within it, a group talking across the room does not.
+constexpr double kConversationRangeM = 3.0;
+
+}  // namespace
 
 Conversation::Conversation(const dialogue::DialogueSetup& setup, uint64_t seed, Hearing hearing)
     : setup_(setup), policy_(setup.domain), rng_(seed) {
@@ -22,8 +29,12 @@ bool Conversation::floor_free(const world::WorldSnapshot& world) const {
   if (world.ari && world.ari->speech.is_speaking) {
     return false;
   }
+  // Only those within conversation range of ARI: people talking across the room hold no floor of
+  // ARI's conversation.
   for (const world::HumanSnapshot& human : world.humans) {
-    if (human.speech.is_speaking) {
+    const bool near =
+        !world.ari || (human.pose.position - world.ari->pose.position).norm() < kConversationRangeM;
+    if (near && human.speech.is_speaking) {
       return false;
     }
   }

@@ -22,8 +22,15 @@ double distance_to_footprint(const core::Pose2& X_map_base, const Eigen::Vector2
 
 }  // namespace
 
+EpisodeMetrics MetricsRecorder::metrics() const {
+  EpisodeMetrics metrics = metrics_;
+  metrics.group_talk = world::ConversationFigures::of(conversation_.summary(), ari_id_);
+  return metrics;
+}
+
 void MetricsRecorder::observe(const Observations& observations) {
   const world::WorldSnapshot& world = observations.world;
+  conversation_.observe(world);
   const double dt_s = previous_time_s_ ? world.time_s - *previous_time_s_ : 0.0;
   previous_time_s_ = world.time_s;
   const NavigationState navigation = observations.navigation.state;
@@ -40,6 +47,7 @@ void MetricsRecorder::observe(const Observations& observations) {
 
   if (world.ari) {
     metrics_.has_ari = true;
+    ari_id_ = world.ari->id;
     if (previous_ari_position_) {
       metrics_.ari_path_length_m += (world.ari->pose.position - *previous_ari_position_).norm();
     }

@@ -14,8 +14,8 @@ GeneratedGroup generate_group(const RandomGroup& spec, core::Rng& rng) {
       spec.min_size + static_cast<unsigned>(rng.uniform_index(spec.max_size - spec.min_size + 1));
   group.centre = {rng.uniform(spec.centre_min.x(), spec.centre_max.x()),
                   rng.uniform(spec.centre_min.y(), spec.centre_max.y())};
-  const double radius_m = world::GroupNavigation::ospace_radius_for(size, group.member_spacing_m,
-                                                                    group.min_ospace_radius_m);
+  const double radius_m = world::GroupNavigation::ospace_radius_for(
+      size, world::GroupNavigation::member_spacing_for(group, size), group.min_ospace_radius_m);
   const double turn_rad = rng.uniform(-core::kPi, core::kPi);
   for (unsigned k = 0; k < size; ++k) {
     world::HumanSpec human;

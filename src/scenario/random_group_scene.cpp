@@ -65,10 +65,13 @@ void add_group(Scenario& scenario, const RandomGroupSceneSpec& spec, core::Rng& 
   world::GroupSpec group;
   group.id = id;
   group.centre = centre;
-  group.arrangement = spec.arrangements[rng.uniform_index(spec.arrangements.size())];
-  const GroupSizeRange sizes = group_sizes_of(group.arrangement);
-  const unsigned size =
-      sizes.min + static_cast<unsigned>(rng.uniform_index(sizes.max - sizes.min + 1));
+  std::vector<double> weights;
+  for (const GroupKind& kind : spec.mix) {
+    weights.push_back(kind.weight);
+  }
+  const GroupKind& kind = spec.mix[rng.categorical(weights)];
+  group.arrangement = kind.arrangement;
+  const unsigned size = kind.size;
   group.heading_rad = rng.uniform(-kPi, kPi);
 
   const world::FormationShape shape = world::GroupNavigation::settled_shape(group, size);
@@ -241,8 +244,8 @@ void RandomGroupSceneSpec::validate() const {
     throw core::ConfigError("RandomGroupSceneSpec: " + field + ": expected " + expected + ", got " +
                             got);
   };
-  if (arrangements.empty()) {
-    fail("arrangements", "at least one arrangement", "none");
+  if (const std::optional<MixProblem> problem = mix_problem(mix)) {
+    fail("mix", problem->expected, problem->got);
   }
   if (min_groups < 1 || min_groups > max_groups) {
     fail("min_groups", "1 <= min_groups <= max_groups (" + std::to_string(max_groups) + ")",
@@ -277,19 +280,6 @@ void RandomGroupSceneSpec::validate() const {
       fail(field, "a finite number >= 0", core::number_text(value));
     }
   }
-}
-
-GroupSizeRange group_sizes_of(model::Arrangement arrangement) {
-  switch (arrangement) {
-    case model::Arrangement::kCircle:
-      return {3, 4};
-    case model::Arrangement::kVisAVis:
-    case model::Arrangement::kLShape:
-      return {2, 4};
-    case model::Arrangement::kSideBySide:
-      return {2, 3};
-  }
-  return {};
 }
 
 Scenario make_random_group_scene(const RandomGroupSceneSpec& spec, uint64_t seed) {

@@ -15,7 +15,8 @@ namespace {
 
 const std::vector<std::string> kConditionTypes = {
     "distance_below", "distance_above",  "speech_finished",   "goal_reached", "navigation_failed",
-    "time_elapsed",   "perceived_group", "dialogue_finished", "heard"};
+    "time_elapsed",   "perceived_group", "dialogue_finished", "heard",        "floor_free",
+    "addressed"};
 const std::vector<std::string> kActionTypes = {"say",
                                                "set_goal",
                                                "approach",
@@ -235,6 +236,11 @@ class ScriptReader {
       condition = DialogueFinishedCondition{};
     } else if (type == "heard") {
       condition = HeardCondition{read_text(entry, "act")};
+    } else if (type == "floor_free") {
+      condition = FloorFreeCondition{read_human(entry, "person")};
+    } else if (type == "addressed") {
+      require_ari(entry, "type");
+      condition = AddressedCondition{};
     } else {
       PerceivedGroupCondition c;
       const std::vector<std::string> members = entry.required<std::vector<std::string>>("members");
@@ -355,9 +361,17 @@ class ScriptReader {
   // A group created during the run goes through the world's service, which carries only some of
   // the spec: the rest would silently take its default live and not in process, so it is refused.
   world::GroupSpec read_created_group(const core::YamlMap& entry) {
+    // Of the conversation, /sim/set_group_conversation carries the switch alone.
+    if (entry.has("conversation")) {
+      const core::YamlMap conversation = entry.map("conversation");
+      conversation.optional<bool>("enabled", true);
+      conversation.finish();
+    }
     return read_created(entry,
                         {"min_ospace_radius", "member_spacing", "social_distance", "spacing_factor",
-                         "step_speed", "shoulder_spacing", "facing_spread", "place_gain"},
+                         "step_speed", "shoulder_spacing", "facing_spread", "row_facing_spread",
+                         "spacing_spread", "row_spacing_spread", "attention", "shift", "shift_turn",
+                         "shift_interval", "place_gain", "turnover"},
                         "groups", world::parse_group);
   }
 

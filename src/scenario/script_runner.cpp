@@ -39,6 +39,30 @@ const world::HumanSnapshot* find_human(model::ObjectId id, const world::WorldSna
   return nullptr;
 }
 
+// Nobody of the person's group holds the floor; for a person in no group, the person is silent.
+bool floor_free(model::ObjectId person, const world::WorldSnapshot& world) {
+  const world::HumanSnapshot* human = find_human(person, world);
+  if (human == nullptr) {
+    return false;
+  }
+  for (const world::GroupSnapshot& group : world.groups) {
+    if (group.id == human->group_id) {
+      return group.speaker == model::kNoObject;
+    }
+  }
+  return !human->speech.is_speaking;
+}
+
+// A member of a talking group ARI takes part in is speaking to ARI.
+bool ari_addressed(const world::WorldSnapshot& world) {
+  return world.ari &&
+         std::any_of(
+             world.groups.begin(), world.groups.end(), [&](const world::GroupSnapshot& group) {
+               return group.robot_joining == world.ari->id && group.addressee == world.ari->id &&
+                      group.speaker != model::kNoObject && group.speaker != world.ari->id;
+             });
+}
+
 }  // namespace
 
 std::string describe(const Action& action) {
@@ -122,6 +146,7 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
       heard_in_state_.push_back(*act);
     }
   }
+  addressed_in_state_ = addressed_in_state_ || ari_addressed(observations.world);
   if (observations.dialogue_end && !dialogue_end_) {
     dialogue_end_ = observations.dialogue_end;
   }
@@ -194,6 +219,7 @@ void ScriptRunner::enter(size_t state, const Observations& observations, Command
   state_enter_s_ = now_s_;
   finished_in_state_.clear();
   heard_in_state_.clear();
+  addressed_in_state_ = false;
   record_visit(scenario_.script.states[state].name);
   run(scenario_.script.states[state].on_enter, observations, commands);
 }
@@ -243,6 +269,8 @@ bool ScriptRunner::holds(const Condition& condition, const Observations& observa
           },
           [&](const TimeElapsedCondition& c) { return now_s_ - state_enter_s_ >= c.seconds; },
           [&](const DialogueFinishedCondition&) { return dialogue_end_.has_value(); },
+          [&](const FloorFreeCondition& c) { return floor_free(c.person, world); },
+          [&](const AddressedCondition&) { return addressed_in_state_; },
           [&](const HeardCondition& c) {
             return std::any_of(heard_in_state_.begin(), heard_in_state_.end(),
                                [&](const std::string& act) { return act_matches(c.act, act); });

@@ -2,7 +2,8 @@
 // F-formation data set, for detect_groups (docs/perception_gcff.md, "GCFF on perceived streams").
 //
 //   export_group_streams --scenes N [--seed S] [--seconds T] [--every SECONDS]
-//                        [--errors default|off] [--arrangements LIST] --out DIR [--overwrite]
+//                        [--errors default|off] [--mix recorded|uniform] [--arrangements LIST]
+//                        --out DIR [--overwrite]
 //
 // Scene i is scenario::make_random_group_scene with seed S + i in worlds/room_12x12.yaml, run for
 // T seconds of sim time by the batch engine (scenario::Episode: the world, perception with
@@ -52,14 +53,18 @@ constexpr const char* kFiles[] = {"features.csv", "groundtruth.csv", "frames.csv
 
 constexpr const char* kUsage =
     "usage: export_group_streams --scenes N [--seed S] [--seconds T] [--every SECONDS]\n"
-    "                            [--errors default|off] [--arrangements LIST] --out DIR\n"
-    "                            [--overwrite]\n";
+    "                            [--errors default|off] [--mix recorded|uniform]\n"
+    "                            [--arrangements LIST] --out DIR [--overwrite]\n";
 
 constexpr const char* kHelp = R"(
 Runs N seeded random group scenes (scene i with seed S + i, S 1 by default) in the batch engine
-for T seconds of sim time each (60 by default): 3 to 5 groups of 2 to 4 people in F-formations of
-the arrangements LIST names (circle,vis-a-vis,l-shape,side-by-side: all four by default), 0 to 2
-people alone, standing or walking, and ARI driving from group to group, in worlds/room_12x12.yaml.
+for T seconds of sim time each (60 by default): 3 to 5 groups in F-formations, 0 to 2 people
+alone, standing or walking, and ARI driving from group to group, in worlds/room_12x12.yaml.
+The groups' arrangements and sizes are drawn from a mix: `recorded` (the default) as recorded
+gatherings have them, pairs and triads in each arrangement and circles of 4 to 6 more rarely;
+`uniform` each arrangement equally often, a circle of 3 or 4, a vis-a-vis or L-shape of 2 to 4,
+a side-by-side row of 2 or 3 (the mix before issue 31). Only the arrangements LIST names are
+drawn (circle,vis-a-vis,l-shape,side-by-side: all four by default).
 Every SECONDS of sim time (0.5 by default) it writes what ARI's perception reports, with
 config/perception.yaml's error models (--errors default) or none (--errors off):
 
@@ -81,13 +86,22 @@ Exit status: 0 on success, 2 on bad input (checked before any scene runs), 1 whe
 130 after SIGINT and 143 after SIGTERM.
 )";
 
+std::vector<model::Arrangement> all_arrangements() {
+  std::vector<model::Arrangement> all;
+  for (const auto& arrangement : model::kArrangements) {
+    all.push_back(arrangement.value);
+  }
+  return all;
+}
+
 struct Options {
   uint64_t scenes{0};
   uint64_t first_seed{1};
   double seconds{60.0};
   double every_s{0.5};
   bool errors{true};
-  std::vector<model::Arrangement> arrangements{scenario::RandomGroupSceneSpec{}.arrangements};
+  bool recorded_mix{true};
+  std::vector<model::Arrangement> arrangements{all_arrangements()};
   std::string out;
   bool overwrite{false};
 };
@@ -128,7 +142,7 @@ Options parse_options(int argc, char** argv) {
       continue;
     }
     core::check_known_option(arg, {"--scenes", "--seed", "--seconds", "--every", "--errors",
-                                   "--arrangements", "--out", "--overwrite"});
+                                   "--mix", "--arrangements", "--out", "--overwrite"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenes") {
       options.scenes = static_cast<uint64_t>(kScenes.parse(value));
@@ -144,6 +158,11 @@ Options parse_options(int argc, char** argv) {
         throw core::ConfigError("--errors: expected default or off, got '" + value + "'");
       }
       options.errors = value == "default";
+    } else if (arg == "--mix") {
+      if (value != "recorded" && value != "uniform") {
+        throw core::ConfigError("--mix: expected recorded or uniform, got '" + value + "'");
+      }
+      options.recorded_mix = value == "recorded";
     } else if (arg == "--arrangements") {
       options.arrangements = parse_arrangements(value);
     } else {
@@ -184,7 +203,9 @@ Export prepare(int argc, char** argv) {
   run.config.perception.errors_enabled = options.errors;
   run.scene.world = model::load_world_file(kWorld);
   run.scene.world_path = kWorld;
-  run.scene.arrangements = options.arrangements;
+  run.scene.mix = scenario::kinds_of(
+      options.recorded_mix ? scenario::recorded_group_mix() : scenario::uniform_group_mix(),
+      options.arrangements);
   run.scene.duration_s = options.seconds;
   run.scene.validate();
 

@@ -59,6 +59,9 @@ void GazeGenerator::draw(Object& owner, const StepContext& context, double now_s
 }
 
 void GazeGenerator::step(Object& owner, const StepContext& context) {
+  if (suspended_) {
+    return;
+  }
   const double now_s = context.time_s + context.dt_s;
   if (!next_change_s_) {
     next_change_s_ = now_s;

@@ -53,6 +53,14 @@ void Human::set_gaze_model(GazeModel model) {
     return;
   }
   gaze_ = &add_component(std::make_unique<GazeGenerator>(std::move(model), gaze_rng_));
+  gaze_->set_suspended(conversation_gaze_.has_value());
+}
+
+void Human::set_conversation_gaze(const std::optional<GazeEvent>& gaze) {
+  conversation_gaze_ = gaze;
+  if (gaze_ != nullptr) {
+    gaze_->set_suspended(gaze.has_value());
+  }
 }
 
 const std::optional<core::Pose2>& Human::goal() const {

@@ -186,10 +186,10 @@ void RobotReaction::update_gaze(const Object& owner, const RobotView& robot, dou
                           rng_.exponential(params_.gaze_mean_duration_s);
   }
   if (looking_at_robot_) {
-    gaze_ = ReactionGaze{robot.id, bearing(owner.centre(), robot.centre()), gaze_since_s_};
+    gaze_ = GazeEvent{robot.id, bearing(owner.centre(), robot.centre()), gaze_since_s_};
   } else if (profile_ == ReactionProfile::kAvoid) {
     // Looking anywhere but at ARI: along the body, which turns away from it.
-    gaze_ = ReactionGaze{model::kNoObject, owner.pose().theta, gaze_since_s_};
+    gaze_ = GazeEvent{model::kNoObject, owner.pose().theta, gaze_since_s_};
   } else {
     gaze_.reset();  // the person's own gaze
   }

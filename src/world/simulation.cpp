@@ -321,6 +321,20 @@ const GroupNavigation& Simulation::add_group(GroupSpec spec) {
   auto group = std::make_unique<GroupNavigation>(spec);
   GroupNavigation& ref = *group;
   insert_sorted(groups_, std::move(group));
+  if (const auto old = conversations_.find(spec.id); old != conversations_.end()) {
+    old->second->release(*this);  // a group of an id used before starts a conversation anew
+    conversations_.erase(old);
+  }
+  if (spec.conversation.enabled) {
+    set_group_conversation(spec.id, true);
+  }
+  turnovers_.erase(spec.id);
+  if (spec.turnover.active()) {
+    turnovers_.emplace(
+        spec.id, std::make_unique<GroupTurnover>(
+                     spec.turnover,
+                     core::rng_for(config_.seed, core::rng_streams::kGroupTurnover, spec.id)));
+  }
   return ref;
 }
 
@@ -663,12 +677,79 @@ Object& Simulation::existing_agent(const RequestCheck& check, const std::string&
 
 double Simulation::say(model::ObjectId speaker_id, const std::string& act,
                        const std::string& content) {
-  Object& speaker = existing_agent(RequestCheck("say"), "speaker_id", speaker_id);
-  SpeechGenerator& speech = speaker.kind() == ObjectKind::kAri
-                                ? static_cast<Ari&>(speaker).speech()
-                                : static_cast<Human&>(speaker).speech();
+  existing_agent(RequestCheck("say"), "speaker_id", speaker_id);
+  SpeechGenerator& speech = *mutable_speech(speaker_id);
   speech.say(act, content, time_s());
   return speech.duration_s(content);
+}
+
+SpeechGenerator* Simulation::mutable_speech(model::ObjectId id) {
+  if (ari_ && ari_->id() == id) {
+    return &ari_->speech();
+  }
+  Human* human = mutable_human(id);
+  return human != nullptr ? &human->speech() : nullptr;
+}
+
+void Simulation::set_group_conversation(model::ObjectId group_id, bool enabled) {
+  const GroupNavigation& group = existing_group(RequestCheck("set_group_conversation"), group_id);
+  const auto it = conversations_.find(group_id);
+  if (!enabled && it != conversations_.end()) {
+    it->second->release(*this);
+    conversations_.erase(it);
+  } else if (enabled && it == conversations_.end()) {
+    conversations_.emplace(
+        group_id,
+        std::make_unique<GroupConversation>(
+            group_id, group.spec().conversation,
+            core::rng_for(config_.seed, core::rng_streams::kGroupConversation, group_id)));
+  }
+}
+
+void Simulation::set_conversation_lines(std::shared_ptr<const ConversationLines> lines) {
+  conversation_lines_ = std::move(lines);
+}
+
+const GroupConversation* Simulation::find_conversation(model::ObjectId group_id) const {
+  const auto it = conversations_.find(group_id);
+  return it == conversations_.end() ? nullptr : it->second.get();
+}
+
+// A group's part (its conversation, its turnover) is stepped while the group exists; the part of
+// a group that ended is handed to `drop` and forgotten.
+template <class Part, class StepPart, class DropPart>
+void Simulation::step_parts_of_groups(std::map<model::ObjectId, std::unique_ptr<Part>>& parts,
+                                      StepPart step, DropPart drop) {
+  for (auto it = parts.begin(); it != parts.end();) {
+    const GroupNavigation* group = find_group(it->first);
+    if (group == nullptr) {
+      drop(*it->second);
+      it = parts.erase(it);
+      continue;
+    }
+    step(*it->second, *group);
+    ++it;
+  }
+}
+
+void Simulation::step_conversations(const StepContext& context) {
+  step_parts_of_groups(
+      conversations_,
+      [&](GroupConversation& conversation, const GroupNavigation& group) {
+        conversation.step(context, group, conversation_lines_.get());
+      },
+      [&](GroupConversation& conversation) { conversation.release(*this); });
+}
+
+// After the conversations: a member leaves or a passer-by joins between two turns' steps. Groups
+// are looked up afresh, as a departure may end one.
+void Simulation::step_turnovers() {
+  step_parts_of_groups(
+      turnovers_,
+      [&](GroupTurnover& turnover, const GroupNavigation& group) {
+        turnover.step(*this, group, config_.step_s);
+      },
+      [](GroupTurnover&) {});
 }
 
 void Simulation::release_from_group(Human& human) {
@@ -861,6 +942,8 @@ void Simulation::step() {
   for (const std::unique_ptr<WalkingGroup>& walking : walking_groups_) {
     walking->step(context);
   }
+  step_conversations(context);
+  step_turnovers();
   converse_on_arrival();
   ++step_count_;
 }

@@ -131,6 +131,16 @@ void SpeechGenerator::step(Object& owner, const StepContext& context) {
       static_cast<size_t>(std::floor((now_s - start_s_) / seconds_per_word + kTimeEpsilon));
 }
 
+void SpeechGenerator::stop(double now_s) {
+  if (is_speaking()) {
+    finish(now_s, true);
+  }
+}
+
+double SpeechGenerator::end_s() const {
+  return start_s_ + static_cast<double>(words_.size()) * 60.0 / words_per_minute_;
+}
+
 void SpeechGenerator::finish(double end_s, bool interrupted) {
   history_.push_back({act_, content_, start_s_, end_s, interrupted});
   if (history_.size() > kHistoryLength) {

@@ -56,8 +56,10 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     const RobotReaction* reaction = human->reaction();
     if (reaction != nullptr && reaction->gaze()) {
       // The reaction to ARI overrides the person's own gaze while it lasts.
-      const ReactionGaze& gaze = *reaction->gaze();
+      const GazeEvent& gaze = *reaction->gaze();
       h.gaze = {gaze.target, gaze.direction_rad, gaze.since_s};
+    } else if (const std::optional<GazeEvent>& talk = human->conversation_gaze()) {
+      h.gaze = {talk->target, talk->direction_rad, talk->since_s};
     } else if (const GazeGenerator* gaze = human->gaze()) {
       h.gaze = {gaze->target(), gaze->direction_rad(), gaze->since_s()};
     } else {
@@ -67,9 +69,18 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     snapshot.humans.push_back(std::move(h));
   }
   for (const GroupNavigation* group : simulation.groups()) {
-    snapshot.groups.push_back({group->id(), group->members(), group->centre(),
-                               group->ospace_radius_m(), group->arrangement(),
-                               group->heading_rad().value_or(0.0), group->robot_joining()});
+    GroupSnapshot& g = snapshot.groups.emplace_back();
+    g = {group->id(),           group->members(),
+         group->centre(),       group->ospace_radius_m(),
+         group->arrangement(),  group->heading_rad().value_or(0.0),
+         group->robot_joining()};
+    if (const GroupConversation* conversation = simulation.find_conversation(group->id())) {
+      const ConversationFloor& floor = conversation->floor();
+      g.converses = true;
+      g.speaker = floor.speaker;
+      g.addressee = floor.addressee;
+      g.utterance_end_s = floor.utterance_end_s;
+    }
   }
   for (const WalkingGroup* walking : simulation.walking_groups()) {
     snapshot.walking_groups.push_back({walking->id(), walking->members(), walking->formation(),

@@ -105,6 +105,10 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     g.arrangement = model::to_string(group.arrangement);
     g.heading = group.heading_rad;
     g.robot_joining = group.robot_joining;
+    g.converses = group.converses;
+    g.speaker = group.speaker;
+    g.addressee = group.addressee;
+    g.utterance_end = group.utterance_end_s;
     msg.groups.push_back(std::move(g));
   }
   for (const world::WalkingGroupSnapshot& walking : snapshot.walking_groups) {
@@ -192,7 +196,11 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
          g.ospace_radius,
          core::parse_choice(g.arrangement, model::kArrangements, "arrangement"),
          g.heading,
-         g.robot_joining});
+         g.robot_joining,
+         g.converses != 0,
+         g.speaker,
+         g.addressee,
+         g.utterance_end});
   }
   for (const WalkingGroupState& w : msg.walking_groups) {
     // input_problem refuses an unknown formation or arrival before a message gets here.
@@ -301,6 +309,7 @@ std::optional<InputProblem> input_problem(const WorldState& msg) {
     check.finite(field + ".centre.y", msg.groups[i].centre.y);
     check.finite(field + ".ospace_radius", msg.groups[i].ospace_radius);
     check.finite(field + ".heading", msg.groups[i].heading);
+    check.finite(field + ".utterance_end", msg.groups[i].utterance_end);
     check.that(
         core::names_a_choice(msg.groups[i].arrangement, model::kArrangements),
         field + ".arrangement",

@@ -100,6 +100,7 @@ SideBySide run_side_by_side(const scenario::Scenario& scenario,
   world::Scene scene = scenario.scene;
   scene.seed = kSeed;
   run.twin = world::build_simulation(scene, config.simulation);
+  run.twin->set_conversation_lines(config.conversation_lines);  // as the engine's groups talk
   run.twin->step();
   run.episode->step();
   send_requests(*run.twin);

@@ -3,6 +3,8 @@
 says its lines over /tts, one each time the humans of the world have been quiet for ~quiet seconds
 of sim time, waiting for each goal to finish first."""
 import actionlib
+import math
+
 import rospy
 from geometry_msgs.msg import Pose2D
 
@@ -23,7 +25,10 @@ class ScriptedAri:
     def on_state(self, state):
         now = state.header.stamp.to_sec()
         self.ari_id = state.ari.id
-        if any(h.speech.is_speaking for h in state.humans) or self.last_voice_s is None:
+        # The people it talks with, not a group chatting across the room.
+        near = [h for h in state.humans
+                if math.hypot(h.pose.x - state.ari.pose.x, h.pose.y - state.ari.pose.y) < 3.0]
+        if any(h.speech.is_speaking for h in near) or self.last_voice_s is None:
             self.last_voice_s = now
         self.now_s = now
 

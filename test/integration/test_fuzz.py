@@ -40,6 +40,7 @@ from ari_social_sim.msg import (ApproachAction, ApproachGoal, Group, IdsList, Tt
 from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, DialogueReset,
                                 DialogueStep, JoinGroup, LeaveGroup, RemoveHuman, Say,
                                 SetGazeTargets, SetGoal, SetGroupArrangement, SetGroupCentre,
+                                SetGroupConversation,
                                 SetPose, SetReaction, SetVelocity, SpawnHuman, StepSimulation)
 
 from fuzz_values import mutate
@@ -116,6 +117,8 @@ def baselines(rng, world):
                                                          members=[human])),
         "/sim/set_group_centre": (SetGroupCentre, dict(group_id=rng.choice(groups),
                                                        centre=pose_point(pose))),
+        "/sim/set_group_conversation": (SetGroupConversation, dict(
+            group_id=rng.choice(groups), enabled=rng.random() < 0.5)),
         "/sim/say": (Say, dict(speaker_id=human, act="QUESTION:TIME", content="what time is it")),
         "/sim/set_gaze_targets": (SetGazeTargets, dict(id=human, targets=humans[:2],
                                                        probabilities=[0.5, 0.5],

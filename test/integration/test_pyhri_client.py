@@ -24,6 +24,7 @@ from pyhri_like_client import DROPPED, HRIListener
 WARM_UP_S = 4.0      # wall time perception runs before the client starts
 OBSERVE_S = 3.0      # wall time the client runs before the checks
 LINK_DEADLINE_S = 1.0
+EMPTY_LIST_WAIT_S = 2.0  # wall time to look again while a tracked list is empty
 
 
 def resolved(transform):
@@ -41,6 +42,25 @@ class PyhriClient(unittest.TestCase):
         time.sleep(OBSERVE_S)
 
     def test_bodies_faces_and_persons_resolve_to_base_link(self):
+        # A tracked list is empty in a frame its detector missed, as hri_face_detect's is (one
+        # missed frame drops a face): Marie's face, 1.3 m away, is missed in about 8 % of frames.
+        # Look again, as a client would, until every kind lists something or EMPTY_LIST_WAIT_S.
+        limit = time.monotonic() + EMPTY_LIST_WAIT_S
+        while True:
+            counts, failures = self.resolve_to_base_link()
+            if all(total for _, total in counts.values()) or time.monotonic() > limit:
+                break
+            time.sleep(0.05)
+        print("[ measured ] transforms to base_link: " + ", ".join(
+            "%s %d/%d" % (kind, ok, total) for kind, (ok, total) in counts.items()))
+        for kind, (ok, total) in counts.items():
+            self.assertGreater(total, 0, "no tracked %s with a location" % kind)
+        if failures:
+            self.fail("unresolved: " + "; ".join(failures))
+
+    def resolve_to_base_link(self):
+        """(counts, failures): per kind, how many tracked objects resolve to base_link of how
+        many, and each that does not, with why."""
         counts = {}
         failures = []
 
@@ -63,12 +83,7 @@ class PyhriClient(unittest.TestCase):
         check("body", self.hri.bodies)
         check("face", self.hri.faces)
         check("person", self.hri.tracked_persons, lambda p: p.loc_confidence > 0.0)
-        print("[ measured ] transforms to base_link: " + ", ".join(
-            "%s %d/%d" % (kind, ok, total) for kind, (ok, total) in counts.items()))
-        for kind, (ok, total) in counts.items():
-            self.assertGreater(total, 0, "no tracked %s with a location" % kind)
-        if failures:
-            self.fail("unresolved: " + "; ".join(failures))
+        return counts, failures
 
     def test_tracked_persons_are_linked_to_their_tracked_body_within_1s(self):
         end = time.monotonic()

@@ -84,6 +84,7 @@ class LiveChain {
     world::Scene scene = scenario.scene;
     scene.seed = seed;
     world_ = world::build_simulation(scene, config.simulation);
+    world_->set_conversation_lines(config.conversation_lines);  // as world_node installs them
     // /map, latched, as hri_perception_node and social_mpc_node receive it.
     const model::OccupancyGrid map =
         world::rasterize_static_map(scene.world, config.simulation.map_resolution_m);

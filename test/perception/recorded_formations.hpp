@@ -84,4 +84,89 @@ inline std::map<SpreadKey, FormationSpread> recorded_formation_spreads() {
   return spreads;
 }
 
+/// A 10th-90th percentile band.
+struct Band {
+  double low{0.0}, high{0.0};
+};
+
+inline Band band_of(const std::vector<double>& values) {
+  return {percentile(values, 0.1), percentile(values, 0.9)};
+}
+
+/// How much of the recorded band the world's covers: |intersection| / |recorded band| (1 when
+/// the recorded band is a single value the world's band holds).
+inline double band_overlap(const Band& world, const Band& recorded) {
+  const double common = std::min(world.high, recorded.high) - std::max(world.low, recorded.low);
+  const double width = recorded.high - recorded.low;
+  if (width <= 0.0) {
+    return world.low <= recorded.low && recorded.low <= world.high ? 1.0 : 0.0;
+  }
+  return std::max(0.0, common) / width;
+}
+
+/// Change of facing (deg, 0-180) as the CoffeeBreak annotators would have marked it: both facings
+/// rounded to a multiple of 90 degrees first.
+inline double quadrant_turn_deg(double from_rad, double to_rad) {
+  auto quadrant = [](double theta) { return std::lround(theta / (M_PI / 2.0)); };
+  const long steps = ((quadrant(to_rad) - quadrant(from_rad)) % 4 + 4) % 4;
+  return 90.0 * static_cast<double>(steps == 3 ? 1 : steps);
+}
+
+/// How members of standing groups move between two looks: each member's displacement (m), the
+/// change of its facing (deg), and that change with both facings rounded to multiples of 90 deg.
+struct MemberMotion {
+  int members{0};
+  std::vector<double> displacement_m, turn_deg, quadrant_turn_deg;
+};
+
+/// The members of the recorded CoffeeBreak groups (sequences 1 and 2) of each size whose group
+/// is the same in two consecutive annotated frames, between those frames. Synth is left out: its
+/// people are drawn, not recorded, and barely move between frames (a median of 5 mm).
+inline std::map<size_t, MemberMotion> recorded_member_motion() {
+  std::map<size_t, MemberMotion> motion;
+  for (const char* set : {"CoffeeBreak_Seq1", "CoffeeBreak_Seq2"}) {
+    const std::string stem = core::data_set_dir("fformation") + "/" + set;
+    const FeatureTable features = read_fformation_features(stem + "_features.csv");
+    const GroupTable groups = read_fformation_groups(stem + "_groups.csv");
+    auto person = [&features](FrameId frame, const std::string& id) -> const GcffPerson* {
+      const auto people = features.find(frame);
+      if (people == features.end()) {
+        return nullptr;
+      }
+      const auto found = std::find_if(people->second.begin(), people->second.end(),
+                                      [&id](const GcffPerson& p) { return p.id == id; });
+      return found == people->second.end() ? nullptr : &*found;
+    };
+    for (const auto& [frame, grouping] : groups) {
+      const auto next = groups.find(frame + 1);
+      if (next == groups.end()) {
+        continue;
+      }
+      for (std::vector<std::string> ids : grouping) {
+        std::sort(ids.begin(), ids.end());
+        const bool kept = std::any_of(next->second.begin(), next->second.end(),
+                                      [&ids](std::vector<std::string> later) {
+                                        std::sort(later.begin(), later.end());
+                                        return later == ids;
+                                      });
+        for (const std::string& id : ids) {
+          const GcffPerson* before = person(frame, id);
+          const GcffPerson* after = person(frame + 1, id);
+          if (!kept || before == nullptr || after == nullptr) {
+            continue;
+          }
+          MemberMotion& m = motion[ids.size()];
+          ++m.members;
+          m.displacement_m.push_back(std::hypot(after->x - before->x, after->y - before->y) /
+                                     100.0);
+          const double turn = std::abs(std::remainder(after->theta - before->theta, 2.0 * M_PI));
+          m.turn_deg.push_back(turn * 180.0 / M_PI);
+          m.quadrant_turn_deg.push_back(quadrant_turn_deg(before->theta, after->theta));
+        }
+      }
+    }
+  }
+  return motion;
+}
+
 }  // namespace ari_social_sim::perception::test

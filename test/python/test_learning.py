@@ -67,6 +67,35 @@ def test_wrong_shapes_and_non_finite_actions_are_refused_by_name(action, message
     assert message in str(error.value)
 
 
+CONVERSATION_INFO = ("turn_transitions", "overlap_share", "listener_gaze_at_speaker",
+                     "ari_floor_share", "ari_interruptions", "ari_addressed_after_s",
+                     "ari_entered_in_pause", "interruptions", "intrusions", "entries", "answers", "answer_delay_s")
+
+
+def test_join_conversation_takes_speak_and_reports_the_conversation():
+    env = learning.make("join_conversation", time_limit=3.0)
+    assert env.action_space.shape == (4,)
+    assert env.action_space.low[3] == 0.0 and env.action_space.high[3] == 1.0
+    obs, info = env.reset(seed=1)
+    assert obs.shape == env.observation_space.shape
+    assert env.observation_layout["conversation"].stop == obs.shape[0]
+    for key in CONVERSATION_INFO:
+        assert np.isfinite(info[key]), key
+    with pytest.raises(ValueError, match=r"action: expected shape \(4,\), got \(3,\)"):
+        env.step([0.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match=r"action\[3\] \(speak\): expected a finite number"):
+        env.step([0.0, 0.0, 0.0, float("nan")])
+    for _ in range(20):
+        obs, reward, terminated, truncated, info = env.step([0.0, 0.0, 0.0, 1.0])
+    assert info["ari_lines"] >= 1  # ARI's greeting
+    assert np.isfinite(reward)
+    envs = learning.make_vector("join_conversation", 2, time_limit=3.0)
+    envs.reset(seed=1)
+    with pytest.raises(ValueError, match=r"actions: expected shape \(2, 4\), got \(2, 3\)"):
+        envs.step(np.zeros((2, 3)))
+    envs.step(np.zeros((2, 4)))
+
+
 def test_vector_actions_are_checked_before_any_environment_steps():
     envs = learning.make_vector("join_group", 3)
     envs.reset(seed=1)

@@ -27,8 +27,8 @@ TEST(RandomGroup, MembersStandEvenlyOnTheOspaceCircleFacingTheCentre) {
   ASSERT_GE(n, 2u);
   ASSERT_LE(n, 5u);
   const world::GroupSpec defaults;
-  const double radius_m = world::GroupNavigation::ospace_radius_for(n, defaults.member_spacing_m,
-                                                                    defaults.min_ospace_radius_m);
+  const double radius_m = world::GroupNavigation::ospace_radius_for(
+      n, world::GroupNavigation::member_spacing_for(defaults, n), defaults.min_ospace_radius_m);
   for (size_t k = 0; k < n; ++k) {
     const world::HumanSpec& h = g.humans[k];
     EXPECT_EQ(h.id, 20u + k);

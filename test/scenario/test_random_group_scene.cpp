@@ -46,11 +46,22 @@ TEST(RandomGroupScene, SameSeedSameSceneOtherSeedOtherScene) {
             describe(make_random_group_scene(spec(), 5)));
 }
 
-// Over 200 seeds: 3 to 5 groups, sizes by arrangement, centres in the area 3 m apart, members at
-// their places within the jitter, every arrangement drawn, and the world accepts every scene.
+// The kinds of group a mix can draw.
+std::set<std::pair<model::Arrangement, size_t>> kinds_in(const std::vector<GroupKind>& mix) {
+  std::set<std::pair<model::Arrangement, size_t>> kinds;
+  for (const GroupKind& kind : mix) {
+    kinds.insert({kind.arrangement, kind.size});
+  }
+  return kinds;
+}
+
+// Over 200 seeds of the default (recorded) mix: 3 to 5 groups of the mix's kinds, centres in the
+// area 3 m apart, members at their places within the jitter, every kind drawn, and the world
+// accepts every scene.
 TEST(RandomGroupScene, GroupsAreDrawnAsSpecifiedAndTheWorldTakesThem) {
   const RandomGroupSceneSpec s = spec();
-  std::map<model::Arrangement, int> arrangements;
+  const auto mix_kinds = kinds_in(s.mix);
+  std::map<std::pair<model::Arrangement, size_t>, int> kinds;
   std::set<size_t> lone_counts;
   for (uint64_t seed = 1; seed <= 200; ++seed) {
     const Scenario scene = make_random_group_scene(s, seed);
@@ -64,10 +75,7 @@ TEST(RandomGroupScene, GroupsAreDrawnAsSpecifiedAndTheWorldTakesThem) {
     size_t members = 0;
     for (size_t g = 0; g < groups.size(); ++g) {
       const world::GroupSpec& group = groups[g];
-      ++arrangements[group.arrangement];
-      const GroupSizeRange sizes = group_sizes_of(group.arrangement);
-      EXPECT_GE(group.members.size(), sizes.min);
-      EXPECT_LE(group.members.size(), sizes.max);
+      ++kinds[{group.arrangement, group.members.size()}];
       EXPECT_TRUE((group.centre.array() >= 2.0).all() && (group.centre.array() <= 10.0).all());
       for (size_t h = 0; h < g; ++h) {
         EXPECT_GE((group.centre - groups[h].centre).norm(), 3.0) << "seed " << seed;
@@ -90,17 +98,62 @@ TEST(RandomGroupScene, GroupsAreDrawnAsSpecifiedAndTheWorldTakesThem) {
     EXPECT_NO_THROW(world::build_simulation(scene.scene, world::SimulationConfig{}))
         << "seed " << seed;
   }
-  // 200 seeds x 4 groups on average over 4 arrangements: each about 200 times.
-  ASSERT_EQ(arrangements.size(), 4u);
-  for (const auto& [arrangement, count] : arrangements) {
-    EXPECT_GT(count, 100) << model::to_string(arrangement);
+  // Every kind of the mix drawn (circles of six are 1 % of about 800 groups), and no other.
+  std::set<std::pair<model::Arrangement, size_t>> drawn;
+  for (const auto& [kind, count] : kinds) {
+    drawn.insert(kind);
   }
+  EXPECT_EQ(drawn, mix_kinds);
   EXPECT_EQ(lone_counts, (std::set<size_t>{0, 1, 2}));
+}
+
+// The default mix against the recorded groups (docs/world.md section 4.8): pairs 412 and triads
+// 233 of the recorded 645, by arrangement; four to six in Coleman and James' ratios, lambda / n.
+TEST(RandomGroupScene, TheDefaultMixIsTheRecordedOne) {
+  std::map<std::pair<model::Arrangement, size_t>, double> weights;
+  double total = 0.0;
+  for (const GroupKind& kind : recorded_group_mix()) {
+    weights[{kind.arrangement, kind.size}] += kind.weight;
+    total += kind.weight;
+  }
+  ASSERT_EQ(weights.size(), 8u);
+  const auto weight = [&](model::Arrangement arrangement, size_t size) {
+    return weights[{arrangement, size}];
+  };
+  using model::Arrangement;
+  const double lambda = 3.0 * 233.0 / 412.0;
+  EXPECT_NEAR(weight(Arrangement::kVisAVis, 2) / weight(Arrangement::kSideBySide, 2), 135.0 / 76.0,
+              1e-9);
+  EXPECT_NEAR(weight(Arrangement::kLShape, 2) / weight(Arrangement::kCircle, 3), 201.0 / 199.0,
+              1e-9);
+  EXPECT_NEAR(weight(Arrangement::kCircle, 4) / 233.0, lambda / 4.0, 1e-9);
+  EXPECT_NEAR(weight(Arrangement::kCircle, 6) / weight(Arrangement::kCircle, 5), lambda / 6.0,
+              1e-9);
+  // Pairs facing each other outnumber side-by-side rows of any size, as recorded.
+  EXPECT_GT(weight(Arrangement::kVisAVis, 2),
+            weight(Arrangement::kSideBySide, 2) + weight(Arrangement::kSideBySide, 3));
+  // Pairs are 412 of the recorded 645: 52 % of the mix once the larger circles join.
+  EXPECT_NEAR(412.0 / total, 0.524, 0.001);
+}
+
+// The mix before issue 31: each arrangement a quarter of the time, its sizes evenly.
+TEST(RandomGroupScene, TheUniformMixDrawsEachArrangementEquallyOften) {
+  std::map<model::Arrangement, double> share;
+  for (const GroupKind& kind : uniform_group_mix()) {
+    share[kind.arrangement] += kind.weight;
+    const GroupSizeRange sizes = group_sizes_of(kind.arrangement);
+    EXPECT_GE(kind.size, sizes.min);
+    EXPECT_LE(kind.size, sizes.max);
+  }
+  ASSERT_EQ(share.size(), 4u);
+  for (const auto& [arrangement, weight] : share) {
+    EXPECT_DOUBLE_EQ(weight, 0.25) << model::to_string(arrangement);
+  }
 }
 
 TEST(RandomGroupScene, OnlyTheArrangementsAskedForAreDrawn) {
   RandomGroupSceneSpec s = spec();
-  s.arrangements = {model::Arrangement::kSideBySide};
+  s.mix = kinds_of(s.mix, {model::Arrangement::kSideBySide});
   for (uint64_t seed = 1; seed <= 20; ++seed) {
     for (const world::GroupSpec& group : make_random_group_scene(s, seed).scene.groups) {
       EXPECT_EQ(group.arrangement, model::Arrangement::kSideBySide);
@@ -144,9 +197,21 @@ TEST(RandomGroupScene, AriVisitsTheGroupsInTurn) {
 
 TEST(RandomGroupScene, ASpecThatCannotGiveASceneIsRefused) {
   RandomGroupSceneSpec none = spec();
-  none.arrangements.clear();
-  world::test::expect_config_error([&] { make_random_group_scene(none, 1); }, "arrangements",
-                                   {"at least one arrangement"});
+  none.mix.clear();
+  world::test::expect_config_error([&] { make_random_group_scene(none, 1); }, "mix",
+                                   {"a weight > 0", "got 0 kinds"});
+  RandomGroupSceneSpec pair_circle = spec();
+  pair_circle.mix = {{model::Arrangement::kCircle, 2, 1.0}};
+  world::test::expect_config_error([&] { pair_circle.validate(); }, "mix",
+                                   {"circles of 3 or more", "got a circle of 2"});
+  RandomGroupSceneSpec seven = spec();
+  seven.mix = {{model::Arrangement::kLShape, 7, 1.0}};
+  world::test::expect_config_error([&] { seven.validate(); }, "mix",
+                                   {"sizes from 2 to 6", "got a l-shape of 7"});
+  RandomGroupSceneSpec negative = spec();
+  negative.mix = {{model::Arrangement::kVisAVis, 2, -1.0}};
+  world::test::expect_config_error([&] { negative.validate(); }, "mix",
+                                   {"finite and >= 0", "got -1 for a vis-a-vis of 2"});
   RandomGroupSceneSpec inverted = spec();
   inverted.min_groups = 6;
   world::test::expect_config_error([&] { inverted.validate(); }, "min_groups",

@@ -81,7 +81,8 @@ TEST(Scenario, EveryShippedScenarioLoads) {
   } shipped[] = {{"group_discussion", 2, 7, false},
                  {"waiting_room", 6, 4, true},
                  {"corridor", 6, 1, false},
-                 {"join_group", 0, 4, false}};
+                 {"join_group", 0, 4, false},
+                 {"join_conversation", 3, 7, false}};
   for (const auto& expected : shipped) {
     const Scenario s = load_scenario_file(kSource + "/scenarios/" + expected.name + ".yaml");
     EXPECT_EQ(s.scene.humans.size(), expected.humans) << expected.name;
@@ -130,12 +131,16 @@ TEST(Scenario, EveryConditionAndActionTypeReads) {
       "            - {type: time_elapsed, seconds: 3}\n"
       "            - {type: perceived_group, members: [ari, 10, 21]}\n"
       "            - {type: heard, act: 'greet*'}\n"
+      "            - {type: floor_free, person: 10}\n"
+      "            - {type: addressed}\n"
       "          do: [{type: stop, success: true, reason: done}]\n"
       "        - when: []\n"
       "          next: a\n"));
   const State& a = s.script.states[0];
   EXPECT_EQ(a.on_enter.size(), 11u);
-  EXPECT_EQ(a.transitions[0].when.size(), 8u);
+  EXPECT_EQ(a.transitions[0].when.size(), 10u);
+  EXPECT_EQ(std::get<FloorFreeCondition>(a.transitions[0].when[8]).person, 10u);
+  EXPECT_TRUE(std::holds_alternative<AddressedCondition>(a.transitions[0].when[9]));
   EXPECT_EQ(std::get<HeardCondition>(a.transitions[0].when[7]).act, "greet*");
   EXPECT_TRUE(a.transitions[0].next.empty());
   EXPECT_TRUE(a.transitions[1].when.empty());
@@ -212,6 +217,8 @@ TEST(Scenario, ConditionErrorsNameTheCondition) {
   expect_rejected(when("{type: perceived_group, members: [10, bob]}"),
                   {at + ".members", "ari or human ids", "'bob'"});
   expect_rejected(when("{type: heard}"), {at + ".act", "required"});
+  expect_rejected(when("{type: floor_free}"), {at + ".person", "required"});
+  expect_rejected(when("{type: floor_free, person: 77}"), {at + ".person", "77"});
   // No human of the script says it: the state would wait for ever.
   expect_rejected(when("{type: heard, act: 'QUESTION:*'}"),
                   {"script.states[0].transitions[0].when: heard", "a line a human of the script",
@@ -253,6 +260,16 @@ TEST(Scenario, ActionErrorsNameTheAction) {
   expect_rejected(enter("{type: create_group, group: {id: 4, members: [10], centre: [1, 1], "
                         "facing_spread: 5}}"),
                   {at + ".group.facing_spread", "default facing_spread"});
+  expect_rejected(enter("{type: create_group, group: {id: 4, members: [10], centre: [1, 1], "
+                        "attention: 0.2}}"),
+                  {at + ".group.attention", "default attention"});
+  expect_rejected(enter("{type: create_group, group: {id: 4, members: [10], centre: [1, 1], "
+                        "turnover: {join_rate: 1}}}"),
+                  {at + ".group.turnover", "default turnover"});
+  // Of the conversation, /sim/set_group_conversation carries the switch alone.
+  expect_rejected(enter("{type: create_group, group: {id: 4, members: [10], centre: [1, 1], "
+                        "conversation: {enabled: false, lapse_mean: 3}}}"),
+                  {at + ".group.conversation", "lapse_mean"});
   expect_rejected(enter("{type: create_walking_group, group: {id: 1, members: [10, 11], goal: "
                         "{position: [1, 1]}}}"),
                   {at + ".group.id", "used by no other group", "1"});

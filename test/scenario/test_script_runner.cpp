@@ -390,6 +390,58 @@ TEST(ScriptRunner, PerceivedGroupNeedsEveryListedMember) {
   EXPECT_TRUE(runner.finished());
 }
 
+// A script of one state that stops once `condition` holds, and Paul (10) and Irene (11) talking
+// in group 1 (each test sets who speaks to whom); ARI (id 1) stands apart.
+struct TalkingPair {
+  explicit TalkingPair(const std::string& condition)
+      : scenario(inline_scenario("  time_limit: 60\n  start: a\n  states:\n"
+                                 "    - name: a\n      transitions: [{when: [" +
+                                 condition + "], do: [{type: stop, success: true}]}]\n")),
+        runner(scenario, 2) {
+    world::GroupSnapshot group;
+    group.id = 1;
+    group.members = {10, 11};
+    group.converses = true;
+    stage.obs.world.groups = {group};
+    stage.obs.world.humans[0].group_id = 1;
+    stage.obs.world.humans[1].group_id = 1;
+    stage.obs.world.ari->id = 1;
+  }
+  world::GroupSnapshot& group() { return stage.obs.world.groups[0]; }
+  // Two ticks: a condition that holds ends the run.
+  bool finished_after_ticks() {
+    stage.tick(runner, commands);
+    stage.tick(runner, commands);
+    return runner.finished();
+  }
+
+  const Scenario scenario;  // the runner keeps a reference
+  ScriptRunner runner;
+  RecordingCommands commands;
+  Stage stage;
+};
+
+TEST(ScriptRunner, FloorFreeWaitsForAPauseInThePersonsGroup) {
+  TalkingPair pair("{type: floor_free, person: 10}");
+  pair.group().speaker = 11;  // Irene has the floor
+  EXPECT_FALSE(pair.finished_after_ticks());
+  pair.group().speaker = model::kNoObject;  // a pause
+  EXPECT_TRUE(pair.finished_after_ticks());
+}
+
+TEST(ScriptRunner, AddressedCountsAMemberSpeakingToAriSinceTheStateBegan) {
+  TalkingPair pair("{type: addressed}");
+  pair.group().speaker = 10;
+  pair.group().addressee = 11;  // Paul talks to Irene
+  EXPECT_FALSE(pair.finished_after_ticks());
+  pair.group().addressee = 1;  // to ARI, who is not in the group yet
+  EXPECT_FALSE(pair.finished_after_ticks());
+  pair.group().robot_joining = 1;
+  pair.stage.tick(pair.runner, pair.commands);
+  pair.group().addressee = 11;  // a moment to ARI is enough
+  EXPECT_TRUE(pair.finished_after_ticks());
+}
+
 TEST(ScriptRunner, RandomGroupsAreAddedBeforeTheStartState) {
   const Scenario s = inline_scenario(
       "  time_limit: 60\n  start: a\n"

@@ -59,6 +59,18 @@ inline std::vector<model::ObjectId> add_random_humans(Simulation& simulation, in
   return ids;
 }
 
+/// D6.4's group model alone: no stances, spacings of their own, attention or shifts (issue 31's
+/// member manners off), so that a test can check the equations' geometry exactly.
+inline void without_manners(GroupSpec& group) {
+  group.facing_spread_deg = 0.0;
+  group.spacing_spread = 0.0;
+  group.row_spacing_spread.reset();
+  group.row_facing_spread_deg.reset();
+  group.attention = 0.0;
+  group.shift_m = 0.0;
+  group.shift_turn_deg = 0.0;
+}
+
 /// A small world every kind of request can act on: square_room(6) (floor [-0.2, 6.2] on both
 /// axes), humans 10 at (2, 2) and 11 at (4, 2) in group 1 around (3, 2), 12 standing at (3, 4),
 /// ARI (id 1) at (1, 5).
@@ -80,6 +92,7 @@ inline std::unique_ptr<Simulation> request_world() {
   group.id = 1;
   group.members = {10, 11};
   group.centre = {3.0, 2.0};
+  without_manners(group);  // still, so that requests' effects are measured alone
   simulation->add_group(group);
   return simulation;
 }

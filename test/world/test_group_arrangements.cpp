@@ -39,6 +39,7 @@ Formed form(Arrangement arrangement, int size, uint64_t seed, double facing_spre
   spec.members = test::add_random_humans(*formed.simulation, size, 8.0, 0.5, rng);
   spec.centre = {4.0, 4.0};
   spec.arrangement = arrangement;
+  test::without_manners(spec);
   spec.facing_spread_deg = facing_spread_deg;
   formed.simulation->add_group(spec);
   while (formed.simulation->time_s() < seconds - 1e-9) {
@@ -188,8 +189,9 @@ TEST(GroupArrangements, AHumanJoiningOpensAPlaceAndLeavingClosesIt) {
   for (int k = 0; k < 600; ++k) {
     simulation.step();
   }
-  // Three around a circle of radius 0.9 / (2 sin 60 deg) = 0.52 m, 0.9 m apart.
-  const double radius = GroupNavigation::ospace_radius_for(3, 0.9, 0.45);
+  // Three around a circle of radius 1.0 / (2 sin 60 deg) = 0.58 m, 1.0 m apart.
+  const double radius =
+      GroupNavigation::ospace_radius_for(3, GroupNavigation::default_member_spacing_m(3), 0.45);
   EXPECT_NEAR(group.ospace_radius_m(), radius, 1e-9);
   EXPECT_GT(group.ospace_radius_m(), pair_radius - 0.2);
   for (model::ObjectId id : group.members()) {
@@ -265,7 +267,8 @@ TEST(GroupArrangements, MembersOpenAPlaceForARIApproachingAndCloseItAfter) {
   }
   // Members spread over the rest of the ring: none within 60 deg of ARI's bearing (four evenly
   // spaced stand 90 deg apart), and on the wider circle of four.
-  const double radius_of_four = GroupNavigation::ospace_radius_for(4, 0.9, 0.45);
+  const double radius_of_four =
+      GroupNavigation::ospace_radius_for(4, GroupNavigation::default_member_spacing_m(4), 0.45);
   const Eigen::Vector2d robot = simulation.ari()->centre() - group.centre();
   for (model::ObjectId id : group.members()) {
     const Eigen::Vector2d d = simulation.find_human(id)->pose().position - group.centre();
@@ -282,7 +285,8 @@ TEST(GroupArrangements, MembersOpenAPlaceForARIApproachingAndCloseItAfter) {
     simulation.step();
   }
   EXPECT_EQ(group.robot_joining(), model::kNoObject);
-  const double radius_of_three = GroupNavigation::ospace_radius_for(3, 0.9, 0.45);
+  const double radius_of_three =
+      GroupNavigation::ospace_radius_for(3, GroupNavigation::default_member_spacing_m(3), 0.45);
   for (model::ObjectId id : group.members()) {
     const Eigen::Vector2d d = simulation.find_human(id)->pose().position - group.centre();
     EXPECT_NEAR(d.norm(), radius_of_three, 0.12) << "human " << id;
@@ -320,7 +324,8 @@ TEST(GroupArrangements, RowsJoinedBecomeACircleAndFormAgainWhenLeft) {
   for (int k = 0; k < 600; ++k) {
     simulation.step();
   }
-  const double radius = GroupNavigation::ospace_radius_for(3, 0.9, 0.45);
+  const double radius =
+      GroupNavigation::ospace_radius_for(3, GroupNavigation::default_member_spacing_m(3), 0.45);
   for (model::ObjectId id : group.members()) {
     const Eigen::Vector2d p = simulation.find_human(id)->pose().position;
     EXPECT_NEAR((p - group.centre()).norm(), radius, 0.12) << "human " << id;
@@ -371,6 +376,16 @@ TEST(GroupArrangements, BadRequestsAreRefusedWithTheirField) {
         "{id: 1, members: [10, 11], centre: [1, 1], facing_spread: 90}", "scene.yaml"));
   });
   EXPECT_NE(spread_error.find("facing_spread"), std::string::npos) << spread_error;
+  for (const char* field : {"row_facing_spread: 90", "row_spacing_spread: -0.1"}) {
+    const std::string row_error = test::refusal_text<core::ConfigError>([&] {
+      parse_group(core::YamlMap::parse(
+          std::string("{id: 1, members: [10, 11], centre: [1, 1], ") + field + "}", "scene.yaml"));
+    });
+    EXPECT_NE(row_error.find(std::string(field).substr(0, std::string(field).find(':'))),
+              std::string::npos)
+        << row_error;
+    EXPECT_NE(row_error.find("scene.yaml"), std::string::npos) << row_error;
+  }
 }
 
 }  // namespace

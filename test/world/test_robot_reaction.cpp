@@ -313,6 +313,7 @@ PairRun pair_meets_ari(ReactionProfile south, ReactionProfile north, double ari_
   group.id = 1;
   group.members = {10, 11};
   group.centre = {6.0, 6.0};
+  test::without_manners(group);  // no shifts of their own: what moves them is their reaction
   sim->add_group(group);
   drive(*sim, 0.0, 0.0, 10.0);  // the pair settles on its o-space circle
   const Eigen::Vector2d start[2] = {sim->find_human(10)->pose().position,

@@ -63,6 +63,31 @@ TEST(Scene, UnknownGenderAndMissingPositionAreNamed) {
   expect_rejected("humans:\n  - {id: 10}\n", {"humans[0].position", "required"});
 }
 
+TEST(Scene, GroupConversationParametersAreCheckedAndCanSwitchItOff) {
+  const std::string humans =
+      "humans:\n  - {id: 10, position: [3, 3]}\n  - {id: 11, position: [4, 3]}\n";
+  expect_rejected(humans +
+                      "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3.5], "
+                      "conversation: {lapse_mean: -1}}\n",
+                  {"groups[0].conversation.lapse_mean", "(0, 60]", "-1"});
+  expect_rejected(humans +
+                      "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3.5], "
+                      "conversation: {enabled: maybe}}\n",
+                  {"groups[0].conversation.enabled", "maybe"});
+  const auto quiet = build_simulation(
+      load_scene_file(write_scene(humans +
+                                  "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3.5], "
+                                  "conversation: {enabled: false}}\n")),
+      SimulationConfig{});
+  EXPECT_EQ(quiet->find_conversation(1), nullptr);
+  const auto talking = build_simulation(
+      load_scene_file(
+          write_scene(humans + "groups:\n  - {id: 1, members: [10, 11], centre: [3.5, 3.5]}\n")),
+      SimulationConfig{});
+  ASSERT_NE(talking->find_conversation(1), nullptr);
+  EXPECT_TRUE(talking->find_conversation(1)->spec().enabled);
+}
+
 TEST(Scene, GazeProbabilitiesMustSumToOneAndNameObjects) {
   expect_rejected(
       "humans:\n  - {id: 10, position: [3, 3], gaze: {mean_duration: 2, targets: "
@@ -218,7 +243,7 @@ TEST(SceneEntries, AnEntryWrittenFromItsFieldsReadsBackTheSame) {
 }
 
 TEST(Scene, ShippedScenesBuild) {
-  for (const char* name : {"waiting_room", "flat_group_formation"}) {
+  for (const char* name : {"waiting_room", "flat_group_formation", "gathering"}) {
     const Scene scene = load_scene_file(std::string(ARI_SOURCE_DIR) + "/scenes/" + name + ".yaml");
     const auto simulation = build_simulation(scene, SimulationConfig{});
     EXPECT_GE(simulation->humans().size(), 3u) << name;

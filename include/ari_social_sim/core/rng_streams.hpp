@@ -32,16 +32,26 @@ inline constexpr uint64_t kPerObjectId = uint64_t{1} << 32;
 // they had when each component numbered its own (perception 1-5, ...).
 inline constexpr uint64_t kSingles = uint64_t{1} << 40;
 
-// World (world/): the humans' gaze and reactions to ARI, the group members' stances.
+// World (world/): the humans' gaze and reactions to ARI, the group members' manners.
 inline constexpr RngStreams kHumanGaze{"human_gaze", "world::Simulation, a human's gaze by id", 0,
                                        kPerObjectId};
 inline constexpr RngStreams kHumanReaction{"human_reaction",
                                            "world::Simulation, a human's reaction to ARI by id",
                                            kPerObjectId, kPerObjectId};
+inline constexpr RngStreams kGroupConversation{
+    "group_conversation", "world::GroupConversation, a group's turn-taking and gaze by group id",
+    4 * kPerObjectId, kPerObjectId};
+inline constexpr RngStreams kGroupTurnover{
+    "group_turnover", "world::GroupTurnover, a group's departures and arrivals by group id",
+    5 * kPerObjectId, kPerObjectId};
 /// Index (group id << 24) + member id.
 inline constexpr RngStreams kGroupStance{
-    "group_stance", "world::GroupNavigation, a member's stance by group and id", uint64_t{1} << 48,
-    uint64_t{1} << 56};
+    "group_stance", "world::MemberManner, a member's stance and spacing by group and id",
+    uint64_t{1} << 48, uint64_t{1} << 56};
+/// Index (group id << 24) + member id: a member's shifts of place and facing over time.
+inline constexpr RngStreams kGroupShift{
+    "group_shift", "world::MemberManner, a member's shifts and turns by group and id",
+    uint64_t{1} << 57, uint64_t{1} << 56};
 
 // Physics (physics/).
 inline constexpr RngStreams kHumanAppearance{"human_appearance",
@@ -96,12 +106,29 @@ inline constexpr RngStreams kDialogueEpisodes{
     uint64_t{1} << 41, kPerObjectId};
 
 /// Every block, for the overlap test and the documentation.
-inline constexpr std::array kAll{
-    kHumanVoice,        kRoomNoise,        kHumanGaze,        kHumanReaction,
-    kGroupStance,       kHumanAppearance,  kImuNoise,         kPerceptionTransientIds,
-    kPerceptionBodies,  kPerceptionFaces,  kPerceptionSpeech, kPerceptionPersonIds,
-    kPerceptionMatcher, kNavEpisodeType,   kNavWalkers,       kNavigationEpisodes,
-    kRandomGroups,      kRandomGroupScene, kConversation,     kDialogueEpisodes};
+inline constexpr std::array kAll{kHumanVoice,
+                                 kRoomNoise,
+                                 kHumanGaze,
+                                 kHumanReaction,
+                                 kGroupStance,
+                                 kGroupConversation,
+                                 kGroupShift,
+                                 kGroupTurnover,
+                                 kHumanAppearance,
+                                 kImuNoise,
+                                 kPerceptionTransientIds,
+                                 kPerceptionBodies,
+                                 kPerceptionFaces,
+                                 kPerceptionSpeech,
+                                 kPerceptionPersonIds,
+                                 kPerceptionMatcher,
+                                 kNavEpisodeType,
+                                 kNavWalkers,
+                                 kNavigationEpisodes,
+                                 kRandomGroups,
+                                 kRandomGroupScene,
+                                 kConversation,
+                                 kDialogueEpisodes};
 
 }  // namespace rng_streams
 

@@ -52,6 +52,8 @@ struct EpisodeConfig {
   /// docs/scenario.md).
   std::shared_ptr<const dialogue::DialogueSetup> dialogue;
   std::shared_ptr<const dialogue::RobotNlu> nlu;
+  /// What the world's conversation groups say (world_node's ~config_dir files); null: silent.
+  std::shared_ptr<const world::ConversationLines> conversation_lines;
   dialogue::DialogueRunConfig dialogue_run;
   /// A policy that drives ARI's goals in SocialMPC's place (a learner outside the engine,
   /// learning::ScenarioNavEnv); null: the navigation config decides.
@@ -122,7 +124,7 @@ class Episode {
   const world::WorldSnapshot& snapshot() const { return observations_.world; }
   const model::OccupancyGrid& map() const { return map_; }
   const scenario::ScriptRunner& runner() const { return runner_; }
-  const scenario::EpisodeMetrics& metrics() const { return metrics_.metrics(); }
+  scenario::EpisodeMetrics metrics() const { return metrics_.metrics(); }
   uint64_t seed() const { return seed_; }
   /// What perception reported in the last step; null when it skipped the step (its ~max_rate).
   const perception::PerceptionFrame* perception_frame() const { return perceived_; }

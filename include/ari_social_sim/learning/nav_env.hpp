@@ -9,6 +9,7 @@
 
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/engine/episode.hpp"
+#include "ari_social_sim/learning/conversation_task.hpp"
 #include "ari_social_sim/learning/nav_task_config.hpp"
 #include "ari_social_sim/learning/navigation_episodes.hpp"
 #include "ari_social_sim/learning/social_score.hpp"
@@ -37,6 +38,8 @@ struct NavEnvSetup {
   /// Task scenario: the scenario file, and the batch engine's settings (run_episodes').
   std::optional<scenario::Scenario> scenario;
   std::optional<engine::EpisodeConfig> episode;
+  /// Task join_conversation: the group's words (world_speech::SmallTalkLines, as the engine's).
+  std::shared_ptr<const world::ConversationLines> conversation_lines;
 
   /// From the package's config and worlds directories; `task_file` is a task file
   /// (config/learning/<task>.yaml) and `overrides` YAML text read over it (make()'s options,
@@ -57,6 +60,16 @@ struct ActionBounds {
 ActionBounds action_bounds();
 /// The action's element names, for errors and docs.
 inline constexpr const char* kActionNames[kActionSize] = {"linear", "angular", "pan"};
+/// join_conversation's action has a 4th element: speak, in [0, 1] (> 0.5: ARI says its next line).
+inline constexpr int kConversationActionSize = kActionSize + 1;
+inline constexpr const char* kSpeakName = "speak";
+/// Elements of a step's action for `task`.
+int action_size(NavTask task);
+/// Element `index`'s name (kActionNames, then kSpeakName).
+const char* action_name(int index);
+
+/// The speak element clipped to [0, 1]. Throws core::RequestError naming it when not finite.
+float checked_speak(float speak);
 
 /// `action` (kActionSize values) clipped to `bounds`. Throws core::RequestError naming the
 /// element when a value is not finite.
@@ -87,6 +100,7 @@ struct NavMetrics {
   bool goal_perceived{false};      // the policy's goal comes from perception now
   int gcff_includes_ari{-1};       // join_group, once ended: 1 or 0; else -1
   uint64_t episode_seed{0};
+  std::optional<ConversationTaskMetrics> conversation;  // join_conversation only
 };
 
 /// What a step returned besides the observation.
@@ -102,11 +116,18 @@ class Env {
  public:
   virtual ~Env() = default;
   virtual const navigation::PolicyObservation& observation() const = 0;
-  int observation_size() const { return observation().size(); }
+  /// The navigation observation, and after it any part of the task's own.
+  virtual int observation_size() const { return observation().size(); }
+  virtual std::vector<navigation::ObservationField> observation_fields() const {
+    return observation().fields();
+  }
+  /// Elements of an action: kActionSize, or kConversationActionSize for join_conversation.
+  virtual int action_size() const { return kActionSize; }
   /// Starts the episode of `seed`, or of the next seed of the environment's sequence when none
   /// is given (SeedSequence). Writes the first observation.
   virtual void reset(std::optional<uint64_t> seed, float* observation) = 0;
-  /// Applies `action` (checked_action) and writes the next observation. Throws
+  /// Applies `action` (action_size() values: checked_action, then checked_speak) and writes the
+  /// next observation. Throws
   /// core::RequestError naming the element when a value is not finite, and when the episode has
   /// ended or was never reset.
   virtual NavStepResult step(const float* action, float* observation) = 0;
@@ -127,6 +148,8 @@ std::unique_ptr<Env> make_env(std::shared_ptr<const NavEnvSetup> setup);
 /// goal finder on it; until perception has placed the target, the goal is where the task puts
 /// it at the start (the instruction), flagged as not perceived. Rewards and the end of an
 /// episode are judged on the truth. Seeded: the same seed gives the same episode, bit for bit.
+/// Task join_conversation adds ConversationTask: the joined group talks, the action has `speak`
+/// and the observation a `conversation` part after the navigation one.
 class NavEnv : public Env {
  public:
   explicit NavEnv(std::shared_ptr<const NavEnvSetup> setup);
@@ -137,6 +160,9 @@ class NavEnv : public Env {
   /// Sim seconds of one step: one world step of the episodes' simulations.
   static double step_s() { return world::SimulationConfig{}.step_s; }
   const navigation::PolicyObservation& observation() const override { return observation_; }
+  int observation_size() const override;
+  std::vector<navigation::ObservationField> observation_fields() const override;
+  int action_size() const override { return learning::action_size(setup_->task.task); }
   const NavEnvSetup& setup() const { return *setup_; }
 
   void reset(std::optional<uint64_t> seed, float* observation) override;
@@ -151,7 +177,8 @@ class NavEnv : public Env {
   const std::optional<navigation::Goal>& true_goal() const { return true_goal_; }
 
  private:
-  void perceive();
+  void perceive(const world::WorldSnapshot& snapshot);
+  void start_conversation();
   void place_goals(bool force);
   void write_observation(float* out) const;
   navigation::RobotObservation robot() const;
@@ -172,6 +199,7 @@ class NavEnv : public Env {
   navigation::SceneTracker tracker_;
   navigation::PerceivedScene scene_;
   std::unique_ptr<SocialScore> score_;
+  std::unique_ptr<ConversationTask> conversation_;  // join_conversation only
   core::Rng walk_rng_{0};
 
   std::optional<navigation::Goal> perceived_goal_;
@@ -180,6 +208,7 @@ class NavEnv : public Env {
   double next_goal_update_s_{0.0};
   double last_distance_m_{0.0};
   std::array<float, kActionSize> last_action_{};
+  bool arrived_before_{false};  // join_conversation goes on after arriving
   NavMetrics metrics_;
   bool done_{true};
   bool started_{false};

@@ -8,13 +8,14 @@
 namespace ari_social_sim::learning {
 
 /// What a navigation environment asks of the policy.
-enum class NavTask { kGoToPose, kApproachPerson, kJoinGroup, kScenario };
+enum class NavTask { kGoToPose, kApproachPerson, kJoinGroup, kScenario, kJoinConversation };
 
 inline constexpr core::Choice<NavTask> kNavTaskNames[] = {
     {NavTask::kGoToPose, "go_to_pose"},
     {NavTask::kApproachPerson, "approach_person"},
     {NavTask::kJoinGroup, "join_group"},
-    {NavTask::kScenario, "scenario"}};
+    {NavTask::kScenario, "scenario"},
+    {NavTask::kJoinConversation, "join_conversation"}};
 
 /// The reward of a step is the sum of these terms (docs/learning.md). Signs are part of the
 /// weights: a penalty has a negative weight, and 0 switches a term off.
@@ -26,6 +27,10 @@ struct RewardWeights {
   double ospace{-2.0};          // per entry into the o-space of a group not joined
   double smoothness{-0.01};     // per m/s and rad/s the command changed since the last step
   double time{-0.1};            // per second
+  // join_conversation only, judged on the world's floor (GroupSnapshot::speaker):
+  double interruption{-2.0};  // per line ARI begins while a member holds the floor
+  double intrusion{-2.0};     // per entry into the group while a member holds the floor
+  double answer{5.0};         // per answer begun within conversation.answer_window of a question
 
   template <class V>
   void visit(V& v) {
@@ -37,6 +42,14 @@ struct RewardWeights {
     v.field("ospace", ospace, "per entry into the o-space of a group ARI is not joining");
     v.field("smoothness", smoothness, "per m/s plus rad/s of change between consecutive commands");
     v.field("time", time, "per second of the episode");
+    v.field("interruption", interruption,
+            "join_conversation: per line ARI begins while a member of the group holds the floor");
+    v.field("intrusion", intrusion,
+            "join_conversation: per entry into the group (the formation takes ARI in) while a "
+            "member holds the floor");
+    v.field("answer", answer,
+            "join_conversation: per line ARI begins within conversation.answer_window after a "
+            "member's question to it ended");
   }
 };
 
@@ -54,6 +67,22 @@ struct ArrivalRule {
   }
 };
 
+/// The join_conversation task's group and its judgement of ARI's answers.
+struct ConversationTaskConfig {
+  int group_size{3};
+  double answer_window_s{3.0};
+
+  template <class V>
+  void visit(V& v) {
+    v.field("group_size", group_size, "people in the conversation group ARI joins",
+            core::between(2, 4));
+    v.field("answer_window", answer_window_s,
+            "s after the end of a member's question to ARI within which ARI's line counts as a "
+            "prompt answer",
+            core::between(0.5, 30.0));
+  }
+};
+
 /// A navigation environment's task, observation and rewards (config/learning/<task>.yaml; every
 /// key optional, unknown keys are errors).
 struct NavTaskConfig {
@@ -67,6 +96,7 @@ struct NavTaskConfig {
   navigation::PolicyObservationConfig observation;
   RewardWeights rewards;
   ArrivalRule arrival;
+  ConversationTaskConfig conversation;
 
   template <class V>
   void visit(V& v) {
@@ -89,6 +119,7 @@ struct NavTaskConfig {
     v.section("observation", observation, "what the policy is shown");
     v.section("rewards", rewards, "weights of the reward's terms");
     v.section("arrival", arrival, "when the goal counts as reached");
+    v.section("conversation", conversation, "join_conversation: the group and ARI's answers");
     v.rule("scenario", (task == NavTask::kScenario) == !scenario.empty(),
            "a file for task scenario and none for the other tasks",
            scenario.empty() ? "none" : scenario);

@@ -46,13 +46,14 @@ class VectorNavEnv {
 
   int num_envs() const { return static_cast<int>(envs_.size()); }
   int observation_size() const { return envs_.front()->observation_size(); }
+  int action_size() const { return envs_.front()->action_size(); }
   const Env& env(int i) const { return *envs_[i]; }
   /// The metrics of environment i's last ended episode.
   const NavMetrics& final_metrics(int i) const { return final_metrics_[i]; }
 
   /// Resets every environment; with a seed, environment i starts at seed + i.
   void reset(std::optional<uint64_t> seed, float* observations);
-  /// `actions` is num_envs x kActionSize. Throws core::RequestError naming the environment and
+  /// `actions` is num_envs x action_size(). Throws core::RequestError naming the environment and
   /// element of the first value that is not finite, before any environment steps.
   void step(const float* actions, const VectorStepOutput& out);
 

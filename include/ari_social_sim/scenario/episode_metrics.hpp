@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "ari_social_sim/scenario/observations.hpp"
+#include "ari_social_sim/world/conversation_metrics.hpp"
 
 namespace ari_social_sim::scenario {
 
@@ -20,6 +21,8 @@ struct EpisodeMetrics {
   double navigation_time_s{0.0};  // sim time with a navigation goal active
   int navigation_goals{0};        // goals that became active
   int navigation_failures{0};     // goals that ended aborted or rejected
+  /// The conversation groups' talk (world::ConversationMetrics, docs/world.md section 12).
+  world::ConversationFigures group_talk;
 };
 
 /// Accumulates EpisodeMetrics from successive observations (one per world step).
@@ -32,10 +35,13 @@ class MetricsRecorder {
   static constexpr double kContactM = 0.01;
 
   void observe(const Observations& observations);
-  const EpisodeMetrics& metrics() const { return metrics_; }
+  /// The figures so far, the conversation's summarised now.
+  EpisodeMetrics metrics() const;
 
  private:
   EpisodeMetrics metrics_;
+  world::ConversationMetrics conversation_;
+  model::ObjectId ari_id_{model::kNoObject};
   std::optional<double> previous_time_s_;
   std::optional<Eigen::Vector2d> previous_ari_position_;
   NavigationState previous_navigation_{NavigationState::kIdle};

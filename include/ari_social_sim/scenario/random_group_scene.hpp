@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/model/world_description.hpp"
+#include "ari_social_sim/scenario/group_mix.hpp"
 #include "ari_social_sim/scenario/scenario.hpp"
 
 namespace ari_social_sim::scenario {
@@ -24,12 +24,9 @@ struct RandomGroupSceneSpec {
   Eigen::Vector2d area_max{10.0, 10.0};
   unsigned min_groups{3};
   unsigned max_groups{5};
-  /// Each group's arrangement is drawn uniformly among these. Sizes: a circle 3 or 4 (the world
-  /// keeps a circle of two as a vis-a-vis, GroupNavigation::arrangement), vis-a-vis and L-shape 2
-  /// to 4, side-by-side 2 or 3.
-  std::vector<model::Arrangement> arrangements{
-      model::Arrangement::kCircle, model::Arrangement::kVisAVis, model::Arrangement::kLShape,
-      model::Arrangement::kSideBySide};
+  /// Each group's arrangement and size are drawn from this mix, by weight. A circle has 3 or more
+  /// people: the world keeps a circle of two as a vis-a-vis (GroupNavigation::arrangement).
+  std::vector<GroupKind> mix{recorded_group_mix()};
   double min_centre_distance_m{3.0};  // between two groups' o-space centres
   unsigned max_lone_people{2};        // 0 to this many, each standing or walking
   /// Members spawn within this distance (m) of their place, turned by up to heading_jitter_rad:
@@ -47,13 +44,6 @@ struct RandomGroupSceneSpec {
   /// min_groups above max_groups, the area outside the world's floor, a duration not > 0, ...).
   void validate() const;
 };
-
-/// The sizes (people) a group of `arrangement` is drawn with, inclusive.
-struct GroupSizeRange {
-  unsigned min{2};
-  unsigned max{2};
-};
-GroupSizeRange group_sizes_of(model::Arrangement arrangement);
 
 /// One random group scene as a scenario named `random_group_scene`, drawn from `seed` (the same
 /// seed gives the same scenario; the scene's seed is `seed`): min_groups to max_groups groups

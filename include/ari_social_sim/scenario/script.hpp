@@ -66,9 +66,21 @@ struct HeardCondition {
   std::string act;
 };
 
-using Condition = std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
-                               NavigationFailedCondition, TimeElapsedCondition,
-                               PerceivedGroupCondition, DialogueFinishedCondition, HeardCondition>;
+/// Nobody of `person`'s conversation group holds the floor (the world state's groups[].speaker;
+/// backchannels take no floor): a pause to enter in. For a person in no group: the person is
+/// silent.
+struct FloorFreeCondition {
+  model::ObjectId person{model::kNoObject};
+};
+
+/// Since the current state was entered, a member of a talking group ARI takes part in spoke to
+/// ARI (the world state's groups[].addressee).
+struct AddressedCondition {};
+
+using Condition =
+    std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
+                 NavigationFailedCondition, TimeElapsedCondition, PerceivedGroupCondition,
+                 DialogueFinishedCondition, HeardCondition, FloorFreeCondition, AddressedCondition>;
 
 // ---- Actions: what entering a state or firing a transition does (section 5) ----
 

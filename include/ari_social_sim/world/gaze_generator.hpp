@@ -104,6 +104,9 @@ class GazeGenerator : public Component {
 
   /// Replaces the model; the next step draws a new gaze.
   void set_model(GazeModel model);
+  /// While suspended (another gaze overrides this one, as a conversation's does), steps draw and
+  /// aim nothing; on resuming, a gaze whose time is up is drawn at the next step.
+  void set_suspended(bool suspended) { suspended_ = suspended; }
   const GazeModel& model() const { return model_; }
 
   model::ObjectId target() const { return target_; }
@@ -122,6 +125,7 @@ class GazeGenerator : public Component {
   double direction_rad_{0.0};
   double since_s_{0.0};
   std::optional<double> next_change_s_;
+  bool suspended_{false};
 };
 
 }  // namespace ari_social_sim::world

@@ -5,6 +5,7 @@
 
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/model/shape_geometry.hpp"
+#include "ari_social_sim/world/gaze_event.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/object.hpp"
 #include "ari_social_sim/world/robot_reaction.hpp"
@@ -152,6 +153,11 @@ class Human : public Object {
   /// Installs or replaces the gaze model. Expects a valid model: requests are checked by
   /// Simulation::set_human_gaze.
   void set_gaze_model(GazeModel model);
+  /// The gaze the conversation of the human's group gives it while the group talks (none: the
+  /// human's own gaze model, which idles meanwhile: its draws would be overridden). Set by
+  /// GroupConversation.
+  void set_conversation_gaze(const std::optional<GazeEvent>& gaze);
+  const std::optional<GazeEvent>& conversation_gaze() const { return conversation_gaze_; }
   /// Sets the reaction to ARI, keeping the spec's reaction parameters: the first profile other
   /// than kIgnore installs a RobotReaction (after the other components, so it sees navigation's
   /// plan), kIgnore makes it inert. Requests are checked by Simulation::set_human_reaction.
@@ -181,6 +187,7 @@ class Human : public Object {
   RobotReaction* reaction_{nullptr};
   SpeechGenerator* speech_{nullptr};
   GazeGenerator* gaze_{nullptr};
+  std::optional<GazeEvent> conversation_gaze_;
 };
 
 }  // namespace ari_social_sim::world

@@ -9,6 +9,7 @@
 #include "ari_social_sim/core/pose2.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/model/ari_footprint.hpp"
+#include "ari_social_sim/world/gaze_event.hpp"
 #include "ari_social_sim/world/object.hpp"
 
 namespace ari_social_sim::world {
@@ -165,13 +166,6 @@ struct ReactionMotion {
   std::optional<double> face_rad;
 };
 
-/// The gaze a reaction imposes this step instead of the human's own (GazeGenerator's or heading).
-struct ReactionGaze {
-  model::ObjectId target{model::kNoObject};  // ARI, or none: along `direction_rad`
-  double direction_rad{0.0};                 // map frame
-  double since_s{0.0};                       // sim time the gaze event started
-};
-
 /// The reaction of one human to ARI, a generator component run after the human's navigation
 /// (D6.4 §3.2). Each step it looks at ARI and the human and decides a ReactionMotion and a gaze
 /// override:
@@ -203,7 +197,7 @@ class RobotReaction : public Component {
   const ReactionParams& params() const { return params_; }
 
   const ReactionMotion& motion() const { return motion_; }
-  const std::optional<ReactionGaze>& gaze() const { return gaze_; }
+  const std::optional<GazeEvent>& gaze() const { return gaze_; }
 
   /// What a reaction is doing, for tests and traces.
   enum class Phase : uint8_t { kIdle, kSteppingAside, kWaiting, kReturning, kEngaged };
@@ -229,7 +223,7 @@ class RobotReaction : public Component {
   ReactionParams params_;
   core::Rng rng_;
   ReactionMotion motion_;
-  std::optional<ReactionGaze> gaze_;
+  std::optional<GazeEvent> gaze_;
   Phase phase_{Phase::kIdle};
   // The encounter: where it found the human, where a yield steps to, since when it waits.
   core::Pose2 origin_;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,7 +16,9 @@
 #include "ari_social_sim/model/world_description.hpp"
 #include "ari_social_sim/world/agent_grid.hpp"
 #include "ari_social_sim/world/ari.hpp"
+#include "ari_social_sim/world/group_conversation.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
+#include "ari_social_sim/world/group_turnover.hpp"
 #include "ari_social_sim/world/human.hpp"
 #include "ari_social_sim/world/request_check.hpp"
 #include "ari_social_sim/world/walking_group.hpp"
@@ -141,6 +144,12 @@ class Simulation {
   /// and the others close the gap; ARI is no longer counted, nor counted again until it has gone
   /// away. Throws for an unknown agent or one in no group.
   void leave_group(model::ObjectId agent_id);
+  /// Switches a group's conversation on or off (/sim/set_group_conversation); on, it talks with the
+  /// parameters of its spec's `conversation`. Throws for an unknown group.
+  void set_group_conversation(model::ObjectId group_id, bool enabled);
+  /// Where conversation groups get their words (conversation_lines.hpp); without it they stay
+  /// silent. world_node and the engine install world_speech::SmallTalkLines.
+  void set_conversation_lines(std::shared_ptr<const ConversationLines> lines);
   /// Moves a group's o-space centre (/sim/set_group_centre). Throws for an unknown group or a
   /// centre off the floor.
   void set_group_centre(model::ObjectId group_id, const Eigen::Vector2d& centre);
@@ -185,6 +194,8 @@ class Simulation {
   const Human* find_human(model::ObjectId id) const;
   const GroupNavigation* find_group(model::ObjectId id) const;
   const WalkingGroup* find_walking_group(model::ObjectId id) const;
+  /// The conversation of a group; null when the group has none (switched off) or is unknown.
+  const GroupConversation* find_conversation(model::ObjectId group_id) const;
   const Ari* ari() const { return ari_.get(); }
   /// Humans ordered by id.
   core::ConstPointerView<Human> humans() const { return core::ConstPointerView<Human>(humans_); }
@@ -215,10 +226,23 @@ class Simulation {
   // The group script moves its members each step (D6.4 §3.4.1): the one writer from outside.
   friend class GroupNavigation;
   friend class WalkingGroup;
+  // Conversations make members speak and look (D6.4's scripts, like the group script).
+  friend class GroupConversation;
+  friend class ConversationGaze;
 
   // The objects behind the const lookups, for the requests and the group script to change.
   Object* mutable_object(model::ObjectId id);
   Human* mutable_human(model::ObjectId id);
+  /// The speech of a human or ARI; null for any other id.
+  SpeechGenerator* mutable_speech(model::ObjectId id);
+  /// Steps each group's conversation, dropping those of groups that are gone.
+  void step_conversations(const StepContext& context);
+  /// Steps each group's turnover (members leaving, passers-by joining), dropping those of groups
+  /// that are gone.
+  void step_turnovers();
+  template <class Part, class StepPart, class DropPart>
+  void step_parts_of_groups(std::map<model::ObjectId, std::unique_ptr<Part>>& parts, StepPart step,
+                            DropPart drop);
   GroupNavigation* mutable_group(model::ObjectId id);
   WalkingGroup* mutable_walking_group(model::ObjectId id);
   /// The id a new group, walking or conversing, takes: `requested`, or one past the highest id of
@@ -255,6 +279,9 @@ class Simulation {
   std::vector<std::unique_ptr<Human>> humans_;
   std::unique_ptr<Ari> ari_;
   std::vector<std::unique_ptr<GroupNavigation>> groups_;
+  std::map<model::ObjectId, std::unique_ptr<GroupConversation>> conversations_;  // by group id
+  std::map<model::ObjectId, std::unique_ptr<GroupTurnover>> turnovers_;          // by group id
+  std::shared_ptr<const ConversationLines> conversation_lines_;
   std::vector<std::unique_ptr<WalkingGroup>> walking_groups_;
   std::unordered_map<model::ObjectId, Object*> objects_by_id_;
   // Every id an object has had in this simulation, removed objects' included: never reused.

@@ -45,6 +45,9 @@ class SpeechGenerator : public Component {
   void say(const std::string& act, const std::string& content, double now_s);
   /// Seconds an utterance of this content takes at this speaker's rate.
   double duration_s(const std::string& content) const;
+  /// Stops the act in progress now, recorded as interrupted (a speaker who gives way); nothing
+  /// when silent.
+  void stop(double now_s);
 
   bool is_speaking() const { return !words_.empty(); }
   const std::string& act() const { return act_; }
@@ -53,6 +56,8 @@ class SpeechGenerator : public Component {
   const std::string& current_word() const;
   size_t word_index() const { return word_index_; }
   double start_s() const { return start_s_; }
+  /// When the act in progress ends if nobody cuts it off (s); start_s() when silent.
+  double end_s() const;
   /// The most recent act that finished (D6.4's previous_speech_act); empty before the first.
   const SpeechRecord* previous() const { return history_.empty() ? nullptr : &history_.back(); }
   /// The last kHistoryLength finished acts, oldest first.

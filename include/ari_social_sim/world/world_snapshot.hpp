@@ -72,6 +72,10 @@ struct GroupSnapshot {
   model::Arrangement arrangement{model::Arrangement::kCircle};  // as kept now
   double heading_rad{0.0};                          // bearing of the first row from the centre
   model::ObjectId robot_joining{model::kNoObject};  // ARI while the members make room for it
+  bool converses{false};  // the group has a conversation (GroupConversation); the rest follows it
+  model::ObjectId speaker{model::kNoObject};    // holding the floor; none in a silence
+  model::ObjectId addressee{model::kNoObject};  // of the speaker's utterance; none: the group
+  double utterance_end_s{0.0};  // when the current (or last) utterance ends: the next transition
 };
 
 struct WalkingGroupSnapshot {

@@ -7,7 +7,8 @@
 
     envs = learning.make_vector("join_group", num_envs=16, threads=2)
 
-Tasks: go_to_pose, approach_person, join_group, scenario:<file> (a scenario file, or the name of
+Tasks: go_to_pose, approach_person, join_group, join_conversation (join_group's episodes with a
+talking group; the action gains `speak`), scenario:<file> (a scenario file, or the name of
 a shipped one, e.g. scenario:join_group, with the policy driving ARI's goals), and dialogue
 (DialogueEnv). Options are the fields of the task file
 (config/learning/<task>.yaml), given as keyword arguments: a nested section as a dict
@@ -37,7 +38,7 @@ else:
     from ari_social_sim.learning.spaces import Box
     _EnvBase = object
 
-TASKS = ("go_to_pose", "approach_person", "join_group")
+TASKS = ("go_to_pose", "approach_person", "join_group", "join_conversation")
 DIALOGUE_TASK = "dialogue"
 ACTION_NAMES = tuple(_learning.action_names)
 SEED_LIMIT = 2 ** 64  # seeds are unsigned 64-bit integers
@@ -125,8 +126,11 @@ def _observation_space(core):
     return Box(low, high, dtype=np.float32), layout
 
 
-def _action_space():
+def _action_space(setup):
+    """[linear, angular, pan] within ARI's limits; join_conversation adds speak in [0, 1]."""
     low, high = _learning.action_bounds()
+    if setup.action_size > len(low):
+        low, high = low + [0.0], high + [1.0]
     return Box(np.array(low, np.float32), np.array(high, np.float32), dtype=np.float32)
 
 
@@ -148,8 +152,8 @@ class _Closable:
 
 class NavigationEnv(_Closable, _EnvBase):
     """One navigation environment (docs/learning.md): observations from perception, actions
-    (linear m/s, angular rad/s, head pan rad) clipped to ARI's limits, rewards and metrics on the
-    truth. Not thread-safe; use make_vector for several."""
+    (linear m/s, angular rad/s, head pan rad, and speak in [0, 1] for join_conversation) clipped
+    to ARI's limits, rewards and metrics on the truth. Not thread-safe; use make_vector for several."""
 
     metadata = {"render_modes": []}
 
@@ -157,7 +161,7 @@ class NavigationEnv(_Closable, _EnvBase):
         self._setup = _setup(task, options)
         self._core = _learning.NavEnv(self._setup)
         self.observation_space, self.observation_layout = _observation_space(self._core)
-        self.action_space = _action_space()
+        self.action_space = _action_space(self._setup)
         self.task = task
         self.time_limit_s = self._setup.time_limit_s
         self.step_s = self._setup.step_s
@@ -200,7 +204,7 @@ class VectorNavigationEnv(_Closable):
         self._core = _learning.VectorNavEnv(self._setup, int(num_envs), int(threads))
         self.num_envs = int(num_envs)
         self.single_observation_space, self.observation_layout = _observation_space(self._core)
-        self.single_action_space = _action_space()
+        self.single_action_space = _action_space(self._setup)
         self.observation_space = Box(
             np.tile(self.single_observation_space.low, (self.num_envs, 1)),
             np.tile(self.single_observation_space.high, (self.num_envs, 1)), dtype=np.float32)
