@@ -106,6 +106,10 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(test_perception PRIVATE
     ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
+  ari_add_gtest(test_perception_conversions
+    SOURCES test/perception_conversions/test_hri_transforms.cpp
+    LIBRARIES ari_perception_conversions)
+
   add_rostest(test/integration/hri_wire.test DEPENDENCIES world_node hri_perception_node)
   add_rostest(test/integration/hri_perception.test DEPENDENCIES world_node hri_perception_node)
   add_rostest(test/integration/launch_arguments.test)

@@ -9,6 +9,7 @@ add_library(ari_world
   src/world/formation_layout.cpp
   src/world/gaze_generator.cpp
   src/world/group_conversation.cpp
+  src/world/head_nod.cpp
   src/world/group_turnover.cpp
   src/world/group_navigation.cpp
   src/world/group_report.cpp

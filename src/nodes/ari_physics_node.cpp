@@ -338,6 +338,7 @@ class PhysicsNode {
       person.velocity_mps = {human.velocity.linear.x, human.velocity.linear.y};
       person.angular_velocity_rps = human.velocity.angular.z;
       person.face_yaw_rad = human.gaze.direction;
+      person.head_pitch_rad = human.head_pitch;
       person.age_years = human.age;
       person.gender = static_cast<model::Gender>(human.gender);
       person.mask = human.mask;

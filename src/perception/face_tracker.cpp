@@ -107,6 +107,7 @@ void FaceTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     face.gaze_rad = core::wrap_angle(face.X_map_face.theta +
                                      core::angle_difference(human.gaze.direction_rad, head));
     face.gaze_target = human.gaze.target;
+    face.pitch_rad = human.head_pitch_rad;
     analyse(human, face);
     face.roi = pinhole_region(camera, camera_config.z_m, face.X_map_face.position,
                               config_.human_model.eye_height_m, kFaceWidth_m, kFaceHeight_m);

@@ -22,6 +22,18 @@ geometry_msgs::TransformStamped transform(const std_msgs::Header& header, const 
   return t;
 }
 
+// Yaw about z, then pitch about the turned y axis (positive: x tips down), as one quaternion.
+geometry_msgs::Quaternion yaw_pitch_quaternion(double yaw, double pitch) {
+  const double cz = std::cos(0.5 * yaw), sz = std::sin(0.5 * yaw);
+  const double cp = std::cos(0.5 * pitch), sp = std::sin(0.5 * pitch);
+  geometry_msgs::Quaternion q;
+  q.w = cz * cp;
+  q.x = -sz * sp;
+  q.y = cz * sp;
+  q.z = sz * cp;
+  return q;
+}
+
 // Rotation of an optical frame (z forward, x right, y down) whose z axis turns `yaw` from the x
 // axis of its parent (x forward, z up): yaw about z, then roll -pi/2 about x and yaw -pi/2 about
 // z of the optical convention, composed as one quaternion.
@@ -182,9 +194,12 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
   }
   for (const perception::PerceivedFace& face : frame.faces) {
     const core::Pose2 X_base_face = face.X_map_face.relative_to(frame.X_map_base);
-    transforms.push_back(transform(header, robot_frame, face_frame(face.face_id),
-                                   X_base_face.position.x(), X_base_face.position.y(),
-                                   human_model.eye_height_m, X_base_face.theta));
+    geometry_msgs::TransformStamped face_pose =
+        transform(header, robot_frame, face_frame(face.face_id), X_base_face.position.x(),
+                  X_base_face.position.y(), human_model.eye_height_m, X_base_face.theta);
+    // A nod tips the face, and the gaze frame with it.
+    face_pose.transform.rotation = yaw_pitch_quaternion(X_base_face.theta, face.pitch_rad);
+    transforms.push_back(face_pose);
     geometry_msgs::TransformStamped gaze =
         transform(header, face_frame(face.face_id), gaze_frame(face.face_id), 0, 0, 0, 0);
     gaze.transform.rotation = optical_looking(face.gaze_rad - face.X_map_face.theta);

@@ -352,9 +352,10 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
   frames[kPelvis] = body;
   const double head_turn = std::clamp(core::angle_difference(pose.head_yaw_rad, pose.body.theta),
                                       -kMaxHeadTurnRad, kMaxHeadTurnRad);
-  frames[kHead] =
-      body * translation(0.0, 0.0, head_centre_z_) *
-      Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(head_turn), Eigen::Vector3f::UnitZ()));
+  frames[kHead] = body * translation(0.0, 0.0, head_centre_z_) *
+                  Eigen::Isometry3f(
+                      Eigen::AngleAxisf(static_cast<float>(head_turn), Eigen::Vector3f::UnitZ())) *
+                  rotation_y(pose.head_pitch_rad);
   frames[kJaw] = frames[kHead] * translation(0.0, 0.0,
                                              -kJawDropShare * look_.head_height_m *
                                                  std::clamp(pose.mouth_open, 0.0, 1.0));

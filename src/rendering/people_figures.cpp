@@ -24,6 +24,7 @@ FigureInput figure_input_of(const world::HumanSnapshot& human) {
   input.pose = human.pose;
   input.velocity_mps = human.velocity_mps;
   input.face_yaw_rad = human.gaze.direction_rad;
+  input.head_pitch_rad = human.head_pitch_rad;
   input.speaking = human.speech.is_speaking;
   return input;
 }
@@ -34,6 +35,7 @@ FigureInput figure_input_of(const physics::PersonState& person) {
   input.pose = person.pose;
   input.velocity_mps = person.velocity_mps;
   input.face_yaw_rad = person.face_yaw_rad;
+  input.head_pitch_rad = person.head_pitch_rad;
   input.speaking = person.speaking;
   return input;
 }
@@ -66,6 +68,7 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     posed.figure = &person.figure;
     posed.pose.body = input.pose;
     posed.pose.head_yaw_rad = input.face_yaw_rad;
+    posed.pose.head_pitch_rad = input.head_pitch_rad;
     posed.pose.gait_phase_rad = person.gait_phase_rad;
     posed.pose.gait_amplitude =
         speed < kStandingSpeedMps ? 0.0 : std::min(1.0, speed / kBriskSpeedMps);

@@ -26,6 +26,11 @@ constexpr double kFirstStartMaxS = 3.0;
 constexpr double kBackchannelFrom = 0.4;
 constexpr double kBackchannelTo = 0.85;
 constexpr double kBackchannelMinUtteranceS = 1.5;
+// A nod dips the head 1-3 times, each dip 0.3-0.5 s long and 6-14 deg deep: our choice, as
+// the nods seen in conversation video, for want of published kinematics.
+constexpr int kMaxNodCycles = 3;
+constexpr double kNodCycleS[2] = {0.3, 0.5};
+constexpr double kNodAmplitudeRad[2] = {0.10, 0.24};
 // An overlap covers at most this share of the utterance it overlaps.
 constexpr double kMaxOverlapShare = 0.5;
 // Addressee choice in groups of three or more: the whole group, else the previous speaker.
@@ -49,8 +54,12 @@ std::string name_of(const Simulation& simulation, model::ObjectId id) {
 }  // namespace
 
 GroupConversation::GroupConversation(model::ObjectId group_id, const ConversationSpec& spec,
-                                     core::Rng rng)
-    : group_id_(group_id), spec_(spec), rng_(rng), gaze_(core::Rng(rng_.next_u64())) {}
+                                     core::Rng rng, core::Rng nod_rng)
+    : group_id_(group_id),
+      spec_(spec),
+      rng_(rng),
+      nod_rng_(nod_rng),
+      gaze_(core::Rng(rng_.next_u64())) {}
 
 void GroupConversation::step(const StepContext& context, const GroupNavigation& group,
                              const ConversationLines* lines) {
@@ -205,6 +214,12 @@ void GroupConversation::run_due_events(const StepContext& context, const Convers
               std::max(event.at_s, context.time_s));
         }
         break;
+      case Event::Kind::kNod:
+        // A listener nods; one who has started talking meanwhile does not.
+        if (!speech->is_speaking() || speech->start_s() >= event.at_s) {
+          nod(context.simulation, event.member, std::max(event.at_s, context.time_s));
+        }
+        break;
       case Event::Kind::kStart:
         start_utterance(context, lines, *speech, event);
         break;
@@ -281,11 +296,38 @@ void GroupConversation::plan_backchannels(model::ObjectId speaker, double start_
     return;
   }
   for (model::ObjectId listener : members_) {
-    if (listener != speaker && rng_.bernoulli(spec_.backchannel_probability)) {
+    if (listener == speaker) {
+      continue;
+    }
+    if (rng_.bernoulli(spec_.backchannel_probability)) {
       const double at_s = start_s + length_s * rng_.uniform(kBackchannelFrom, kBackchannelTo);
       insert_event({Event::Kind::kBackchannel, at_s, listener});
+      if (nod_rng_.bernoulli(spec_.nod_with_backchannel_probability)) {
+        plan_nod(listener, at_s);
+      }
+    }
+    if (nod_rng_.bernoulli(spec_.nod_probability)) {
+      plan_nod(listener, start_s + length_s * nod_rng_.uniform(kBackchannelFrom, kBackchannelTo));
     }
   }
+}
+
+void GroupConversation::plan_nod(model::ObjectId listener, double at_s) {
+  insert_event({Event::Kind::kNod, at_s, listener});
+}
+
+void GroupConversation::nod(Simulation& simulation, model::ObjectId listener, double at_s) {
+  Human* human = simulation.mutable_human(listener);
+  if (human == nullptr) {
+    return;
+  }
+  HeadNod nod;
+  nod.start_s = at_s;
+  nod.cycles = 1 + static_cast<int>(nod_rng_.uniform_index(kMaxNodCycles));
+  nod.cycle_s = nod_rng_.uniform(kNodCycleS[0], kNodCycleS[1]);
+  nod.amplitude_rad = nod_rng_.uniform(kNodAmplitudeRad[0], kNodAmplitudeRad[1]);
+  human->nod(nod);
+  ++nods_;
 }
 
 void GroupConversation::plan_self_selection(model::ObjectId previous, double end_s, bool lapse) {

@@ -699,10 +699,10 @@ void Simulation::set_group_conversation(model::ObjectId group_id, bool enabled) 
     conversations_.erase(it);
   } else if (enabled && it == conversations_.end()) {
     conversations_.emplace(
-        group_id,
-        std::make_unique<GroupConversation>(
-            group_id, group.spec().conversation,
-            core::rng_for(config_.seed, core::rng_streams::kGroupConversation, group_id)));
+        group_id, std::make_unique<GroupConversation>(
+                      group_id, group.spec().conversation,
+                      core::rng_for(config_.seed, core::rng_streams::kGroupConversation, group_id),
+                      core::rng_for(config_.seed, core::rng_streams::kGroupNods, group_id)));
   }
 }
 

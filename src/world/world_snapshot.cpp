@@ -65,6 +65,7 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     } else {
       h.gaze.direction_rad = human->pose().theta;
     }
+    h.head_pitch_rad = human->head_pitch_rad(snapshot.time_s);
     h.speech = snapshot_of(human->speech());
     snapshot.humans.push_back(std::move(h));
   }

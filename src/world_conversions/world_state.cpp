@@ -92,6 +92,7 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     h.gaze.target_id = human.gaze.target;
     h.gaze.direction = human.gaze.direction_rad;
     h.gaze.since = human.gaze.since_s;
+    h.head_pitch = human.head_pitch_rad;
     h.speech = to_msg(human.speech);
     msg.humans.push_back(std::move(h));
   }
@@ -184,6 +185,7 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
       }
     }
     human.gaze = {h.gaze.target_id, h.gaze.direction, h.gaze.since};
+    human.head_pitch_rad = h.head_pitch;
     human.speech = from_msg(h.speech);
     snapshot.humans.push_back(std::move(human));
   }

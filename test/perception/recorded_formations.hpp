@@ -28,6 +28,7 @@ constexpr double kComparisonStrideM = 0.6;
 /// the groups of one size and arrangement.
 struct FormationSpread {
   int groups{0};
+  std::map<std::string, int> groups_of_set;  // by data set: their annotations differ
   std::vector<double> centre_m, pair_m, offset_deg;
 
   void add(const FormationGeometry& geometry) {
@@ -77,11 +78,24 @@ inline std::map<SpreadKey, FormationSpread> recorded_formation_spreads() {
           continue;
         }
         const FormationGeometry geometry = formation_geometry(members, kComparisonStrideM);
-        spreads[{ids.size(), model::to_string(geometry.arrangement)}].add(geometry);
+        FormationSpread& spread = spreads[{ids.size(), model::to_string(geometry.arrangement)}];
+        spread.add(geometry);
+        ++spread.groups_of_set[set];
       }
     }
   }
   return spreads;
+}
+
+/// The step (rad) in which a data set's annotators marked facings: CoffeeBreak's in quarter turns,
+/// Synth's in multiples of 15 degrees (its facings are 0, 30, 45, 90, 120, 135, ... degrees).
+inline double annotated_facing_step_rad(const std::string& set) {
+  return set.rfind("CoffeeBreak", 0) == 0 ? M_PI / 2.0 : M_PI / 12.0;
+}
+
+/// A facing as an annotator marking in steps of `step_rad` would have: the nearest multiple.
+inline double annotated_facing(double theta_rad, double step_rad) {
+  return step_rad * std::round(theta_rad / step_rad);
 }
 
 /// A 10th-90th percentile band.

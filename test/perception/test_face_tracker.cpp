@@ -37,6 +37,7 @@ TEST_F(FaceTrackerTest, AFaceTurnedToARIReportsTheTruth) {
   human.mask = true;
   human.emotion = model::Emotion::kDisturbed;
   human.gaze.target = test::kAriId;
+  human.head_pitch_rad = 0.15;  // nodding
   snapshot.humans = {human};
   const std::vector<PerceivedFace> faces = perceive(snapshot);
   ASSERT_EQ(faces.size(), 1u);
@@ -56,6 +57,7 @@ TEST_F(FaceTrackerTest, AFaceTurnedToARIReportsTheTruth) {
   EXPECT_NEAR(face.X_map_face.theta, human.pose.theta, 1e-12);
   EXPECT_NEAR(face.gaze_rad, human.gaze.direction_rad, 1e-12);
   EXPECT_EQ(face.gaze_target, test::kAriId);
+  EXPECT_DOUBLE_EQ(face.pitch_rad, 0.15);
 }
 
 TEST_F(FaceTrackerTest, NoFaceWhenTurnedAwayOutOfTheCameraOrTooFar) {

@@ -90,6 +90,27 @@ FormationGeometry geometry_of(const FormingGroup& group) {
   return formation_geometry(members, kPerceptionStrideM);
 }
 
+// The group's facing offsets (deg) as the recordings it is compared with would have marked them:
+// measured with every facing rounded to each data set's annotation step, each set counted as
+// often as it has groups in `reference`. The recorded facings are that coarse (CoffeeBreak marks
+// quarter turns), which alone spreads a square stance by up to 45 degrees.
+std::vector<double> annotated_offsets_deg(const std::vector<core::Pose2>& poses,
+                                          const test::FormationSpread& reference) {
+  std::vector<double> offsets;
+  for (const auto& [set, groups] : reference.groups_of_set) {
+    const double step = test::annotated_facing_step_rad(set);
+    std::vector<GcffPerson> members;
+    for (size_t i = 0; i < poses.size(); ++i) {
+      members.push_back({std::to_string(i), poses[i].position.x(), poses[i].position.y(),
+                         test::annotated_facing(poses[i].theta, step)});
+    }
+    for (const double offset : formation_geometry(members, kPerceptionStrideM).facing_offsets_rad) {
+      offsets.insert(offsets.end(), static_cast<size_t>(groups), offset * 180.0 / M_PI);
+    }
+  }
+  return offsets;
+}
+
 // Least distance (m) between two members' centres.
 double closest_pair_m(const FormingGroup& group) {
   double closest = std::numeric_limits<double>::infinity();
@@ -118,6 +139,9 @@ std::string reference_of(const std::map<test::SpreadKey, test::FormationSpread>&
   for (const auto& [key, spread] : recorded) {
     if (key.second == arrangement) {
       reference.groups += spread.groups;
+      for (const auto& [set, groups] : spread.groups_of_set) {
+        reference.groups_of_set[set] += groups;
+      }
       reference.centre_m.insert(reference.centre_m.end(), spread.centre_m.begin(),
                                 spread.centre_m.end());
       reference.pair_m.insert(reference.pair_m.end(), spread.pair_m.begin(), spread.pair_m.end());
@@ -198,16 +222,22 @@ TEST(WorldFormations, FallWithinTheRecordedSpread) {
       test::recorded_formation_spreads();
   std::printf(
       "| size | arrangement | compared with (groups) | to centre (m): world median [10-90 %%] / "
-      "recorded, overlap | between members (m) | facing off the centre (deg) |\n"
-      "|---|---|---|---|---|---|\n");
+      "recorded, overlap | between members (m) | facing off the centre (deg) | the same, the "
+      "world's facings rounded as annotated |\n"
+      "|---|---|---|---|---|---|---|\n");
   for (Arrangement arrangement : {Arrangement::kCircle, Arrangement::kVisAVis, Arrangement::kLShape,
                                   Arrangement::kSideBySide}) {
     for (int size = 2; size <= 4; ++size) {
       test::FormationSpread world;
       std::map<std::string, int> classified;
+      std::vector<std::vector<core::Pose2>> settled;
       for (int seed = 1; seed <= kSeedsPerCase; ++seed) {
         const FormingGroup group = forming_group(arrangement, size, static_cast<uint64_t>(seed));
         run_until(*group.simulation, kSettleS);
+        settled.emplace_back();
+        for (model::ObjectId id : group.members) {
+          settled.back().push_back(group.simulation->find_human(id)->pose());
+        }
         const FormationGeometry geometry = geometry_of(group);
         world.add(geometry);
         ++classified[model::to_string(geometry.arrangement)];
@@ -224,11 +254,17 @@ TEST(WorldFormations, FallWithinTheRecordedSpread) {
       test::FormationSpread reference;
       const std::string compared = reference_of(recorded, size, name, reference);
       ASSERT_GT(reference.groups, 0) << compared;
-      std::printf("| %d | %s | %s (%d) | %s | %s | %s |\n", size, model::to_string(arrangement),
-                  compared.c_str(), reference.groups,
+      std::vector<double> annotated_deg;
+      for (const std::vector<core::Pose2>& poses : settled) {
+        const std::vector<double> offsets = annotated_offsets_deg(poses, reference);
+        annotated_deg.insert(annotated_deg.end(), offsets.begin(), offsets.end());
+      }
+      std::printf("| %d | %s | %s (%d) | %s | %s | %s | %s |\n", size,
+                  model::to_string(arrangement), compared.c_str(), reference.groups,
                   band_cell(world.centre_m, reference.centre_m, "%.2f").c_str(),
                   band_cell(world.pair_m, reference.pair_m, "%.2f").c_str(),
-                  band_cell(world.offset_deg, reference.offset_deg, "%.0f").c_str());
+                  band_cell(world.offset_deg, reference.offset_deg, "%.0f").c_str(),
+                  band_cell(annotated_deg, reference.offset_deg, "%.0f").c_str());
       // Within the recorded 10th-90th percentile where groups of the size were recorded, and
       // their bands overlapping. No group of four was recorded: groups of four, wider than the
       // recorded groups of three as groups grow, and a side-by-side row of four, longer than any

@@ -98,7 +98,7 @@ TEST(HumanFigure, RenderedFigureIsAsTallAsTheStatureAndStridesWhenWalking) {
   }
 }
 
-TEST(PeopleFigures, HeadTurnsToTheGazeWithinItsRangeAndTheMouthMovesOnlyWhileSpeaking) {
+TEST(PeopleFigures, HeadTurnsToTheGazeNodsAndTheMouthMovesOnlyWhileSpeaking) {
   FigureInput person = standing_at(2, {0.0, 0.0}, 0.0);
   PeopleFigures figures;
   for (const double gaze : {0.5, -0.9, 2.0}) {
@@ -111,6 +111,15 @@ TEST(PeopleFigures, HeadTurnsToTheGazeWithinItsRangeAndTheMouthMovesOnlyWhileSpe
                 std::clamp(gaze, -HumanFigure::kMaxHeadTurnRad, HumanFigure::kMaxHeadTurnRad),
                 1e-6);
   }
+  // A nod tips the head forward: its x axis (out of the face) points down by the pitch.
+  person.face_yaw_rad = 0.0;
+  person.head_pitch_rad = 0.2;
+  figures.update(0.0, {person});
+  const PosedPerson& nodding = figures.posed()[0];
+  const Eigen::Vector3d out_of_face =
+      nodding.figure->head_frame(nodding.pose).linear() * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(out_of_face.z(), -std::sin(0.2), 1e-6);
+  person.head_pitch_rad = 0.0;
   double lowest = 1.0, highest = 0.0;
   for (const bool speaking : {false, true}) {
     person.speaking = speaking;

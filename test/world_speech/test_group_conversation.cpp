@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,13 +33,15 @@ std::shared_ptr<const ConversationLines> lines() {
 }
 
 // A group of `size` standing in its settled places in an 8 m room, talking.
-std::unique_ptr<Simulation> talking_group(int size, uint64_t seed) {
+std::unique_ptr<Simulation> talking_group(int size, uint64_t seed,
+                                          const ConversationSpec& talk = {}) {
   auto simulation =
       std::make_unique<Simulation>(test::square_room(8.0), SimulationConfig{0.05, seed, 0.05});
   simulation->set_conversation_lines(lines());
   GroupSpec spec;
   spec.id = 1;
   spec.centre = {4.0, 4.0};
+  spec.conversation = talk;
   const std::vector<FormationSlot> places = formation_slots(
       GroupNavigation::settled_shape(spec, static_cast<size_t>(size)), static_cast<size_t>(size));
   for (int i = 0; i < size; ++i) {
@@ -117,17 +121,83 @@ TEST(GroupConversation, SameSeedSameTranscriptAndGaze) {
   auto other = talking_group(3, 8);
   std::vector<model::ObjectId> gaze_first;
   std::vector<model::ObjectId> gaze_second;
+  std::vector<double> nods_first;
+  std::vector<double> nods_second;
   for (int i = 0; i < 1200; ++i) {
     first->step();
     second->step();
     other->step();
     gaze_first.push_back(WorldSnapshot::of(*first).humans[0].gaze.target);
     gaze_second.push_back(WorldSnapshot::of(*second).humans[0].gaze.target);
+    nods_first.push_back(WorldSnapshot::of(*first).humans[1].head_pitch_rad);
+    nods_second.push_back(WorldSnapshot::of(*second).humans[1].head_pitch_rad);
   }
   EXPECT_EQ(transcript(*first), transcript(*second));
   EXPECT_EQ(gaze_first, gaze_second);
+  EXPECT_EQ(nods_first, nods_second);
+  EXPECT_GT(*std::max_element(nods_first.begin(), nods_first.end()), 0.0);
   EXPECT_NE(transcript(*first), transcript(*other));
   EXPECT_GT(transcript(*first).size(), 200u);
+}
+
+TEST(GroupConversation, ListenersNodAloneOrWithTheirMmHm) {
+  constexpr int kGroups = 30;
+  int nods = 0;
+  int onsets = 0;
+  int with_words = 0;
+  int by_the_floor_holder = 0;
+  double deepest_rad = 0.0;
+  for (int seed = 1; seed <= kGroups; ++seed) {
+    auto simulation = talking_group(3, static_cast<uint64_t>(seed));
+    std::map<model::ObjectId, double> pitch;
+    for (double t = 0.0; t < kTalkS; t += 0.05) {
+      simulation->step();
+      for (const HumanSnapshot& human : WorldSnapshot::of(*simulation).humans) {
+        if (human.head_pitch_rad > 0.0 && pitch[human.id] == 0.0) {
+          ++onsets;
+          const bool speaking = human.speech.is_speaking;
+          with_words += speaking && human.speech.act == "backchannel()";
+          by_the_floor_holder += speaking && human.speech.act != "backchannel()";
+        }
+        pitch[human.id] = human.head_pitch_rad;
+        deepest_rad = std::max(deepest_rad, human.head_pitch_rad);
+      }
+    }
+    nods += static_cast<int>(simulation->find_conversation(1)->nods());
+  }
+  const double alone = 1.0 - static_cast<double>(with_words) / onsets;
+  const double per_listener_minute = nods / (kGroups * 3.0 * kTalkS / 60.0);
+  std::printf(
+      "[ measured ] %d nods (%d onsets seen), %.2f without words, %.1f per member-minute, "
+      "deepest %.2f rad\n",
+      nods, onsets, alone, per_listener_minute, deepest_rad);
+  // Knight (2009): 72 of 116 backchannel nods came without words.
+  EXPECT_NEAR(alone, 0.62, 0.08);
+  EXPECT_GE(onsets, nods * 9 / 10);  // a nod replaced by the next before it shows is rare
+  EXPECT_EQ(by_the_floor_holder, 0);
+  EXPECT_LE(deepest_rad, 0.24);
+  EXPECT_GT(deepest_rad, 0.15);
+  EXPECT_GT(per_listener_minute, 1.0);
+}
+
+TEST(GroupConversation, NodsLeaveTheTalkAsItWas) {
+  ConversationSpec still;
+  still.nod_probability = 0.0;
+  still.nod_with_backchannel_probability = 0.0;
+  auto nodding = talking_group(3, 4);
+  auto not_nodding = talking_group(3, 4, still);
+  double pitch_sum = 0.0;
+  for (int i = 0; i < 1200; ++i) {
+    nodding->step();
+    not_nodding->step();
+    for (const HumanSnapshot& human : WorldSnapshot::of(*not_nodding).humans) {
+      pitch_sum += human.head_pitch_rad;
+    }
+  }
+  EXPECT_EQ(transcript(*nodding), transcript(*not_nodding));
+  EXPECT_GT(nodding->find_conversation(1)->nods(), 0u);
+  EXPECT_EQ(not_nodding->find_conversation(1)->nods(), 0u);
+  EXPECT_EQ(pitch_sum, 0.0);
 }
 
 TEST(GroupConversation, SilentWithoutLinesOrWhenSwitchedOff) {

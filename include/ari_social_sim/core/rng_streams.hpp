@@ -41,6 +41,9 @@ inline constexpr RngStreams kHumanReaction{"human_reaction",
 inline constexpr RngStreams kGroupConversation{
     "group_conversation", "world::GroupConversation, a group's turn-taking and gaze by group id",
     4 * kPerObjectId, kPerObjectId};
+inline constexpr RngStreams kGroupNods{
+    "group_nods", "world::GroupConversation, a group's listeners' nods by group id",
+    6 * kPerObjectId, kPerObjectId};
 inline constexpr RngStreams kGroupTurnover{
     "group_turnover", "world::GroupTurnover, a group's departures and arrivals by group id",
     5 * kPerObjectId, kPerObjectId};
@@ -106,29 +109,13 @@ inline constexpr RngStreams kDialogueEpisodes{
     uint64_t{1} << 41, kPerObjectId};
 
 /// Every block, for the overlap test and the documentation.
-inline constexpr std::array kAll{kHumanVoice,
-                                 kRoomNoise,
-                                 kHumanGaze,
-                                 kHumanReaction,
-                                 kGroupStance,
-                                 kGroupConversation,
-                                 kGroupShift,
-                                 kGroupTurnover,
-                                 kHumanAppearance,
-                                 kImuNoise,
-                                 kPerceptionTransientIds,
-                                 kPerceptionBodies,
-                                 kPerceptionFaces,
-                                 kPerceptionSpeech,
-                                 kPerceptionPersonIds,
-                                 kPerceptionMatcher,
-                                 kNavEpisodeType,
-                                 kNavWalkers,
-                                 kNavigationEpisodes,
-                                 kRandomGroups,
-                                 kRandomGroupScene,
-                                 kConversation,
-                                 kDialogueEpisodes};
+inline constexpr std::array kAll{
+    kHumanVoice,        kRoomNoise,         kHumanGaze,        kHumanReaction,
+    kGroupStance,       kGroupConversation, kGroupShift,       kGroupTurnover,
+    kGroupNods,         kHumanAppearance,   kImuNoise,         kPerceptionTransientIds,
+    kPerceptionBodies,  kPerceptionFaces,   kPerceptionSpeech, kPerceptionPersonIds,
+    kPerceptionMatcher, kNavEpisodeType,    kNavWalkers,       kNavigationEpisodes,
+    kRandomGroups,      kRandomGroupScene,  kConversation,     kDialogueEpisodes};
 
 }  // namespace rng_streams
 

@@ -37,7 +37,8 @@ struct PersonState {
   core::Pose2 pose;                                       // body centre and heading
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};  // map frame
   double angular_velocity_rps{0.0};
-  double face_yaw_rad{0.0};  // where the face points (the gaze direction), map frame
+  double face_yaw_rad{0.0};    // where the face points (the gaze direction), map frame
+  double head_pitch_rad{0.0};  // positive: down (a nod)
   // How the cameras draw them (physics::HumanFigure).
   double age_years{35.0};
   model::Gender gender{model::Gender::kNonIdentified};

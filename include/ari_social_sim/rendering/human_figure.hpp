@@ -16,6 +16,7 @@ struct FigurePose {
   core::Pose2 body;  // map frame: feet centre and heading
   double head_yaw_rad{
       0.0};  // map frame; the head turns to it, at most kMaxHeadTurnRad off the body
+  double head_pitch_rad{0.0};  // positive: the head tips down (a nod), about its centre
   double gait_phase_rad{0.0};  // where the legs are in a stride: 0 and pi are mid-stance
   double gait_amplitude{0.0};  // 0 standing still, 1 a brisk walk
   double mouth_open{0.0};      // 0 closed, 1 open as on a stressed syllable

@@ -20,6 +20,7 @@ struct FigureInput {
   core::Pose2 pose;                                       // map frame
   Eigen::Vector2d velocity_mps{Eigen::Vector2d::Zero()};  // map frame: drives the gait
   double face_yaw_rad{0.0};                               // gaze direction, map frame
+  double head_pitch_rad{0.0};                             // positive: down (a nod)
   bool speaking{false};
 };
 

@@ -44,15 +44,19 @@ struct RobotTurnCounts {
 /// on after a pause, or the addressee of a question answers, or a listener self-selects; the next
 /// start is offset from the end by a draw from the published distribution of turn transitions
 /// (ConversationSpec), so gaps and overlaps both occur; a lapse sometimes leaves a silence.
-/// Listeners backchannel; rarely two start at once and the later drops out. Utterances are spoken
-/// word by word through each member's SpeechGenerator, so everything that hears the world hears
-/// them. ARI, while the formation counts it, is a participant whose speech the conversation only
-/// observes: members look at it, answer it, ask it questions and leave it the floor, and stop or
-/// talk on when it interrupts. Speech the conversation did not start (a script, /sim/say) takes
-/// the floor the same way. Everything is drawn from the group's own generator.
+/// Listeners backchannel, saying "mm-hm", nodding, or both; rarely two start at once and the later
+/// drops out. Utterances are spoken word by word through each member's SpeechGenerator, so
+/// everything that hears the world hears them. ARI, while the formation counts it, is a participant
+/// whose speech the conversation only observes: members look at it, answer it, ask it questions and
+/// leave it the floor, and stop or talk on when it interrupts. Speech the conversation did not
+/// start (a script, /sim/say) takes the floor the same way. Everything is drawn from the group's
+/// own generators.
 class GroupConversation {
  public:
-  GroupConversation(model::ObjectId group_id, const ConversationSpec& spec, core::Rng rng);
+  /// `rng` draws the turn-taking and gaze, `nod_rng` the listeners' nods, so that nodding more
+  /// or less leaves the talk as it was.
+  GroupConversation(model::ObjectId group_id, const ConversationSpec& spec, core::Rng rng,
+                    core::Rng nod_rng);
 
   /// One step, after the group script: observes who speaks, starts and stops members' speech and
   /// sets their gaze. `lines` gives the words; without it the group stays silent.
@@ -66,11 +70,13 @@ class GroupConversation {
   const ConversationSpec& spec() const { return spec_; }
   const ConversationFloor& floor() const { return floor_; }
   const RobotTurnCounts& robot_counts() const { return robot_counts_; }
+  /// Nods the listeners have made so far.
+  uint32_t nods() const { return nods_; }
 
  private:
   // Something planned for a member at a sim time.
   struct Event {
-    enum class Kind { kStart, kBackchannel, kDropOut };
+    enum class Kind { kStart, kBackchannel, kNod, kDropOut };
     Kind kind{Kind::kStart};
     double at_s{0.0};
     model::ObjectId member{model::kNoObject};
@@ -97,6 +103,8 @@ class GroupConversation {
   // the answer, the speaker's next utterance after a pause, or a self-selected next speaker.
   void plan_after(model::ObjectId speaker, double start_s, double end_s);
   void plan_backchannels(model::ObjectId speaker, double start_s, double end_s);
+  void plan_nod(model::ObjectId listener, double at_s);
+  void nod(Simulation& simulation, model::ObjectId listener, double at_s);
   void plan_self_selection(model::ObjectId previous, double end_s, bool lapse);
   double lapse_mean_or_first(model::ObjectId previous) const;
   // Listeners may turn to `next` ahead of its start at `at_s`.
@@ -111,6 +119,7 @@ class GroupConversation {
   model::ObjectId group_id_;
   ConversationSpec spec_;
   core::Rng rng_;
+  core::Rng nod_rng_;
   std::vector<model::ObjectId> members_;  // as of this step, in the group's order
   model::ObjectId robot_{model::kNoObject};
   std::vector<model::ObjectId> participants_;        // the members, then ARI while it takes part
@@ -123,6 +132,7 @@ class GroupConversation {
   model::ObjectId yielded_to_robot_{model::kNoObject};  // resumes after ARI
   bool robot_asked_since_it_spoke_{false};
   RobotTurnCounts robot_counts_;
+  uint32_t nods_{0};
   ConversationGaze gaze_;
 };
 

@@ -7,6 +7,7 @@
 #include "ari_social_sim/model/shape_geometry.hpp"
 #include "ari_social_sim/world/gaze_event.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
+#include "ari_social_sim/world/head_nod.hpp"
 #include "ari_social_sim/world/object.hpp"
 #include "ari_social_sim/world/robot_reaction.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
@@ -158,6 +159,10 @@ class Human : public Object {
   /// GroupConversation.
   void set_conversation_gaze(const std::optional<GazeEvent>& gaze);
   const std::optional<GazeEvent>& conversation_gaze() const { return conversation_gaze_; }
+  /// Nods (a listener's backchannel, GroupConversation); a new nod replaces one under way.
+  void nod(const HeadNod& nod) { nod_ = nod; }
+  /// The head's pitch (rad, positive: down) at sim time `time_s`: level but while nodding.
+  double head_pitch_rad(double time_s) const { return nod_ ? nod_->pitch_at(time_s) : 0.0; }
   /// Sets the reaction to ARI, keeping the spec's reaction parameters: the first profile other
   /// than kIgnore installs a RobotReaction (after the other components, so it sees navigation's
   /// plan), kIgnore makes it inert. Requests are checked by Simulation::set_human_reaction.
@@ -188,6 +193,7 @@ class Human : public Object {
   SpeechGenerator* speech_{nullptr};
   GazeGenerator* gaze_{nullptr};
   std::optional<GazeEvent> conversation_gaze_;
+  std::optional<HeadNod> nod_;
 };
 
 }  // namespace ari_social_sim::world

@@ -51,6 +51,7 @@ struct HumanSnapshot {
   model::ObjectId group_id{model::kNoObject};
   ReactionProfile reaction{ReactionProfile::kIgnore};
   GazeSnapshot gaze;
+  double head_pitch_rad{0.0};  // positive: down; a nod (docs/world.md "Conversation")
   SpeechSnapshot speech;
 };
 
