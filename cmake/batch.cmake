@@ -7,7 +7,8 @@ add_library(ari_batch
   src/batch/batch_plan.cpp
   src/batch/episode_csv.cpp
   src/batch/group_streams.cpp
-  src/batch/progress_bar.cpp)
+  src/batch/progress_bar.cpp
+  src/batch/shard_merge.cpp)
 target_link_libraries(ari_batch PUBLIC ari_engine)
 
 if(CATKIN_ENABLE_TESTING)

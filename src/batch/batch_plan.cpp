@@ -100,6 +100,12 @@ std::string BatchPlan::seed_range() {
          std::to_string(static_cast<uint64_t>(kSeedBounds.max)) + "]";
 }
 
+std::string BatchPlan::shard_suffix() const {
+  return shard_count > 1
+             ? "_shard" + std::to_string(shard_index) + "-of-" + std::to_string(shard_count)
+             : "";
+}
+
 std::string BatchPlan::shard_text() const {
   return std::to_string(shard_index) + "/" + std::to_string(shard_count);
 }
@@ -141,10 +147,17 @@ bool read_plan_option(const std::string& option, const std::string& value, Batch
     given.seed = true;
   } else if (option == "--shard") {
     parse_shard(value, "", plan);
+    given.shard = true;
   } else {
     return false;
   }
   return true;
+}
+
+unsigned shard_count_option(const std::string& option, const std::string& value) {
+  // set_shard's N: one to six digits.
+  const core::IntegerOption shards{option.c_str(), 1, 999999};
+  return static_cast<unsigned>(shards.parse(value));
 }
 
 std::string episodes_option_range() {

@@ -105,7 +105,7 @@ std::string states_field(const scenario::ScriptRunner& runner, double end_time_s
 
 EpisodeSummary EpisodeSummary::of(const std::string& scenario, uint64_t episode, uint64_t seed,
                                   const scenario::ScriptRunner& runner,
-                                  const scenario::EpisodeMetrics& metrics, double wall_time_s) {
+                                  const scenario::EpisodeMetrics& metrics) {
   EpisodeSummary summary;
   summary.scenario = scenario;
   summary.episode = episode;
@@ -120,7 +120,6 @@ EpisodeSummary EpisodeSummary::of(const std::string& scenario, uint64_t episode,
     ++summary.utterances;
     summary.ari_utterances += line.speaker.is_ari() ? 1 : 0;
   }
-  summary.wall_time_s = wall_time_s;
   return summary;
 }
 
@@ -129,7 +128,7 @@ std::string csv_header() {
          "ari_path_length_m,min_clearance_m,contacts,personal_space_time_s,navigation_time_s,"
          "navigation_goals,navigation_failures,utterances,ari_utterances,turn_transitions,"
          "overlap_share,listener_gaze_at_speaker,ari_floor_share,ari_interruptions,"
-         "ari_addressed_after_s,ari_entered_in_pause,wall_time_s";
+         "ari_addressed_after_s,ari_entered_in_pause";
 }
 
 EpisodeCsvRow EpisodeCsvRow::of(const EpisodeSummary& s) {
@@ -138,7 +137,8 @@ EpisodeCsvRow EpisodeCsvRow::of(const EpisodeSummary& s) {
           s.seed,
           s.finished && s.outcome.success,
           s.finished ? s.outcome.reason : "did not finish",
-          s.outcome.final_state};
+          s.outcome.final_state,
+          /*text=*/""};
 }
 
 std::string csv_row(const EpisodeSummary& s) {
@@ -155,8 +155,7 @@ std::string csv_row(const EpisodeSummary& s) {
          std::to_string(s.ari_utterances) + "," + std::to_string(talk.turn_transitions) + "," +
          number(talk.overlap_share) + "," + number(talk.listener_gaze_at_speaker) + "," +
          number(talk.ari_floor_share) + "," + std::to_string(talk.ari_interruptions) + "," +
-         number(talk.ari_addressed_after_s) + "," + std::to_string(talk.ari_entered_in_pause) +
-         "," + number(s.wall_time_s, 4);
+         number(talk.ari_addressed_after_s) + "," + std::to_string(talk.ari_entered_in_pause);
 }
 
 EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& source) {
@@ -206,6 +205,7 @@ EpisodeCsvContents read_episode_csv(const std::string& text, const std::string& 
     for (size_t i = at; i + 1 < record.end; ++i) {
       line += text[i] == '\n' ? 1 : 0;
     }
+    row.text = text.substr(at, record.end - at);
     contents.rows.push_back(row);
     contents.complete_bytes = record.end;
     at = record.end;

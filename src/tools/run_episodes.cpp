@@ -33,6 +33,7 @@
 #include "ari_social_sim/batch/batch_plan.hpp"
 #include "ari_social_sim/batch/episode_csv.hpp"
 #include "ari_social_sim/batch/progress_bar.hpp"
+#include "ari_social_sim/batch/shard_merge.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
@@ -68,23 +69,29 @@ struct Options {
   bool audio{false};  // each episode's microphone-array audio and its labels (docs/audio.md)
   bool overwrite{false};
   bool resume{false};
+  unsigned merge_shards{0};  // --merge-shards N: merge a job array's N shards instead of running
 };
 
 void print_usage() {
-  std::cerr << "usage: run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
-               "                    [--out DIR] [--no-bags] [--audio] [--overwrite | --resume]\n"
-            << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n"
-            << "  N in " << batch::episodes_option_range() << ", S in "
-            << batch::seed_option_range()
-            << " (the last seed, S + N - 1, too)\n"
-               "  --audio: DIR/audio/NAME_SEED.wav (the array's six channels), .rttm, .ctm and\n"
-               "  _directions.csv per episode (docs/audio.md, \"Audio data sets\")\n"
-               "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
-               "  --resume (finish it: same settings, --episodes and --seed default to its own)\n"
-               "  SIGINT (Ctrl-C) or SIGTERM stops between two steps, keeping the finished\n"
-               "  episodes only (a second Ctrl-C kills at once)\n"
-               "  exit status: 0 when every episode succeeded, 1 when any failed, 2 on bad input,\n"
-               "  3 when writing fails, 130 after SIGINT and 143 after SIGTERM\n";
+  std::cerr
+      << "usage: run_episodes --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
+         "                    [--out DIR] [--no-bags] [--audio] [--overwrite | --resume]\n"
+         "       run_episodes --scenario NAME|FILE --episodes N [--seed S] [--no-bags]\n"
+         "                    [--audio] --out DIR --merge-shards K [--overwrite]\n"
+      << "  NAME is one of the package's scenarios (" << ARI_SCENARIO_DIR << ")\n"
+      << "  N in " << batch::episodes_option_range() << ", S in " << batch::seed_option_range()
+      << " (the last seed, S + N - 1, too)\n"
+         "  --audio: DIR/audio/NAME_SEED.wav (the array's six channels), .rttm, .ctm and\n"
+         "  _directions.csv per episode (docs/audio.md, \"Audio data sets\")\n"
+         "  an existing output in DIR is refused unless --overwrite (replace it) or\n"
+         "  --resume (finish it: same settings, --episodes and --seed default to its own)\n"
+         "  SIGINT (Ctrl-C) or SIGTERM stops between two steps, keeping the finished\n"
+         "  episodes only (a second Ctrl-C kills at once)\n"
+         "  --merge-shards K: DIR holds the K shards of this plan (--shard k/K, all finished);\n"
+         "  writes NAME.csv and NAME.settings.yaml as one process running the plan would,\n"
+         "  then removes the shards' CSVs and settings (docs/cluster.md)\n"
+         "  exit status: 0 when every episode succeeded, 1 when any failed, 2 on bad input,\n"
+         "  3 when writing fails, 130 after SIGINT and 143 after SIGTERM\n";
 }
 
 Options parse_options(int argc, char** argv) {
@@ -107,13 +114,16 @@ Options parse_options(int argc, char** argv) {
       options.resume = true;
       continue;
     }
-    core::check_known_option(arg, {"--scenario", "--episodes", "--seed", "--shard", "--out",
-                                   "--no-bags", "--audio", "--overwrite", "--resume"});
+    core::check_known_option(
+        arg, {"--scenario", "--episodes", "--seed", "--shard", "--out", "--no-bags", "--audio",
+              "--overwrite", "--resume", "--merge-shards"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--scenario") {
       options.scenario = value;
     } else if (arg == "--out") {
       options.out = value;
+    } else if (arg == "--merge-shards") {
+      options.merge_shards = batch::shard_count_option(arg, value);
     } else {
       batch::read_plan_option(arg, value, options.plan, options.given);
     }
@@ -125,6 +135,12 @@ Options parse_options(int argc, char** argv) {
   }
   if (options.overwrite && options.resume) {
     throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
+  }
+  if (options.merge_shards > 0 &&
+      (options.resume || options.given.shard || !options.given.episodes)) {
+    throw core::ConfigError(
+        "--merge-shards: expected the whole plan (--episodes, --seed) without --shard or "
+        "--resume");
   }
   return options;
 }
@@ -261,6 +277,20 @@ std::vector<batch::EpisodeCsvRow> resume_earlier_run(
   return contents.rows;
 }
 
+// The settings a run of `options` writes beside its CSV.
+batch::BatchSettings settings_of(const Options& options, const std::string& scenario_file,
+                                 const scenario::Scenario& scenario) {
+  batch::BatchSettings settings;
+  settings.scenario = scenario.name;
+  settings.scenario_file = scenario_file;
+  settings.scenario_digest = batch::digest_files({scenario_file, scenario.scene.world_path});
+  settings.config_digest = batch::digest_files(batch::files_under(ARI_CONFIG_DIR, ".yaml"));
+  settings.plan = options.plan;
+  settings.bags = options.bags;
+  settings.audio = options.audio;
+  return settings;
+}
+
 // A checked run, ready to go.
 struct Batch {
   Options options;
@@ -290,10 +320,7 @@ Batch prepare(int argc, char** argv) {
   OutputPaths& paths = batch.paths;
   paths.dir = options.out;
   paths.name = batch.scenario.name;
-  paths.stem = paths.name + (options.plan.shard_count > 1
-                                 ? "_shard" + std::to_string(options.plan.shard_index) + "-of-" +
-                                       std::to_string(options.plan.shard_count)
-                                 : "");
+  paths.stem = paths.name + options.plan.shard_suffix();
 
   // The plan: --resume goes on with the earlier run's count and seeds unless told otherwise.
   std::optional<batch::BatchSettings> earlier;
@@ -311,14 +338,7 @@ Batch prepare(int argc, char** argv) {
     options.plan.first_seed = earlier ? earlier->plan.first_seed : batch.scenario.scene.seed;
   }
   options.plan.validate("");
-  batch::BatchSettings settings;
-  settings.scenario = batch.scenario.name;
-  settings.scenario_file = scenario_file;
-  settings.scenario_digest = batch::digest_files({scenario_file, batch.scenario.scene.world_path});
-  settings.config_digest = batch::digest_files(batch::files_under(ARI_CONFIG_DIR, ".yaml"));
-  settings.plan = options.plan;
-  settings.bags = options.bags;
-  settings.audio = options.audio;
+  const batch::BatchSettings settings = settings_of(options, scenario_file, batch.scenario);
 
   // The earlier output: resumed, replaced, or a reason to stop.
   std::vector<uint64_t> seeds;
@@ -424,7 +444,6 @@ bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>
                  RunTotals& totals) {
   const OutputPaths& paths = batch.paths;
   const uint64_t seed = batch.options.plan.seed_of(index);
-  const auto episode_start = std::chrono::steady_clock::now();
   engine::Episode episode(batch.scenario, seed, batch.config);
   std::unique_ptr<tools::EpisodeBag> bag;
   if (batch.options.bags) {
@@ -462,8 +481,8 @@ bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>
   if (audio) {
     audio->finish();
   }
-  const auto summary = batch::EpisodeSummary::of(paths.name, index, seed, episode.runner(),
-                                                 episode.metrics(), seconds_since(episode_start));
+  const auto summary =
+      batch::EpisodeSummary::of(paths.name, index, seed, episode.runner(), episode.metrics());
   batch.csv << batch::csv_row(summary) << "\n" << std::flush;
   if (!batch.csv) {
     throw core::Error(paths.csv() + ": writing the row of episode " + std::to_string(index) +
@@ -553,11 +572,59 @@ int run(Batch& batch) {
   return verdict(rows, paths.csv());
 }
 
+// --merge-shards: the job array's shards in DIR merged into the files one process running the
+// whole plan writes, checked first (every shard finished, with the plan's settings, every bag
+// there); the shards' CSVs and settings are removed only once the merged files are in place.
+// Returns the exit code of a run of the whole plan. Throws core::Error for bad input.
+int merge_shards(Options options) {
+  const std::string scenario_file = scenario::scenario_file_of(options.scenario, ARI_SCENARIO_DIR);
+  core::check_input_file("--scenario", scenario_file);
+  const scenario::Scenario scenario = scenario::load_scenario_file(scenario_file);
+  if (!options.given.seed) {
+    options.plan.first_seed = scenario.scene.seed;
+  }
+  options.plan.validate("");
+  const OutputPaths paths{options.out, scenario.name, scenario.name};
+  for (const std::string& path : {paths.csv(), paths.settings()}) {
+    if (fs::exists(path) && !options.overwrite) {
+      throw core::ConfigError("--out: " + path +
+                              " is there already: pass --overwrite to replace it with the merge");
+    }
+  }
+  const batch::MergedEpisodeRun merged = batch::merge_episode_shards(
+      options.out, settings_of(options, scenario_file, scenario), options.merge_shards);
+  for (const batch::EpisodeCsvRow& row : merged.rows) {
+    if (options.bags && !fs::exists(paths.bag(row.seed))) {
+      throw core::ConfigError(paths.bag(row.seed) + ": not found: expected the bag of every row");
+    }
+  }
+  core::OutputFile settings_file("--out", paths.settings());
+  settings_file.stream() << merged.settings;
+  settings_file.commit();
+  core::OutputFile csv_file("--out", paths.csv());
+  csv_file.stream() << merged.csv;
+  csv_file.commit();
+  for (unsigned k = 1; k <= options.merge_shards; ++k) {
+    batch::BatchPlan shard = options.plan;
+    shard.shard_index = k;
+    shard.shard_count = options.merge_shards;
+    const OutputPaths shard_paths{options.out, scenario.name + shard.shard_suffix(), scenario.name};
+    fs::remove(shard_paths.csv());
+    fs::remove(shard_paths.settings());
+  }
+  std::printf("run_episodes: merged %u shards: %zu episodes into %s\n", options.merge_shards,
+              merged.rows.size(), paths.csv().c_str());
+  return verdict(merged.rows, paths.csv());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Batch batch;
   try {
+    if (const Options options = parse_options(argc, argv); options.merge_shards > 0) {
+      return merge_shards(options);
+    }
     batch = prepare(argc, argv);
   } catch (const core::Error& e) {
     std::cerr << "run_episodes: " << e.what() << "\n";

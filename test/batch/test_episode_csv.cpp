@@ -30,13 +30,12 @@ TEST(EpisodeCsv, RowsMatchTheHeaderAndQuoteText) {
   s.metrics.contacts = 1;
   s.utterances = 5;
   s.ari_utterances = 3;
-  s.wall_time_s = 0.25;
   const std::string row = csv_row(s);
   EXPECT_EQ(columns(row), columns(csv_header()));
   EXPECT_EQ(row,
             "group_discussion,3,4,1,\"ARI left, \"\"happily\"\"\",leave,41.500,"
             "grouping=14.20;leave=6.00,9.125,,1,0.000,0.000,0,0,5,3,0,0.000,0.000,0.000,0,-1.000,"
-            "-1,0.2500");
+            "-1");
   s.finished = false;  // cut off: never a success
   EXPECT_NE(csv_row(s).find(",0,did not finish,"), std::string::npos);
 }
@@ -90,7 +89,7 @@ TEST(EpisodeCsv, ForeignOrDamagedRowsAreNamed) {
                                    "old.csv:1", {"expected the header"});
   world::test::expect_config_error(
       [&] { read_episode_csv(header + row_of(0) + "join_group,1,101\n", "x.csv"); }, "x.csv:4",
-      {"expected 25 columns, got 3"});  // row_of spans lines 2 and 3
+      {"expected 24 columns, got 3"});  // row_of spans lines 2 and 3
   std::string bad_seed = row_of(1);
   bad_seed.replace(bad_seed.find(",101,"), 5, ",-1,");
   world::test::expect_config_error([&] { read_episode_csv(header + bad_seed, "x.csv"); }, "x.csv:2",

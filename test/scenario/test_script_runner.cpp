@@ -481,7 +481,7 @@ VisitRecord run_for_an_hour(const std::string& states) {
     stage.tick(runner, commands, 0.5);
   }
   return {runner.visits(), runner.unrecorded_visits(),
-          batch::EpisodeSummary::of("inline", 0, 2, runner, {}, 1.0).states};
+          batch::EpisodeSummary::of("inline", 0, 2, runner, {}).states};
 }
 
 // A state that polls by re-entering itself every tick, for an hour of sim time: one visit with

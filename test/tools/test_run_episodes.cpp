@@ -197,6 +197,43 @@ TEST(RunEpisodes, ResumeAddsTheMissingEpisodesAndKeepsTheRest) {
             (std::vector<std::string>{"2", "3", "4", "5", "6", "7"}));
 }
 
+// A job array's shards merged (--merge-shards) are the files one process running the whole plan
+// writes, byte for byte: the CSV, its settings and every bag (docs/cluster.md).
+TEST(RunEpisodes, ShardsMergeIntoWhatOneProcessWrites) {
+  const std::string plan = "--scenario join_group --episodes 6 --seed 2";
+  const std::string whole = out_dir("merge_whole");
+  ASSERT_EQ(run(plan + " --out " + whole).status, 0);
+  const std::string sharded = out_dir("merge_sharded");
+  for (int k = 1; k <= 3; ++k) {
+    ASSERT_EQ(run(plan + " --shard " + std::to_string(k) + "/3 --out " + sharded).status, 0);
+  }
+  const ProgramRun merged = run(plan + " --merge-shards 3 --out " + sharded);
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_NE(merged.out.find("merged 3 shards: 6 episodes"), std::string::npos) << merged.out;
+  for (const std::string file : {"join_group.csv", "join_group.settings.yaml", "join_group_2.bag",
+                                 "join_group_5.bag", "join_group_7.bag"}) {
+    EXPECT_EQ(read_all(sharded + "/" + file), read_all(whole + "/" + file)) << file;
+  }
+  EXPECT_TRUE(files_ending(sharded, "-of-3.csv").empty());
+  EXPECT_TRUE(files_ending(sharded, "-of-3.settings.yaml").empty());
+  // Merged again: the output is there; the shards are gone.
+  expect_refused(run(plan + " --merge-shards 3 --out " + sharded), "pass --overwrite");
+
+  const std::string missing = out_dir("merge_missing");
+  for (int k = 1; k <= 2; ++k) {
+    ASSERT_EQ(run(plan + " --shard " + std::to_string(k) + "/3 --out " + missing).status, 0);
+  }
+  expect_refused(run(plan + " --merge-shards 3 --out " + missing),
+                 "join_group_shard3-of-3.settings.yaml: not found");
+  ASSERT_EQ(run("--scenario join_group --episodes 6 --seed 20 --shard 3/3 --out " + missing).status,
+            0);
+  expect_refused(run(plan + " --merge-shards 3 --out " + missing),
+                 "--seed: first seed 20 there, 2");
+  expect_refused(run(plan + " --merge-shards 3 --shard 1/3 --out " + missing),
+                 "--merge-shards: expected the whole plan");
+  expect_refused(run(plan + " --merge-shards 0 --out " + missing), "--merge-shards: expected");
+}
+
 // join_group with a script time limit too short to join anyone: every episode fails.
 std::string hopeless_join_group(const std::string& dir) {
   std::string text = read_all(std::string(ARI_SOURCE_DIR) + "/scenarios/join_group.yaml");

@@ -54,6 +54,8 @@ struct BatchPlan {
   static std::string seed_range();
   /// `K/N`, as --shard and the settings files spell the shard.
   std::string shard_text() const;
+  /// What a shard's output files add to their name, `_shardK-of-N`; empty for a whole run (1/1).
+  std::string shard_suffix() const;
   /// Sets K and N from `K/N`, each of 1 to 6 digits; false, leaving them as they were, when the
   /// text is not of that form. Whether 1 <= K <= N is visit's rule.
   bool set_shard(const std::string& k_of_n);
@@ -71,6 +73,7 @@ void parse_shard(const std::string& text, const std::string& field, BatchPlan& p
 struct PlanOptionsGiven {
   bool episodes{false};
   bool seed{false};
+  bool shard{false};
 };
 
 /// Reads one of the command-line options the batch tools share (`--episodes N`, `--seed S`,
@@ -78,6 +81,10 @@ struct PlanOptionsGiven {
 /// naming the option and its range for a bad value.
 bool read_plan_option(const std::string& option, const std::string& value, BatchPlan& plan,
                       PlanOptionsGiven& given);
+
+/// A count of shards given to `option` (`--merge-shards 4`): N of --shard's K/N, 1 to 999999.
+/// Throws core::ConfigError naming the option and the range.
+unsigned shard_count_option(const std::string& option, const std::string& value);
 
 /// The ranges of --episodes and --seed, as the tools' usage lines print them.
 std::string episodes_option_range();

@@ -10,7 +10,8 @@
 namespace ari_social_sim::batch {
 
 /// One batch episode as a CSV row (docs/scenario.md, "Metrics"): identity, outcome, durations,
-/// navigation figures, what was said, and the wall time it took.
+/// navigation figures and what was said. Nothing that depends on the machine (no wall time), so
+/// that the same plan gives the same bytes, on one process or merged from a job array's shards.
 struct EpisodeSummary {
   std::string scenario;
   uint64_t episode{0};
@@ -21,11 +22,10 @@ struct EpisodeSummary {
   scenario::EpisodeMetrics metrics;
   int utterances{0};
   int ari_utterances{0};
-  double wall_time_s{0.0};
 
   static EpisodeSummary of(const std::string& scenario, uint64_t episode, uint64_t seed,
                            const scenario::ScriptRunner& runner,
-                           const scenario::EpisodeMetrics& metrics, double wall_time_s);
+                           const scenario::EpisodeMetrics& metrics);
 };
 
 /// The header line (no newline).
@@ -41,6 +41,7 @@ struct EpisodeCsvRow {
   bool success{false};
   std::string reason;
   std::string final_state;
+  std::string text;  // the row's bytes as read_episode_csv found them, newline included
 
   /// The row csv_row(summary) writes, as read_episode_csv reads it back.
   static EpisodeCsvRow of(const EpisodeSummary& summary);
