@@ -39,8 +39,10 @@ target_compile_definitions(run_episodes PRIVATE
 
 # export_dataset: labelled images of ARI's cameras from a scenario's episodes as a COCO dataset,
 # the engine and the renderer in one process (docs/cameras.md, "Labelled datasets").
-# dataset/: the data sets: COCO of labelled camera images, and an episode's audio (WAV, RTTM, CTM).
-add_library(ari_dataset src/dataset/coco_dataset.cpp src/dataset/episode_audio.cpp)
+# dataset/: the data sets: COCO of labelled camera images (and its shards' files merged), and an
+# episode's audio (WAV, RTTM, CTM).
+add_library(ari_dataset src/dataset/coco_dataset.cpp src/dataset/episode_audio.cpp
+  src/dataset/shard_merge.cpp)
 target_link_libraries(ari_dataset PUBLIC ari_batch ari_rendering ari_audio PRIVATE ${SNDFILE_LIBRARY})
 add_executable(export_dataset src/tools/export_dataset.cpp)
 target_link_libraries(export_dataset ari_dataset)
@@ -48,9 +50,10 @@ target_compile_definitions(export_dataset PRIVATE
   ARI_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/scenarios"
   ARI_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
 if(CATKIN_ENABLE_TESTING)
-  # The COCO file's layout, and the program itself run as a user would.
+  # The COCO file's layout, its shards' files merged, and the program itself run as a user would.
   ari_add_gtest(test_export_dataset
-    SOURCES test/dataset/test_coco_dataset.cpp test/tools/test_export_dataset.cpp
+    SOURCES test/dataset/test_coco_dataset.cpp test/dataset/test_shard_merge.cpp
+      test/tools/test_export_dataset.cpp
     LIBRARIES ari_dataset)
   target_compile_definitions(test_export_dataset PRIVATE
     ARI_EXPORT_DATASET_BIN="$<TARGET_FILE:export_dataset>")

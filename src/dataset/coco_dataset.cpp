@@ -1,5 +1,6 @@
 #include "ari_social_sim/dataset/coco_dataset.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -52,10 +53,6 @@ std::string annotation_json(uint64_t id, uint64_t image_id, int category,
          face_fields + ", \"mask\": " + bool_text(label.mask) + "}";
 }
 
-// The line prefixes of entries_since.
-constexpr const char* kImagePrefix = "image ";
-constexpr const char* kAnnotationPrefix = "annotation ";
-
 // The id an entry line starts with, `PREFIX{"id": N, ...`; false when it does not.
 bool read_id(const std::string& line, const char* prefix, uint64_t& id) {
   const std::string start = std::string(prefix) + "{\"id\": ";
@@ -66,6 +63,22 @@ bool read_id(const std::string& line, const char* prefix, uint64_t& id) {
   char* end = nullptr;
   id = std::strtoull(digits, &end, 10);
   return end != digits && *end == ',';
+}
+
+// Sorts objects `{"id": N, ...}`, each with an id add or add_entries checked, by N.
+void sort_objects_by_id(std::vector<std::string>& objects) {
+  std::vector<std::pair<uint64_t, std::string>> keyed;
+  keyed.reserve(objects.size());
+  for (std::string& object : objects) {
+    uint64_t id = 0;
+    read_id(object, "", id);
+    keyed.emplace_back(id, std::move(object));
+  }
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (size_t i = 0; i < keyed.size(); ++i) {
+    objects[i] = std::move(keyed[i].second);
+  }
 }
 
 }  // namespace
@@ -123,10 +136,10 @@ void CocoDataset::add(const DatasetImage& image,
 std::string CocoDataset::entries_since(const Mark& mark) const {
   std::string lines;
   for (size_t i = mark.images; i < images_.size(); ++i) {
-    lines += kImagePrefix + images_[i] + "\n";
+    lines += kImageEntry + images_[i] + "\n";
   }
   for (size_t i = mark.annotations; i < annotations_.size(); ++i) {
-    lines += kAnnotationPrefix + annotations_[i] + "\n";
+    lines += kAnnotationEntry + annotations_[i] + "\n";
   }
   return lines;
 }
@@ -138,14 +151,14 @@ void CocoDataset::add_entries(const std::string& lines, const std::string& sourc
     ++number;
     const std::string where = source + ": line " + std::to_string(number) + " of the entries";
     uint64_t id = 0;
-    if (line.rfind(kImagePrefix, 0) == 0 && read_id(line, kImagePrefix, id)) {
+    if (line.rfind(kImageEntry, 0) == 0 && read_id(line, kImageEntry, id)) {
       if (!image_ids_.insert(id).second) {
         throw core::ConfigError(where + ": image id " + std::to_string(id) +
                                 " given twice: expected a new one");
       }
-      images_.push_back(line.substr(std::strlen(kImagePrefix)));
-    } else if (line.rfind(kAnnotationPrefix, 0) == 0 && read_id(line, kAnnotationPrefix, id)) {
-      annotations_.push_back(line.substr(std::strlen(kAnnotationPrefix)));
+      images_.push_back(line.substr(std::strlen(kImageEntry)));
+    } else if (line.rfind(kAnnotationEntry, 0) == 0 && read_id(line, kAnnotationEntry, id)) {
+      annotations_.push_back(line.substr(std::strlen(kAnnotationEntry)));
       const bool face =
           line.find(core::format_text("\"category_id\": %d,", kFaceCategory)) != std::string::npos;
       ++(face ? faces_ : persons_);
@@ -156,6 +169,11 @@ void CocoDataset::add_entries(const std::string& lines, const std::string& sourc
                               line.substr(0, 40) + "'");
     }
   }
+}
+
+void CocoDataset::sort_by_id() {
+  sort_objects_by_id(images_);
+  sort_objects_by_id(annotations_);
 }
 
 std::string CocoDataset::to_json() const {

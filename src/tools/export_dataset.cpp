@@ -3,6 +3,7 @@
 //   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] [--cameras
 //   head,torso]
 //                  [--audio] --out DIR [--every SECONDS] [--overwrite | --resume]
+//   export_dataset ...the same plan... --merge-shards N [--overwrite]
 //
 // The episodes are run_episodes' (episode i with seed S + i, S defaulting to the scenario's seed;
 // --shard K/N takes the episodes with i % N == K - 1). At each frame due (each camera's rate, or
@@ -14,7 +15,9 @@
 // drops the episode under way (its images deleted) and exits with 128 + the signal's number. Exit
 // code 2 on bad input, 1 when rendering or writing fails (docs/cameras.md, "Labelled datasets").
 // --audio also writes each episode's microphone-array audio with its labels (dataset::EpisodeAudio,
-// docs/audio.md, "Audio data sets").
+// docs/audio.md, "Audio data sets"). --merge-shards N runs nothing: it merges the files of shards
+// 1/N..N/N in DIR into the DIR/annotations.json an unsharded run writes
+// (dataset::merge_shard_files).
 #include <unistd.h>
 
 #include <algorithm>
@@ -43,6 +46,7 @@
 #include "ari_social_sim/core/stop_signal.hpp"
 #include "ari_social_sim/dataset/coco_dataset.hpp"
 #include "ari_social_sim/dataset/episode_audio.hpp"
+#include "ari_social_sim/dataset/shard_merge.hpp"
 #include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/rendering/camera_rig.hpp"
 #include "ari_social_sim/rendering/snapshot_cameras.hpp"
@@ -55,6 +59,9 @@ namespace fs = std::filesystem;
 // A camera renders at most 100 frames per second of sim time (CameraSettings' rate_hz), hence
 // 0.01 s; a day of sim time is longer than any scenario.
 const core::NumberOption kEvery{"--every", core::between(0.01, 86400.0)};
+// As many shards as --episodes allows episodes: a shard beyond the last episode writes an empty
+// file, which merges as such.
+constexpr core::IntegerOption kMergeShards{"--merge-shards", 1, 1000000};
 
 // The cameras --cameras names: ARI's two pinholes, the ones labels can be made for.
 struct CameraChoice {
@@ -71,7 +78,9 @@ const std::vector<int> kPngParameters{cv::IMWRITE_PNG_COMPRESSION, 3, cv::IMWRIT
 constexpr const char* kUsage =
     "usage: export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
     "                      [--cameras head,torso] [--audio] --out DIR [--every SECONDS]\n"
-    "                      [--overwrite | --resume]\n";
+    "                      [--overwrite | --resume]\n"
+    "       export_dataset ...the shards' options, without --shard... --merge-shards N\n"
+    "                      [--overwrite]\n";
 
 constexpr const char* kHelp = R"(
 Runs a scenario's episodes as run_episodes does (episode i with seed S + i, S defaulting to the
@@ -95,6 +104,14 @@ running only the missing episodes (refused unless the options and the scenario a
 files are those of the earlier run). The result is byte for byte that of an uninterrupted run,
 after a SIGKILL or a crash too. A second Ctrl-C kills at once.
 
+--merge-shards N runs no episode: with the options the shards were exported with, --shard left
+out, it checks DIR/annotations_shardK-of-N.json for K = 1..N against them and merges them into
+DIR/annotations.json, byte for byte the file one process would have written (an existing one is
+replaced only with --overwrite), then removes the shard files. A missing shard, or one made with
+other options, is refused naming the file and the field, and nothing is written. With --audio it
+checks that every episode's audio files are in DIR/audio. N in [1, 1000000]; for N = 1 the one
+file is DIR/annotations.json, which is checked and kept.
+
 Exit status: 0 on success, 2 on bad input (checked before any episode runs), 1 when rendering or
 writing fails, 130 after SIGINT and 143 after SIGTERM.
 )";
@@ -109,6 +126,8 @@ struct Options {
   bool audio{false};  // each episode's array audio with its labels (docs/audio.md)
   bool overwrite{false};
   bool resume{false};
+  bool shard_given{false};               // --shard, even 1/1, which --merge-shards refuses
+  std::optional<unsigned> merge_shards;  // --merge-shards N
 };
 
 // `head,torso` as rig names; each name once.
@@ -147,9 +166,11 @@ Options parse_options(int argc, char** argv) {
                             : options.audio) = true;
       continue;
     }
-    core::check_known_option(arg, {"--scenario", "--episodes", "--seed", "--shard", "--cameras",
-                                   "--audio", "--out", "--every", "--overwrite", "--resume"});
+    core::check_known_option(
+        arg, {"--scenario", "--episodes", "--seed", "--shard", "--cameras", "--audio", "--out",
+              "--every", "--overwrite", "--resume", "--merge-shards"});
     const std::string value = core::option_value(argc, argv, i);
+    options.shard_given = options.shard_given || arg == "--shard";
     if (arg == "--scenario") {
       options.scenario = value;
     } else if (arg == "--cameras") {
@@ -158,6 +179,8 @@ Options parse_options(int argc, char** argv) {
       options.out = value;
     } else if (arg == "--every") {
       options.every_s = kEvery.parse(value);
+    } else if (arg == "--merge-shards") {
+      options.merge_shards = static_cast<unsigned>(kMergeShards.parse(value));
     } else {
       batch::read_plan_option(arg, value, options.plan, options.given);
     }
@@ -169,6 +192,16 @@ Options parse_options(int argc, char** argv) {
   }
   if (options.overwrite && options.resume) {
     throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
+  }
+  if (options.merge_shards && options.shard_given) {
+    throw core::ConfigError(
+        "--merge-shards and --shard: expected one of them (the merge takes the options of the "
+        "whole plan, the shards' without --shard), got both");
+  }
+  if (options.merge_shards && options.resume) {
+    throw core::ConfigError(
+        "--merge-shards and --resume: expected one of them (a merge is not resumed: it writes "
+        "nothing until it is done), got both");
   }
   return options;
 }
@@ -335,7 +368,6 @@ Export prepare(int argc, char** argv) {
     throw core::ConfigError("--scenario: " + run.scenario_file +
                             ": expected a scenario with ARI (the cameras are ARI's), got none");
   }
-  run.config = engine::EpisodeConfig::load(ARI_CONFIG_DIR);
   if (!options.given.seed) {
     options.plan.first_seed = run.scenario.scene.seed;
   }
@@ -357,12 +389,11 @@ Export prepare(int argc, char** argv) {
   OutputPaths& paths = run.paths;
   paths.dir = options.out;
   paths.scenario = run.scenario.name;
-  paths.annotations =
-      options.out + "/annotations" +
-      (options.plan.shard_count > 1 ? "_shard" + std::to_string(options.plan.shard_index) + "-of-" +
-                                          std::to_string(options.plan.shard_count)
-                                    : "") +
-      ".json";
+  paths.annotations = options.out + "/" + dataset::annotations_file_name(options.plan);
+  if (options.merge_shards) {
+    return run;  // no episode runs: merge_shards checks DIR's files itself
+  }
+  run.config = engine::EpisodeConfig::load(ARI_CONFIG_DIR);
   const bool complete_already =
       options.resume && !fs::exists(paths.progress()) && fs::exists(paths.annotations);
   deal_with_earlier_output(run);
@@ -551,6 +582,92 @@ int export_episodes(Export& run) {
   return 0;
 }
 
+// --audio with --merge-shards: the shards' COCO files do not say whether they were exported with
+// --audio, so every episode's audio files must be in DIR/audio. Throws core::ConfigError naming
+// the first one missing.
+void check_audio_files(const Export& run) {
+  const batch::BatchPlan& plan = run.options.plan;
+  for (uint64_t episode : plan.episode_indices()) {
+    const std::string stem =
+        dataset::EpisodeAudio::stem_of(run.paths.dir, run.paths.scenario, plan.seed_of(episode));
+    for (const std::string& file : dataset::EpisodeAudio::files_of(stem)) {
+      if (!fs::is_regular_file(file)) {
+        throw core::ConfigError("--audio: " + file + ": expected the audio of episode " +
+                                std::to_string(episode) +
+                                ", which its shard writes with --audio, got no file");
+      }
+    }
+  }
+}
+
+// --merge-shards N: the shards' files, every check done before anything is written. Throws
+// core::ConfigError (or std::filesystem_error).
+dataset::CocoDataset checked_merge(const Export& run) {
+  const unsigned shards = *run.options.merge_shards;
+  core::check_input_directory("--out", run.paths.dir);
+  if (shards > 1) {
+    core::check_output_file("--out", run.paths.annotations, run.options.overwrite);
+  }
+  dataset::CocoDataset merged =
+      dataset::merge_shard_files(run.paths.dir, dataset_settings(run), shards);
+  if (run.options.audio) {
+    check_audio_files(run);
+  }
+  return merged;
+}
+
+// Writes the merged annotations whole (core::OutputFile), and only then removes the shards' files:
+// until the merged file is complete, they are the only copy of the labels. Throws core::Error (or
+// std::filesystem_error).
+void write_merged(const Export& run, const dataset::CocoDataset& merged) {
+  core::OutputFile annotations("--out", run.paths.annotations);
+  annotations.stream() << merged.to_json();
+  annotations.commit();
+  batch::BatchPlan shard = run.options.plan;
+  shard.shard_count = *run.options.merge_shards;
+  for (unsigned k = 1; k <= shard.shard_count; ++k) {
+    shard.shard_index = k;
+    fs::remove(run.paths.dir + "/" + dataset::annotations_file_name(shard));
+  }
+}
+
+// --merge-shards N: the shards' COCO files, checked against the options, merged into the file an
+// unsharded run writes, then removed. Returns the exit code: 2 when a file or option is refused
+// (nothing written), 1 when writing fails.
+int merge_shards(const Export& run) {
+  const unsigned shards = *run.options.merge_shards;
+  std::optional<dataset::CocoDataset> merged;
+  try {
+    merged = checked_merge(run);
+  } catch (const core::Error& e) {
+    std::cerr << "export_dataset: " << e.what() << "\n";
+    return 2;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "export_dataset: --out: " << e.what() << "\n";
+    return 2;
+  }
+  if (shards == 1) {
+    // Shard 1/1 writes annotations.json itself: checked, it is the merged file already.
+    std::printf(
+        "export_dataset: 1 shard: %s is the whole plan's file already (%zu images, %zu "
+        "annotations), nothing to merge\n",
+        run.paths.annotations.c_str(), merged->image_count(), merged->annotation_count());
+    return 0;
+  }
+  try {
+    write_merged(run, *merged);
+  } catch (const core::Error& e) {
+    std::cerr << "export_dataset: " << e.what() << "\n";
+    return 1;
+  } catch (const fs::filesystem_error& e) {
+    std::cerr << "export_dataset: " << e.what() << "\n";
+    return 1;
+  }
+  std::printf("export_dataset: merged %u shards: %zu images, %zu annotations into %s\n", shards,
+              merged->image_count(), merged->annotation_count(), run.paths.annotations.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -569,6 +686,9 @@ int main(int argc, char** argv) {
   } catch (const fs::filesystem_error& e) {
     std::cerr << "export_dataset: --out: " << e.what() << "\n";
     return 2;
+  }
+  if (run.options.merge_shards) {
+    return merge_shards(run);
   }
   core::install_stop_handler();
   try {

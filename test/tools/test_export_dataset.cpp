@@ -1,7 +1,8 @@
 // Runs the export_dataset program as a user would: bad input refused before any work, and
 // join_group (the shortest scenario) exported, checked as a COCO file, exported again byte for
-// byte, and in two shards that together hold the same images; an export interrupted with SIGINT
-// and with SIGKILL, then resumed to the bytes of an uninterrupted one.
+// byte, and in three shards that together hold the same images and merge (--merge-shards) into
+// the same annotations.json; an export interrupted with SIGINT and with SIGKILL, then resumed to
+// the bytes of an uninterrupted one.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -116,6 +117,21 @@ std::map<std::string, std::string> files_under(const std::string& dir) {
   return files;
 }
 
+// Every file under `dir` equals the reference export's (made in one go), byte for byte, and no
+// other file is there.
+void expect_same_files(const std::string& dir,
+                       const std::map<std::string, std::string>& reference) {
+  const std::map<std::string, std::string> files = files_under(dir);
+  int differing = 0;
+  for (const auto& [path, bytes] : reference) {
+    differing += files.count(path) == 0 || files.at(path) != bytes ? 1 : 0;
+  }
+  EXPECT_EQ(files.size(), reference.size());
+  EXPECT_EQ(differing, 0);
+  std::printf("%s: %zu files (annotations.json and PNGs), %d differing from the run in one go\n",
+              dir.c_str(), files.size(), differing);
+}
+
 // The file_name of every image a COCO file lists (one image per line, as export_dataset writes).
 std::set<std::string> image_names(const std::string& path) {
   std::set<std::string> names;
@@ -190,6 +206,12 @@ TEST(ExportDataset, BadOptionsExitWithTwoNamingTheOption) {
            {base + " --cameras head --shard 3/2",
             "--shard: expected K/N with 1 <= K <= N, got '3/2'"},
            {base + " --cameras head --shard 1", "--shard: expected K/N"},
+           {base + " --cameras head --merge-shards 0",
+            "--merge-shards: expected an integer in [1, 1000000], got '0'"},
+           {base + " --cameras head --shard 1/1 --merge-shards 2",
+            "--merge-shards and --shard: expected one of them"},
+           {base + " --cameras head --resume --merge-shards 2",
+            "--merge-shards and --resume: expected one of them"},
            {"--scenario join_group --episodes 0 --cameras head --out " + dir,
             "--episodes: expected an integer in [1, 1000000], got '0'"},
            {"--scenario join_group --episodes 2 --seed -1 --cameras head --out " + dir, "--seed"},
@@ -240,7 +262,7 @@ TEST(ExportDataset, AFailedWriteExitsWithOne) {
   EXPECT_FALSE(fs::exists(dir + "/annotations.json"));
 }
 
-TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInShards) {
+TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInMergedShards) {
   const std::string dir = ::testing::TempDir() + "export_dataset_whole";
   fs::remove_all(dir);
   const ProgramRun first = run(kExport + " --out " + dir);
@@ -277,12 +299,13 @@ TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInShards) {
   EXPECT_EQ(differing, 0) << "files differing between two runs with the same seeds";
   std::printf("second run: %zu files, %d differing\n", again_files.size(), differing);
 
-  // Shards 1/2 and 2/2: one episode each; together the unsharded run's images, byte for byte.
+  // Shards 1/3 to 3/3: one episode each for the first two, none for the third; together the
+  // unsharded run's images, byte for byte.
   const std::string shards = ::testing::TempDir() + "export_dataset_shards";
   fs::remove_all(shards);
   std::set<std::string> sharded_names;
-  for (const std::string shard : {"1-of-2", "2-of-2"}) {
-    const std::string k_of_n = shard.substr(0, 1) + "/2";
+  for (const std::string shard : {"1-of-3", "2-of-3", "3-of-3"}) {
+    const std::string k_of_n = shard.substr(0, 1) + "/3";
     const ProgramRun part = run(kExport + " --shard " + k_of_n + " --out " + shards);
     ASSERT_EQ(part.status, 0) << part.err;
     const std::string file = "annotations_shard" + shard + ".json";
@@ -295,6 +318,27 @@ TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInShards) {
   }
   EXPECT_EQ(sharded_names, names);
   EXPECT_FALSE(fs::exists(shards + "/annotations.json"));
+
+  // Merged: refused, writing nothing, with another plan than the shards' or a shard missing.
+  const std::string merge = " --out " + shards + " --merge-shards 3";
+  expect_refused(run("--scenario join_group --episodes 2 --cameras head,torso --every 2" + merge),
+                 shards +
+                     "/annotations_shard1-of-3.json: info: every_s: expected 2.0000, got "
+                     "1.0000; frame_rate_hz: expected");
+  fs::rename(shards + "/annotations_shard2-of-3.json", shards + "/set_aside.json");
+  expect_refused(run(kExport + merge),
+                 "1 of 3 shard files missing: " + shards + "/annotations_shard2-of-3.json");
+  fs::rename(shards + "/set_aside.json", shards + "/annotations_shard2-of-3.json");
+  EXPECT_FALSE(fs::exists(shards + "/annotations.json"));
+  // With the shards' options: the unsharded run's folder, file for file, the shard files gone.
+  const ProgramRun merged = run(kExport + merge);
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_EQ(merged.out, "export_dataset: merged 3 shards: " + std::to_string(check.images) +
+                            " images, " + std::to_string(check.persons + check.faces) +
+                            " annotations into " + shards + "/annotations.json\n");
+  expect_same_files(shards, files);
+  expect_refused(run(kExport + merge), "annotations.json: exists (pass --overwrite to replace it)");
+  expect_refused(run(kExport + merge + " --overwrite"), "3 of 3 shard files missing");
 }
 
 // Three short episodes, one camera, a frame every 2 s: the cheapest export that can be stopped
@@ -330,21 +374,6 @@ int interrupted_export(const std::string& dir, int signal, std::string& message)
   const int status = signal_and_wait(pid, signal);
   message = read_all(err);
   return status;
-}
-
-// Every file under `dir` equals the uninterrupted export's, byte for byte.
-void expect_same_files(const std::string& dir,
-                       const std::map<std::string, std::string>& reference) {
-  const std::map<std::string, std::string> files = files_under(dir);
-  int differing = 0;
-  for (const auto& [path, bytes] : reference) {
-    differing += files.count(path) == 0 || files.at(path) != bytes ? 1 : 0;
-  }
-  EXPECT_EQ(files.size(), reference.size());
-  EXPECT_EQ(differing, 0);
-  std::printf(
-      "%s: %zu files (annotations.json and PNGs), %d differing from the uninterrupted run\n",
-      dir.c_str(), files.size(), differing);
 }
 
 TEST(ExportDataset, AnInterruptedExportKeepsFinishedEpisodesAndResumesToTheSameBytes) {

@@ -56,6 +56,9 @@ class CocoDataset {
  public:
   static constexpr int kPersonCategory = 1;
   static constexpr int kFaceCategory = 2;
+  /// What each line of entries_since starts with, before the image's or annotation's object.
+  static constexpr const char* kImageEntry = "image ";
+  static constexpr const char* kAnnotationEntry = "annotation ";
 
   explicit CocoDataset(DatasetSettings settings);
 
@@ -86,6 +89,9 @@ class CocoDataset {
   /// Adds entries_since's lines back. Throws core::ConfigError naming `source` for a line of
   /// another form, or an image id given twice.
   void add_entries(const std::string& lines, const std::string& source);
+  /// Puts the images and the annotations in id order: the order of the whole batch, episode by
+  /// episode, whatever order the entries came in (the shards' entries, merge_shard_files).
+  void sort_by_id();
 
  private:
   DatasetSettings settings_;
