@@ -177,10 +177,7 @@ std::string read_shard_file(const std::string& path, const batch::BatchPlan& pla
 }  // namespace
 
 std::string annotations_file_name(const batch::BatchPlan& plan) {
-  const std::string shard = plan.shard_count > 1 ? "_shard" + std::to_string(plan.shard_index) +
-                                                       "-of-" + std::to_string(plan.shard_count)
-                                                 : "";
-  return "annotations" + shard + ".json";
+  return "annotations" + plan.shard_suffix() + ".json";
 }
 
 DatasetSettings shard_settings(DatasetSettings whole, unsigned k, unsigned n) {

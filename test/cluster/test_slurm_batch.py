@@ -3,6 +3,7 @@ slurmctld and slurmd on ports of their own, state in a temporary folder, stopped
 submitted with scripts/slurm_batch.py (docs/cluster.md):
   - a run_episodes plan as 4 shards and the merge: the CSV, its settings and every bag
     byte-identical to one process running the plan;
+  - an export_dataset plan as 3 shards and the merge: annotations.json and every PNG the same;
   - a shard cancelled with scancel mid-run and another killed with SIGKILL: the merge does not
     run, the plan's folder holds no partial file outside the killed task's staging folder, and the
     plan resubmitted with --resume runs those two shards only and merges to the same bytes;
@@ -115,6 +116,16 @@ def test_run_episodes_shards_merge_into_the_bytes_of_one_process(cluster, tmp_pa
     assert report["episodes"] == 8 and report["episodes_per_minute"] > 0
     status = batch(cluster, "status", "--out", str(tmp_path / "array"))
     assert "merged; 4 of 4 shards done, 8 of 8 episodes" in status.stdout, status.stdout
+
+
+def test_export_dataset_shards_merge_into_the_bytes_of_one_process(cluster, tmp_path):
+    plan = ["export_dataset", "--scenario", "join_group", "--episodes", "3", "--seed", "2",
+            "--cameras", "head", "--every", "4"]
+    jobs = submitted(cluster, tmp_path / "array", 3, plan)
+    one_process(plan[0], plan[1:], tmp_path / "whole")
+    wait_for_jobs(cluster, jobs)
+    files = expect_same_files(tmp_path / "array", tmp_path / "whole")
+    assert files > 4  # annotations.json and the PNGs of 3 episodes
 
 
 def rows_in(stage):
