@@ -29,6 +29,10 @@ def run_plan(env, out, shards, scenario, episodes):
                    capture_output=True)
     merged = out / "slurm" / "merged.json"
     while not merged.exists():
+        jobs = subprocess.run(["squeue", "-h"], env=env, capture_output=True, text=True).stdout
+        if not jobs.strip() and not merged.exists():
+            sys.exit("slurm_scaling: the plan in %s ended without a merge: see its slurm/logs"
+                     % out)
         time.sleep(0.2)
     report = json.loads(merged.read_text())
     report["submission_to_output_s"] = time.monotonic() - started

@@ -585,8 +585,10 @@ int merge_shards(Options options) {
   }
   options.plan.validate("");
   const OutputPaths paths{options.out, scenario.name, scenario.name};
+  // One shard (1/1) writes the whole run's files itself: they are checked and kept.
+  const bool in_place = options.merge_shards == 1;
   for (const std::string& path : {paths.csv(), paths.settings()}) {
-    if (fs::exists(path) && !options.overwrite) {
+    if (fs::exists(path) && !options.overwrite && !in_place) {
       throw core::ConfigError("--out: " + path +
                               " is there already: pass --overwrite to replace it with the merge");
     }
@@ -604,7 +606,7 @@ int merge_shards(Options options) {
   core::OutputFile csv_file("--out", paths.csv());
   csv_file.stream() << merged.csv;
   csv_file.commit();
-  for (unsigned k = 1; k <= options.merge_shards; ++k) {
+  for (unsigned k = 1; k <= options.merge_shards && !in_place; ++k) {
     batch::BatchPlan shard = options.plan;
     shard.shard_index = k;
     shard.shard_count = options.merge_shards;

@@ -232,6 +232,13 @@ TEST(RunEpisodes, ShardsMergeIntoWhatOneProcessWrites) {
   expect_refused(run(plan + " --merge-shards 3 --shard 1/3 --out " + missing),
                  "--merge-shards: expected the whole plan");
   expect_refused(run(plan + " --merge-shards 0 --out " + missing), "--merge-shards: expected");
+
+  // One shard writes the whole run's files: the merge checks them and keeps them.
+  const std::string single = out_dir("merge_single");
+  ASSERT_EQ(run(plan + " --shard 1/1 --out " + single).status, 0);
+  const ProgramRun in_place = run(plan + " --merge-shards 1 --out " + single);
+  EXPECT_EQ(in_place.status, 0) << in_place.err;
+  EXPECT_EQ(read_all(single + "/join_group.csv"), read_all(whole + "/join_group.csv"));
 }
 
 // join_group with a script time limit too short to join anyone: every episode fails.
