@@ -11,7 +11,7 @@
 set -euo pipefail
 
 usage() {
-  echo "usage: bash scripts/slurm_cluster.sh start DIR [PORT] | stop DIR" >&2
+  echo "usage: bash scripts/slurm_cluster.sh start DIR [PORT], or stop DIR" >&2
   exit 2
 }
 
@@ -19,10 +19,10 @@ usage() {
 action=$1
 dir=$2
 port=${3:-16817}
-[[ $port =~ ^[0-9]+$ ]] && ((port >= 1024 && port <= 65534)) || {
+if [[ ! $port =~ ^[0-9]{4,5}$ ]] || [[ $port -lt 1024 || $port -gt 65534 ]]; then
   echo "slurm_cluster: PORT: expected an integer in [1024, 65534], got '$port'" >&2
   exit 2
-}
+fi
 
 stop_pid_file() {
   local pid_file=$1
@@ -102,8 +102,8 @@ wait_for_node() {
     fi
     sleep 0.2
   done
-  echo "slurm_cluster: the node did not come up in 20 s; see $dir/slurmctld.log and" \
-    "$dir/slurmd.log" >&2
+  echo "slurm_cluster: the node did not come up in 20 s (look in $dir/slurmctld.log and" \
+    "$dir/slurmd.log)" >&2
   return 1
 }
 

@@ -17,10 +17,14 @@ void install_stop_handler() {
   action.sa_handler = on_stop_signal;
   // SA_RESTART: a read or write under way when the signal comes (a pipe, a slow disk) goes on
   // rather than failing with EINTR, which would turn a clean stop into a write error.
-  action.sa_flags = SA_RESETHAND | SA_RESTART;
   sigemptyset(&action.sa_mask);
   // sigaction replaces SIG_IGN too, unlike the `if (signal(...) != SIG_IGN)` idiom.
+  // SA_RESETHAND on SIGINT only: a second Ctrl-C is a user who will not wait, but a scheduler
+  // may send SIGTERM more than once (SLURM's scancel signals every process of a job, and a
+  // wrapper passes it on too) and sends SIGKILL itself when it will wait no longer.
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
   sigaction(SIGINT, &action, nullptr);
+  action.sa_flags = SA_RESTART;
   sigaction(SIGTERM, &action, nullptr);
 }
 

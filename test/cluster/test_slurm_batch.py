@@ -11,51 +11,14 @@ submitted with scripts/slurm_batch.py (docs/cluster.md):
 The tools come from the build this test belongs to (ARI_DEVEL_DIR)."""
 import json
 import os
-import socket
 import subprocess
 import sys
 import time
 from pathlib import Path
 
-import pytest
+from conftest import DEVEL, HANG_GUARD_S, SCRIPTS
 
-SOURCE = Path(__file__).resolve().parents[2]
-SCRIPTS = SOURCE / "scripts"
-DEVEL = Path(os.environ.get("ARI_DEVEL_DIR", SOURCE / "_build" / "devel"))
 TOOLS = DEVEL / "lib" / "ari_social_sim"
-HANG_GUARD_S = 900  # a plan that has not ended by then is stuck, not slow
-
-
-def free_port_pair():
-    """A port whose next one is free too (slurmctld's and slurmd's)."""
-    for _ in range(50):
-        with socket.socket() as probe:
-            probe.bind(("", 0))
-            port = probe.getsockname()[1]
-        if port < 65000:
-            with socket.socket() as second:
-                try:
-                    second.bind(("", port + 1))
-                    return port
-                except OSError:
-                    continue
-    raise RuntimeError("no two consecutive free ports")
-
-
-@pytest.fixture(scope="module")
-def cluster(tmp_path_factory):
-    if os.geteuid() != 0:
-        pytest.skip("the single-host cluster runs as root (slurmd starts the jobs)")
-    folder = tmp_path_factory.mktemp("slurm")
-    port = free_port_pair()
-    subprocess.run(["bash", str(SCRIPTS / "slurm_cluster.sh"), "start", str(folder), str(port)],
-                   check=True, capture_output=True, text=True)
-    env = dict(os.environ)
-    env["SLURM_CONF"] = str(folder / "slurm.conf")
-    # What sourcing the devel space's setup.bash gives catkin_find, which finds the tools.
-    env["CMAKE_PREFIX_PATH"] = str(DEVEL) + ":" + env.get("CMAKE_PREFIX_PATH", "")
-    yield env
-    subprocess.run(["bash", str(SCRIPTS / "slurm_cluster.sh"), "stop", str(folder)])
 
 
 def batch(env, *args):

@@ -7,7 +7,7 @@
 namespace ari_social_sim::core {
 namespace {
 
-TEST(StopSignal, CaughtEvenWhenIgnoredAtStartAndOnlyOnce) {
+TEST(StopSignal, CaughtEvenWhenIgnoredAtStartAndSigintOnlyOnce) {
   std::signal(SIGINT, SIG_IGN);  // as `tool &` in a non-interactive shell starts it
   g_stop_signal = 0;
   install_stop_handler();
@@ -26,6 +26,9 @@ TEST(StopSignal, CaughtEvenWhenIgnoredAtStartAndOnlyOnce) {
   EXPECT_EQ(g_stop_signal, SIGTERM);
   EXPECT_STREQ(stop_signal_name(g_stop_signal), "SIGTERM");
   EXPECT_EQ(stopped_exit_code(g_stop_signal), 143);
+  // A second SIGTERM (a scheduler's, passed on by a wrapper too) is caught again.
+  ASSERT_EQ(std::raise(SIGTERM), 0);
+  EXPECT_EQ(g_stop_signal, SIGTERM);
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   g_stop_signal = 0;

@@ -13,7 +13,8 @@ extern volatile std::sig_atomic_t g_stop_signal;
 /// finish the file it is writing, drop the unit of work under way and say what it kept. Installed
 /// whatever the disposition was, ignored included: a non-interactive shell starts background jobs
 /// with SIGINT ignored, and a tool started from a script must stop on Ctrl-C all the same. A
-/// second signal kills at once (SA_RESETHAND), for a user who does not want to wait.
+/// second SIGINT kills at once (SA_RESETHAND), for a user who does not want to wait; a second
+/// SIGTERM does not, since schedulers send it more than once.
 void install_stop_handler();
 
 /// `SIGINT` or `SIGTERM` for g_stop_signal's values, for the tools' messages.
