@@ -5,6 +5,7 @@ find_library(SNDFILE_LIBRARY sndfile REQUIRED)
 # files, progress lines, and the perceived group streams of random scenes.
 add_library(ari_batch
   src/batch/batch_plan.cpp
+  src/batch/corpus_shard_merge.cpp
   src/batch/episode_csv.cpp
   src/batch/group_streams.cpp
   src/batch/progress_bar.cpp

@@ -42,7 +42,7 @@ target_compile_definitions(ari_dialogue PRIVATE
 add_executable(fit_dialogue_model src/tools/fit_dialogue_model.cpp)
 target_link_libraries(fit_dialogue_model ari_dialogue)
 add_executable(dialogue_corpus src/tools/dialogue_corpus.cpp)
-target_link_libraries(dialogue_corpus ari_dialogue)
+target_link_libraries(dialogue_corpus ari_batch)
 
 if(CATKIN_ENABLE_TESTING)
   # The programs themselves, run as a user would (test/tools/program_run.hpp).

@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""Batch plans of run_episodes and export_dataset on a SLURM cluster (docs/cluster.md).
+"""Batch plans of run_episodes, export_dataset and dialogue_corpus on a SLURM cluster
+(docs/cluster.md).
 
   slurm_batch.py submit --shards N --out DIR [--partition P] [--time T] [--cpus-per-task C]
                         [--mem M] [--account A] [--overwrite | --resume] -- TOOL ARGS...
   slurm_batch.py status --out DIR
 
-`submit` turns the plan (TOOL with ARGS: run_episodes or export_dataset, with --episodes and
-what else it takes, never --out or --shard) into a job array of N shards and a merge job that runs
+`submit` turns the plan (TOOL with ARGS: run_episodes or export_dataset with --episodes,
+dialogue_corpus with --dialogues, and what else they take, never --out or --shard) into a job array of N shards and a merge job that runs
 after them (--dependency=afterok). Each task runs its shard in a staging folder of its own
 (DIR/slurm/stage/shardK, resumed if a task ran there before) and, once the tool has finished it,
 renames the folder into DIR/slurm/done/: DIR never holds a partial file. The merge job moves the
@@ -24,11 +25,29 @@ import sys
 import time
 from pathlib import Path
 
-TOOLS = ("run_episodes", "export_dataset")
+class Tool:
+    """How a batch tool takes a plan: its count option, where a task and the merge write (DIR's
+    own name for a tool that writes one file), whether a rerun task resumes, and the exit codes
+    after which its output is complete."""
+
+    def __init__(self, count, out_file=None, resumes=True, complete=(0,), refused=()):
+        self.count, self.out_file, self.resumes = count, out_file, resumes
+        self.complete, self.refused = complete, refused
+
+    def out_option(self, folder):
+        return ["--out", str(folder / self.out_file if self.out_file else folder)]
+
+
+TOOLS = {
+    # run_episodes exits 1 when an episode failed: its output is complete all the same.
+    "run_episodes": Tool("--episodes", complete=(0, 1)),
+    "export_dataset": Tool("--episodes"),
+    # dialogue_corpus writes its file only when complete: a rerun shard starts again.
+    "dialogue_corpus": Tool("--dialogues", out_file="corpus.jsonl", resumes=False,
+                            refused=("--compare", "--variety", "--report")),
+}
 # Options the plan may not carry: this script sets them per task.
 OWN_OPTIONS = ("--out", "--shard", "--resume", "--overwrite", "--merge-shards")
-# run_episodes exits 1 when an episode failed: the shard's output is complete all the same.
-COMPLETE_EXITS = {"run_episodes": (0, 1), "export_dataset": (0,)}
 SCRIPT = Path(__file__).resolve()
 
 
@@ -81,20 +100,25 @@ def check_plan(tool_args, shards):
     if not tool_args or tool_args[0] not in TOOLS:
         raise PlanError("expected the tool after --: one of %s, got '%s'" % (
             ", ".join(TOOLS), tool_args[0] if tool_args else ""))
+    tool = TOOLS[tool_args[0]]
     for arg in tool_args[1:]:
-        if arg.split("=", 1)[0] in OWN_OPTIONS:
+        name = arg.split("=", 1)[0]
+        if name in OWN_OPTIONS:
             raise PlanError("%s: set by slurm_batch.py for each task; leave it out of the plan"
-                            % arg.split("=", 1)[0])
-    episodes_text = option_value(tool_args[1:], "--episodes")
+                            % name)
+        if name in tool.refused:
+            raise PlanError("%s: %s's tables need every dialogue: run them on one process"
+                            % (name, tool_args[0]))
+    episodes_text = option_value(tool_args[1:], tool.count)
     if episodes_text is None or not episodes_text.isdigit() or int(episodes_text) < 1:
-        raise PlanError("--episodes: expected the plan's episode count (a positive integer) "
-                        "among the tool's arguments, got '%s'" % (episodes_text or ""))
+        raise PlanError("%s: expected the plan's count (a positive integer) among the tool's "
+                        "arguments, got '%s'" % (tool.count, episodes_text or ""))
     episodes = int(episodes_text)
     if shards < 1 or episodes % shards != 0:
         divisors = [d for d in range(1, min(episodes, 64) + 1) if episodes % d == 0]
-        raise PlanError("--shards %d: expected a count that divides --episodes %d, so that every "
-                        "task runs as many episodes (e.g. %s)" % (
-                            shards, episodes, ", ".join(map(str, divisors[:8]))))
+        raise PlanError("--shards %d: expected a count that divides %s %d, so that every "
+                        "task runs as many (e.g. %s)" % (
+                            shards, tool.count, episodes, ", ".join(map(str, divisors[:8]))))
     return episodes
 
 
@@ -257,10 +281,12 @@ def task(args):
     stage = folder.stage(shard)
     stage.mkdir(parents=True, exist_ok=True)
     started = time.time()
-    command = [tool_binary(plan["tool"])] + plan["args"] + [
-        "--shard", "%d/%d" % (shard, plan["shards"]), "--out", str(stage), "--resume"]
+    tool = TOOLS[plan["tool"]]
+    command = ([tool_binary(plan["tool"])] + plan["args"] +
+               ["--shard", "%d/%d" % (shard, plan["shards"])] + tool.out_option(stage) +
+               (["--resume"] if tool.resumes else ["--overwrite"]))
     status = run_forwarding_signals(command)
-    if status not in COMPLETE_EXITS[plan["tool"]]:
+    if status not in tool.complete:
         return status  # stopped or failed: the stage is resumed by the next attempt
     folder.done(shard).parent.mkdir(parents=True, exist_ok=True)
     os.rename(stage, folder.done(shard))
@@ -301,10 +327,11 @@ def merge(args):
     started = time.time()
     for k in range(1, plan["shards"] + 1):
         move_into(folder.done(k), folder.out)
-    command = [tool_binary(plan["tool"])] + plan["args"] + [
-        "--merge-shards", str(plan["shards"]), "--out", str(folder.out)]
+    tool = TOOLS[plan["tool"]]
+    command = ([tool_binary(plan["tool"])] + plan["args"] +
+               ["--merge-shards", str(plan["shards"])] + tool.out_option(folder.out))
     status = subprocess.run(command).returncode
-    if status not in COMPLETE_EXITS[plan["tool"]]:
+    if status not in tool.complete:
         return status
     shutil.rmtree(folder.slurm / "done", ignore_errors=True)
     shutil.rmtree(folder.slurm / "stage", ignore_errors=True)

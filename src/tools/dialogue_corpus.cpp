@@ -20,6 +20,8 @@
 #include <sstream>
 #include <string>
 
+#include "ari_social_sim/batch/batch_plan.hpp"
+#include "ari_social_sim/batch/corpus_shard_merge.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/format_text.hpp"
@@ -50,27 +52,35 @@ struct Options {
   bool compare{false};
   bool variety{false};
   bool overwrite{false};
+  batch::BatchPlan shard;    // --shard K/N: the dialogues with d % N == K - 1 (episodes unused)
+  unsigned merge_shards{0};  // --merge-shards N: merge a job array's N shards of --out
 
   bool has_tables() const { return compare || variety; }
+  bool sharded() const { return shard.shard_count > 1 || merge_shards > 0; }
 };
 
 void print_usage() {
-  std::cerr << "usage: dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE]\n"
-               "                       [--corpus DIR] [--nlg template|retrieval] [--compare]\n"
-               "                       [--variety] [--report FILE.md] [--overwrite]\n"
-            << "  N in " << kDialogues.range() << ", S in " << kSeed.range() << "\n"
-            << "  --out and --report must not exist yet unless --overwrite\n"
-            << "  --config defaults to " << default_dialogue_config_dir() << "/simulation.yaml\n"
-            << "  --compare: the generated dialogues against MPGT (needs the corpus)\n"
-            << "  --variety: distinct texts / utterances per side and first act\n"
-            << "  --report FILE.md: the tables of --compare and --variety, also in a file\n"
-            << "  --corpus DIR: the MPGT corpus (below), needed only by --compare and retrieval\n"
-            << "    NLG; default: corpus_dir in --config if set, else as below\n"
-            << "  outputs appear only when complete; SIGINT (Ctrl-C) or SIGTERM stops between two\n"
-            << "    dialogues and writes nothing (a second Ctrl-C kills at once)\n"
-            << "  exit status: 0 on success, 2 on bad input, 1 when writing fails, 130 after\n"
-            << "    SIGINT and 143 after SIGTERM\n"
-            << mpgt_corpus_help();
+  std::cerr
+      << "usage: dialogue_corpus --dialogues N --seed S --out FILE.jsonl [--config FILE]\n"
+         "                       [--shard K/N | --merge-shards N]\n"
+         "                       [--corpus DIR] [--nlg template|retrieval] [--compare]\n"
+         "                       [--variety] [--report FILE.md] [--overwrite]\n"
+      << "  N in " << kDialogues.range() << ", S in " << kSeed.range() << "\n"
+      << "  --out and --report must not exist yet unless --overwrite\n"
+      << "  --config defaults to " << default_dialogue_config_dir() << "/simulation.yaml\n"
+      << "  --compare: the generated dialogues against MPGT (needs the corpus)\n"
+      << "  --variety: distinct texts / utterances per side and first act\n"
+      << "  --report FILE.md: the tables of --compare and --variety, also in a file\n"
+      << "  --shard K/N: only the dialogues with d % N == K - 1, into FILE_shardK-of-N.jsonl\n"
+      << "  --merge-shards N: the N shards of FILE.jsonl (all finished) merged into it, as\n"
+      << "    one process writes it; the shards' files removed (docs/cluster.md)\n"
+      << "  --corpus DIR: the MPGT corpus (below), needed only by --compare and retrieval\n"
+      << "    NLG; default: corpus_dir in --config if set, else as below\n"
+      << "  outputs appear only when complete; SIGINT (Ctrl-C) or SIGTERM stops between two\n"
+      << "    dialogues and writes nothing (a second Ctrl-C kills at once)\n"
+      << "  exit status: 0 on success, 2 on bad input, 1 when writing fails, 130 after\n"
+      << "    SIGINT and 143 after SIGTERM\n"
+      << mpgt_corpus_help();
 }
 
 Options parse_options(int argc, char** argv) {
@@ -91,8 +101,9 @@ Options parse_options(int argc, char** argv) {
       options.overwrite = true;
       continue;
     }
-    core::check_known_option(arg, {"--dialogues", "--seed", "--out", "--config", "--corpus",
-                                   "--compare", "--nlg", "--report", "--overwrite"});
+    core::check_known_option(
+        arg, {"--dialogues", "--seed", "--out", "--config", "--corpus", "--compare", "--nlg",
+              "--report", "--overwrite", "--shard", "--merge-shards"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--dialogues") {
       options.dialogues = kDialogues.parse(value);
@@ -108,6 +119,10 @@ Options parse_options(int argc, char** argv) {
       options.corpus = value;
     } else if (arg == "--nlg") {
       options.nlg = value;
+    } else if (arg == "--shard") {
+      batch::parse_shard(value, "", options.shard);
+    } else if (arg == "--merge-shards") {
+      options.merge_shards = batch::shard_count_option(arg, value);
     } else {
       options.report = value;  // --report
     }
@@ -121,12 +136,23 @@ Options parse_options(int argc, char** argv) {
         "--report: the report holds the tables of --compare and --variety: expected one of them "
         "too");
   }
+  if (options.sharded() && (options.has_tables() || options.out.empty() ||
+                            (options.merge_shards > 0 && options.shard.shard_count > 1))) {
+    throw core::ConfigError(
+        "--shard and --merge-shards: expected --out, one of the two, and neither --compare nor "
+        "--variety (their tables need every dialogue: run them on the merged corpus' plan)");
+  }
+  options.shard.episodes = static_cast<uint64_t>(options.dialogues);
+  if (options.shard.shard_count > 1) {
+    options.out = batch::corpus_shard_path(options.out, options.shard);
+  }
   // Paths before any work: a typo must not cost the run.
   core::check_input_file("--config", options.config);
   if (!options.corpus.empty()) {
     core::check_input_directory("--corpus", options.corpus);
   }
-  if (!options.out.empty()) {
+  // A merge of one shard keeps the file shard 1/1 wrote, which is the whole corpus already.
+  if (!options.out.empty() && options.merge_shards != 1) {
     core::check_output_file("--out", options.out, options.overwrite);
   }
   if (!options.report.empty()) {
@@ -308,6 +334,9 @@ int make_corpus(const Options& options, const DialogueSetup& setup,
     if (core::g_stop_signal != 0) {
       return report_stop(options, d);
     }
+    if (static_cast<uint64_t>(d) % options.shard.shard_count != options.shard.shard_index - 1) {
+      continue;  // another shard's
+    }
     EpisodeRecord episode =
         run_episode(env, policy, episode_seed(static_cast<uint64_t>(options.seed), d));
     if (out) {
@@ -340,6 +369,24 @@ int make_corpus(const Options& options, const DialogueSetup& setup,
   return 0;
 }
 
+// --merge-shards: the shards of --out (each finished) merged into the corpus one process writes;
+// the shards' files removed once it is in place.
+int merge_corpus(const Options& options) {
+  batch::BatchPlan plan = options.shard;
+  const std::string merged = batch::merge_corpus_shards(options.out, plan, options.merge_shards);
+  core::OutputFile out("--out", options.out);
+  out.stream() << merged;
+  out.commit();
+  for (unsigned k = 1; k <= options.merge_shards && options.merge_shards > 1; ++k) {
+    plan.shard_index = k;
+    plan.shard_count = options.merge_shards;
+    std::remove(batch::corpus_shard_path(options.out, plan).c_str());
+  }
+  std::printf("dialogue_corpus: merged %u shards: %lld dialogues into %s\n", options.merge_shards,
+              static_cast<long long>(options.dialogues), options.out.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -354,6 +401,9 @@ int main(int argc, char** argv) {
   std::unique_ptr<core::OutputFile> out;
   try {
     options = parse_options(argc, argv);
+    if (options.merge_shards > 0) {
+      return merge_corpus(options);
+    }
     setup = DialogueSetup::create(run_config(options));
     if (!options.out.empty()) {
       out = std::make_unique<core::OutputFile>("--out", options.out);

@@ -4,6 +4,7 @@ submitted with scripts/slurm_batch.py (docs/cluster.md):
   - a run_episodes plan as 4 shards and the merge: the CSV, its settings and every bag
     byte-identical to one process running the plan;
   - an export_dataset plan as 3 shards and the merge: annotations.json and every PNG the same;
+  - a dialogue_corpus plan as 3 shards and the merge: the corpus the same;
   - a shard cancelled with scancel mid-run and another killed with SIGKILL: the merge does not
     run, the plan's folder holds no partial file outside the killed task's staging folder, and the
     plan resubmitted with --resume runs those two shards only and merges to the same bytes;
@@ -91,6 +92,18 @@ def test_export_dataset_shards_merge_into_the_bytes_of_one_process(cluster, tmp_
     assert files > 4  # annotations.json and the PNGs of 3 episodes
 
 
+def test_dialogue_corpus_shards_merge_into_the_bytes_of_one_process(cluster, tmp_path):
+    plan = ["dialogue_corpus", "--dialogues", "12", "--seed", "3"]
+    jobs = submitted(cluster, tmp_path / "array", 3, plan)
+    (tmp_path / "whole").mkdir()
+    one_process(plan[0], plan[1:], tmp_path / "whole" / "corpus.jsonl")
+    wait_for_jobs(cluster, jobs)
+    assert expect_same_files(tmp_path / "array", tmp_path / "whole") == 1
+    refused = batch(cluster, "submit", "--shards", "3", "--out", str(tmp_path / "other"), "--",
+                    *plan, "--compare")
+    assert refused.returncode == 2 and "--compare: dialogue_corpus's tables" in refused.stderr
+
+
 def rows_in(stage):
     return sum(max(0, csv.read_text().count("\n") - 1) for csv in stage.glob("*.csv"))
 
@@ -139,7 +152,7 @@ def test_bad_plans_are_refused_before_anything_is_submitted(cluster, tmp_path):
         (["--shards", "4", "--cpus-per-task", "999", "--out", out] + plan,
          "--cpus-per-task"),
         (["--shards", "4", "--out", out, "--", "run_episodes", "--scenario", "join_group"],
-         "--episodes: expected the plan's episode count"),
+         "--episodes: expected the plan's count"),
         (["--shards", "4", "--out", out] + plan + ["--out", "elsewhere"],
          "--out: set by slurm_batch.py"),
         (["--shards", "4", "--out", out, "--", "nav_benchmark", "--episodes", "8"],

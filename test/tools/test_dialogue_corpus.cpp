@@ -68,6 +68,32 @@ TEST(DialogueCorpus, BadOptionsExitWithTwoBeforeWritingAnything) {
 
 // --help says where the MPGT corpus comes from and what needs it, naming no folder outside the
 // repository.
+// A job array's shards merged (--merge-shards) are the corpus one process writes, byte for byte
+// (docs/cluster.md); a shard missing or from another run is refused.
+TEST(DialogueCorpus, ShardsMergeIntoWhatOneProcessWrites) {
+  const std::string dir = scratch("shards");
+  const std::string plan = "--dialogues 6 --seed 3 --out ";
+  ASSERT_EQ(run(plan + dir + "whole.jsonl").status, 0);
+  for (int k = 1; k <= 3; ++k) {
+    ASSERT_EQ(run(plan + dir + "c.jsonl --shard " + std::to_string(k) + "/3").status, 0);
+  }
+  EXPECT_TRUE(fs::exists(dir + "c_shard2-of-3.jsonl"));
+  const ProgramRun merged = run(plan + dir + "c.jsonl --merge-shards 3");
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_EQ(read_all(dir + "c.jsonl"), read_all(dir + "whole.jsonl"));
+  EXPECT_FALSE(fs::exists(dir + "c_shard2-of-3.jsonl"));
+
+  ASSERT_EQ(run(plan + dir + "d.jsonl --shard 1/3").status, 0);
+  expect_refused(run(plan + dir + "d.jsonl --merge-shards 3"), "d_shard2-of-3.jsonl: not found");
+  // Shard 1 of a run of 9 holds dialogue 6, which a run of 6 has not.
+  ASSERT_EQ(run("--dialogues 9 --seed 3 --out " + dir + "e.jsonl --shard 1/3").status, 0);
+  for (int k = 2; k <= 3; ++k) {
+    ASSERT_EQ(run(plan + dir + "e.jsonl --shard " + std::to_string(k) + "/3").status, 0);
+  }
+  expect_refused(run(plan + dir + "e.jsonl --merge-shards 3"), "dialogue 6 is not one of");
+  expect_refused(run(plan + dir + "f.jsonl --shard 1/3 --variety"), "neither --compare nor");
+}
+
 TEST(DialogueCorpus, HelpSaysWhereTheCorpusComesFrom) {
   const ProgramRun help = run("--help");
   EXPECT_EQ(help.status, 0);
