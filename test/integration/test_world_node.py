@@ -217,7 +217,10 @@ class WorldNodeContract(unittest.TestCase):
         self.assertAlmostEqual(stepped.sim_time, before + 10 * STEP_S, places=6)
         self.clock.wait(lambda m: abs(m.clock.to_sec() - stepped.sim_time) < 1e-6)
         # A node that comes up while the world is paused gets the last state (latched): a dialogue
-        # node started late in CI once waited for a state that a paused world never sent.
+        # node started late in CI once waited for a state that a paused world never sent. rospy
+        # shares one connection among a process's subscribers of a topic and hands a new one the
+        # last latched message this connection has read: wait until it has read the last state.
+        self.state.wait(lambda m: abs(m.header.stamp.to_sec() - stepped.sim_time) < 1e-6)
         late = rospy.wait_for_message("/sim/world_state", WorldState, timeout=10)
         self.assertAlmostEqual(late.header.stamp.to_sec(), stepped.sim_time, places=6)
 
