@@ -2,25 +2,30 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 
 #include "ari_social_sim/core/error.hpp"
 
 namespace ari_social_sim::core {
+namespace {
 
-OutputFile::OutputFile(const std::string& option, std::string path)
-    : path_(std::move(path)), part_path_(path_ + ".part"), out_(part_path_) {
-  if (!out_) {
-    throw ConfigError(option + ": " + path_ + ": cannot write " + part_path_ + " (" +
-                      std::strerror(errno) + ")");
+PendingFile open_pending(const std::string& option, const std::string& path,
+                         PendingFile::Naming naming) {
+  try {
+    return PendingFile(path, ".part", naming);
+  } catch (const Error& e) {
+    throw ConfigError(option + ": " + e.what());
   }
 }
 
-OutputFile::~OutputFile() {
-  if (!committed_) {
-    out_.close();
-    std::error_code ignored;
-    std::filesystem::remove(part_path_, ignored);
+}  // namespace
+
+OutputFile::OutputFile(const std::string& option, std::string path, PendingFile::Naming naming)
+    : path_(std::move(path)),
+      pending_(open_pending(option, path_, naming)),
+      out_(pending_.writable_path()) {
+  if (!out_) {
+    throw ConfigError(option + ": " + path_ + ": cannot write " + pending_.writable_path() + " (" +
+                      std::strerror(errno) + ")");
   }
 }
 
@@ -32,12 +37,7 @@ void OutputFile::commit() {
     throw Error(path_ + ": writing failed (" + std::string(std::strerror(errno)) +
                 "); nothing was written under that name");
   }
-  std::error_code error;
-  std::filesystem::rename(part_path_, path_, error);
-  if (error) {
-    throw Error(path_ + ": cannot rename " + part_path_ + " to it (" + error.message() + ")");
-  }
-  committed_ = true;
+  pending_.publish();
 }
 
 }  // namespace ari_social_sim::core

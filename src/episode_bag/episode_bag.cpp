@@ -3,9 +3,6 @@
 #include <rosgraph_msgs/Clock.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include <cstdio>
-#include <filesystem>
-
 #include "ari_social_sim/core/error.hpp"
 #include "dialogue_conversions/dialogue.hpp"
 #include "navigation_conversions/navigation_msgs.hpp"
@@ -22,7 +19,7 @@ void EpisodeBag::write(const std::string& topic, double stamp_s, const Message& 
   try {
     bag_.write(topic, ros::Time(stamp_s), message);
   } catch (const rosbag::BagException& e) {
-    throw core::Error(active_path(path_) + ": cannot write the bag: " + e.what());
+    throw core::Error(path_ + ": cannot write the bag: " + e.what());
   }
 }
 
@@ -30,12 +27,13 @@ std::string EpisodeBag::active_path(const std::string& path) {
   return path + ".active";
 }
 
-EpisodeBag::EpisodeBag(const std::string& path, const std::string& scenario_name)
-    : path_(path), scenario_name_(scenario_name) {
+EpisodeBag::EpisodeBag(const std::string& path, const std::string& scenario_name,
+                       core::PendingFile::Naming naming)
+    : path_(path), pending_(path, ".active", naming), scenario_name_(scenario_name) {
   try {
-    bag_.open(active_path(path_), rosbag::bagmode::Write);
+    bag_.open(pending_.writable_path(), rosbag::bagmode::Write);
   } catch (const rosbag::BagException& e) {
-    throw core::Error(active_path(path_) + ": cannot write the bag: " + e.what());
+    throw core::Error(path_ + ": cannot write the bag: " + e.what());
   }
 }
 
@@ -46,23 +44,17 @@ EpisodeBag::~EpisodeBag() {
   try {
     bag_.close();
   } catch (const rosbag::BagException&) {
-    // Deleted below either way.
+    // Dropped with pending_ either way.
   }
-  std::remove(active_path(path_).c_str());
 }
 
 void EpisodeBag::finish() {
   try {
     bag_.close();
   } catch (const rosbag::BagException& e) {
-    throw core::Error(active_path(path_) + ": cannot close the bag: " + e.what());
+    throw core::Error(path_ + ": cannot close the bag: " + e.what());
   }
-  std::error_code error;
-  std::filesystem::rename(active_path(path_), path_, error);
-  if (error) {
-    throw core::Error(path_ + ": cannot rename " + active_path(path_) + " to it (" +
-                      error.message() + ")");
-  }
+  pending_.publish();
   finished_ = true;
 }
 

@@ -10,9 +10,9 @@
 // episodes with i % N == K - 1 (K from 1), for job arrays. Files: DIR/NAME_SEED.bag,
 // DIR/NAME.csv and the settings they were made with, DIR/NAME.settings.yaml (DIR/NAME_shardK-of-N.*
 // with --shard). An existing output is refused unless --overwrite (replaces it) or --resume
-// (checks the settings, keeps the rows there and runs the missing episodes). Each bag is written
-// as NAME_SEED.bag.active and renamed when complete; SIGINT or SIGTERM stops between two steps,
-// drops the episode under way (its .active file deleted, no row) and exits with 128 + the
+// (checks the settings, keeps the rows there and runs the missing episodes). Each bag gets its name
+// only when complete (core::PendingFile); SIGINT or SIGTERM stops between two steps,
+// drops the episode under way (its bag deleted, no row) and exits with 128 + the
 // signal's number. --audio adds each episode's array audio and labels, DIR/audio/NAME_SEED.*
 // (dataset::EpisodeAudio, as export_dataset --audio). Exit code 0 when every episode of the CSV
 // succeeded, 1 when any failed (the first few named on standard error), 2 on bad input, 3 when
@@ -439,7 +439,7 @@ struct RunTotals {
 };
 
 // Runs episode `index` to its bag and then its row in the CSV and `rows`. False when a stop signal
-// ended it first: its bag deletes its .active file and it gets no row. Throws core::Error.
+// ended it first: its bag is dropped and it gets no row. Throws core::Error.
 bool run_episode(Batch& batch, uint64_t index, std::vector<batch::EpisodeCsvRow>& rows,
                  RunTotals& totals) {
   const OutputPaths& paths = batch.paths;

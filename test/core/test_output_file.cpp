@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../common/file_size_limit.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/output_file.hpp"
 
@@ -31,6 +32,20 @@ TEST(OutputFile, AppearsUnderItsNameOnlyWhenCommitted) {
   const fs::path path = dir / "corpus.jsonl";
   {
     OutputFile out("--out", path.string());
+    out.stream() << "line 1\n";
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(dir / "corpus.jsonl.part"));  // unnamed while written
+    out.commit();
+  }
+  EXPECT_EQ(read_all(path), "line 1\n");
+  EXPECT_FALSE(fs::exists(dir / "corpus.jsonl.part"));
+}
+
+TEST(OutputFile, WhereTheFileSystemNeedsANameItIsThePartFile) {
+  const fs::path dir = scratch("named");
+  const fs::path path = dir / "corpus.jsonl";
+  {
+    OutputFile out("--out", path.string(), PendingFile::Naming::always_named);
     out.stream() << "line 1\n";
     EXPECT_FALSE(fs::exists(path));
     EXPECT_TRUE(fs::exists(dir / "corpus.jsonl.part"));
@@ -61,19 +76,23 @@ TEST(OutputFile, FailuresNameThePath) {
               std::string::npos)
         << e.what();
   }
-  // /dev/full accepts the open and fails the write: the disk-full case.
-  if (fs::exists("/dev/full")) {
+}
+
+TEST(OutputFile, AFailedWriteIsNeverCommitted) {
+  for (const PendingFile::Naming naming :
+       {PendingFile::Naming::unnamed_where_possible, PendingFile::Naming::always_named}) {
     const fs::path dir = scratch("full");
-    const fs::path link = dir / "out.csv.part";
-    fs::create_symlink("/dev/full", link);
-    OutputFile out("--csv", (dir / "out.csv").string());
-    out.stream() << std::string(1 << 16, 'x');
-    try {
-      out.commit();
-      FAIL() << "a failed write was committed";
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("out.csv: writing failed"), std::string::npos)
-          << e.what();
+    OutputFile out("--csv", (dir / "out.csv").string(), naming);
+    {
+      const test::FileSizeLimit limit(4096);
+      out.stream() << std::string(1 << 16, 'x');
+      try {
+        out.commit();
+        FAIL() << "a failed write was committed";
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("out.csv: writing failed"), std::string::npos)
+            << e.what();
+      }
     }
     EXPECT_FALSE(fs::exists(dir / "out.csv"));
   }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../common/data_sets.hpp"
+#include "../common/file_size_limit.hpp"
 #include "ari_social_sim/core/data_sets.hpp"
 #include "program_run.hpp"
 
@@ -193,8 +194,7 @@ TEST(DialogueCorpus, TheReportIsWhatStandardOutputShows) {
 
 TEST(DialogueCorpus, AFailedWriteExitsWithOneAndLeavesNoFile) {
   const std::string dir = scratch("full");
-  // The .part file is where the corpus goes first; /dev/full refuses the bytes as a full disk.
-  fs::create_symlink("/dev/full", dir + "c.jsonl.part");
+  const ari_social_sim::test::FileSizeLimit full_disk(4096);  // 20 dialogues take more
   const ProgramRun full = run("--dialogues 20 --seed 1 --out " + dir + "c.jsonl");
   EXPECT_EQ(full.status, 1);
   EXPECT_NE(full.err.find(dir + "c.jsonl: writing failed"), std::string::npos) << full.err;

@@ -35,12 +35,14 @@ scenario::Scenario random_group_scenario() {
   return scenario::parse_scenario(core::YamlMap::parse(text, "inline.yaml"), kSource, "chat");
 }
 
-std::string run_to_bag(const scenario::Scenario& scenario, uint64_t seed, const std::string& name) {
+std::string run_to_bag(
+    const scenario::Scenario& scenario, uint64_t seed, const std::string& name,
+    core::PendingFile::Naming naming = core::PendingFile::Naming::unnamed_where_possible) {
   const std::string path = ::testing::TempDir() + name + ".bag";
   {
     static const engine::EpisodeConfig config = engine::EpisodeConfig::load(kSource + "/config");
     engine::Episode episode(scenario, seed, config);
-    EpisodeBag bag(path, scenario.name);
+    EpisodeBag bag(path, scenario.name, naming);
     while (!episode.finished()) {
       episode.step();
       bag.record_step(episode);
@@ -56,8 +58,11 @@ TEST(EpisodeBag, SameSeedSameBytesOtherSeedOtherBytes) {
   const std::string a = run_to_bag(scenario, 4, "a");
   const std::string b = run_to_bag(scenario, 4, "b");
   const std::string c = run_to_bag(scenario, 5, "c");
+  const std::string named =
+      run_to_bag(scenario, 4, "named", core::PendingFile::Naming::always_named);
   ASSERT_GT(a.size(), 100000u);  // 120 steps of world state, the map
   EXPECT_TRUE(a == b) << "two runs with seed 4 wrote different bags";
+  EXPECT_TRUE(a == named) << "a bag written under its .active name differs from an unnamed one";
   EXPECT_FALSE(a == c) << "seeds 4 and 5 wrote the same bag";
 }
 
@@ -78,8 +83,8 @@ TEST(EpisodeBag, CompleteUnderItsNameOrAbsent) {
       finished.record_step(episode);
       interrupted.record_step(episode);
     }
-    // While written, each bag exists only as .active.
-    EXPECT_TRUE(fs::exists(done + ".active"));
+    // While written, a bag has no name at all.
+    EXPECT_FALSE(fs::exists(done + ".active"));
     EXPECT_FALSE(fs::exists(done));
     finished.finish();
     EXPECT_TRUE(fs::exists(done));

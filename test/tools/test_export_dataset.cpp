@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/file_size_limit.hpp"
 #include "program_run.hpp"
 
 namespace ari_social_sim::tools::test {
@@ -250,16 +251,20 @@ TEST(ExportDataset, AnEarlierExportIsKeptWithoutOverwrite) {
 }
 
 TEST(ExportDataset, AFailedWriteExitsWithOne) {
-  // The annotations are written as annotations.json.part and renamed: a folder in that place
-  // makes the last write fail after the images.
   const std::string dir = ::testing::TempDir() + "export_dataset_unwritable";
   fs::remove_all(dir);
-  fs::create_directories(dir + "/annotations.json.part/in_the_way");
-  const ProgramRun result =
-      run("--scenario join_group --episodes 1 --cameras torso --every 5 --out " + dir);
+  ProgramRun result;
+  {
+    const ari_social_sim::test::FileSizeLimit full_disk(16384);  // a torso picture takes more
+    result = run("--scenario join_group --episodes 1 --cameras torso --every 5 --out " + dir);
+  }
   EXPECT_EQ(result.status, 1) << result.err;
-  EXPECT_NE(result.err.find("annotations.json.part"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(dir + "/images/torso_front_camera/join_group_1_000000.png: writing "
+                                  "failed"),
+            std::string::npos)
+      << result.err;
   EXPECT_FALSE(fs::exists(dir + "/annotations.json"));
+  EXPECT_TRUE(fs::is_empty(dir + "/images/torso_front_camera"));  // no half picture
 }
 
 TEST(ExportDataset, WritesAValidCocoFileTheSameEachRunAndTheSameInMergedShards) {

@@ -3,33 +3,35 @@
 #include <fstream>
 #include <string>
 
+#include "ari_social_sim/core/pending_file.hpp"
+
 namespace ari_social_sim::core {
 
-/// An output file written under a temporary name, `<path>.part`, and renamed to `path` by
-/// commit(): `path` holds either a complete output or what was there before, never half of one
-/// (a failed run, a full disk, an exception). Destroyed uncommitted, it removes the .part file; a
-/// process killed outright leaves it behind, under that name only.
+/// An output file that appears under its name, `path`, only when commit() has written it whole:
+/// `path` holds either a complete output or what was there before, never half of one (a failed
+/// run, a full disk, an exception, a killed process). While written it has no name, or
+/// `<path>.part` where the file system cannot do without one (core::PendingFile). Destroyed
+/// uncommitted, it leaves nothing.
 class OutputFile {
  public:
-  /// Opens `<path>.part` for writing. Throws ConfigError naming `option` and the path when it
-  /// cannot be created.
-  OutputFile(const std::string& option, std::string path);
-  ~OutputFile();
+  /// Opens the file for writing. Throws ConfigError naming `option` and the path when it cannot
+  /// be created.
+  OutputFile(const std::string& option, std::string path,
+             PendingFile::Naming naming = PendingFile::Naming::unnamed_where_possible);
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
 
   std::ostream& stream() { return out_; }
   const std::string& path() const { return path_; }
 
-  /// Flushes, closes and renames the file to `path` (replacing what was there). Throws core::Error
-  /// naming the path when any write failed, the file then being removed.
+  /// Flushes, closes and names the file `path` (replacing what was there). Throws core::Error
+  /// naming the path when any write failed, the file then being dropped.
   void commit();
 
  private:
   std::string path_;
-  std::string part_path_;
+  PendingFile pending_;
   std::ofstream out_;
-  bool committed_{false};
 };
 
 }  // namespace ari_social_sim::core
