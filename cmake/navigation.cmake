@@ -58,7 +58,8 @@ if(CATKIN_ENABLE_TESTING)
 endif()
 
 # nav_benchmark: the navigation benchmark (a user-facing tool, `rosrun ari_social_sim nav_benchmark`).
-add_executable(nav_benchmark src/tools/nav_benchmark/nav_benchmark.cpp)
+add_executable(nav_benchmark src/tools/nav_benchmark/nav_benchmark.cpp
+  src/tools/nav_benchmark/episode_record.cpp)
 target_link_libraries(nav_benchmark ari_learning ari_batch)
 target_compile_definitions(nav_benchmark PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 install(TARGETS nav_benchmark RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

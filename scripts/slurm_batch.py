@@ -1,14 +1,14 @@
 #!/usr/bin/python3
-"""Batch plans of run_episodes, export_dataset and dialogue_corpus on a SLURM cluster
+"""Batch plans of run_episodes, export_dataset, nav_benchmark and dialogue_corpus on a SLURM cluster
 (docs/cluster.md).
 
   slurm_batch.py submit --shards N --out DIR [--partition P] [--time T] [--cpus-per-task C]
                         [--mem M] [--account A] [--overwrite | --resume] -- TOOL ARGS...
   slurm_batch.py status --out DIR
 
-`submit` turns the plan (TOOL with ARGS: run_episodes or export_dataset with --episodes,
-dialogue_corpus with --dialogues, and what else they take, never --out or --shard) into a job array of N shards and a merge job that runs
-after them (--dependency=afterok). Each task runs its shard in a staging folder of its own
+`submit` turns the plan (TOOL with ARGS: run_episodes, export_dataset or nav_benchmark with
+--episodes, dialogue_corpus with --dialogues, and what else they take, never --out, --csv or
+--shard) into a job array of N shards and a merge job that runs after them (--dependency=afterok). Each task runs its shard in a staging folder of its own
 (DIR/slurm/stage/shardK, resumed if a task ran there before) and, once the tool has finished it,
 renames the folder into DIR/slurm/done/: DIR never holds a partial file. The merge job moves the
 shards' files into DIR and runs TOOL --merge-shards N, which writes exactly what one process
@@ -30,24 +30,27 @@ class Tool:
     own name for a tool that writes one file), whether a rerun task resumes, and the exit codes
     after which its output is complete."""
 
-    def __init__(self, count, out_file=None, resumes=True, complete=(0,), refused=()):
+    def __init__(self, count, out_file=None, resumes=True, complete=(0,), refused=(),
+                 out="--out"):
         self.count, self.out_file, self.resumes = count, out_file, resumes
-        self.complete, self.refused = complete, refused
+        self.complete, self.refused, self.out = complete, refused, out
 
     def out_option(self, folder):
-        return ["--out", str(folder / self.out_file if self.out_file else folder)]
+        return [self.out, str(folder / self.out_file if self.out_file else folder)]
 
 
 TOOLS = {
     # run_episodes exits 1 when an episode failed: its output is complete all the same.
     "run_episodes": Tool("--episodes", complete=(0, 1)),
     "export_dataset": Tool("--episodes"),
+    # nav_benchmark's shards keep their exact records; the merge writes DIR/nav.csv and the table.
+    "nav_benchmark": Tool("--episodes", out_file="nav.csv", out="--csv", refused=("--trace",)),
     # dialogue_corpus writes its file only when complete: a rerun shard starts again.
     "dialogue_corpus": Tool("--dialogues", out_file="corpus.jsonl", resumes=False,
                             refused=("--compare", "--variety", "--report")),
 }
 # Options the plan may not carry: this script sets them per task.
-OWN_OPTIONS = ("--out", "--shard", "--resume", "--overwrite", "--merge-shards")
+OWN_OPTIONS = ("--out", "--csv", "--shard", "--resume", "--overwrite", "--merge-shards")
 SCRIPT = Path(__file__).resolve()
 
 
@@ -107,7 +110,7 @@ def check_plan(tool_args, shards):
             raise PlanError("%s: set by slurm_batch.py for each task; leave it out of the plan"
                             % name)
         if name in tool.refused:
-            raise PlanError("%s: %s's tables need every dialogue: run them on one process"
+            raise PlanError("%s: not for a job array: run it with %s on one process"
                             % (name, tool_args[0]))
     episodes_text = option_value(tool_args[1:], tool.count)
     if episodes_text is None or not episodes_text.isdigit() or int(episodes_text) < 1:
@@ -349,11 +352,24 @@ def merge(args):
 # --- status --------------------------------------------------------------------------------------
 
 def rows_in_stage(stage):
-    """Episodes a running run_episodes task has finished: its CSV's rows."""
+    """Units a running task has finished: its CSV's rows (run_episodes), or the records in its
+    progress file (nav_benchmark: one per episode, type and controller)."""
     rows = 0
     for csv in stage.glob("*.csv"):
         rows += max(0, csv.read_text(errors="replace").count("\n") - 1)
+    for progress in stage.glob("*.records.active"):
+        rows += progress.read_text(errors="replace").count("\ndone ")
     return rows
+
+
+def records_per_episode(plan):
+    """nav_benchmark runs each episode of every type with every controller: 8 x 2 by default."""
+    if plan["tool"] != "nav_benchmark":
+        return 1
+    types = option_value(plan["args"], "--types")
+    controllers = option_value(plan["args"], "--controllers")
+    return ((len(types.split(",")) if types else 8) *
+            (len(controllers.split(",")) if controllers else 2))
 
 
 def status(args):
@@ -367,7 +383,7 @@ def status(args):
     running = 0
     if not merged:
         running = sum(rows_in_stage(folder.stage(k)) for k in range(1, plan["shards"] + 1)
-                      if k not in done)
+                      if k not in done) // records_per_episode(plan)
     episodes = plan["episodes"] if merged else len(done) * per_shard + running
     queued = slurm(["squeue", "-h", "-o", "%i %T", "-n", "ari_%s,ari_%s_merge" % (
         plan["tool"], plan["tool"])], "squeue").split("\n")

@@ -38,10 +38,33 @@ stop_pid_file() {
   rm -f "$pid_file"
 }
 
+# A job still running when slurmd stops keeps its slurmstepd waiting for slurmd for good: cancel
+# the cluster's jobs first and give them 10 s to end.
+cancel_jobs() {
+  [[ -f $dir/slurmctld.pid ]] && kill -0 "$(cat "$dir/slurmctld.pid")" 2> /dev/null || return 0
+  SLURM_CONF=$dir/slurm.conf scancel --user="$(id -un)" 2> /dev/null || true
+  for _ in $(seq 50); do
+    [[ -z $(SLURM_CONF=$dir/slurm.conf squeue -h 2> /dev/null) ]] && return 0
+    sleep 0.2
+  done
+}
+
+# The step daemons of this cluster's jobs that outlived them (known by their SLURM_CONF).
+stop_step_daemons() {
+  local pid
+  for pid in $(pgrep -x slurmstepd); do
+    if tr '\0' '\n' < "/proc/$pid/environ" 2> /dev/null | grep -qx "SLURM_CONF=$dir/slurm.conf"; then
+      kill -9 "$pid" 2> /dev/null || true
+    fi
+  done
+}
+
 stop() {
+  cancel_jobs
   stop_pid_file "$dir/slurmd.pid"
   stop_pid_file "$dir/slurmctld.pid"
   stop_pid_file "$dir/munge/munged.pid"
+  stop_step_daemons
 }
 
 write_config() {

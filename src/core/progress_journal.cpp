@@ -95,4 +95,14 @@ void ProgressJournal::remove() {
   std::filesystem::remove(path_);
 }
 
+void ProgressJournal::complete_as(const std::string& path) {
+  out_.close();
+  std::error_code error;
+  std::filesystem::rename(path_, path, error);
+  if (error) {
+    throw Error(path + ": cannot rename " + path_ + " to it (" + error.message() + ")");
+  }
+  path_ = path;
+}
+
 }  // namespace ari_social_sim::core

@@ -5,11 +5,14 @@ submitted with scripts/slurm_batch.py (docs/cluster.md):
     byte-identical to one process running the plan;
   - an export_dataset plan as 3 shards and the merge: annotations.json and every PNG the same;
   - a dialogue_corpus plan as 3 shards and the merge: the corpus the same;
+  - a nav_benchmark plan as 2 shards and the merge: the CSV the same but for the solve times;
   - a shard cancelled with scancel mid-run and another killed with SIGKILL: the merge does not
     run, the plan's folder holds no partial file (not even the killed task's: its bag had no
     name), and the plan resubmitted with --resume runs those two shards only and merges to the same bytes;
   - bad plans refused before anything is submitted.
 The tools come from the build this test belongs to (ARI_DEVEL_DIR)."""
+import csv
+import io
 import json
 import os
 import subprocess
@@ -101,11 +104,31 @@ def test_dialogue_corpus_shards_merge_into_the_bytes_of_one_process(cluster, tmp
     assert expect_same_files(tmp_path / "array", tmp_path / "whole") == 1
     refused = batch(cluster, "submit", "--shards", "3", "--out", str(tmp_path / "other"), "--",
                     *plan, "--compare")
-    assert refused.returncode == 2 and "--compare: dialogue_corpus's tables" in refused.stderr
+    assert refused.returncode == 2 and "--compare: not for a job array" in refused.stderr
+
+
+def without_solve_times(csv_text):
+    """nav_benchmark's CSV without its two solve-time columns: CPU times, never the same twice."""
+    return [row[:19] + row[21:] for row in csv.reader(io.StringIO(csv_text))]
+
+
+def test_nav_benchmark_shards_merge_into_what_one_process_writes(cluster, tmp_path):
+    plan = ["nav_benchmark", "--episodes", "4", "--types", "pose,approach", "--controllers",
+            "social,baseline"]
+    jobs = submitted(cluster, tmp_path / "array", 2, plan)
+    whole = tmp_path / "whole.csv"
+    subprocess.run([str(TOOLS / plan[0])] + plan[1:] + ["--csv", str(whole)], check=True,
+                   capture_output=True)
+    wait_for_jobs(cluster, jobs)
+    merged = (tmp_path / "array" / "nav.csv").read_text()
+    assert len(merged.splitlines()) == 1 + 16  # 4 episodes of 2 types with 2 controllers
+    assert without_solve_times(merged) == without_solve_times(whole.read_text())
+    # The shards' records were merged and removed.
+    assert sorted(p.name for p in (tmp_path / "array").iterdir()) == ["nav.csv", "slurm"]
 
 
 def rows_in(stage):
-    return sum(max(0, csv.read_text().count("\n") - 1) for csv in stage.glob("*.csv"))
+    return sum(max(0, table.read_text().count("\n") - 1) for table in stage.glob("*.csv"))
 
 
 def wait_for_rows(stage, rows):
@@ -156,7 +179,7 @@ def test_bad_plans_are_refused_before_anything_is_submitted(cluster, tmp_path):
          "--episodes: expected the plan's count"),
         (["--shards", "4", "--out", out] + plan + ["--out", "elsewhere"],
          "--out: set by slurm_batch.py"),
-        (["--shards", "4", "--out", out, "--", "nav_benchmark", "--episodes", "8"],
+        (["--shards", "4", "--out", out, "--", "render_cameras", "--episodes", "8"],
          "expected the tool after --"),
     ]
     for args, message in cases:

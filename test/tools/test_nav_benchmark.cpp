@@ -156,5 +156,64 @@ TEST(NavBenchmark, AnInterruptedRunResumesToTheSameCsv) {
       without_solve_times(read_all(killed)) == reference ? "the same bytes as" : "NOT");
 }
 
+// The summary table without its last column (solve p50 / p99, CPU times).
+std::string table_without_solve_times(const std::string& out) {
+  std::istringstream lines(out);
+  std::string table;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("| ", 0) == 0) {
+      table += line.substr(0, line.rfind(" | ", line.size() - 3)) + "\n";
+    }
+  }
+  return table;
+}
+
+TEST(NavBenchmark, ShardsMergeIntoWhatOneProcessWrites) {
+  const std::string dir = ::testing::TempDir() + "nav_benchmark_shards/";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string plan = "--episodes 3 --types pose,approach --controllers social,baseline ";
+  const ProgramRun whole = run(plan + "--csv " + dir + "whole.csv");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  for (int k = 1; k <= 3; ++k) {
+    const ProgramRun shard =
+        run(plan + "--csv " + dir + "nav.csv --shard " + std::to_string(k) + "/3");
+    ASSERT_EQ(shard.status, 0) << shard.err;
+    EXPECT_EQ(shard.err.find("pose " + std::to_string(k % 3) + " social"), std::string::npos)
+        << "shard " << k << " ran another shard's episode";
+  }
+  EXPECT_FALSE(fs::exists(dir + "nav.csv"));  // the shards write their exact records only
+  expect_refused(run(plan + "--csv " + dir + "other.csv --merge-shards 3"),
+                 "other_shard1-of-3.records not found: shard 1 has not run");
+  expect_refused(run("--episodes 3 --types pose --controllers social,baseline --csv " + dir +
+                     "nav.csv --merge-shards 3"),
+                 "nav_shard1-of-3.records was made with other settings");
+  const ProgramRun merged = run(plan + "--csv " + dir + "nav.csv --merge-shards 3");
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  EXPECT_NE(merged.out.find("merged 3 shards: 12 records into " + dir + "nav.csv"),
+            std::string::npos)
+      << merged.out;
+  // 12 rows in one process's order, every byte but the solve times the same; the table too.
+  EXPECT_EQ(without_solve_times(read_all(dir + "nav.csv")),
+            without_solve_times(read_all(dir + "whole.csv")));
+  EXPECT_EQ(table_without_solve_times(merged.out), table_without_solve_times(whole.out));
+  EXPECT_FALSE(fs::exists(dir + "nav_shard2-of-3.records"));  // merged, then removed
+}
+
+TEST(NavBenchmark, BadShardOptionsAreRefused) {
+  for (const auto& [arguments, fragment] : std::vector<std::pair<std::string, std::string>>{
+           {"--episodes 2 --shard 1/2", "--shard: expected --csv too"},
+           {"--episodes 2 --shard 3/2 --csv x.csv", "--shard: expected K/N with 1 <= K <= N"},
+           {"--episodes 2 --shard 1/3 --csv x.csv",
+            "--shard: N = 3 is more than --episodes 2: expected at most one shard per episode"},
+           {"--episodes 2 --merge-shards 0 --csv x.csv", "--merge-shards: expected an integer"},
+           {"--episodes 2 --shard 1/2 --merge-shards 2 --csv x.csv",
+            "--shard and --merge-shards: expected one of them, got both"},
+           {"--episodes 2 --merge-shards 2 --resume --csv x.csv",
+            "--merge-shards and --resume: expected one of them, got both"}}) {
+    expect_refused(run(arguments + " --types pose --controllers social"), fragment);
+  }
+}
+
 }  // namespace
 }  // namespace ari_social_sim::tools::test

@@ -45,6 +45,9 @@ class ProgressJournal {
   void add(const std::string& key, const std::string& lines);
   /// Deletes the journal once the output it stood for is complete.
   void remove();
+  /// Renames the journal to `path` once every unit is in it: a shard's complete records, which a
+  /// merge reads with resume(). Throws Error naming both paths when it cannot.
+  void complete_as(const std::string& path);
 
  private:
   ProgressJournal() = default;

@@ -33,12 +33,15 @@
 #include "ari_social_sim/navigation/navigation_errors.hpp"
 #include "ari_social_sim/navigation/navigator.hpp"
 #include "ari_social_sim/world/map_sensor.hpp"
+#include "episode_record.hpp"
 
 namespace {
 
 using namespace ari_social_sim;
 using learning::EpisodeType;
 using learning::NavigationEpisode;
+using tools::nav::EpisodeRecord;
+using tools::nav::percentile;
 
 constexpr int kUsageError = 2;
 
@@ -52,7 +55,7 @@ std::string usage() {
   return R"(Usage:
   nav_benchmark [--episodes N] [--seed S] [--types T1,T2,...] [--controllers social,baseline]
                 [--solver lbfgs|slsqp|mppi] [--config FILE]
-                [--csv FILE [--overwrite | --resume]]
+                [--csv FILE [--overwrite | --resume] [--shard K/N | --merge-shards N]]
                 [--worlds DIR] [--profile ignore|yield|curious|avoid|block] [--trace]
 
 Runs N seeded episodes of each type with each controller, on the world core in one process,
@@ -79,6 +82,11 @@ are CPU time of the solving thread (one core); the wall-clock figures follow the
                     unless the options, the --config file and the worlds are those of that run;
                     the CSV is byte for byte that of an uninterrupted run but for the solve
                     times (CPU time, never the same twice)
+  --shard K/N       runs episodes i with i % N == K - 1 (of every type and controller), for
+                    job arrays (docs/cluster.md); writes their exact records to
+                    FILE_shardK-of-N.records instead of the CSV (needs --csv, N <= --episodes)
+  --merge-shards N  writes FILE, and prints the table, from the N shards' records of the same
+                    options: what one process writes, but for the solve times
   --worlds DIR      folder of the shipped worlds (default: the package's worlds/)
   --profile NAME    how every person of every episode reacts to ARI: ignore (default, the
                     episodes as they always were), yield, curious, avoid or block
@@ -108,7 +116,25 @@ struct Options {
   bool trace{false};
   bool overwrite{false};
   bool resume{false};
+  unsigned shard_index{1};  // --shard K/N
+  unsigned shard_count{1};
+  unsigned merge_shards{0};  // --merge-shards N; 0 when not merging
 };
+
+// Where a shard keeps its exact records: FILE_shardK-of-N.records, beside FILE.
+std::string shard_records_path(const std::string& csv, unsigned index, unsigned count) {
+  const std::filesystem::path path(csv);
+  return (path.parent_path() / (path.stem().string() + "_shard" + std::to_string(index) + "-of-" +
+                                std::to_string(count) + ".records"))
+      .string();
+}
+
+// What this run writes at its end and keeps its progress beside: the CSV, or a shard's records.
+std::string final_output(const Options& options) {
+  return options.shard_count > 1
+             ? shard_records_path(options.csv, options.shard_index, options.shard_count)
+             : options.csv;
+}
 
 std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> items;
@@ -130,6 +156,28 @@ void check_list(const std::string& option, const std::vector<std::string>& names
   }
 }
 
+// Throws core::ConfigError for --shard or --merge-shards without what they need.
+void check_shard_options(const Options& options) {
+  const bool sharded = options.shard_count > 1;
+  if ((sharded || options.merge_shards > 0) && options.csv.empty()) {
+    throw core::ConfigError(std::string(sharded ? "--shard" : "--merge-shards") +
+                            ": expected --csv too (the shards' records are kept beside it)");
+  }
+  if (sharded && options.merge_shards > 0) {
+    throw core::ConfigError("--shard and --merge-shards: expected one of them, got both");
+  }
+  if (options.merge_shards > 0 && options.resume) {
+    throw core::ConfigError("--merge-shards and --resume: expected one of them, got both");
+  }
+  const unsigned shards = std::max(options.shard_count, options.merge_shards);
+  if (shards > static_cast<unsigned>(options.episodes)) {
+    throw core::ConfigError((sharded ? "--shard: " : "--merge-shards: ") + std::string("N = ") +
+                            std::to_string(shards) + " is more than --episodes " +
+                            std::to_string(options.episodes) +
+                            ": expected at most one shard per episode");
+  }
+}
+
 Options parse(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
@@ -148,7 +196,8 @@ Options parse(int argc, char** argv) {
     }
     core::check_known_option(
         arg, {"--episodes", "--seed", "--types", "--controllers", "--solver", "--config", "--csv",
-              "--worlds", "--profile", "--trace", "--overwrite", "--resume", "--help"});
+              "--worlds", "--profile", "--trace", "--overwrite", "--resume", "--shard",
+              "--merge-shards", "--help"});
     const std::string value = core::option_value(argc, argv, i);
     if (arg == "--episodes") {
       options.episodes = static_cast<int>(kEpisodes.parse(value));
@@ -188,6 +237,13 @@ Options parse(int argc, char** argv) {
       options.csv = value;
     } else if (arg == "--worlds") {
       options.worlds = value;
+    } else if (arg == "--shard") {
+      batch::BatchPlan plan;
+      batch::parse_shard(value, "", plan);
+      options.shard_index = plan.shard_index;
+      options.shard_count = plan.shard_count;
+    } else if (arg == "--merge-shards") {
+      options.merge_shards = batch::shard_count_option(arg, value);
     } else {
       options.profile = core::parse_choice(value, world::kReactionProfiles, arg);
     }
@@ -198,8 +254,10 @@ Options parse(int argc, char** argv) {
   if (options.overwrite && options.resume) {
     throw core::ConfigError("--overwrite and --resume: expected one of them, got both");
   }
-  if (!options.csv.empty()) {
-    core::check_output_file("--csv", options.csv, options.overwrite || options.resume);
+  check_shard_options(options);
+  // Merging one shard keeps the CSV that shard 1/1 wrote.
+  if (!options.csv.empty() && options.merge_shards != 1) {
+    core::check_output_file("--csv", final_output(options), options.overwrite || options.resume);
   } else if (options.overwrite || options.resume) {
     throw core::ConfigError(std::string(options.overwrite ? "--overwrite" : "--resume") +
                             ": expected --csv too");
@@ -227,31 +285,6 @@ navigation::NavigationConfig controller_config(const Options& options,
     config.navigator.geodesic.group_cost = 0.0;
   }
   return config;
-}
-
-struct EpisodeRecord {
-  std::string type, controller, profile, outcome, reason;
-  int index{0};
-  uint64_t seed{0};
-  bool success{false};
-  double time_to_goal_s{0.0};
-  double shortest_path_m{0.0};
-  navigation::EpisodeScore score;
-  double final_position_error_m{-1.0};
-  double final_heading_error_rad{-1.0};
-  int gcff_includes_ari{-1};               // -1 = not a joining episode
-  std::vector<double> solve_times_s;       // CPU time of each solve on its thread
-  std::vector<double> solve_wall_times_s;  // wall time of each solve (grows with machine load)
-};
-
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const size_t index = std::min(
-      values.size() - 1, static_cast<size_t>(std::ceil(q * values.size())) - (q > 0 ? 1 : 0));
-  return values[index];
 }
 
 const char* reaction_phase_name(world::RobotReaction::Phase phase) {
@@ -436,37 +469,6 @@ std::optional<EpisodeRecord> run_episode(NavigationEpisode episode,
   return record;
 }
 
-// Throws core::Error naming the path when writing fails; the file then keeps what it held.
-void write_csv(const std::string& path, const std::vector<EpisodeRecord>& records) {
-  core::OutputFile file("--csv", path);
-  std::ostream& out = file.stream();
-  out << "type,episode,seed,controller,profile,success,outcome,time_to_goal_s,path_length_m,"
-         "path_length_ratio,person_collisions,static_collisions,min_person_distance_m,"
-         "personal_space_share,ospace_intrusions,final_position_error_m,"
-         "final_heading_error_rad,gcff_includes_ari,mean_abs_jerk,solve_cpu_median_ms,solve_cpu_"
-         "max_ms,"
-         "solves,reason\n";
-  for (const EpisodeRecord& r : records) {
-    const double ratio = r.shortest_path_m > 0.0 ? r.score.path_length_m / r.shortest_path_m : 0.0;
-    std::string reason = r.reason;
-    std::replace(reason.begin(), reason.end(), '"', '\'');
-    char line[1024];
-    std::snprintf(line, sizeof(line),
-                  "%s,%d,%llu,%s,%s,%d,%s,%.2f,%.3f,%.3f,%d,%d,%.3f,%.4f,%d,%.3f,%.3f,%d,%.3f,%.3f,"
-                  "%.3f,%zu,\"%s\"\n",
-                  r.type.c_str(), r.index, static_cast<unsigned long long>(r.seed),
-                  r.controller.c_str(), r.profile.c_str(), r.success ? 1 : 0, r.outcome.c_str(),
-                  r.time_to_goal_s, r.score.path_length_m, ratio, r.score.person_collisions,
-                  r.score.static_collisions, r.score.min_person_distance_m,
-                  r.score.personal_space_share, r.score.ospace_intrusions, r.final_position_error_m,
-                  r.final_heading_error_rad, r.gcff_includes_ari, r.score.mean_abs_jerk,
-                  1e3 * percentile(r.solve_times_s, 0.5), 1e3 * percentile(r.solve_times_s, 1.0),
-                  r.solve_times_s.size(), reason.c_str());
-    out << line;
-  }
-  file.commit();
-}
-
 double mean_of(const std::vector<double>& values) {
   double sum = 0.0;
   for (double v : values) {
@@ -583,167 +585,18 @@ struct PlannedRun {
   }
 };
 
+// The runs of this process: every one, or a shard's (episodes i with i % N == K - 1).
 std::vector<PlannedRun> plan_of(const Options& options) {
   std::vector<PlannedRun> plan;
   for (EpisodeType type : options.types) {
-    for (int i = 0; i < options.episodes; ++i) {
+    for (int i = static_cast<int>(options.shard_index) - 1; i < options.episodes;
+         i += static_cast<int>(options.shard_count)) {
       for (const std::string& controller : options.controllers) {
         plan.push_back({type, i, controller});
       }
     }
   }
   return plan;
-}
-
-// The progress file's escapes for a field that may hold anything: tabs separate fields and a
-// newline ends the record.
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    out += c == '\\' ? "\\\\" : c == '\t' ? "\\t" : c == '\n' ? "\\n" : std::string(1, c);
-  }
-  return out;
-}
-
-std::string unescaped(const std::string& text) {
-  std::string out;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char next = i + 1 < text.size() ? text[i + 1] : '\0';
-    if (text[i] == '\\' && (next == '\\' || next == 't' || next == 'n')) {
-      out += next == 't' ? '\t' : next == 'n' ? '\n' : '\\';
-      ++i;
-    } else {
-      out += text[i];
-    }
-  }
-  return out;
-}
-
-// Every number with the digits that read back to the same double: a resumed run's CSV and table
-// come from the same values as an uninterrupted run's.
-std::string exact(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.17g", value);
-  return text;
-}
-
-std::string exact_list(const std::vector<double>& values) {
-  std::string out;
-  for (double value : values) {
-    out += (out.empty() ? "" : " ") + exact(value);
-  }
-  return out;
-}
-
-// A record as one line of tab-separated fields, for the progress file.
-std::string record_line(const EpisodeRecord& r) {
-  const navigation::EpisodeScore& s = r.score;
-  const std::vector<std::string> fields = {r.type,
-                                           r.controller,
-                                           r.profile,
-                                           r.outcome,
-                                           std::to_string(r.index),
-                                           std::to_string(r.seed),
-                                           r.success ? "1" : "0",
-                                           exact(r.time_to_goal_s),
-                                           exact(r.shortest_path_m),
-                                           exact(s.duration_s),
-                                           exact(s.path_length_m),
-                                           std::to_string(s.person_collisions),
-                                           std::to_string(s.static_collisions),
-                                           exact(s.min_person_distance_m),
-                                           exact(s.personal_space_share),
-                                           std::to_string(s.ospace_intrusions),
-                                           exact(s.mean_abs_jerk),
-                                           exact(r.final_position_error_m),
-                                           exact(r.final_heading_error_rad),
-                                           std::to_string(r.gcff_includes_ari),
-                                           exact_list(r.solve_times_s),
-                                           exact_list(r.solve_wall_times_s),
-                                           escaped(r.reason)};
-  std::string line;
-  for (const std::string& field : fields) {
-    line += (line.empty() ? "" : "\t") + field;
-  }
-  return line;
-}
-
-// Reads record_line's fields in its order, each a number unless read as text.
-class FieldReader {
- public:
-  FieldReader(const std::string& line, std::string source) : source_(std::move(source)) {
-    // Not getline: it drops an empty last field (an empty reason).
-    for (size_t start = 0;;) {
-      const size_t tab = line.find('\t', start);
-      fields_.push_back(line.substr(start, tab - start));
-      if (tab == std::string::npos) {
-        break;
-      }
-      start = tab + 1;
-    }
-  }
-  std::string text() { return at(next_++); }
-  double number() {
-    const std::string& field = at(next_++);
-    char* end = nullptr;
-    const double value = std::strtod(field.c_str(), &end);
-    if (field.empty() || *end != '\0') {
-      throw core::ConfigError(source_ + ": field " + std::to_string(next_) +
-                              ": expected a number, got '" + field + "'");
-    }
-    return value;
-  }
-  int integer() { return static_cast<int>(number()); }
-  std::vector<double> numbers() {
-    std::vector<double> values;
-    std::stringstream in(at(next_++));
-    for (std::string item; in >> item;) {
-      values.push_back(std::strtod(item.c_str(), nullptr));
-    }
-    return values;
-  }
-
- private:
-  const std::string& at(size_t i) const {
-    if (i >= fields_.size()) {
-      throw core::ConfigError(source_ + ": expected 23 tab-separated fields, got " +
-                              std::to_string(fields_.size()));
-    }
-    return fields_[i];
-  }
-
-  std::string source_;
-  std::vector<std::string> fields_;
-  size_t next_{0};
-};
-
-EpisodeRecord parse_record(const std::string& line, const std::string& source) {
-  FieldReader in(line, source);
-  EpisodeRecord r;
-  r.type = in.text();
-  r.controller = in.text();
-  r.profile = in.text();
-  r.outcome = in.text();
-  r.index = in.integer();
-  r.seed = static_cast<uint64_t>(std::stoull(in.text()));
-  r.success = in.integer() != 0;
-  r.time_to_goal_s = in.number();
-  r.shortest_path_m = in.number();
-  r.score.duration_s = in.number();
-  r.score.path_length_m = in.number();
-  r.score.person_collisions = in.integer();
-  r.score.static_collisions = in.integer();
-  r.score.min_person_distance_m = in.number();
-  r.score.personal_space_share = in.number();
-  r.score.ospace_intrusions = in.integer();
-  r.score.mean_abs_jerk = in.number();
-  r.final_position_error_m = in.number();
-  r.final_heading_error_rad = in.number();
-  r.gcff_includes_ari = in.integer();
-  r.solve_times_s = in.numbers();
-  r.solve_wall_times_s = in.numbers();
-  r.reason = unescaped(in.text());
-  return r;
 }
 
 // The progress file's first line: every option that changes a record, and the digests of the
@@ -760,6 +613,9 @@ std::string progress_settings(const Options& options) {
          " seed=" + std::to_string(options.seed) + " types=" + types +
          " controllers=" + controllers + " solver=" + options.solver +
          " profile=" + world::reaction_name(options.profile) +
+         (options.shard_count > 1 ? " shard=" + std::to_string(options.shard_index) + "/" +
+                                        std::to_string(options.shard_count)
+                                  : std::string()) +
          " config_digest=" + batch::digest_files({options.config}) +
          " worlds_digest=" + batch::digest_files(batch::files_under(options.worlds, ".yaml"));
 }
@@ -774,6 +630,25 @@ struct Benchmark {
   bool complete_already{false};                  // --resume of a run that wrote its CSV
 };
 
+// The records of `journal`, which must be the first runs of `plan`, in its order. Throws
+// core::ConfigError naming `option`, the file and the record.
+std::vector<EpisodeRecord> records_of(const core::ProgressJournal& journal,
+                                      const std::vector<PlannedRun>& plan,
+                                      const std::string& option) {
+  std::vector<EpisodeRecord> records;
+  for (size_t k = 0; k < journal.kept().size(); ++k) {
+    const core::ProgressJournal::Entry& entry = journal.kept()[k];
+    if (k >= plan.size() || entry.key != plan[k].key()) {
+      throw core::ConfigError(option + ": " + journal.path() + ": record " + std::to_string(k + 1) +
+                              " is " + entry.key + ", expected " +
+                              (k < plan.size() ? plan[k].key() : "none"));
+    }
+    records.push_back(tools::nav::parse_record(entry.lines.substr(0, entry.lines.size() - 1),
+                                               journal.path() + ": " + entry.key));
+  }
+  return records;
+}
+
 // --resume: the records of the progress file, which must be the plan's first runs.
 void keep_earlier_records(Benchmark& benchmark) {
   const core::ProgressJournal& journal = *benchmark.journal;
@@ -781,23 +656,57 @@ void keep_earlier_records(Benchmark& benchmark) {
     std::cerr << "--resume: " << journal.path()
               << " ended in an episode cut short (a run killed while writing it): removed it\n";
   }
-  const std::vector<PlannedRun> plan = plan_of(benchmark.options);
-  for (size_t k = 0; k < journal.kept().size(); ++k) {
-    const core::ProgressJournal::Entry& entry = journal.kept()[k];
-    if (k >= plan.size() || entry.key != plan[k].key()) {
-      throw core::ConfigError("--resume: " + journal.path() + ": record " + std::to_string(k + 1) +
-                              " is " + entry.key + ", expected " +
-                              (k < plan.size() ? plan[k].key() : "none"));
-    }
-    benchmark.records.push_back(parse_record(entry.lines.substr(0, entry.lines.size() - 1),
-                                             journal.path() + ": " + entry.key));
+  benchmark.records = records_of(journal, plan_of(benchmark.options), "--resume");
+}
+
+// --merge-shards N: the records of shard K, checked to be all of that shard's with these options.
+// Throws core::ConfigError naming the file.
+std::vector<EpisodeRecord> shard_records(const Options& options, unsigned index) {
+  Options shard = options;
+  shard.shard_index = index;
+  shard.shard_count = options.merge_shards;
+  const std::string option = "--merge-shards " + std::to_string(options.merge_shards);
+  const std::string path = shard_records_path(options.csv, index, options.merge_shards);
+  if (!std::filesystem::exists(path)) {
+    throw core::ConfigError(option + ": " + path + " not found: shard " + std::to_string(index) +
+                            (std::filesystem::exists(path + ".active")
+                                 ? " has not finished (its records so far are in " + path +
+                                       ".active: rerun it with "
+                                       "--resume)"
+                                 : " has not run"));
   }
+  const core::ProgressJournal journal =
+      core::ProgressJournal::resume(option, path, progress_settings(shard));
+  const std::vector<PlannedRun> plan = plan_of(shard);
+  std::vector<EpisodeRecord> records = records_of(journal, plan, option);
+  if (records.size() != plan.size()) {
+    throw core::ConfigError(option + ": " + path + ": expected the shard's " +
+                            std::to_string(plan.size()) + " records, got " +
+                            std::to_string(records.size()));
+  }
+  return records;
+}
+
+// --merge-shards N: every shard's records in the order one process runs them.
+std::vector<EpisodeRecord> merged_records(const Options& options) {
+  std::map<std::string, EpisodeRecord> by_key;
+  for (unsigned k = 1; k <= options.merge_shards; ++k) {
+    for (EpisodeRecord& record : shard_records(options, k)) {
+      by_key.emplace(record.type + "/" + std::to_string(record.index) + "/" + record.controller,
+                     std::move(record));
+    }
+  }
+  std::vector<EpisodeRecord> records;
+  for (const PlannedRun& run : plan_of(options)) {
+    records.push_back(by_key.at(run.key()));
+  }
+  return records;
 }
 
 // With --csv: the progress file of an earlier run resumed, or a new one. Throws core::ConfigError.
 void open_progress(Benchmark& benchmark) {
   const Options& options = benchmark.options;
-  const std::string progress = options.csv + ".active";
+  const std::string progress = final_output(options) + ".active";
   const std::string settings = progress_settings(options);
   const bool progress_there = std::filesystem::exists(progress);
   if (options.resume && progress_there) {
@@ -805,7 +714,7 @@ void open_progress(Benchmark& benchmark) {
     keep_earlier_records(benchmark);
     return;
   }
-  if (options.resume && std::filesystem::exists(options.csv)) {
+  if (options.resume && std::filesystem::exists(final_output(options))) {
     benchmark.complete_already = true;
     return;
   }
@@ -828,7 +737,7 @@ Benchmark prepare(int argc, char** argv) {
     benchmark.configs.emplace(controller, controller_config(benchmark.options, controller));
   }
   benchmark.worlds = learning::EpisodeWorlds::load(benchmark.options.worlds);
-  if (!benchmark.options.csv.empty()) {
+  if (!benchmark.options.csv.empty() && benchmark.options.merge_shards == 0) {
     open_progress(benchmark);
   }
   return benchmark;
@@ -841,7 +750,7 @@ int report_stop(const Benchmark& benchmark, size_t planned, const PlannedRun& dr
             << benchmark.records.size() << " of " << planned << " episodes";
   if (benchmark.journal) {
     std::cerr << ": their records are in " << benchmark.journal->path() << " ("
-              << benchmark.options.csv << " is written once every episode is done)";
+              << final_output(benchmark.options) << " is written once every episode is done)";
   }
   std::cerr << "; the episode under way (" << dropped.key() << ") was dropped";
   if (benchmark.journal) {
@@ -879,13 +788,60 @@ int run_episodes(Benchmark& benchmark) {
       return report_stop(benchmark, plan.size(), run);
     }
     if (benchmark.journal) {
-      benchmark.journal->add(run.key(), record_line(*record) + "\n");
+      benchmark.journal->add(run.key(), tools::nav::record_line(*record) + "\n");
     }
     benchmark.records.push_back(*record);
     std::fprintf(stderr, "%s %d %s: %s %s\n", record->type.c_str(), record->index,
                  record->controller.c_str(), record->outcome.c_str(), record->reason.c_str());
   }
   return 0;
+}
+
+// --merge-shards N: writes the CSV and prints the table one process would, then removes the
+// shards' records. Returns the exit code.
+int merge_shards(Benchmark& benchmark) {
+  const Options& options = benchmark.options;
+  if (options.merge_shards == 1) {  // shard 1/1 is the whole run and wrote the CSV itself
+    if (!std::filesystem::exists(options.csv)) {
+      std::cerr << "nav_benchmark: --merge-shards 1: " << options.csv
+                << " not found: the one shard has not finished\n";
+      return kUsageError;
+    }
+    std::printf("nav_benchmark: one shard: %s is the whole run's\n", options.csv.c_str());
+    return 0;
+  }
+  try {
+    benchmark.records = merged_records(options);
+  } catch (const core::Error& e) {
+    std::cerr << "nav_benchmark: " << e.what() << "\n";
+    return kUsageError;
+  }
+  try {
+    tools::nav::write_csv(options.csv, benchmark.records);
+  } catch (const core::Error& e) {
+    std::cerr << "nav_benchmark: " << e.what() << "\n";
+    return 1;
+  }
+  for (unsigned k = 1; k <= options.merge_shards; ++k) {
+    std::filesystem::remove(shard_records_path(options.csv, k, options.merge_shards));
+  }
+  print_summary(benchmark.records, options);
+  std::printf("nav_benchmark: merged %u shards: %zu records into %s\n", options.merge_shards,
+              benchmark.records.size(), options.csv.c_str());
+  return 0;
+}
+
+// What a finished run writes: the CSV, or a shard's records (its progress file, renamed).
+void write_output(Benchmark& benchmark) {
+  if (!benchmark.journal) {
+    return;
+  }
+  if (benchmark.options.shard_count > 1) {
+    benchmark.journal->complete_as(final_output(benchmark.options));
+  } else {
+    tools::nav::write_csv(benchmark.options.csv, benchmark.records);
+    benchmark.journal->remove();
+  }
 }
 
 }  // namespace
@@ -898,9 +854,13 @@ int main(int argc, char** argv) {
     std::cerr << "nav_benchmark: " << e.what() << "\n";
     return kUsageError;
   }
+  if (benchmark.options.merge_shards > 0) {
+    return merge_shards(benchmark);
+  }
+  const std::string output = final_output(benchmark.options);
   if (benchmark.complete_already) {
-    std::printf("nothing to do: %s is complete (no %s.active to resume)\n",
-                benchmark.options.csv.c_str(), benchmark.options.csv.c_str());
+    std::printf("nothing to do: %s is complete (no %s.active to resume)\n", output.c_str(),
+                output.c_str());
     return 0;
   }
   core::install_stop_handler();
@@ -910,10 +870,7 @@ int main(int argc, char** argv) {
     if (stopped != 0) {
       return stopped;
     }
-    if (benchmark.journal) {
-      write_csv(benchmark.options.csv, benchmark.records);
-      benchmark.journal->remove();
-    }
+    write_output(benchmark);
   } catch (const core::Error& e) {
     std::cerr << "nav_benchmark: " << e.what() << "\n";
     return 1;
