@@ -93,9 +93,12 @@ rendering::RenderMesh shapes_at(double t_s, size_t count) {
   return rendering::mesh_of(primitives);
 }
 
-// A rig with only the named cameras enabled, sized as given.
-rendering::CameraRig rig_with(const std::vector<std::string>& names, int width, int height) {
+// A rig with only the named cameras enabled, sized as given, with the default camera effects
+// unless `effects` says otherwise.
+rendering::CameraRig rig_with(const std::vector<std::string>& names, int width, int height,
+                              const rendering::CameraEffects& effects = {}) {
   rendering::CameraRigConfig config;
+  config.effects = effects;
   for (rendering::CameraSpec& spec : config.cameras) {
     spec.enabled = false;
     for (const std::string& name : names) {
@@ -134,12 +137,10 @@ void render_frames(benchmark::State& state, const std::string& camera) {
   state.SetLabel(rig.renderer().device_name());
 }
 
-// The head camera at 1280x960 with ten people, drawn as the earlier shapes (figures:0) or as
-// articulated figures posed per frame (figures:1): the figures' cost relative to the shapes.
-void BM_HeadCameraTenPeople(benchmark::State& state) {
-  rendering::CameraRig rig = rig_with({"head_front_camera"}, 0, 0);
+// Frames of the head camera at 1280x960 with ten people walking, as articulated figures posed per
+// frame or as the earlier shapes; items = frames.
+void render_ten_people(benchmark::State& state, rendering::CameraRig& rig, bool use_figures) {
   const Eigen::Isometry3d X = rendering::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
-  const bool use_figures = state.range(0) == 1;
   rendering::PeopleFigures figures;
   rendering::CameraFrame frame;
   double t = 0.0;
@@ -154,10 +155,34 @@ void BM_HeadCameraTenPeople(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+// Ten people drawn as the earlier shapes (figures:0) or as articulated figures (figures:1): the
+// figures' cost relative to the shapes.
+void BM_HeadCameraTenPeople(benchmark::State& state) {
+  rendering::CameraRig rig = rig_with({"head_front_camera"}, 0, 0);
+  render_ten_people(state, rig, state.range(0) == 1);
+}
 BENCHMARK(BM_HeadCameraTenPeople)
     ->ArgNames({"figures"})
     ->Arg(0)
     ->Arg(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+// Ten figures with the camera effects: effects:0 none (the renderer's image as drawn), 1 the
+// sensor alone (no anti-aliasing, the default), 2 the sensor with 4-sample anti-aliasing.
+void BM_HeadCameraEffects(benchmark::State& state) {
+  rendering::CameraEffects effects;
+  effects.enabled = state.range(0) > 0;
+  effects.antialiasing_samples = state.range(0) == 2 ? 4 : 1;
+  rendering::CameraRig rig = rig_with({"head_front_camera"}, 0, 0, effects);
+  render_ten_people(state, rig, /*use_figures=*/true);
+}
+BENCHMARK(BM_HeadCameraEffects)
+    ->ArgNames({"effects"})
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 

@@ -9,18 +9,21 @@ add_library(ari_rendering
   src/rendering/camera_model.cpp
   src/rendering/camera_rig.cpp
   src/rendering/camera_rig_config.cpp
+  src/rendering/camera_sensor.cpp
   src/rendering/depth_image.cpp
   src/rendering/drawn_people.cpp
   src/rendering/egl_context.cpp
+  src/rendering/figure_regions.cpp
   src/rendering/fisheye_renderer.cpp
+  src/rendering/gl_program.cpp
   src/rendering/human_appearance.cpp
   src/rendering/human_figure.cpp
-  src/rendering/figure_regions.cpp
   src/rendering/image_labels.cpp
-  src/rendering/region_crops.cpp
+  src/rendering/multisample_target.cpp
   src/rendering/people_crops.cpp
   src/rendering/people_figures.cpp
   src/rendering/physics_primitives.cpp
+  src/rendering/region_crops.cpp
   src/rendering/render_mesh.cpp
   src/rendering/renderer.cpp
   src/rendering/snapshot_cameras.cpp
@@ -38,6 +41,7 @@ if(CATKIN_ENABLE_TESTING)
   ari_add_gtest(test_rendering
     SOURCES
       test/rendering/test_camera_model.cpp
+      test/rendering/test_camera_sensor.cpp
       test/rendering/test_ari_cameras.cpp
       test/rendering/test_camera_rig.cpp
       test/rendering/test_depth_image.cpp

@@ -8,9 +8,12 @@
 
 namespace ari_social_sim::rendering {
 
-CameraRig::CameraRig(const CameraRigConfig& config)
+CameraRig::CameraRig(const CameraRigConfig& config, uint64_t seed)
     : depth_encoding_(core::validated(config).depth_encoding),
       renderer_(std::make_unique<Renderer>()) {
+  if (config.effects.enabled) {
+    samples_ = config.effects.antialiasing_samples;
+  }
   for (const CameraSpec& spec : config.cameras) {
     if (!spec.enabled) {
       continue;
@@ -30,6 +33,10 @@ CameraRig::CameraRig(const CameraRigConfig& config)
       infos_.push_back(camera_info_of(model));
     }
     next_due_s_.push_back(0.0);
+    sensors_.push_back(config.effects.enabled ? std::make_unique<CameraSensor>(
+                                                    config.effects, spec.width, spec.height,
+                                                    spec.hfov_rad, seed, cameras_.size() - 1)
+                                              : nullptr);
   }
 }
 
@@ -55,8 +62,19 @@ std::vector<size_t> CameraRig::due(double time_s) {
   return due_now;
 }
 
-void CameraRig::restart_schedule() {
+void CameraRig::restart(uint64_t seed) {
   std::fill(next_due_s_.begin(), next_due_s_.end(), 0.0);
+  for (const std::unique_ptr<CameraSensor>& sensor : sensors_) {
+    if (sensor) {
+      sensor->restart(seed);
+    }
+  }
+}
+
+void CameraRig::expose(size_t i, cv::Mat& colour) {
+  if (sensors_[i]) {
+    sensors_[i]->expose(colour);
+  }
 }
 
 void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out,
@@ -64,16 +82,19 @@ void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, Camer
   const CameraSpec& spec = cameras_[i];
   out.labels.release();
   if (spec.kind == CameraKind::kFisheye) {
-    fisheyes_[i]->render(*renderer_, X_world_optical, out.colour);
+    fisheyes_[i]->render(*renderer_, X_world_optical, out.colour, samples_);
+    expose(i, out.colour);
     out.depth.release();
     return;
   }
   ViewOptions options;
   options.depth = spec.kind == CameraKind::kRgbd;
   options.labels = labels;
+  options.samples = samples_;
   renderer_->render(pinholes_[i], X_world_optical, options, scratch_);
   // Swapping hands the rendered buffers over without a copy; the renderer refills the old ones.
   std::swap(out.colour, scratch_.colour);
+  expose(i, out.colour);
   if (labels) {
     std::swap(out.labels, scratch_.labels);
   }

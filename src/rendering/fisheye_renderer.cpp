@@ -68,8 +68,9 @@ int FisheyeRenderer::faces_drawn() const {
 }
 
 void FisheyeRenderer::render(Renderer& renderer, const Eigen::Isometry3d& X_world_optical,
-                             cv::Mat& colour) {
+                             cv::Mat& colour, int samples) {
   ViewOptions options;
+  options.samples = samples;
   for (int face = 0; face < 6; ++face) {
     if (face_used_[face]) {
       Eigen::Isometry3d X_world_face = X_world_optical;

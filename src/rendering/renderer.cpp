@@ -1,16 +1,16 @@
 #include "ari_social_sim/rendering/renderer.hpp"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
+#include <tuple>
 #include <utility>
 
 #include "ari_social_sim/rendering/render_mesh.hpp"
 #include "egl_context.hpp"
+#include "gl_program.hpp"
+#include "multisample_target.hpp"
 
 namespace ari_social_sim::rendering {
 namespace {
@@ -80,39 +80,6 @@ void main() {
 
 // Background where nothing is hit: a pale grey-blue, and depth 0 (turned into NaN on readback).
 constexpr float kBackground[4] = {0.78f, 0.84f, 0.9f, 1.0f};
-
-GLuint compile(GLenum stage, const char* source) {
-  const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    throw RenderError(std::string("shader compilation failed: ") + log);
-  }
-  return shader;
-}
-
-GLuint link_program() {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader);
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
-  glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048];
-    glGetProgramInfoLog(program, sizeof(log), nullptr, log);
-    throw RenderError(std::string("shader linking failed: ") + log);
-  }
-  return program;
-}
 
 // Maps the optical frame (x right, y down, z forward) to clip space so that window pixel
 // (u + 0.5, v + 0.5) is pixel (u, v) of the pinhole model, with v = 0 in the first row read back.
@@ -212,7 +179,16 @@ struct Renderer::Impl {
   GpuMesh dynamic_mesh;
   // One framebuffer per image size: a rig alternates between cameras of different sizes.
   std::map<std::pair<int, int>, Framebuffer> framebuffers;
+  std::map<std::tuple<int, int, int>, std::unique_ptr<MultisampleTarget>> multisample_targets;
   cv::Mat label_scratch;  // CV_32FC1, the label attachment as read back
+
+  MultisampleTarget& multisample_target_of(int width, int height, int samples) {
+    std::unique_ptr<MultisampleTarget>& target = multisample_targets[{width, height, samples}];
+    if (!target) {
+      target = std::make_unique<MultisampleTarget>(width, height, samples);
+    }
+    return *target;
+  }
 
   Framebuffer& framebuffer_of(int width, int height) {
     auto found = framebuffers.find({width, height});
@@ -228,7 +204,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->context.make_current();
   const GLubyte* name = glGetString(GL_RENDERER);
   impl_->device_name = name != nullptr ? reinterpret_cast<const char*>(name) : "unknown";
-  impl_->program = link_program();
+  impl_->program = link_program(kVertexShader, kFragmentShader);
   impl_->world_to_optical_location = glGetUniformLocation(impl_->program, "world_to_optical");
   impl_->projection_location = glGetUniformLocation(impl_->program, "projection");
   impl_->camera_position_location = glGetUniformLocation(impl_->program, "camera_position");
@@ -268,7 +244,11 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
                       const ViewOptions& options, RenderedImage& out) {
   impl_->context.make_current();
   Framebuffer& target = impl_->framebuffer_of(model.width, model.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+  MultisampleTarget* multisample =
+      options.samples > 1
+          ? &impl_->multisample_target_of(model.width, model.height, options.samples)
+          : nullptr;
+  glBindFramebuffer(GL_FRAMEBUFFER, multisample ? multisample->framebuffer() : target.framebuffer);
   // Only the outputs asked for are written: a colour-only camera skips the depth and label
   // attachments' bandwidth, which is a good part of llvmpipe's cost per pixel.
   const GLenum draw_buffers[3] = {options.colour ? GLenum{GL_COLOR_ATTACHMENT0} : GLenum{GL_NONE},
@@ -309,6 +289,10 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   } else {
     impl_->static_mesh.draw();
     impl_->dynamic_mesh.draw();
+  }
+
+  if (multisample) {
+    multisample->resolve_into(target.framebuffer, draw_buffers);
   }
 
   // Read back; the first row read is window y = 0, which the projection made image row v = 0.

@@ -7,15 +7,14 @@
 
 namespace ari_social_sim::rendering {
 
-SnapshotCameras::SnapshotCameras(CameraRig& rig, uint64_t appearance_seed)
-    : rig_(rig), figures_(appearance_seed) {
+SnapshotCameras::SnapshotCameras(CameraRig& rig, uint64_t seed) : rig_(rig), figures_(seed) {
   for (const CameraSpec& spec : rig_.cameras()) {
     if (spec.kind == CameraKind::kFisheye) {
       throw core::ConfigError(spec.name +
                               ": expected a pinhole camera (labels need one), got a fisheye");
     }
   }
-  rig_.restart_schedule();
+  rig_.restart(seed);
 }
 
 std::vector<LabelledImage> SnapshotCameras::render_due(const world::WorldSnapshot& snapshot) {

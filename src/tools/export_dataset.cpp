@@ -461,7 +461,7 @@ bool export_episode(const Export& run, rendering::CameraRig& rig, dataset::CocoD
   const uint64_t seed = run.options.plan.seed_of(index);
   const std::unique_ptr<engine::Episode> episode = start_episode(run, index, seed);
   // The looks vary from episode to episode and come back with the seed.
-  rendering::SnapshotCameras cameras(rig, /*appearance_seed=*/seed);
+  rendering::SnapshotCameras cameras(rig, seed);
   std::vector<uint64_t> frames(rig.cameras().size(), 0);  // per camera, for the file names
   uint64_t ordinal = 0;                                   // images of the episode, for the ids
   std::unique_ptr<dataset::EpisodeAudio> audio;
@@ -531,7 +531,9 @@ int export_episodes(Export& run) {
                 planned.size(), run.paths.annotations.c_str());
     return 0;
   }
-  rendering::CameraRig rig(run.rig);
+  // Each episode restarts the sensors' noise from its seed (SnapshotCameras): shards give the
+  // bytes of one process.
+  rendering::CameraRig rig(run.rig, run.options.plan.first_seed);
   rig.set_world(run.scenario.scene.world, rendering::SceneStyle{});
   dataset::CocoDataset dataset(dataset_settings(run));
   std::set<std::string> done;

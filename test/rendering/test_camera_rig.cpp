@@ -129,9 +129,43 @@ TEST(CameraRig, ARestartedScheduleGivesFrameZeroAgain) {
   rig.due(7.3);
   // A new episode's clock: nothing due at 0 until the schedule restarts.
   EXPECT_TRUE(rig.due(0.0).empty());
-  rig.restart_schedule();
+  rig.restart(1);
   EXPECT_EQ(rig.due(0.0), (std::vector<size_t>{kHead, kTorso}));
   EXPECT_TRUE(rig.due(0.05).empty());
+}
+
+// An episode's images depend on its seed alone, not on what the rig rendered before: shards of a
+// batch give the bytes of one process.
+TEST(CameraRig, ARestartedRigRendersAnEpisodesFramesAgain) {
+  const core::Pose2 ari{{9.5, 6.0}, M_PI / 2};
+  auto head_frames = [&](CameraRig& rig) {
+    std::vector<cv::Mat> frames;
+    for (int k = 0; k < 2; ++k) {
+      CameraFrame frame;
+      rig.render(kHead, rendering::X_world_optical(rig.cameras()[kHead], ari, 0.1 * k, 0.0), frame);
+      frames.push_back(frame.colour);
+    }
+    return frames;
+  };
+  CameraRig rig(CameraRigConfig{}, 1);
+  CameraRig fresh(CameraRigConfig{}, 1);
+  for (CameraRig* each : {&rig, &fresh}) {
+    each->set_world(waiting_room(), SceneStyle{});
+    each->set_dynamic_mesh({});
+  }
+  rig.restart(4);
+  const std::vector<cv::Mat> first = head_frames(rig);
+  head_frames(rig);  // the rest of that episode
+  rig.restart(5);
+  const std::vector<cv::Mat> other_seed = head_frames(rig);
+  rig.restart(4);
+  fresh.restart(4);
+  for (const std::vector<cv::Mat>& again : {head_frames(rig), head_frames(fresh)}) {
+    for (size_t k = 0; k < first.size(); ++k) {
+      EXPECT_EQ(cv::norm(first[k], again[k], cv::NORM_INF), 0.0) << "frame " << k;
+    }
+  }
+  EXPECT_GT(cv::norm(first[0], other_seed[0], cv::NORM_L1), 0.0);  // other noise
 }
 
 }  // namespace

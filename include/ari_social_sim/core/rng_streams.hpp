@@ -66,6 +66,10 @@ inline constexpr RngStreams kRoomNoise{
     "room_noise", "audio::ArrayMixer, the diffuse background noise", kSingles + 13};
 inline constexpr RngStreams kImuNoise{"imu_noise", "physics::AriPhysics, the torso IMU's noise",
                                       kSingles + 12};
+// Rendering (rendering/): each camera's sensor noise and white balance, by camera index.
+inline constexpr RngStreams kCameraSensor{
+    "camera_sensor", "rendering::CameraSensor, a camera's noise and white balance by index",
+    kSingles + 16, 16};
 
 // Perception (perception/ and hri_perception_node): one stream per error model, so that switching
 // one off leaves the draws of the others unchanged.
@@ -109,13 +113,31 @@ inline constexpr RngStreams kDialogueEpisodes{
     uint64_t{1} << 41, kPerObjectId};
 
 /// Every block, for the overlap test and the documentation.
-inline constexpr std::array kAll{
-    kHumanVoice,        kRoomNoise,         kHumanGaze,        kHumanReaction,
-    kGroupStance,       kGroupConversation, kGroupShift,       kGroupTurnover,
-    kGroupNods,         kHumanAppearance,   kImuNoise,         kPerceptionTransientIds,
-    kPerceptionBodies,  kPerceptionFaces,   kPerceptionSpeech, kPerceptionPersonIds,
-    kPerceptionMatcher, kNavEpisodeType,    kNavWalkers,       kNavigationEpisodes,
-    kRandomGroups,      kRandomGroupScene,  kConversation,     kDialogueEpisodes};
+inline constexpr std::array kAll{kHumanVoice,
+                                 kRoomNoise,
+                                 kHumanGaze,
+                                 kHumanReaction,
+                                 kGroupStance,
+                                 kGroupConversation,
+                                 kGroupShift,
+                                 kGroupTurnover,
+                                 kGroupNods,
+                                 kHumanAppearance,
+                                 kImuNoise,
+                                 kCameraSensor,
+                                 kPerceptionTransientIds,
+                                 kPerceptionBodies,
+                                 kPerceptionFaces,
+                                 kPerceptionSpeech,
+                                 kPerceptionPersonIds,
+                                 kPerceptionMatcher,
+                                 kNavEpisodeType,
+                                 kNavWalkers,
+                                 kNavigationEpisodes,
+                                 kRandomGroups,
+                                 kRandomGroupScene,
+                                 kConversation,
+                                 kDialogueEpisodes};
 
 }  // namespace rng_streams
 

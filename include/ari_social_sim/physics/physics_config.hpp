@@ -31,7 +31,8 @@ struct PhysicsConfig {
   template <class V>
   void visit(V& v) {
     v.field("step", step_s, "s of sim time per physics step", core::Bounds{0.0, 0.01, true});
-    v.field("seed", seed, "the IMU's noise", core::Bounds{0.0, 2147483647.0, false});
+    v.field("seed", seed, "the IMU's and the cameras' noise",
+            core::Bounds{0.0, 2147483647.0, false});
     v.field("gravity", gravity_mps2, "m/s^2", core::non_negative());
     // Fewer let a parked ARI creep (docs/physics.md).
     v.field("solver_iterations", solver_iterations, "contact solver iterations per step, at most",

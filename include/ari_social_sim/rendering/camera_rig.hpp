@@ -7,6 +7,7 @@
 
 #include "ari_social_sim/rendering/camera_model.hpp"
 #include "ari_social_sim/rendering/camera_rig_config.hpp"
+#include "ari_social_sim/rendering/camera_sensor.hpp"
 #include "ari_social_sim/rendering/fisheye_renderer.hpp"
 #include "ari_social_sim/rendering/renderer.hpp"
 #include "ari_social_sim/rendering/world_scene.hpp"
@@ -28,7 +29,8 @@ class CameraRig {
  public:
   /// Opens the renderer; throws core::ConfigError for an invalid config
   /// (CameraRigConfig::validate), RenderError when no headless OpenGL context can be made.
-  explicit CameraRig(const CameraRigConfig& config);
+  /// `seed` seeds the cameras' sensor noise (core::rng_streams::kCameraSensor).
+  explicit CameraRig(const CameraRigConfig& config, uint64_t seed = 1);
 
   /// The enabled cameras, in the order of ari_camera_specs().
   const std::vector<CameraSpec>& cameras() const { return cameras_; }
@@ -45,9 +47,10 @@ class CameraRig {
   /// Indices of the cameras with a frame due at sim time t: camera i's k-th frame is due at
   /// k / rate_hz. A frame that could not be taken in time is skipped, not queued.
   std::vector<size_t> due(double time_s);
-  /// Starts every camera's schedule again at sim time 0, for a clock that starts again (the next
-  /// episode of a batch): without it, due() would wait for the last run's time.
-  void restart_schedule();
+  /// Starts every camera again for a clock that starts again (the next episode of a batch): the
+  /// schedule at sim time 0 (without it, due() would wait for the last run's time) and the
+  /// sensors' noise from `seed`, so that an episode's images depend on its seed alone.
+  void restart(uint64_t seed);
 
   /// Renders camera i from its optical frame's pose in the world, with the label image when
   /// `labels` is set and the camera is a pinhole.
@@ -57,10 +60,14 @@ class CameraRig {
   const PinholeModel& pinhole(size_t i) const { return pinholes_[i]; }
 
  private:
+  void expose(size_t i, cv::Mat& colour);
+
   std::vector<CameraSpec> cameras_;
   std::vector<CameraInfo> infos_;
   std::vector<PinholeModel> pinholes_;                      // unused for fisheyes
   std::vector<std::unique_ptr<FisheyeRenderer>> fisheyes_;  // null for pinholes
+  std::vector<std::unique_ptr<CameraSensor>> sensors_;      // null without camera effects
+  int samples_{1};                                          // per pixel, for anti-aliasing
   std::vector<double> next_due_s_;
   DepthEncoding depth_encoding_;
   std::unique_ptr<Renderer> renderer_;

@@ -6,6 +6,7 @@
 #include "ari_social_sim/core/config_fields.hpp"
 #include "ari_social_sim/core/yaml_map.hpp"
 #include "ari_social_sim/rendering/ari_cameras.hpp"
+#include "ari_social_sim/rendering/camera_effects.hpp"
 #include "ari_social_sim/rendering/depth_image.hpp"
 
 namespace ari_social_sim::rendering {
@@ -42,9 +43,11 @@ struct CameraSettings {
 ///   cameras:
 ///     head_front_camera: {enabled: true, width: 1280, height: 960, rate_hz: 10, hfov_deg: 62.2}
 ///     torso_back_camera_fisheye1: {enabled: true}    # a '/' in a name becomes '_'
+///   effects: {antialiasing_samples: 4, bayer: true}   # what every camera's sensor does
 struct CameraRigConfig {
   std::vector<CameraSpec> cameras{ari_camera_specs()};
   DepthEncoding depth_encoding{DepthEncoding::kMetres32F};
+  CameraEffects effects;
 
   template <class V>
   void visit(V& v) {
@@ -54,6 +57,8 @@ struct CameraRigConfig {
              kDepthEncodings);
     Cameras each{cameras};
     v.section("cameras", each, "one entry per camera, under its name with / written _");
+    v.section("effects", effects,
+              "what every camera's lens, sensor and image processor do to the rendered light");
   }
 
   /// Throws core::ConfigError naming the field outside what visit allows.

@@ -26,7 +26,8 @@ class FisheyeRenderer {
   int faces_drawn() const;
 
   /// Colour image (CV_8UC3, RGB) seen from an optical frame in the world.
-  void render(Renderer& renderer, const Eigen::Isometry3d& X_world_optical, cv::Mat& colour);
+  void render(Renderer& renderer, const Eigen::Isometry3d& X_world_optical, cv::Mat& colour,
+              int samples = 1);
 
   /// Rotation from a face's optical frame to the fisheye's (faces 0..5: +z, +x, -x, +y, -y, -z).
   static Eigen::Matrix3d R_optical_face(int face);

@@ -37,6 +37,9 @@ struct ViewOptions {
   bool colour{true};
   bool depth{false};
   bool labels{false};
+  /// Samples per pixel: 1 draws each pixel from its centre; more anti-alias the colour (depth and
+  /// labels stay those of one sample: exact values of one surface).
+  int samples{1};
   /// Draws only these vertices of the dynamic mesh and nothing of the static scene: what one
   /// person would cover with nothing in front of them.
   std::optional<VertexRange> only_dynamic;

@@ -26,10 +26,10 @@ struct LabelledImage {
 /// torso camera does not see ARI's arms or base where the real one would.
 class SnapshotCameras {
  public:
-  /// Restarts the rig's schedule (a run's clock starts at 0) and draws the people's looks from
-  /// `appearance_seed`. Throws core::ConfigError when a camera of the rig is a fisheye: labels
+  /// Restarts the rig (a run's clock starts at 0) and draws the people's looks and the cameras'
+  /// noise from `seed`. Throws core::ConfigError when a camera of the rig is a fisheye: labels
   /// come from pinhole images only. `rig` must outlive this object.
-  SnapshotCameras(CameraRig& rig, uint64_t appearance_seed);
+  SnapshotCameras(CameraRig& rig, uint64_t seed);
 
   /// The images due at the snapshot's time, in the rig's camera order; none when no camera is
   /// due. Throws core::ConfigError when the snapshot has no ARI.

@@ -43,7 +43,7 @@ CameraInterface::CameraInterface(ros::NodeHandle& nh, const physics::PhysicsRunC
                                  const physics::AriPhysics& physics)
     : physics_(physics),
       figures_(config.appearance_seed),
-      rig_(rig_config(config)),
+      rig_(rig_config(config), config.physics.seed),
       world_(world),
       map_file_(config.map_file) {
   // A relative map file lands in ROS_HOME (~/.ros), where ROS puts what nodes write.
