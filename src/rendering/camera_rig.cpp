@@ -8,6 +8,21 @@
 
 namespace ari_social_sim::rendering {
 
+namespace {
+
+// A fisheye's lens is not a pinhole's: its falloff is not the cos^k law, and the lens circle's
+// black edge is what a user sees of it. Its sensor has no vignetting.
+std::unique_ptr<CameraSensor> sensor_of(const CameraSpec& spec, CameraEffects effects,
+                                        uint64_t seed, size_t index) {
+  if (spec.kind == CameraKind::kFisheye) {
+    effects.corner_illumination = 1.0;
+  }
+  return std::make_unique<CameraSensor>(effects, spec.width, spec.height, spec.hfov_rad, seed,
+                                        index);
+}
+
+}  // namespace
+
 CameraRig::CameraRig(const CameraRigConfig& config, uint64_t seed)
     : depth_encoding_(core::validated(config).depth_encoding),
       renderer_(std::make_unique<Renderer>()) {
@@ -33,10 +48,9 @@ CameraRig::CameraRig(const CameraRigConfig& config, uint64_t seed)
       infos_.push_back(camera_info_of(model));
     }
     next_due_s_.push_back(0.0);
-    sensors_.push_back(config.effects.enabled ? std::make_unique<CameraSensor>(
-                                                    config.effects, spec.width, spec.height,
-                                                    spec.hfov_rad, seed, cameras_.size() - 1)
-                                              : nullptr);
+    sensors_.push_back(config.effects.enabled
+                           ? sensor_of(spec, config.effects, seed, cameras_.size() - 1)
+                           : nullptr);
   }
 }
 

@@ -33,7 +33,9 @@ cv::Mat vignetting(int width, int height, double horizontal_fov_rad, double corn
   const double cx = 0.5 * (width - 1);
   const double cy = 0.5 * (height - 1);
   const double corner_cos = focal_px / std::hypot(std::hypot(cx, cy), focal_px);
-  const double power = std::log(corner_illumination) / std::log(corner_cos);
+  // No vignetting is power 0 (also for a lens so wide that its corners' cosine is 0).
+  const double power =
+      corner_illumination >= 1.0 ? 0.0 : std::log(corner_illumination) / std::log(corner_cos);
   cv::Mat illumination(height, width, CV_32FC1);
   for (int y = 0; y < height; ++y) {
     float* row = illumination.ptr<float>(y);

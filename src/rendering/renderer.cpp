@@ -56,25 +56,77 @@ layout(location = 1) out float out_depth;
 layout(location = 2) out float out_label;
 uniform vec3 camera_position;
 const vec3 sun = normalize(vec3(0.35, 0.55, 1.0));
+// Surface codes (rendering::Surface).
+const int kFloor = 1;
+const int kSkin = 2;
+const int kWall = 3;
+const int kWood = 4;
+const int kCeiling = 5;
+const int kLamp = 6;
+
+float hash(vec2 p) {
+  return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453);
+}
+
+// Value noise in [0, 1], smooth between the integer lattice's random values.
+float value_noise(vec2 p) {
+  vec2 cell = floor(p);
+  vec2 f = fract(p);
+  vec2 w = f * f * (3.0 - 2.0 * f);
+  return mix(mix(hash(cell), hash(cell + vec2(1.0, 0.0)), w.x),
+             mix(hash(cell + vec2(0.0, 1.0)), hash(cell + vec2(1.0, 1.0)), w.x), w.y);
+}
+
+// 0.6 m vinyl tiles, each a little lighter or darker, with 5 mm grout and a fine speckle.
+float floor_tiles(vec2 xy) {
+  vec2 tile = xy / 0.6;
+  vec2 edge = min(fract(tile), 1.0 - fract(tile)) * 0.6;
+  float grout = min(edge.x, edge.y) < 0.005 ? 0.85 : 1.0;
+  return grout * (0.96 + 0.06 * hash(floor(tile))) * (0.97 + 0.05 * value_noise(xy * 40.0));
+}
+
+// Paint with a faint roller texture over a dark skirting board.
+float wall_paint(vec3 p) {
+  vec2 uv = vec2(p.x + p.y, p.z);
+  float skirting = p.z < 0.1 ? 0.55 : 1.0;
+  return skirting * (0.96 + 0.04 * value_noise(uv * 5.0) + 0.03 * value_noise(uv * 70.0));
+}
+
+// Grain running horizontally.
+float wood_grain(vec3 p) {
+  return 0.9 + 0.15 * value_noise(vec2((p.x + p.y) * 3.0, p.z * 45.0));
+}
+
+float texture_of(int surface, vec3 p) {
+  if (surface == kFloor) return floor_tiles(p.xy);
+  if (surface == kWall) return wall_paint(p);
+  if (surface == kWood) return wood_grain(p);
+  return 1.0;
+}
+
 void main() {
+  int surface = int(v_surface + 0.5);
+  vec3 c = v_colour * texture_of(surface, v_world);
+  out_depth = v_depth;
+  out_label = v_label;
+  if (surface == kLamp) {  // gives light: as bright as the sensor takes
+    out_colour = vec4(c, 1.0);
+    return;
+  }
   // Ambient light, a sun, the ceiling's light from straight above (forehead and brows bright,
   // under them darker, as indoors) and a fill light at the camera, so that surfaces facing the
-  // camera stay bright.
+  // camera stay bright. The ceiling faces away from all of them and is lit by what the room
+  // bounces up.
   vec3 n = normalize(v_normal);
   vec3 to_camera = normalize(camera_position - v_world);
   float fill = max(dot(n, to_camera), 0.0);
-  float lighting = 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
-  vec3 c = v_colour;
-  if (v_surface > 0.5 && v_surface < 1.5) {
-    ivec2 cell = ivec2(floor(v_world.xy / 0.5));
-    if (((cell.x + cell.y) & 1) == 1) c *= 0.8;
-  }
+  float lighting = surface == kCeiling
+                       ? 0.45 + 0.15 * fill
+                       : 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
   // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
-  float highlight = v_surface > 1.5 ? 0.22 * pow(fill, 12.0) : 0.0;
+  float highlight = surface == kSkin ? 0.22 * pow(fill, 12.0) : 0.0;
   // Colours are display (sRGB) values and light adds up linearly: shade in linear terms.
   out_colour = vec4(min(c * pow(lighting, 1.0 / 2.2) + highlight, vec3(1.0)), 1.0);
-  out_depth = v_depth;
-  out_label = v_label;
 }
 )";
 

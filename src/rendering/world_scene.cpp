@@ -1,6 +1,7 @@
 #include "ari_social_sim/rendering/world_scene.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 
 namespace ari_social_sim::rendering {
 namespace {
@@ -8,6 +9,9 @@ namespace {
 const Eigen::Vector3f kFloorColour{0.72f, 0.70f, 0.66f};
 const Eigen::Vector3f kWallColour{0.86f, 0.85f, 0.80f};
 const Eigen::Vector3f kFurnitureColour{0.55f, 0.40f, 0.28f};
+const Eigen::Vector3f kCeilingColour{0.93f, 0.93f, 0.91f};
+const Eigen::Vector3f kLampColour{1.0f, 0.98f, 0.94f};
+constexpr double kSlabThickness = 0.02;  // floor, ceiling and lamp panels
 
 Eigen::Isometry3d planar(const Eigen::Vector2d& xy, double z, double yaw) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
@@ -26,18 +30,58 @@ RenderPrimitive solid(PrimitiveShape shape, const Eigen::Isometry3d& X_world_sha
   return primitive;
 }
 
+// The top of the tallest wall: where the ceiling rests. None when the world has no wall.
+double ceiling_height(const model::WorldDescription& world, const SceneStyle& style) {
+  double top = 0.0;
+  for (const model::StaticObject& object : world.objects) {
+    if (object.type == model::ShapeType::kWall) {
+      top = std::max(top, object.height_m > 0.0 ? object.height_m : style.wall_height_m);
+    }
+  }
+  return top;
+}
+
+// A ceiling slab over the whole world at `height` and lamp panels just under it, on a grid.
+void add_ceiling(const model::WorldDescription& world, const SceneStyle& style, double height,
+                 std::vector<RenderPrimitive>& out) {
+  RenderPrimitive ceiling =
+      solid(PrimitiveShape::kBox,
+            planar(world.origin + 0.5 * world.size, height + 0.5 * kSlabThickness, 0.0),
+            Eigen::Vector3d(world.size.x(), world.size.y(), kSlabThickness), kCeilingColour);
+  ceiling.surface = Surface::kCeiling;
+  out.push_back(ceiling);
+  const int columns = std::max(1, static_cast<int>(world.size.x() / style.lamp_spacing_m));
+  const int rows = std::max(1, static_cast<int>(world.size.y() / style.lamp_spacing_m));
+  for (int i = 0; i < columns; ++i) {
+    for (int j = 0; j < rows; ++j) {
+      const Eigen::Vector2d centre =
+          world.origin +
+          Eigen::Vector2d((i + 0.5) * world.size.x() / columns, (j + 0.5) * world.size.y() / rows);
+      RenderPrimitive lamp =
+          solid(PrimitiveShape::kBox, planar(centre, height - 0.5 * kSlabThickness, 0.0),
+                Eigen::Vector3d(style.lamp_size_m.x(), style.lamp_size_m.y(), kSlabThickness),
+                kLampColour);
+      lamp.surface = Surface::kLamp;
+      out.push_back(lamp);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
                                                   const SceneStyle& style) {
   std::vector<RenderPrimitive> out;
   // The floor is a thin slab whose top face is z = 0.
-  constexpr double kFloorThickness = 0.02;
   RenderPrimitive floor = solid(
-      PrimitiveShape::kBox, planar(world.origin + 0.5 * world.size, -0.5 * kFloorThickness, 0.0),
-      Eigen::Vector3d(world.size.x(), world.size.y(), kFloorThickness), kFloorColour);
-  floor.surface = Surface::kChecker;
+      PrimitiveShape::kBox, planar(world.origin + 0.5 * world.size, -0.5 * kSlabThickness, 0.0),
+      Eigen::Vector3d(world.size.x(), world.size.y(), kSlabThickness), kFloorColour);
+  floor.surface = Surface::kFloor;
   out.push_back(floor);
+  const double ceiling = ceiling_height(world, style);
+  if (style.ceiling && ceiling > 0.0) {
+    add_ceiling(world, style, ceiling, out);
+  }
 
   for (const model::StaticObject& object : world.objects) {
     const bool is_wall = object.type == model::ShapeType::kWall;
@@ -47,7 +91,9 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
                               ? object.height_m
                               : (is_wall ? style.wall_height_m : style.furniture_height_m);
     const Eigen::Vector3f colour = is_wall ? kWallColour : kFurnitureColour;
+    const Surface surface = is_wall ? Surface::kWall : Surface::kWood;
     const Eigen::Isometry3d X = planar(object.pose.position, 0.5 * height, object.pose.theta);
+    const size_t first = out.size();
     switch (object.type) {
       case model::ShapeType::kWall:
       case model::ShapeType::kBox:
@@ -71,6 +117,7 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
         break;
       }
     }
+    out[first].surface = surface;
   }
   return out;
 }

@@ -15,13 +15,22 @@ enum class PrimitiveShape {
   kPrism,     // convex outline (frame xy) extruded from z = -size.z / 2 to +size.z / 2
 };
 
-/// How a surface reflects light: matte; matte with a 0.5 m checker pattern over world x, y
-/// (floors, so that images show motion and distance); or skin, which also has a colourless
-/// highlight where it faces the light (what keeps the features of dark skin visible).
-enum class Surface { kMatte = 0, kChecker = 1, kSkin = 2 };
+/// How a surface reflects light. Matte; skin, which also has a colourless highlight where it faces
+/// the light (what keeps the features of dark skin visible); and the room's materials, each with
+/// a procedural texture in world coordinates (the renderer's shader): floor tiles with grout and
+/// speckle, painted walls with a skirting board, wood grain, a ceiling lit by the light it
+/// bounces, and lamps that give light.
+enum class Surface {
+  kMatte = 0,
+  kFloor = 1,
+  kSkin = 2,
+  kWall = 3,
+  kWood = 4,
+  kCeiling = 5,
+  kLamp = 6,
+};
 
-/// One solid in the world frame with a flat colour. Floors carry a checker pattern so that images
-/// show motion and distance.
+/// One solid in the world frame with a flat colour, textured by its surface.
 struct RenderPrimitive {
   PrimitiveShape shape{PrimitiveShape::kBox};
   Eigen::Isometry3d X_world_shape{Eigen::Isometry3d::Identity()};

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "ari_social_sim/model/world_description.hpp"
@@ -12,9 +13,13 @@ namespace ari_social_sim::rendering {
 struct SceneStyle {
   double wall_height_m{2.5};
   double furniture_height_m{0.75};
+  bool ceiling{true};          // over a world with walls: its rooms are indoors
+  double lamp_spacing_m{3.0};  // ceiling lamps on a square grid
+  Eigen::Vector2d lamp_size_m{0.6, 1.2};
 };
 
-/// The floor (checkered), walls and furniture of a world, extruded upwards from z = 0.
+/// The floor (tiled), walls, furniture of a world, extruded upwards from z = 0, and over a world
+/// with walls a ceiling at the walls' top with lamps.
 std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
                                                   const SceneStyle& style);
 
