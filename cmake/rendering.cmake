@@ -15,6 +15,7 @@ add_library(ari_rendering
   src/rendering/egl_context.cpp
   src/rendering/figure_regions.cpp
   src/rendering/fisheye_renderer.cpp
+  src/rendering/furniture.cpp
   src/rendering/gl_program.cpp
   src/rendering/human_appearance.cpp
   src/rendering/human_figure.cpp
@@ -48,6 +49,7 @@ if(CATKIN_ENABLE_TESTING)
       test/rendering/test_drawn_people.cpp
       test/rendering/test_figure_regions.cpp
       test/rendering/test_fisheye_renderer.cpp
+      test/rendering/test_furniture.cpp
       test/rendering/test_human_figures.cpp
       test/rendering/test_people_crops.cpp
       test/rendering/test_physics_primitives.cpp

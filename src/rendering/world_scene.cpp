@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include "ari_social_sim/rendering/furniture.hpp"
+
 namespace ari_social_sim::rendering {
 namespace {
 
@@ -92,6 +94,12 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
                               : (is_wall ? style.wall_height_m : style.furniture_height_m);
     const Eigen::Vector3f colour = is_wall ? kWallColour : kFurnitureColour;
     const Surface surface = is_wall ? Surface::kWall : Surface::kWood;
+    if (!is_wall) {
+      if (std::optional<std::vector<RenderPrimitive>> parts = furniture_of(object, height, world)) {
+        out.insert(out.end(), parts->begin(), parts->end());
+        continue;
+      }
+    }
     const Eigen::Isometry3d X = planar(object.pose.position, 0.5 * height, object.pose.theta);
     const size_t first = out.size();
     switch (object.type) {

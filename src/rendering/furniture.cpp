@@ -1,0 +1,188 @@
+#include "ari_social_sim/rendering/furniture.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace ari_social_sim::rendering {
+namespace {
+
+const Eigen::Vector3f kFrameColour{0.30f, 0.30f, 0.32f};   // chair legs, metal
+const Eigen::Vector3f kFabricColour{0.22f, 0.33f, 0.50f};  // seats and backs
+const Eigen::Vector3f kTableTopColour{0.62f, 0.47f, 0.32f};
+const Eigen::Vector3f kPotColour{0.62f, 0.33f, 0.22f};
+const Eigen::Vector3f kLeafColour{0.20f, 0.45f, 0.18f};
+const Eigen::Vector3f kDispenserColour{0.90f, 0.90f, 0.88f};
+const Eigen::Vector3f kBottleColour{0.55f, 0.72f, 0.90f};
+constexpr double kSeatHeightM = 0.45;  // a waiting-room chair's
+constexpr double kSeatPitchM = 0.5;    // one seat per half metre of a row
+constexpr double kLegRadiusM = 0.02;
+
+bool named(const model::StaticObject& object, const char* word) {
+  return object.name.find(word) != std::string::npos;
+}
+
+RenderPrimitive part(PrimitiveShape shape, const Eigen::Isometry3d& X_world_part,
+                     const Eigen::Vector3d& size, const Eigen::Vector3f& colour,
+                     Surface surface = Surface::kMatte) {
+  RenderPrimitive primitive;
+  primitive.shape = shape;
+  primitive.X_world_shape = X_world_part;
+  primitive.size = size;
+  primitive.colour = colour;
+  primitive.surface = surface;
+  primitive.round_segments = 16;
+  return primitive;
+}
+
+// The object's frame at height z: its footprint's centre and yaw.
+Eigen::Isometry3d object_frame(const model::StaticObject& object, double z) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.translation() = Eigen::Vector3d(object.pose.position.x(), object.pose.position.y(), z);
+  X.linear() = Eigen::AngleAxisd(object.pose.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return X;
+}
+
+Eigen::Isometry3d offset(const Eigen::Isometry3d& X, const Eigen::Vector3d& in_frame) {
+  Eigen::Isometry3d moved = X;
+  moved.translation() += X.linear() * in_frame;
+  return moved;
+}
+
+// Whether a map point lies inside another object's footprint (walls and boxes, circles).
+bool inside(const model::StaticObject& object, const Eigen::Vector2d& point) {
+  const Eigen::Vector2d d = point - object.pose.position;
+  if (object.type == model::ShapeType::kCircle) {
+    return d.norm() <= object.radius_m;
+  }
+  if (object.type == model::ShapeType::kPolygon) {
+    return false;
+  }
+  const Eigen::Vector2d local = Eigen::Rotation2Dd(-object.pose.theta) * d;
+  return std::abs(local.x()) <= 0.5 * object.size.x() &&
+         std::abs(local.y()) <= 0.5 * object.size.y();
+}
+
+// The side of a chair's footprint (its frame's +-x or +-y, as a unit vector in that frame) with
+// the nearest wall or furniture behind it: where its back goes. -x when nothing is within 1 m.
+Eigen::Vector2d back_side(const model::StaticObject& chair, const model::WorldDescription& world) {
+  const Eigen::Vector2d sides[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+  Eigen::Vector2d best = sides[0];
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& side : sides) {
+    const double half_depth = 0.5 * std::abs(side.dot(chair.size));
+    for (double gap = 0.05; gap < 1.0 && gap < nearest; gap += 0.05) {
+      const Eigen::Vector2d probe =
+          chair.pose.position + Eigen::Rotation2Dd(chair.pose.theta) * ((half_depth + gap) * side);
+      const bool hit = std::any_of(world.objects.begin(), world.objects.end(),
+                                   [&](const model::StaticObject& other) {
+                                     return &other != &chair && inside(other, probe);
+                                   });
+      if (hit) {
+        nearest = gap;
+        best = side;
+      }
+    }
+  }
+  return best;
+}
+
+// Chairs side by side along the footprint's long edge, backs on `back` (a unit side).
+std::vector<RenderPrimitive> chairs(const model::StaticObject& object, double height_m,
+                                    const model::WorldDescription& world) {
+  const Eigen::Vector2d back = back_side(object, world);
+  const Eigen::Vector2d along(std::abs(back.y()), std::abs(back.x()));  // the row's direction
+  const double length = along.dot(object.size);
+  const double depth = std::abs(back.dot(object.size));
+  const int seats = std::max(1, static_cast<int>(std::lround(length / kSeatPitchM)));
+  const double pitch = length / seats;
+  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const Eigen::Vector3d along3(along.x(), along.y(), 0.0);
+  const Eigen::Vector3d back3(back.x(), back.y(), 0.0);
+  auto extent = [&](double along_m, double back_m, double z_m) {
+    return Eigen::Vector3d(std::abs(along.x()) * along_m + std::abs(back.x()) * back_m,
+                           std::abs(along.y()) * along_m + std::abs(back.y()) * back_m, z_m);
+  };
+  std::vector<RenderPrimitive> out;
+  for (int k = 0; k < seats; ++k) {
+    const Eigen::Vector3d centre = (-0.5 * length + (k + 0.5) * pitch) * along3;
+    out.push_back(part(PrimitiveShape::kBox,
+                       offset(X, centre + Eigen::Vector3d(0, 0, kSeatHeightM - 0.03)),
+                       extent(pitch - 0.04, depth, 0.06), kFabricColour));
+    for (const double a : {-1.0, 1.0}) {
+      for (const double b : {-1.0, 1.0}) {
+        const Eigen::Vector3d leg = centre + a * (0.5 * pitch - 0.05) * along3 +
+                                    b * (0.5 * depth - 0.04) * back3 +
+                                    Eigen::Vector3d(0, 0, 0.5 * (kSeatHeightM - 0.06));
+        out.push_back(part(PrimitiveShape::kCylinder, offset(X, leg),
+                           Eigen::Vector3d(2 * kLegRadiusM, 2 * kLegRadiusM, kSeatHeightM - 0.06),
+                           kFrameColour));
+      }
+    }
+  }
+  const double back_height = std::max(height_m, kSeatHeightM + 0.3) - kSeatHeightM;
+  out.push_back(part(PrimitiveShape::kBox,
+                     offset(X, (0.5 * depth - 0.025) * back3 +
+                                   Eigen::Vector3d(0, 0, kSeatHeightM + 0.5 * back_height)),
+                     extent(length - 0.04, 0.05, back_height), kFabricColour));
+  return out;
+}
+
+// A round (or square) table: top, pedestal and foot.
+std::vector<RenderPrimitive> table(const model::StaticObject& object, double height_m) {
+  const bool round = object.type == model::ShapeType::kCircle;
+  const Eigen::Vector2d top =
+      round ? Eigen::Vector2d::Constant(2.0 * object.radius_m) : object.size;
+  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const PrimitiveShape shape = round ? PrimitiveShape::kCylinder : PrimitiveShape::kBox;
+  return {part(shape, offset(X, {0, 0, height_m - 0.02}), {top.x(), top.y(), 0.04}, kTableTopColour,
+               Surface::kWood),
+          part(PrimitiveShape::kCylinder, offset(X, {0, 0, 0.5 * height_m}), {0.08, 0.08, height_m},
+               kFrameColour),
+          part(PrimitiveShape::kCylinder, offset(X, {0, 0, 0.015}),
+               {0.6 * top.x(), 0.6 * top.y(), 0.03}, kFrameColour)};
+}
+
+// A pot and the foliage above it, about 1.2 m tall.
+std::vector<RenderPrimitive> plant(const model::StaticObject& object) {
+  const double r = object.radius_m;
+  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  return {
+      part(PrimitiveShape::kCylinder, offset(X, {0, 0, 0.2}), {1.2 * r, 1.2 * r, 0.4}, kPotColour),
+      part(PrimitiveShape::kSphere, offset(X, {0, 0, 0.8}), {2.0 * r, 2.0 * r, 0.9}, kLeafColour)};
+}
+
+// The cabinet and its bottle.
+std::vector<RenderPrimitive> dispenser(const model::StaticObject& object, double height_m) {
+  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const double body = std::max(height_m, 1.0);
+  const double bottle = 0.6 * std::min(object.size.x(), object.size.y());
+  return {part(PrimitiveShape::kBox, offset(X, {0, 0, 0.5 * body}),
+               {object.size.x(), object.size.y(), body}, kDispenserColour),
+          part(PrimitiveShape::kCylinder, offset(X, {0, 0, body + 0.2}), {bottle, bottle, 0.4},
+               kBottleColour)};
+}
+
+}  // namespace
+
+std::optional<std::vector<RenderPrimitive>> furniture_of(const model::StaticObject& object,
+                                                         double height_m,
+                                                         const model::WorldDescription& world) {
+  if (named(object, "chair") && object.type == model::ShapeType::kBox) {
+    return chairs(object, height_m, world);
+  }
+  if (named(object, "table") && object.type != model::ShapeType::kPolygon) {
+    return table(object, height_m);
+  }
+  if (named(object, "plant") && object.type == model::ShapeType::kCircle) {
+    return plant(object);
+  }
+  if (named(object, "dispenser") && object.type == model::ShapeType::kBox) {
+    return dispenser(object, height_m);
+  }
+  return std::nullopt;
+}
+
+}  // namespace ari_social_sim::rendering
