@@ -380,7 +380,7 @@ void HumanFigure::add_nose() {
   RenderPrimitive bridge =
       glossy(shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(),
                    Eigen::Vector3d(kBridgeDepth * h, 0.09 * h, (tip - root).norm() + 0.03 * h),
-                   lighter(skin, 1.12f), kFeatureSegments));
+                   lighter(skin, 1.2f), kFeatureSegments));
   bridge.X_world_shape =
       Eigen::Translation3d(0.5 * (root + tip) - 0.5 * kBridgeDepth * h * out) *
       Eigen::AngleAxisd(std::atan2(along.x(), along.z()), Eigen::Vector3d::UnitY());
@@ -398,6 +398,9 @@ void HumanFigure::add_nose() {
         shape(PrimitiveShape::kSphere, {tip.x() - 0.035 * h, side * 0.025 * h, tip.z() - 0.045 * h},
               Eigen::Vector3d(0.04, 0.03, 0.015) * h, darker(skin, 0.3f), kFeatureSegments));
   }
+  // The shadow under the nose, between it and the upper lip.
+  add_face_feature(kHead, 0.0, -0.2 * h, Eigen::Vector3d(0.05, 0.12, 0.035) * h, 0.012 * h,
+                   darker(skin, 0.45f));
 }
 
 // Lips and the dark of the mouth between them; the lower lip moves with the jaw (kJaw is the head

@@ -123,7 +123,11 @@ PixelBox box_of(const cv::Rect& rect) {
   return {rect.x, rect.y, rect.width, rect.height};
 }
 
-// A detection centred on the face's box, as large as the face's height within a factor of two.
+// A detection centred on the face's box, as tall as the face within a factor of two. The profile
+// cascade's square window holds the ear and the cheek as well as the face, while a turned face's
+// box is narrow (from the head's middle to the nose's tip, about 0.6 of its height): IoU >= 0.5
+// would need a detection of nearly exactly the face's height, so profile detections are also scored
+// this way (docs/cameras.md).
 bool centred_on(const cv::Rect& detection, const PixelBox& face) {
   const double u = detection.x + 0.5 * detection.width, v = detection.y + 0.5 * detection.height;
   return u >= face.x && u <= face.x + face.width && v >= face.y && v <= face.y + face.height &&
@@ -308,18 +312,19 @@ TEST(DetectorStudy, HaarFindsFacesTurnedToTheCameraAndFiresRarelyWithoutThem) {
   EXPECT_LE(double(false_detections) / empty_frames, 0.05);
 }
 
-// Heads turned 30 to 110 degrees from the camera, 0.8 to 3 m away: the profile cascade should find
-// the turned faces, the frontal one should not fire on them.
+// Heads turned 30 to 110 degrees from the camera (body turn; the gaze adds up to 0.2 rad), 0.8 to
+// 3 m away: the profile cascade should find the turned faces, the frontal one should not fire on
+// them.
 TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
   StudyScenes scenes;
   cv::CascadeClassifier frontal, profile;
   ASSERT_TRUE(frontal.load(kFaceCascade)) << kFaceCascade << " (Debian's opencv-data)";
   ASSERT_TRUE(profile.load(kProfileCascade)) << kProfileCascade << " (Debian's opencv-data)";
   RateTable profile_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
+  RateTable centred_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
   RateTable frontal_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
-  RateTable loose_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
-  int loose_found = 0;
-  int eligible = 0, found = 0, frames = 0, turned_frames = 0, frontal_on_turned = 0;
+  int eligible = 0, found = 0, found_centred = 0, frames = 0;
+  int turned_frames = 0, frontal_on_turned = 0;
   for (uint64_t seed = 9000; frames < 300; ++seed, ++frames) {
     StudyScenes::Layout layout;
     layout.people = 1 + static_cast<int>(seed % 2);
@@ -343,16 +348,16 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
         });
       };
       const bool profile_hit = hit_by(profiles);
-      const bool loose_hit =
+      const bool centred_hit =
           std::any_of(profiles.begin(), profiles.end(),
                       [&label](const cv::Rect& face) { return centred_on(face, *label.face_box); });
-      loose_by_yaw.add(label.face_yaw_deg, loose_hit);
       profile_by_yaw.add(label.face_yaw_deg, profile_hit);
+      centred_by_yaw.add(label.face_yaw_deg, centred_hit);
       frontal_by_yaw.add(label.face_yaw_deg, hit_by(frontals));
       if (label.face_yaw_deg >= 60.0 && !label.mask) {
         ++eligible;
         found += profile_hit ? 1 : 0;
-        loose_found += loose_hit ? 1 : 0;
+        found_centred += centred_hit ? 1 : 0;
       }
     }
     if (all_turned) {
@@ -360,18 +365,24 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
       frontal_on_turned += static_cast<int>(frontals.size());
     }
   }
-  profile_by_yaw.print("Haar profile");
-  frontal_by_yaw.print("Haar frontal");
-  loose_by_yaw.print("Haar profile, centred");
-  std::printf("Haar profile, centred: %d of %d\n", loose_found, eligible);
-  const double recall = eligible > 0 ? double(found) / eligible : 0.0;
+  profile_by_yaw.print("Haar profile, IoU >= 0.5");
+  centred_by_yaw.print("Haar profile, centred");
+  frontal_by_yaw.print("Haar frontal, IoU >= 0.5");
+  const double recall = double(found) / std::max(1, eligible);
+  const double centred_recall = double(found_centred) / std::max(1, eligible);
   const double false_rate = double(frontal_on_turned) / std::max(1, turned_frames);
   std::printf(
-      "Haar profile: %d of %d faces without a mask turned 60-90 deg, 0.8-3 m found (%.1f %%) in "
-      "%d frames\nHaar frontal: %d detections in %d frames whose faces all turn more than 45 deg "
-      "(%.3f per frame)\n",
-      found, eligible, 100.0 * recall, frames, frontal_on_turned, turned_frames, false_rate);
+      "Haar profile: of %d faces without a mask turned 60-90 deg, 0.8-3 m, in %d frames: %d found "
+      "with IoU >= 0.5 (%.1f %%), %d centred (%.1f %%)\nHaar frontal: %d detections in %d frames "
+      "whose faces all turn more than 45 deg (%.3f per frame)\n",
+      eligible, frames, found, 100.0 * recall, found_centred, 100.0 * centred_recall,
+      frontal_on_turned, turned_frames, false_rate);
+  // What the figures reach (docs/cameras.md); the aim is 60 % of the turned faces. True profiles
+  // (75-90 degrees) are still mostly missed.
   EXPECT_GE(eligible, 100);
+  EXPECT_GE(recall, 0.24);
+  EXPECT_GE(centred_recall, 0.43);
+  EXPECT_LE(false_rate, 0.02);
 }
 
 }  // namespace
