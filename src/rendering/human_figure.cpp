@@ -233,7 +233,7 @@ double HumanFigure::face_front(double y, double z) const {
 }
 
 void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen::Vector3d& size,
-                                   double rise, const Eigen::Vector3f& colour, Surface surface) {
+                                   double rise, const Eigen::Vector3f& colour) {
   // The skin's outward normal from the slope of face_front.
   const double step = 0.002 * look_.head_height_m;
   const Eigen::Vector3d normal =
@@ -248,7 +248,6 @@ void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen:
       shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), size, colour, kFeatureSegments);
   feature.X_world_shape =
       Eigen::Translation3d(skin + (rise - 0.5 * size.x()) * normal) * Eigen::Isometry3d(axes);
-  feature.surface = surface;
   add_part(joint, true, feature);
 }
 
@@ -281,14 +280,12 @@ void HumanFigure::add_ears() {
 std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
   const double h = look_.head_height_m;
   const Eigen::Vector3d& r = head_radii_;
-  // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline;
-  // long hair falls behind the neck to the shoulders.
+  // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline,
+  // and over the temples; long hair falls behind the neck to the shoulders.
   std::vector<Ellipsoid> hair;
   if (look_.hair_style != HairStyle::kBald) {
     hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
                       Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
-  }
-  if (look_.hair_style != HairStyle::kBald) {
     // Over the temples and down to the tops of the ears on both sides.
     for (double side : {-1.0, 1.0}) {
       hair.emplace_back(Eigen::Vector3d(-0.07 * h, side * 0.17 * h, 0.1 * h),

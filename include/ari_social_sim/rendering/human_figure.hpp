@@ -99,7 +99,7 @@ class HumanFigure {
   /// Adds a feature set into the face at (y, z): an ellipsoid of `size` (across the skin's normal,
   /// across the face, up), its axis along the skin's normal there, standing `rise` out of the skin.
   void add_face_feature(Joint joint, double y, double z, const Eigen::Vector3d& size, double rise,
-                        const Eigen::Vector3f& colour, Surface surface = Surface::kMatte);
+                        const Eigen::Vector3f& colour);
   void add_skull_and_jaw();
   std::vector<Ellipsoid> add_hair();  ///< The hair's ellipsoids, which hide the skin inside them.
   void add_ears();
