@@ -47,6 +47,10 @@ constexpr double kNoseTipRise = 0.087;
 constexpr double kAlarShare = 0.05;
 constexpr double kEyeShare = 0.137;
 constexpr double kEarLengthShare = 0.27;
+// Expressions: how far anger or distress tilts the brows, joy or distress turns the mouth's
+// corners.
+constexpr double kBrowTiltRad = 0.25;
+constexpr double kMouthCornerTurnRad = 0.5;
 
 RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre,
                       const Eigen::Vector3d& size, const Eigen::Vector3f& colour, int segments) {
@@ -233,7 +237,7 @@ double HumanFigure::face_front(double y, double z) const {
 }
 
 void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen::Vector3d& size,
-                                   double rise, const Eigen::Vector3f& colour) {
+                                   double rise, const Eigen::Vector3f& colour, double roll_rad) {
   // The skin's outward normal from the slope of face_front.
   const double step = 0.002 * look_.head_height_m;
   const Eigen::Vector3d normal =
@@ -246,8 +250,9 @@ void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen:
   const Eigen::Vector3d skin(face_front(y, z), y, z);
   RenderPrimitive feature =
       shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), size, colour, kFeatureSegments);
-  feature.X_world_shape =
-      Eigen::Translation3d(skin + (rise - 0.5 * size.x()) * normal) * Eigen::Isometry3d(axes);
+  feature.X_world_shape = Eigen::Translation3d(skin + (rise - 0.5 * size.x()) * normal) *
+                          Eigen::Isometry3d(axes) *
+                          Eigen::AngleAxisd(roll_rad, Eigen::Vector3d::UnitX());
   add_part(joint, true, feature);
 }
 
@@ -313,12 +318,28 @@ void HumanFigure::add_brows_and_cheekbones() {
   add_face_feature(kHead, 0.0, 0.08 * h, Eigen::Vector3d(0.12, 0.12, 0.09) * h, 0.02 * h, skin);
   // Brows darker than the skin whatever the hair's colour: fair hair has darker brows.
   const Eigen::Vector3f brow = darker(look_.hair, 0.5f).cwiseMin(darker(skin, 0.35f));
+  // Expressions move the brows: anger draws their inner ends down and together, distress raises
+  // them; joy lifts the brows a little.
+  double inner_drop = 0.0, lift = 0.0;
+  switch (look_.emotion) {
+    case model::Emotion::kAngry:
+      inner_drop = kBrowTiltRad, lift = -0.012 * h;
+      break;
+    case model::Emotion::kDisturbed:
+      inner_drop = -kBrowTiltRad;
+      break;
+    case model::Emotion::kHappy:
+      lift = 0.008 * h;
+      break;
+    case model::Emotion::kNeutral:
+      break;
+  }
   for (double side : {-1.0, 1.0}) {
     // Brows lie on the ridge, standing out of it by a few millimetres.
     add_face_feature(kHead, side * 0.12 * h, 0.1 * h, Eigen::Vector3d(0.14, 0.22, 0.1) * h,
                      0.024 * h, skin);
-    add_face_feature(kHead, side * 0.12 * h, 0.11 * h, Eigen::Vector3d(0.1, 0.2, 0.045) * h,
-                     0.028 * h, brow);
+    add_face_feature(kHead, side * 0.12 * h, 0.11 * h + lift, Eigen::Vector3d(0.1, 0.2, 0.045) * h,
+                     0.028 * h, brow, side * inner_drop);
     add_face_feature(kHead, side * 0.19 * h, -0.09 * h, Eigen::Vector3d(0.1, 0.16, 0.14) * h,
                      0.02 * h, skin);
   }
@@ -409,6 +430,25 @@ void HumanFigure::add_mouth() {
   add_face_feature(kHead, 0.0, -0.295 * h, Eigen::Vector3d(0.06, 0.18, 0.06) * h, 0.006 * h,
                    Eigen::Vector3f(0.12f, 0.04f, 0.04f));
   add_face_feature(kJaw, 0.0, -0.315 * h, Eigen::Vector3d(0.08, 0.19, 0.055) * h, 0.018 * h, lips);
+  add_mouth_corners();
+}
+
+// Joy turns the mouth's corners up, distress down; other expressions leave them.
+void HumanFigure::add_mouth_corners() {
+  const double h = look_.head_height_m;
+  double turn = 0.0;
+  if (look_.emotion == model::Emotion::kHappy) {
+    turn = kMouthCornerTurnRad;
+  } else if (look_.emotion == model::Emotion::kDisturbed) {
+    turn = -kMouthCornerTurnRad;
+  } else {
+    return;
+  }
+  const Eigen::Vector3f lips = darker(look_.skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
+  for (double side : {-1.0, 1.0}) {
+    add_face_feature(kHead, side * 0.1 * h, (turn > 0.0 ? -0.27 : -0.31) * h,
+                     Eigen::Vector3d(0.06, 0.07, 0.025) * h, 0.018 * h, lips, side * turn);
+  }
 }
 
 // What a camera can see of the face: the vertices of every face part (skin and features) not

@@ -160,6 +160,54 @@ TEST(HumanFigure, TheHeadHidesWhatFacesAwayFromTheCamera) {
   }
 }
 
+// A face close up and level, with each emotion of the world: anger and distress tilt the brows and
+// joy lifts them (pixels above the eyes change), joy and distress turn the mouth's corners (pixels
+// below the nose's tip change); the world's emotion reaches the figure.
+TEST(HumanFigure, ExpressionsMoveTheBrowsAndTheMouthsCorners) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(320, 320, 30.0 * kDeg);
+  auto face_of = [&](model::Emotion emotion, const PosedPerson** posed, PeopleFigures& figures) {
+    world::HumanSnapshot human;
+    human.id = 4;
+    human.pose = {{0.7, 0.0}, M_PI};
+    human.gaze.direction_rad = M_PI;
+    human.emotion = emotion;
+    figures.update(0.0, {figure_input_of(human)});
+    *posed = &figures.posed()[0];
+    const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x(
+        {0.0, 0.0, (*posed)->figure->head_frame((*posed)->pose).translation().z()});
+    renderer.set_dynamic_mesh(figures.mesh());
+    RenderedImage image;
+    renderer.render(model, X_world_optical, ViewOptions{}, image);
+    cv::Mat grey;
+    cv::cvtColor(image.colour, grey, cv::COLOR_RGB2GRAY);
+    return std::pair{grey, X_world_optical};
+  };
+  PeopleFigures neutral_figures;
+  const PosedPerson* neutral = nullptr;
+  const auto [neutral_face, X_world_optical] =
+      face_of(model::Emotion::kNeutral, &neutral, neutral_figures);
+  const Eigen::Isometry3d X_optical_head =
+      X_world_optical.inverse() * neutral->figure->head_frame(neutral->pose);
+  const double eyes_v = model.project(X_optical_head * neutral->figure->eyes()[0])->y();
+  const double nose_v = model.project(X_optical_head * neutral->figure->face_outline().back())->y();
+  for (const model::Emotion emotion :
+       {model::Emotion::kHappy, model::Emotion::kAngry, model::Emotion::kDisturbed}) {
+    PeopleFigures figures;
+    const PosedPerson* posed = nullptr;
+    const cv::Mat face = face_of(emotion, &posed, figures).first;
+    EXPECT_EQ(posed->figure->appearance().emotion, emotion);
+    const cv::Mat changed = cv::abs(face - neutral_face) + cv::abs(neutral_face - face) > 20;
+    const int brows = cv::countNonZero(changed.rowRange(0, cvRound(eyes_v)));
+    const int mouth = cv::countNonZero(changed.rowRange(cvRound(nose_v), changed.rows));
+    std::printf("%s: %d pixels changed above the eyes, %d below the nose\n",
+                model::to_string(emotion), brows, mouth);
+    EXPECT_GE(brows, 40) << model::to_string(emotion);
+    EXPECT_EQ(mouth >= 10, emotion != model::Emotion::kAngry) << model::to_string(emotion);
+  }
+}
+
 TEST(PeopleFigures, HeadTurnsToTheGazeNodsAndTheMouthMovesOnlyWhileSpeaking) {
   FigureInput person = standing_at(2, {0.0, 0.0}, 0.0);
   PeopleFigures figures;

@@ -98,8 +98,9 @@ class HumanFigure {
   double face_front(double y, double z) const;
   /// Adds a feature set into the face at (y, z): an ellipsoid of `size` (across the skin's normal,
   /// across the face, up), its axis along the skin's normal there, standing `rise` out of the skin.
+  /// `roll_rad` turns it about the normal: positive raises its end towards the figure's left.
   void add_face_feature(Joint joint, double y, double z, const Eigen::Vector3d& size, double rise,
-                        const Eigen::Vector3f& colour);
+                        const Eigen::Vector3f& colour, double roll_rad = 0.0);
   void add_skull_and_jaw();
   std::vector<Ellipsoid> add_hair();  ///< The hair's ellipsoids, which hide the skin inside them.
   void add_ears();
@@ -108,6 +109,7 @@ class HumanFigure {
   void add_mask();
   void add_nose();
   void add_mouth();
+  void add_mouth_corners();
   void collect_face_surface(const std::vector<Ellipsoid>& hair);
 
   HumanAppearance look_;
