@@ -342,6 +342,7 @@ class PhysicsNode {
       person.age_years = human.age;
       person.gender = static_cast<model::Gender>(human.gender);
       person.mask = human.mask;
+      person.emotion = static_cast<model::Emotion>(human.emotion);
       person.speaking = human.speech.is_speaking;
       people.push_back(person);
     }

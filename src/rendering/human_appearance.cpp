@@ -100,6 +100,7 @@ HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed) {
   look.shoes = pick(kShoes, rng);
   look.short_sleeves = rng.bernoulli(0.35);
   look.mask = traits.mask;
+  look.emotion = traits.emotion;
   look.mask_colour = pick(kMasks, rng);
   return look;
 }

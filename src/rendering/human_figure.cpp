@@ -37,6 +37,21 @@ constexpr double kArmAbductionRad = 0.14;     // arms hang a little away from th
 constexpr double kStanceAbductionRad = 0.07;  // standing feet a little apart
 constexpr double kJawDropShare = 0.06;        // of the head's height, the mouth fully open
 
+// The face in shares of the head's height (chin to crown; the head frame's origin is halfway),
+// from adult means (Farkas, 1994): the nasion 0.04 above the middle, the nose 0.23 long (nasion to
+// subnasale) with its tip 0.087 out of the face and its wings 0.15 wide, pupils 0.27 apart, ears
+// 0.27 long.
+constexpr double kNasionShare = 0.04;
+constexpr double kNoseTipZ = -0.15;
+constexpr double kNoseTipRise = 0.087;
+constexpr double kAlarShare = 0.05;
+constexpr double kEyeShare = 0.137;
+constexpr double kEarLengthShare = 0.27;
+// Expressions: how far anger or distress tilts the brows, joy or distress turns the mouth's
+// corners.
+constexpr double kBrowTiltRad = 0.25;
+constexpr double kMouthCornerTurnRad = 0.5;
+
 RenderPrimitive shape(PrimitiveShape kind, const Eigen::Vector3d& centre,
                       const Eigen::Vector3d& size, const Eigen::Vector3f& colour, int segments) {
   RenderPrimitive primitive;
@@ -188,45 +203,99 @@ void HumanFigure::build_trunk_and_arms() {
 void HumanFigure::build_head() {
   const double h = look_.head_height_m;
   const Eigen::Vector3d& r = head_radii_;
-  // The head's skin is the face: seen from behind, the hair covers it.
-  add_part(
-      kHead, true,
-      shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), 2.0 * r, look_.skin, kHeadSegments));
-  for (double side : {-1.0, 1.0}) {
-    add_part(kHead, false,
-             shape(PrimitiveShape::kSphere, {-0.05 * h, side * r.y(), 0.0},
-                   {0.08 * h, 0.05 * h, 0.26 * h}, darker(look_.skin, 0.93f), kFeatureSegments));
-  }
+  add_skull_and_jaw();
+  add_ears();
   const std::vector<Ellipsoid> hair = add_hair();
-  // The face box: hairline to chin, side to side of the head at the eyes.
-  for (const Eigen::Vector2d& yz : {Eigen::Vector2d(0.0, 0.3 * h), Eigen::Vector2d(0.0, -0.5 * h),
-                                    Eigen::Vector2d(r.y(), 0.0), Eigen::Vector2d(-r.y(), 0.0)}) {
-    face_outline_.emplace_back(face_front(yz.x(), yz.y()), yz.x(), yz.y());
-  }
-  add_eyes_and_brows();
+  // The face box: hairline to chin, side to side of the head at the eyes, out to the nose's tip.
+  face_outline_ = {{face_front(0.0, 0.3 * h), 0.0, 0.3 * h},
+                   {face_front(0.0, -0.47 * h), 0.0, -0.5 * h},
+                   {0.0, r.y(), 0.0},
+                   {0.0, -r.y(), 0.0},
+                   {face_front(0.0, kNoseTipZ * h) + kNoseTipRise * h, 0.0, kNoseTipZ * h}};
+  add_brows_and_cheekbones();
+  add_eyes();
   if (look_.mask) {
     add_mask();
   } else {
-    add_nose_and_mouth();
+    add_nose();
+    add_mouth();
   }
   collect_face_surface(hair);
 }
 
 double HumanFigure::face_front(double y, double z) const {
-  const Eigen::Vector3d& r = head_radii_;
-  const double inside = 1.0 - (y * y) / (r.y() * r.y()) - (z * z) / (r.z() * r.z());
-  return r.x() * std::sqrt(std::max(0.0, inside));
+  double front = 0.0;
+  for (const auto& [centre, diameters] : skin_volumes_) {
+    const Eigen::Vector3d radii = 0.5 * diameters;
+    const double dy = (y - centre.y()) / radii.y(), dz = (z - centre.z()) / radii.z();
+    const double inside = 1.0 - dy * dy - dz * dz;
+    if (inside > 0.0) {
+      front = std::max(front, centre.x() + radii.x() * std::sqrt(inside));
+    }
+  }
+  return front;
+}
+
+void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen::Vector3d& size,
+                                   double rise, const Eigen::Vector3f& colour, double roll_rad) {
+  // The skin's outward normal from the slope of face_front.
+  const double step = 0.002 * look_.head_height_m;
+  const Eigen::Vector3d normal =
+      Eigen::Vector3d(1.0, -(face_front(y + step, z) - face_front(y - step, z)) / (2.0 * step),
+                      -(face_front(y, z + step) - face_front(y, z - step)) / (2.0 * step))
+          .normalized();
+  const Eigen::Vector3d up = (Eigen::Vector3d::UnitZ() - normal.z() * normal).normalized();
+  Eigen::Matrix3d axes;
+  axes << normal, up.cross(normal), up;
+  const Eigen::Vector3d skin(face_front(y, z), y, z);
+  RenderPrimitive feature =
+      shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), size, colour, kFeatureSegments);
+  feature.X_world_shape = Eigen::Translation3d(skin + (rise - 0.5 * size.x()) * normal) *
+                          Eigen::Isometry3d(axes) *
+                          Eigen::AngleAxisd(roll_rad, Eigen::Vector3d::UnitX());
+  add_part(joint, true, feature);
+}
+
+// The skull is the head's ellipsoid; the jaw, narrower, brings the chin forward of it.
+void HumanFigure::add_skull_and_jaw() {
+  const double h = look_.head_height_m;
+  skin_volumes_ = {{Eigen::Vector3d::Zero(), 2.0 * head_radii_},
+                   {Eigen::Vector3d(0.15 * h, 0.0, -0.3 * h), Eigen::Vector3d(0.4, 0.42, 0.4) * h}};
+  for (const auto& [centre, diameters] : skin_volumes_) {
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere, centre, diameters, look_.skin, kHeadSegments));
+  }
+}
+
+// Ears from brow to nose base, with the darker hollow of the concha.
+void HumanFigure::add_ears() {
+  const double h = look_.head_height_m;
+  const double y = head_radii_.y();
+  for (double side : {-1.0, 1.0}) {
+    add_part(kHead, false,
+             shape(PrimitiveShape::kSphere, {-0.05 * h, side * y, -0.045 * h},
+                   {0.1 * h, 0.05 * h, kEarLengthShare * h}, darker(look_.skin, 0.93f),
+                   kFeatureSegments));
+    add_part(kHead, false,
+             shape(PrimitiveShape::kSphere, {-0.04 * h, side * (y + 0.018 * h), -0.06 * h},
+                   {0.05 * h, 0.02 * h, 0.1 * h}, darker(look_.skin, 0.6f), kFeatureSegments));
+  }
 }
 
 std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
   const double h = look_.head_height_m;
   const Eigen::Vector3d& r = head_radii_;
-  // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline;
-  // long hair falls behind the neck to the shoulders.
+  // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline,
+  // and over the temples; long hair falls behind the neck to the shoulders.
   std::vector<Ellipsoid> hair;
   if (look_.hair_style != HairStyle::kBald) {
     hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
                       Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
+    // Over the temples and down to the tops of the ears on both sides.
+    for (double side : {-1.0, 1.0}) {
+      hair.emplace_back(Eigen::Vector3d(-0.07 * h, side * 0.17 * h, 0.1 * h),
+                        Eigen::Vector3d(0.72, 0.38, 0.6) * h);
+    }
   }
   if (look_.hair_style == HairStyle::kLong) {
     hair.emplace_back(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.45 * h),
@@ -239,32 +308,58 @@ std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
   return hair;
 }
 
-// Face features, thirds of the face: brows at +0.1 h, eyes at the head's middle, the nose's base
-// at -0.2 h, the mouth at -0.29 h, the chin at -0.5 h. Detectors read a face by its contrasts
-// (Viola and Jones' features): eye sockets and brows darker than the forehead and the cheeks, a
-// bright nose bridge between the eyes, a dark mouth.
-void HumanFigure::add_eyes_and_brows() {
+// The brow ridge over the eyes and the cheekbones under them stand out of the skull, so that the
+// eyes lie in sockets. Detectors read a face by its contrasts (Viola and Jones' features): eye
+// sockets and brows darker than the forehead and the cheeks, a bright nose bridge between the
+// eyes, a dark mouth.
+void HumanFigure::add_brows_and_cheekbones() {
   const double h = look_.head_height_m;
   const Eigen::Vector3f& skin = look_.skin;
-  const double eye_y = 0.137 * h;
+  add_face_feature(kHead, 0.0, 0.08 * h, Eigen::Vector3d(0.12, 0.12, 0.09) * h, 0.02 * h, skin);
   // Brows darker than the skin whatever the hair's colour: fair hair has darker brows.
   const Eigen::Vector3f brow = darker(look_.hair, 0.5f).cwiseMin(darker(skin, 0.35f));
+  // Expressions move the brows: anger draws their inner ends down and together, distress raises
+  // them; joy lifts the brows a little.
+  double inner_drop = 0.0, lift = 0.0;
+  switch (look_.emotion) {
+    case model::Emotion::kAngry:
+      inner_drop = kBrowTiltRad, lift = -0.012 * h;
+      break;
+    case model::Emotion::kDisturbed:
+      inner_drop = -kBrowTiltRad;
+      break;
+    case model::Emotion::kHappy:
+      lift = 0.008 * h;
+      break;
+    case model::Emotion::kNeutral:
+      break;
+  }
   for (double side : {-1.0, 1.0}) {
-    const double y = side * eye_y;
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {face_front(y, 0.02 * h) - 0.014, y, 0.02 * h},
-                   {0.06 * h, 0.25 * h, 0.17 * h}, darker(skin, 0.4f), kFeatureSegments));
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {face_front(y, 0.0) - 0.005, y, 0.0},
-                   {0.04 * h, 0.15 * h, 0.07 * h}, Eigen::Vector3f(0.9f, 0.88f, 0.84f),
-                   kFeatureSegments));
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {face_front(y, 0.0) + 0.003, y, 0.0},
-                   {0.02 * h, 0.07 * h, 0.07 * h}, look_.iris * 0.5f, kFeatureSegments));
-    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(face_front(y, 0.0) + 0.003, y, 0.0);
-    add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, {face_front(y, 0.11 * h) + 0.002, y * 1.05, 0.11 * h},
-                   {0.035 * h, 0.24 * h, 0.06 * h}, brow, kFeatureSegments));
+    // Brows lie on the ridge, standing out of it by a few millimetres.
+    add_face_feature(kHead, side * 0.12 * h, 0.1 * h, Eigen::Vector3d(0.14, 0.22, 0.1) * h,
+                     0.024 * h, skin);
+    add_face_feature(kHead, side * 0.12 * h, 0.11 * h + lift, Eigen::Vector3d(0.1, 0.2, 0.045) * h,
+                     0.028 * h, brow, side * inner_drop);
+    add_face_feature(kHead, side * 0.19 * h, -0.09 * h, Eigen::Vector3d(0.1, 0.16, 0.14) * h,
+                     0.02 * h, skin);
+  }
+}
+
+// Eyes at the head's middle, a pupil distance of 0.27 h apart, in dark sockets.
+void HumanFigure::add_eyes() {
+  const double h = look_.head_height_m;
+  for (double side : {-1.0, 1.0}) {
+    const double y = side * kEyeShare * h;
+    add_face_feature(kHead, y, 0.02 * h, Eigen::Vector3d(0.1, 0.22, 0.15) * h, 0.006 * h,
+                     darker(look_.skin, 0.4f));
+    add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.06, 0.13, 0.06) * h, 0.012 * h,
+                     Eigen::Vector3f(0.9f, 0.88f, 0.84f));
+    add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.04, 0.06, 0.06) * h, 0.016 * h,
+                     look_.iris * 0.5f);
+    // The outer corner with the lashes, what marks the eye in profile.
+    add_face_feature(kHead, y + side * 0.065 * h, 0.005 * h, Eigen::Vector3d(0.06, 0.06, 0.05) * h,
+                     0.01 * h, darker(look_.skin, 0.3f));
+    eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(face_front(y, 0.0) + 0.016 * h, y, 0.0);
   }
 }
 
@@ -288,31 +383,77 @@ void HumanFigure::add_mask() {
   }
 }
 
-void HumanFigure::add_nose_and_mouth() {
+// The nose from the root between the eyes (nasion) down and out to its tip, with the wings
+// (alae) and nostrils beside and under the tip: what shows a face's direction in profile.
+void HumanFigure::add_nose() {
   const double h = look_.head_height_m;
   const Eigen::Vector3f& skin = look_.skin;
+  const Eigen::Vector3d root(face_front(0.0, kNasionShare * h) + 0.01 * h, 0.0, kNasionShare * h);
+  const Eigen::Vector3d tip(face_front(0.0, kNoseTipZ * h) + kNoseTipRise * h, 0.0, kNoseTipZ * h);
+  const Eigen::Vector3d along = (tip - root).normalized();
+  const Eigen::Vector3d out(-along.z(), 0.0, along.x());
+  // The bridge is the front of a deep ellipsoid along root to tip, which fills the nose down to the
+  // face in profile.
+  constexpr double kBridgeDepth = 0.16;
+  RenderPrimitive bridge =
+      glossy(shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(),
+                   Eigen::Vector3d(kBridgeDepth * h, 0.09 * h, (tip - root).norm() + 0.03 * h),
+                   lighter(skin, 1.2f), kFeatureSegments));
+  bridge.X_world_shape =
+      Eigen::Translation3d(0.5 * (root + tip) - 0.5 * kBridgeDepth * h * out) *
+      Eigen::AngleAxisd(std::atan2(along.x(), along.z()), Eigen::Vector3d::UnitY());
+  add_part(kHead, true, bridge);
   add_part(kHead, true,
-           glossy(shape(PrimitiveShape::kSphere, {face_front(0.0, -0.08 * h), 0.0, -0.08 * h},
-                        {0.12 * h, 0.11 * h, 0.26 * h}, lighter(skin, 1.2f), kFeatureSegments)));
-  add_part(kHead, true,
-           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.2 * h) + 0.004, 0.0, -0.2 * h},
-                 {0.05 * h, 0.12 * h, 0.035 * h}, darker(skin, 0.45f), kFeatureSegments));
-  const Eigen::Vector3f lips = darker(skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
-  add_part(kHead, true,
-           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.27 * h) - 0.002, 0.0, -0.27 * h},
-                 {0.05 * h, 0.26 * h, 0.05 * h}, lips, kFeatureSegments));
-  add_part(
-      kHead, true,
-      shape(PrimitiveShape::kSphere, {face_front(0.0, -0.295 * h) - 0.01, 0.0, -0.295 * h},
-            {0.05 * h, 0.2 * h, 0.08 * h}, Eigen::Vector3f(0.12f, 0.04f, 0.04f), kFeatureSegments));
-  // The lower lip and chin move with the jaw (kJaw is the head frame lowered by the opening).
-  add_part(kJaw, true,
-           shape(PrimitiveShape::kSphere, {face_front(0.0, -0.315 * h) - 0.002, 0.0, -0.315 * h},
-                 {0.05 * h, 0.24 * h, 0.055 * h}, lips, kFeatureSegments));
+           shape(PrimitiveShape::kSphere, tip - Eigen::Vector3d(0.035 * h, 0.0, 0.01 * h),
+                 Eigen::Vector3d(0.08, 0.09, 0.08) * h, lighter(skin, 1.05f), kFeatureSegments));
+  for (double side : {-1.0, 1.0}) {
+    add_part(kHead, true,
+             shape(PrimitiveShape::kSphere,
+                   {tip.x() - 0.045 * h, side * kAlarShare * h, tip.z() - 0.02 * h},
+                   Eigen::Vector3d(0.06, 0.055, 0.06) * h, darker(skin, 0.95f), kFeatureSegments));
+    add_part(
+        kHead, true,
+        shape(PrimitiveShape::kSphere, {tip.x() - 0.035 * h, side * 0.025 * h, tip.z() - 0.045 * h},
+              Eigen::Vector3d(0.04, 0.03, 0.015) * h, darker(skin, 0.3f), kFeatureSegments));
+  }
+  // The shadow under the nose, between it and the upper lip.
+  add_face_feature(kHead, 0.0, -0.2 * h, Eigen::Vector3d(0.05, 0.12, 0.035) * h, 0.012 * h,
+                   darker(skin, 0.45f));
+}
+
+// Lips and the dark of the mouth between them; the lower lip moves with the jaw (kJaw is the head
+// frame lowered by the opening).
+void HumanFigure::add_mouth() {
+  const double h = look_.head_height_m;
+  const Eigen::Vector3f lips = darker(look_.skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
+  add_face_feature(kHead, 0.0, -0.27 * h, Eigen::Vector3d(0.08, 0.2, 0.05) * h, 0.018 * h, lips);
+  add_face_feature(kHead, 0.0, -0.295 * h, Eigen::Vector3d(0.06, 0.18, 0.06) * h, 0.006 * h,
+                   Eigen::Vector3f(0.12f, 0.04f, 0.04f));
+  add_face_feature(kJaw, 0.0, -0.315 * h, Eigen::Vector3d(0.08, 0.19, 0.055) * h, 0.018 * h, lips);
+  add_mouth_corners();
+}
+
+// Joy turns the mouth's corners up, distress down; other expressions leave them.
+void HumanFigure::add_mouth_corners() {
+  const double h = look_.head_height_m;
+  double turn = 0.0;
+  if (look_.emotion == model::Emotion::kHappy) {
+    turn = kMouthCornerTurnRad;
+  } else if (look_.emotion == model::Emotion::kDisturbed) {
+    turn = -kMouthCornerTurnRad;
+  } else {
+    return;
+  }
+  const Eigen::Vector3f lips = darker(look_.skin, 0.45f) + Eigen::Vector3f(0.08f, 0.0f, 0.0f);
+  for (double side : {-1.0, 1.0}) {
+    add_face_feature(kHead, side * 0.1 * h, (turn > 0.0 ? -0.27 : -0.31) * h,
+                     Eigen::Vector3d(0.06, 0.07, 0.025) * h, 0.018 * h, lips, side * turn);
+  }
 }
 
 // What a camera can see of the face: the vertices of every face part (skin and features) not
-// under the hair, in the head frame; the jaw's twice, with the mouth closed and fully open.
+// under the hair nor inside the skull and jaw, in the head frame; the jaw's twice, with the mouth
+// closed and fully open.
 void HumanFigure::collect_face_surface(const std::vector<Ellipsoid>& hair) {
   const double h = look_.head_height_m;
   std::set<std::array<float, 6>> seen;
@@ -327,6 +468,10 @@ void HumanFigure::collect_face_surface(const std::vector<Ellipsoid>& hair) {
       bool covered = false;
       for (const auto& [centre, diameters] : hair) {
         covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
+      }
+      // Features are set into the skull and jaw: what lies deeper than their skin is hidden.
+      for (const auto& [centre, diameters] : skin_volumes_) {
+        covered = covered || ((point - centre).cwiseQuotient(0.47 * diameters)).squaredNorm() < 1.0;
       }
       if (covered) {
         continue;

@@ -20,7 +20,7 @@ constexpr double kSyllablesPerSecond = 4.0;
 
 FigureInput figure_input_of(const world::HumanSnapshot& human) {
   FigureInput input;
-  input.traits = {human.id, human.age_years, human.gender, human.mask};
+  input.traits = {human.id, human.age_years, human.gender, human.mask, human.emotion};
   input.pose = human.pose;
   input.velocity_mps = human.velocity_mps;
   input.face_yaw_rad = human.gaze.direction_rad;
@@ -31,7 +31,7 @@ FigureInput figure_input_of(const world::HumanSnapshot& human) {
 
 FigureInput figure_input_of(const physics::PersonState& person) {
   FigureInput input;
-  input.traits = {person.id, person.age_years, person.gender, person.mask};
+  input.traits = {person.id, person.age_years, person.gender, person.mask, person.emotion};
   input.pose = person.pose;
   input.velocity_mps = person.velocity_mps;
   input.face_yaw_rad = person.face_yaw_rad;

@@ -17,15 +17,22 @@ from conftest import HANG_GUARD_S, SCRIPTS
 pytest.importorskip("torch", reason="PyTorch is an optional extra: scripts/install_extras.sh")
 
 UPDATES = 6
-TRAIN = [sys.executable, str(SCRIPTS / "train_join_group.py"), "--updates", str(UPDATES),
-         "--envs", "4", "--rollout", "32", "--minibatch", "64", "--eval-seeds", "2",
-         "--segment", "2", "--param-hashes"]
+# The preempted run is long enough (30 updates of 4 x 128 steps, about 10 s on this machine) for
+# the signal, sent once its first update is written, to arrive before its last segment: six short
+# updates were all done before scancel's signal reached them on a loaded machine (a CI run).
+PREEMPTED_UPDATES = 30
 
 
-def train_job(env, out):
+def train_command(updates, rollout):
+    return [sys.executable, str(SCRIPTS / "train_join_group.py"), "--updates", str(updates),
+            "--envs", "4", "--rollout", str(rollout), "--minibatch", "64", "--eval-seeds", "2",
+            "--segment", "2", "--param-hashes"]
+
+
+def train_job(env, out, updates=UPDATES, rollout=32):
     """Submits the training on 2 ranks; its job id."""
     out.mkdir(parents=True, exist_ok=True)
-    command = " ".join(["srun"] + TRAIN + ["--out", str(out)])
+    command = " ".join(["srun"] + train_command(updates, rollout) + ["--out", str(out)])
     return subprocess.run(["sbatch", "--parsable", "--ntasks", "2", "--output",
                            str(out / "job.out"), "--open-mode", "append", "--wrap", command],
                           env=env, check=True, capture_output=True, text=True).stdout.strip()
@@ -51,8 +58,8 @@ def hashes(out, rank):
     return path.read_text().split("\n")[:-1] if path.exists() else []
 
 
-def finished_run(env, out):
-    job = train_job(env, out)
+def finished_run(env, out, **run):
+    job = train_job(env, out, **run)
     wait_until(lambda: not state_of(env, job), "training job %s never ended" % job)
     return hashes(out, 0), hashes(out, 1)
 
@@ -68,13 +75,18 @@ def test_two_ranks_hold_the_same_parameters_and_a_rerun_gives_them_again(cluster
 
 def test_a_preempted_run_resumes_to_the_parameters_of_an_uninterrupted_one(cluster, tmp_path):
     out = tmp_path / "preempted"
-    job = train_job(cluster, out)
+    run = {"updates": PREEMPTED_UPDATES, "rollout": 128}
+    job = train_job(cluster, out, **run)
     wait_until(lambda: len(hashes(out, 0)) >= 1 or not state_of(cluster, job),
                "the first update never came")
     assert hashes(out, 0), (out / "job.out").read_text()
     # What SLURM's --signal=USR1@T sends before preempting a job: to its tasks, not the shell.
     subprocess.run(["scancel", "--signal=USR1", job], env=cluster, check=True)
-    wait_until(lambda: "requeued" in (out / "job.out").read_text(), "the run never requeued")
+    wait_until(lambda: "requeued" in (out / "job.out").read_text() or not state_of(cluster, job),
+               "the run neither requeued nor ended")
+    assert "requeued" in (out / "job.out").read_text(), (
+        "the run ended without requeueing: the signal came after its last segment had begun\n" +
+        (out / "job.out").read_text())
     # SLURM holds a requeued job for two minutes; let it start in a few seconds instead (a
     # restart within the second of the requeue is refused: "Job credential revoked").
     wait_until(lambda: state_of(cluster, job) == "PENDING", "the job was not requeued")
@@ -83,6 +95,7 @@ def test_a_preempted_run_resumes_to_the_parameters_of_an_uninterrupted_one(clust
     wait_until(lambda: not state_of(cluster, job), "the requeued job never ended")
     log = (out / "job.out").read_text()
     assert "preempted: checkpoint at update" in log and "resumed from" in log, log
-    uninterrupted, _ = finished_run(cluster, tmp_path / "uninterrupted")
+    uninterrupted, _ = finished_run(cluster, tmp_path / "uninterrupted", **run)
+    assert len(uninterrupted) == PREEMPTED_UPDATES
     assert hashes(out, 0) == uninterrupted
     assert hashes(out, 1) == uninterrupted

@@ -26,6 +26,7 @@ namespace ari_social_sim::rendering {
 namespace {
 
 constexpr char kFaceCascade[] = "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml";
+constexpr char kProfileCascade[] = "/usr/share/opencv4/haarcascades/haarcascade_profileface.xml";
 constexpr double kMatchIou = 0.5;
 // HOG runs on the head camera's image scaled by this, so that people 2 to 6 m away are 105 to 315
 // pixels tall and the renderer's hard edges are averaged away (INTER_AREA). Measured with the
@@ -120,6 +121,31 @@ class StudyScenes {
 
 PixelBox box_of(const cv::Rect& rect) {
   return {rect.x, rect.y, rect.width, rect.height};
+}
+
+// A detection centred on the face's box, as tall as the face within a factor of two. The profile
+// cascade's square window holds the ear and the cheek as well as the face, while a turned face's
+// box is narrow (from the head's middle to the nose's tip, about 0.6 of its height): IoU >= 0.5
+// would need a detection of nearly exactly the face's height, so profile detections are also scored
+// this way (docs/cameras.md).
+bool centred_on(const cv::Rect& detection, const PixelBox& face) {
+  const double u = detection.x + 0.5 * detection.width, v = detection.y + 0.5 * detection.height;
+  return u >= face.x && u <= face.x + face.width && v >= face.y && v <= face.y + face.height &&
+         detection.height >= 0.5 * face.height && detection.height <= 2.0 * face.height;
+}
+
+// The profile cascade was trained on faces looking one way (to the image's left): it runs on the
+// image and on its mirror, whose detections are mirrored back.
+std::vector<cv::Rect> profile_faces(cv::CascadeClassifier& cascade, const cv::Mat& grey) {
+  std::vector<cv::Rect> faces, mirrored_faces;
+  cascade.detectMultiScale(grey, faces, 1.1, 3, 0, cv::Size(24, 24));
+  cv::Mat mirror;
+  cv::flip(grey, mirror, 1);
+  cascade.detectMultiScale(mirror, mirrored_faces, 1.1, 3, 0, cv::Size(24, 24));
+  for (const cv::Rect& face : mirrored_faces) {
+    faces.emplace_back(grey.cols - face.x - face.width, face.y, face.width, face.height);
+  }
+  return faces;
 }
 
 // Detection rate in bins of one quantity.
@@ -284,6 +310,90 @@ TEST(DetectorStudy, HaarFindsFacesTurnedToTheCameraAndFiresRarelyWithoutThem) {
   std::printf("Haar: %d false detections in %d frames without a face (%.3f per image)\n",
               false_detections, empty_frames, double(false_detections) / empty_frames);
   EXPECT_LE(double(false_detections) / empty_frames, 0.05);
+}
+
+// The frontal detections that fall on someone (their centre in a person's box): on turned heads
+// when every face is turned. Those on the room (tiles, furniture) are the empty frames' count.
+int frontals_on_people(const std::vector<cv::Rect>& frontals,
+                       const std::vector<PersonLabel>& labels) {
+  return static_cast<int>(std::count_if(frontals.begin(), frontals.end(), [&](const cv::Rect& f) {
+    return std::any_of(labels.begin(), labels.end(), [&](const PersonLabel& label) {
+      return label.body_box.contains(f.x + f.width / 2, f.y + f.height / 2);
+    });
+  }));
+}
+
+// Heads turned 30 to 110 degrees from the camera (body turn; the gaze adds up to 0.2 rad), 0.8 to
+// 3 m away: the profile cascade should find the turned faces, the frontal one should not fire on
+// them.
+TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
+  StudyScenes scenes;
+  cv::CascadeClassifier frontal, profile;
+  ASSERT_TRUE(frontal.load(kFaceCascade)) << kFaceCascade << " (Debian's opencv-data)";
+  ASSERT_TRUE(profile.load(kProfileCascade)) << kProfileCascade << " (Debian's opencv-data)";
+  RateTable profile_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
+  RateTable centred_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
+  RateTable frontal_by_yaw("face yaw (deg)", {0, 25, 40, 60, 75, 90});
+  int eligible = 0, found = 0, found_centred = 0, frames = 0;
+  int turned_frames = 0, frontal_on_turned = 0;
+  for (uint64_t seed = 9000; frames < 300; ++seed, ++frames) {
+    StudyScenes::Layout layout;
+    layout.people = 1 + static_cast<int>(seed % 2);
+    layout.min_m = 0.8;
+    layout.max_m = 3.0;
+    layout.facing_rad = (seed % 4 < 2 ? 1.0 : -1.0) * 70.0 * M_PI / 180.0;
+    layout.max_turn_rad = 40.0 * M_PI / 180.0;
+    const LabelledFrame frame = scenes.frame(seed, layout);
+    const std::vector<cv::Rect> profiles = profile_faces(profile, frame.grey);
+    std::vector<cv::Rect> frontals;
+    frontal.detectMultiScale(frame.grey, frontals, 1.1, 3, 0, cv::Size(24, 24));
+    bool all_turned = true;
+    for (const PersonLabel& label : frame.labels) {
+      all_turned = all_turned && label.face_yaw_deg > 45.0;
+      if (!label.face_box || label.distance_m > 3.0) {
+        continue;
+      }
+      auto hit_by = [&label](const std::vector<cv::Rect>& faces) {
+        return std::any_of(faces.begin(), faces.end(), [&label](const cv::Rect& face) {
+          return box_of(face).iou(*label.face_box) >= kMatchIou;
+        });
+      };
+      const bool profile_hit = hit_by(profiles);
+      const bool centred_hit =
+          std::any_of(profiles.begin(), profiles.end(),
+                      [&label](const cv::Rect& face) { return centred_on(face, *label.face_box); });
+      profile_by_yaw.add(label.face_yaw_deg, profile_hit);
+      centred_by_yaw.add(label.face_yaw_deg, centred_hit);
+      frontal_by_yaw.add(label.face_yaw_deg, hit_by(frontals));
+      if (label.face_yaw_deg >= 60.0 && !label.mask) {
+        ++eligible;
+        found += profile_hit ? 1 : 0;
+        found_centred += centred_hit ? 1 : 0;
+      }
+    }
+    if (all_turned) {
+      ++turned_frames;
+      frontal_on_turned += frontals_on_people(frontals, frame.labels);
+    }
+  }
+  profile_by_yaw.print("Haar profile, IoU >= 0.5");
+  centred_by_yaw.print("Haar profile, centred");
+  frontal_by_yaw.print("Haar frontal, IoU >= 0.5");
+  const double recall = double(found) / std::max(1, eligible);
+  const double centred_recall = double(found_centred) / std::max(1, eligible);
+  const double false_rate = double(frontal_on_turned) / std::max(1, turned_frames);
+  std::printf(
+      "Haar profile: of %d faces without a mask turned 60-90 deg, 0.8-3 m, in %d frames: %d found "
+      "with IoU >= 0.5 (%.1f %%), %d centred (%.1f %%)\nHaar frontal: %d detections in %d frames "
+      "whose faces all turn more than 45 deg (%.3f per frame)\n",
+      eligible, frames, found, 100.0 * recall, found_centred, 100.0 * centred_recall,
+      frontal_on_turned, turned_frames, false_rate);
+  // What the figures reach (docs/cameras.md); the aim is 60 % of the turned faces. True profiles
+  // (75-90 degrees) are still mostly missed.
+  EXPECT_GE(eligible, 100);
+  EXPECT_GE(recall, 0.08);
+  EXPECT_GE(centred_recall, 0.24);
+  EXPECT_LE(false_rate, 0.03);
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <map>
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/rendering/image_labels.hpp"
@@ -95,6 +97,114 @@ TEST(HumanFigure, RenderedFigureIsAsTallAsTheStatureAndStridesWhenWalking) {
       // The stride opens the legs: the side view is at least 0.3 m wider than standing.
       EXPECT_GT((box.width - standing_width_px) * kDistance / model.fx, 0.3);
     }
+  }
+}
+
+// A head close up, 0.7 m in front of a level camera at its height, turned 0, 45, 90 and 180
+// degrees away from the camera. The head hides what faces away: turned, the far eye is hidden and
+// in profile the nose's tip is the face's outline; from behind no eye shows. The four views are
+// written side by side to head_views_ID.png in the test's temporary folder, to look at.
+TEST(HumanFigure, TheHeadHidesWhatFacesAwayFromTheCamera) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(320, 320, 30.0 * kDeg);
+  ViewOptions options;
+  options.labels = true;
+  options.depth = true;
+  RenderedImage image;
+  for (const uint32_t id : {3u, 4u}) {
+    std::vector<cv::Mat> views;
+    for (const double turn_deg : {0.0, 45.0, 90.0, 180.0}) {
+      PeopleFigures figures;
+      figures.update(0.0, {standing_at(id, {0.7, 0.0}, M_PI + turn_deg * kDeg)});
+      const PosedPerson& person = figures.posed()[0];
+      const Eigen::Isometry3d X_world_head = person.figure->head_frame(person.pose);
+      const Eigen::Isometry3d X_world_optical =
+          test::level_camera_facing_x({0.0, 0.0, X_world_head.translation().z()});
+      if (turn_deg == 0.0) {
+        std::printf("person %u: %zu triangles\n", id, figures.mesh().vertex_count() / 3);
+      }
+      renderer.set_dynamic_mesh(figures.mesh());
+      renderer.render(model, X_world_optical, options, image);
+      const Eigen::Isometry3d X_optical_head = X_world_optical.inverse() * X_world_head;
+      int eyes_seen = 0;
+      for (const Eigen::Vector3d& eye : person.figure->eyes()) {
+        const Eigen::Vector3d at = X_optical_head * eye;
+        const Eigen::Vector2d pixel = *model.project(at);
+        const float depth = image.depth.at<float>(cvRound(pixel.y()), cvRound(pixel.x()));
+        eyes_seen += std::abs(depth - at.z()) < 0.004 ? 1 : 0;
+      }
+      // At 45 degrees the nose hides the far iris's centre.
+      const int most = turn_deg < 10.0 ? 2 : (turn_deg < 120.0 ? 1 : 0);
+      EXPECT_LE(eyes_seen, most) << "person " << id << " turned " << turn_deg << " deg";
+      EXPECT_GE(eyes_seen, turn_deg < 60.0 ? most : 0);
+      if (turn_deg == 90.0) {
+        // Turned to the image's right: nothing of the face lies right of the nose's tip.
+        const Eigen::Vector2d tip =
+            *model.project(X_optical_head * person.figure->face_outline().back());
+        const cv::Mat face = image.labels == person.face_label;
+        const cv::Rect box = cv::boundingRect(face);
+        std::printf("person %u in profile: nose tip at u %.1f, the face reaches u %d\n", id,
+                    tip.x(), box.x + box.width - 1);
+        EXPECT_NEAR(box.x + box.width - 1, tip.x(), 3.0);
+      }
+      cv::Mat bgr;
+      cv::cvtColor(image.colour, bgr, cv::COLOR_RGB2BGR);
+      views.push_back(bgr);
+    }
+    cv::Mat strip;
+    cv::hconcat(views, strip);
+    const std::string path = ::testing::TempDir() + "head_views_" + std::to_string(id) + ".png";
+    cv::imwrite(path, strip);
+    std::printf("wrote %s\n", path.c_str());
+  }
+}
+
+// A face close up and level, with each emotion of the world: anger and distress tilt the brows and
+// joy lifts them (pixels above the eyes change), joy and distress turn the mouth's corners (pixels
+// below the nose's tip change); the world's emotion reaches the figure.
+TEST(HumanFigure, ExpressionsMoveTheBrowsAndTheMouthsCorners) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(320, 320, 30.0 * kDeg);
+  auto face_of = [&](model::Emotion emotion, const PosedPerson** posed, PeopleFigures& figures) {
+    world::HumanSnapshot human;
+    human.id = 4;
+    human.pose = {{0.7, 0.0}, M_PI};
+    human.gaze.direction_rad = M_PI;
+    human.emotion = emotion;
+    figures.update(0.0, {figure_input_of(human)});
+    *posed = &figures.posed()[0];
+    const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x(
+        {0.0, 0.0, (*posed)->figure->head_frame((*posed)->pose).translation().z()});
+    renderer.set_dynamic_mesh(figures.mesh());
+    RenderedImage image;
+    renderer.render(model, X_world_optical, ViewOptions{}, image);
+    cv::Mat grey;
+    cv::cvtColor(image.colour, grey, cv::COLOR_RGB2GRAY);
+    return std::pair{grey, X_world_optical};
+  };
+  PeopleFigures neutral_figures;
+  const PosedPerson* neutral = nullptr;
+  const auto [neutral_face, X_world_optical] =
+      face_of(model::Emotion::kNeutral, &neutral, neutral_figures);
+  const Eigen::Isometry3d X_optical_head =
+      X_world_optical.inverse() * neutral->figure->head_frame(neutral->pose);
+  const double eyes_v = model.project(X_optical_head * neutral->figure->eyes()[0])->y();
+  const double nose_v = model.project(X_optical_head * neutral->figure->face_outline().back())->y();
+  for (const model::Emotion emotion :
+       {model::Emotion::kHappy, model::Emotion::kAngry, model::Emotion::kDisturbed}) {
+    PeopleFigures figures;
+    const PosedPerson* posed = nullptr;
+    const cv::Mat face = face_of(emotion, &posed, figures).first;
+    EXPECT_EQ(posed->figure->appearance().emotion, emotion);
+    const cv::Mat changed = cv::abs(face - neutral_face) + cv::abs(neutral_face - face) > 20;
+    const int brows = cv::countNonZero(changed.rowRange(0, cvRound(eyes_v)));
+    const int mouth = cv::countNonZero(changed.rowRange(cvRound(nose_v), changed.rows));
+    std::printf("%s: %d pixels changed above the eyes, %d below the nose\n",
+                model::to_string(emotion), brows, mouth);
+    EXPECT_GE(brows, 40) << model::to_string(emotion);
+    EXPECT_EQ(mouth >= 10, emotion != model::Emotion::kAngry) << model::to_string(emotion);
   }
 }
 

@@ -43,6 +43,7 @@ struct PersonState {
   double age_years{35.0};
   model::Gender gender{model::Gender::kNonIdentified};
   bool mask{false};
+  model::Emotion emotion{model::Emotion::kNeutral};
   bool speaking{false};
 };
 

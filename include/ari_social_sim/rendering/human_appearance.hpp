@@ -13,10 +13,11 @@ struct HumanTraits {
   double age_years{35.0};
   model::Gender gender{model::Gender::kNonIdentified};
   bool mask{false};
+  model::Emotion emotion{model::Emotion::kNeutral};
 
   bool operator==(const HumanTraits& other) const {
     return id == other.id && age_years == other.age_years && gender == other.gender &&
-           mask == other.mask;
+           mask == other.mask && emotion == other.emotion;
   }
   bool operator!=(const HumanTraits& other) const { return !(*this == other); }
 };
@@ -33,6 +34,7 @@ struct HumanAppearance {
   HairStyle hair_style{HairStyle::kShort};
   bool short_sleeves{false};
   bool mask{false};
+  model::Emotion emotion{model::Emotion::kNeutral};  // what the face's brows and mouth show
   Eigen::Vector3f skin{0.88f, 0.70f, 0.57f};
   Eigen::Vector3f hair{0.24f, 0.16f, 0.10f};
   Eigen::Vector3f iris{0.25f, 0.16f, 0.10f};

@@ -23,8 +23,9 @@ struct FigurePose {
 };
 
 /// A person drawn as an articulated solid: feet, lower and upper legs, pelvis, torso, shoulders,
-/// upper arms, forearms, hands, neck and a head with ears, hair and a face (eye sockets, eyes,
-/// brows, nose, lips, a mouth that opens, a mask over nose and mouth when worn). Proportions are
+/// upper arms, forearms, hands, neck and a head: skull, jaw and chin, ears, hair and a face set
+/// into the skull (brow ridge, eye sockets, eyes, brows, cheekbones, a nose with bridge, tip and
+/// nostrils, lips, a mouth that opens, a mask over nose and mouth when worn). Proportions are
 /// shares of stature (Drillis and Contini's segment lengths) below the chin and the appearance's
 /// head above it. Every part is tessellated once, in its joint's frame; posing moves the parts.
 class HumanFigure {
@@ -43,7 +44,8 @@ class HumanFigure {
   /// The head in the map: origin at the head's centre, x out of the face, z up.
   Eigen::Isometry3d head_frame(const FigurePose& pose) const;
 
-  /// Points of the face in the head frame: hairline, chin and both cheeks. The face's box in an
+  /// Points of the face in the head frame: hairline, chin, both cheeks and the nose's tip (which
+  /// bounds a face in profile). The face's box in an
   /// image is the box around their images (the tighter box a face detector draws; what a camera
   /// sees of the face is face_surface's box, figure_regions.hpp).
   const std::vector<Eigen::Vector3d>& face_outline() const { return face_outline_; }
@@ -92,12 +94,22 @@ class HumanFigure {
   void build_head();
   // build_head's stages. An ellipsoid is (centre, diameters) in the head frame.
   using Ellipsoid = std::pair<Eigen::Vector3d, Eigen::Vector3d>;
-  /// How far in front of the head's centre its surface is at (y, z) of the head frame.
+  /// How far in front of the head's centre the skin (skull and jaw) is at (y, z) of the head frame.
   double face_front(double y, double z) const;
+  /// Adds a feature set into the face at (y, z): an ellipsoid of `size` (across the skin's normal,
+  /// across the face, up), its axis along the skin's normal there, standing `rise` out of the skin.
+  /// `roll_rad` turns it about the normal: positive raises its end towards the figure's left.
+  void add_face_feature(Joint joint, double y, double z, const Eigen::Vector3d& size, double rise,
+                        const Eigen::Vector3f& colour, double roll_rad = 0.0);
+  void add_skull_and_jaw();
   std::vector<Ellipsoid> add_hair();  ///< The hair's ellipsoids, which hide the skin inside them.
-  void add_eyes_and_brows();
+  void add_ears();
+  void add_brows_and_cheekbones();
+  void add_eyes();
   void add_mask();
-  void add_nose_and_mouth();
+  void add_nose();
+  void add_mouth();
+  void add_mouth_corners();
   void collect_face_surface(const std::vector<Ellipsoid>& hair);
 
   HumanAppearance look_;
@@ -108,6 +120,7 @@ class HumanFigure {
   double hip_joint_y_{0.0}, shoulder_joint_y_{0.0};
   Eigen::Vector3d head_radii_{Eigen::Vector3d::Zero()};
   std::vector<Part> parts_;
+  std::vector<Ellipsoid> skin_volumes_;  // skull and jaw: features are set into them
   std::vector<Eigen::Vector3d> face_outline_;
   std::vector<SurfacePoint> face_surface_;
   std::array<Eigen::Vector3d, 2> eyes_{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
