@@ -24,25 +24,18 @@ bool named(const model::StaticObject& object, const char* word) {
   return object.name.find(word) != std::string::npos;
 }
 
+// A solid with fewer facets around its axis: the parts are small.
 RenderPrimitive part(PrimitiveShape shape, const Eigen::Isometry3d& X_world_part,
                      const Eigen::Vector3d& size, const Eigen::Vector3f& colour,
                      Surface surface = Surface::kMatte) {
-  RenderPrimitive primitive;
-  primitive.shape = shape;
-  primitive.X_world_shape = X_world_part;
-  primitive.size = size;
-  primitive.colour = colour;
-  primitive.surface = surface;
+  RenderPrimitive primitive = solid(shape, X_world_part, size, colour, surface);
   primitive.round_segments = 16;
   return primitive;
 }
 
-// The object's frame at height z: its footprint's centre and yaw.
-Eigen::Isometry3d object_frame(const model::StaticObject& object, double z) {
-  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-  X.translation() = Eigen::Vector3d(object.pose.position.x(), object.pose.position.y(), z);
-  X.linear() = Eigen::AngleAxisd(object.pose.theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  return X;
+// The object's frame on the floor: its footprint's centre and yaw.
+Eigen::Isometry3d object_frame(const model::StaticObject& object) {
+  return upright_pose(object.pose.position, 0.0, object.pose.theta);
 }
 
 Eigen::Isometry3d offset(const Eigen::Isometry3d& X, const Eigen::Vector3d& in_frame) {
@@ -98,7 +91,7 @@ std::vector<RenderPrimitive> chairs(const model::StaticObject& object, double he
   const double depth = std::abs(back.dot(object.size));
   const int seats = std::max(1, static_cast<int>(std::lround(length / kSeatPitchM)));
   const double pitch = length / seats;
-  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const Eigen::Isometry3d X = object_frame(object);
   const Eigen::Vector3d along3(along.x(), along.y(), 0.0);
   const Eigen::Vector3d back3(back.x(), back.y(), 0.0);
   auto extent = [&](double along_m, double back_m, double z_m) {
@@ -135,7 +128,7 @@ std::vector<RenderPrimitive> table(const model::StaticObject& object, double hei
   const bool round = object.type == model::ShapeType::kCircle;
   const Eigen::Vector2d top =
       round ? Eigen::Vector2d::Constant(2.0 * object.radius_m) : object.size;
-  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const Eigen::Isometry3d X = object_frame(object);
   const PrimitiveShape shape = round ? PrimitiveShape::kCylinder : PrimitiveShape::kBox;
   return {part(shape, offset(X, {0, 0, height_m - 0.02}), {top.x(), top.y(), 0.04}, kTableTopColour,
                Surface::kWood),
@@ -148,7 +141,7 @@ std::vector<RenderPrimitive> table(const model::StaticObject& object, double hei
 // A pot and the foliage above it, about 1.2 m tall.
 std::vector<RenderPrimitive> plant(const model::StaticObject& object) {
   const double r = object.radius_m;
-  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const Eigen::Isometry3d X = object_frame(object);
   return {
       part(PrimitiveShape::kCylinder, offset(X, {0, 0, 0.2}), {1.2 * r, 1.2 * r, 0.4}, kPotColour),
       part(PrimitiveShape::kSphere, offset(X, {0, 0, 0.8}), {2.0 * r, 2.0 * r, 0.9}, kLeafColour)};
@@ -156,7 +149,7 @@ std::vector<RenderPrimitive> plant(const model::StaticObject& object) {
 
 // The cabinet and its bottle.
 std::vector<RenderPrimitive> dispenser(const model::StaticObject& object, double height_m) {
-  const Eigen::Isometry3d X = object_frame(object, 0.0);
+  const Eigen::Isometry3d X = object_frame(object);
   const double body = std::max(height_m, 1.0);
   const double bottle = 0.6 * std::min(object.size.x(), object.size.y());
   return {part(PrimitiveShape::kBox, offset(X, {0, 0, 0.5 * body}),

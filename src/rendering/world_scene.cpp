@@ -15,23 +15,6 @@ const Eigen::Vector3f kCeilingColour{0.93f, 0.93f, 0.91f};
 const Eigen::Vector3f kLampColour{1.0f, 0.98f, 0.94f};
 constexpr double kSlabThickness = 0.02;  // floor, ceiling and lamp panels
 
-Eigen::Isometry3d planar(const Eigen::Vector2d& xy, double z, double yaw) {
-  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-  X.translation() = Eigen::Vector3d(xy.x(), xy.y(), z);
-  X.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  return X;
-}
-
-RenderPrimitive solid(PrimitiveShape shape, const Eigen::Isometry3d& X_world_shape,
-                      const Eigen::Vector3d& size, const Eigen::Vector3f& colour) {
-  RenderPrimitive primitive;
-  primitive.shape = shape;
-  primitive.X_world_shape = X_world_shape;
-  primitive.size = size;
-  primitive.colour = colour;
-  return primitive;
-}
-
 // The top of the tallest wall: where the ceiling rests. None when the world has no wall.
 double ceiling_height(const model::WorldDescription& world, const SceneStyle& style) {
   double top = 0.0;
@@ -46,12 +29,11 @@ double ceiling_height(const model::WorldDescription& world, const SceneStyle& st
 // A ceiling slab over the whole world at `height` and lamp panels just under it, on a grid.
 void add_ceiling(const model::WorldDescription& world, const SceneStyle& style, double height,
                  std::vector<RenderPrimitive>& out) {
-  RenderPrimitive ceiling =
+  out.push_back(
       solid(PrimitiveShape::kBox,
-            planar(world.origin + 0.5 * world.size, height + 0.5 * kSlabThickness, 0.0),
-            Eigen::Vector3d(world.size.x(), world.size.y(), kSlabThickness), kCeilingColour);
-  ceiling.surface = Surface::kCeiling;
-  out.push_back(ceiling);
+            upright_pose(world.origin + 0.5 * world.size, height + 0.5 * kSlabThickness, 0.0),
+            Eigen::Vector3d(world.size.x(), world.size.y(), kSlabThickness), kCeilingColour,
+            Surface::kCeiling));
   const int columns = std::max(1, static_cast<int>(world.size.x() / style.lamp_spacing_m));
   const int rows = std::max(1, static_cast<int>(world.size.y() / style.lamp_spacing_m));
   for (int i = 0; i < columns; ++i) {
@@ -59,12 +41,10 @@ void add_ceiling(const model::WorldDescription& world, const SceneStyle& style, 
       const Eigen::Vector2d centre =
           world.origin +
           Eigen::Vector2d((i + 0.5) * world.size.x() / columns, (j + 0.5) * world.size.y() / rows);
-      RenderPrimitive lamp =
-          solid(PrimitiveShape::kBox, planar(centre, height - 0.5 * kSlabThickness, 0.0),
+      out.push_back(
+          solid(PrimitiveShape::kBox, upright_pose(centre, height - 0.5 * kSlabThickness, 0.0),
                 Eigen::Vector3d(style.lamp_size_m.x(), style.lamp_size_m.y(), kSlabThickness),
-                kLampColour);
-      lamp.surface = Surface::kLamp;
-      out.push_back(lamp);
+                kLampColour, Surface::kLamp));
     }
   }
 }
@@ -75,11 +55,10 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
                                                   const SceneStyle& style) {
   std::vector<RenderPrimitive> out;
   // The floor is a thin slab whose top face is z = 0.
-  RenderPrimitive floor = solid(
-      PrimitiveShape::kBox, planar(world.origin + 0.5 * world.size, -0.5 * kSlabThickness, 0.0),
-      Eigen::Vector3d(world.size.x(), world.size.y(), kSlabThickness), kFloorColour);
-  floor.surface = Surface::kFloor;
-  out.push_back(floor);
+  out.push_back(solid(PrimitiveShape::kBox,
+                      upright_pose(world.origin + 0.5 * world.size, -0.5 * kSlabThickness, 0.0),
+                      Eigen::Vector3d(world.size.x(), world.size.y(), kSlabThickness), kFloorColour,
+                      Surface::kFloor));
   const double ceiling = ceiling_height(world, style);
   if (style.ceiling && ceiling > 0.0) {
     add_ceiling(world, style, ceiling, out);
@@ -100,24 +79,24 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
         continue;
       }
     }
-    const Eigen::Isometry3d X = planar(object.pose.position, 0.5 * height, object.pose.theta);
-    const size_t first = out.size();
+    const Eigen::Isometry3d X = upright_pose(object.pose.position, 0.5 * height, object.pose.theta);
     switch (object.type) {
       case model::ShapeType::kWall:
       case model::ShapeType::kBox:
         out.push_back(solid(PrimitiveShape::kBox, X,
-                            Eigen::Vector3d(object.size.x(), object.size.y(), height), colour));
+                            Eigen::Vector3d(object.size.x(), object.size.y(), height), colour,
+                            surface));
         break;
       case model::ShapeType::kCircle:
         out.push_back(solid(PrimitiveShape::kCylinder, X,
                             Eigen::Vector3d(2.0 * object.radius_m, 2.0 * object.radius_m, height),
-                            colour));
+                            colour, surface));
         break;
       case model::ShapeType::kPolygon: {
         // Polygon vertices are in the map frame; the prism's frame sits on their centroid.
         RenderPrimitive prism =
-            solid(PrimitiveShape::kPrism, planar(object.pose.position, 0.5 * height, 0.0),
-                  Eigen::Vector3d(1.0, 1.0, height), colour);
+            solid(PrimitiveShape::kPrism, upright_pose(object.pose.position, 0.5 * height, 0.0),
+                  Eigen::Vector3d(1.0, 1.0, height), colour, surface);
         for (const Eigen::Vector2d& point : object.points) {
           prism.outline.emplace_back(point - object.pose.position);
         }
@@ -125,7 +104,6 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
         break;
       }
     }
-    out[first].surface = surface;
   }
   return out;
 }

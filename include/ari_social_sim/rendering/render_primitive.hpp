@@ -41,4 +41,25 @@ struct RenderPrimitive {
   int round_segments{32};  // facets around a cylinder's or ellipsoid's axis; small parts need fewer
 };
 
+/// A pose upright on the floor plan: at (xy, z), turned by `yaw` about world z.
+inline Eigen::Isometry3d upright_pose(const Eigen::Vector2d& xy, double z, double yaw) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.translation() = Eigen::Vector3d(xy.x(), xy.y(), z);
+  X.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return X;
+}
+
+/// A solid of one colour and surface.
+inline RenderPrimitive solid(PrimitiveShape shape, const Eigen::Isometry3d& X_world_shape,
+                             const Eigen::Vector3d& size, const Eigen::Vector3f& colour,
+                             Surface surface = Surface::kMatte) {
+  RenderPrimitive primitive;
+  primitive.shape = shape;
+  primitive.X_world_shape = X_world_shape;
+  primitive.size = size;
+  primitive.colour = colour;
+  primitive.surface = surface;
+  return primitive;
+}
+
 }  // namespace ari_social_sim::rendering

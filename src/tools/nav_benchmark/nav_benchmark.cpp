@@ -659,9 +659,10 @@ void keep_earlier_records(Benchmark& benchmark) {
   benchmark.records = records_of(journal, plan_of(benchmark.options), "--resume");
 }
 
-// --merge-shards N: the records of shard K, checked to be all of that shard's with these options.
-// Throws core::ConfigError naming the file.
-std::vector<EpisodeRecord> shard_records(const Options& options, unsigned index) {
+// --merge-shards N: the records of shard K, checked to be all of that shard's with these options,
+// added to `by_key` under their runs' keys. Throws core::ConfigError naming the file.
+void add_shard_records(const Options& options, unsigned index,
+                       std::map<std::string, EpisodeRecord>& by_key) {
   Options shard = options;
   shard.shard_index = index;
   shard.shard_count = options.merge_shards;
@@ -684,17 +685,16 @@ std::vector<EpisodeRecord> shard_records(const Options& options, unsigned index)
                             std::to_string(plan.size()) + " records, got " +
                             std::to_string(records.size()));
   }
-  return records;
+  for (size_t k = 0; k < plan.size(); ++k) {
+    by_key.emplace(plan[k].key(), std::move(records[k]));
+  }
 }
 
 // --merge-shards N: every shard's records in the order one process runs them.
 std::vector<EpisodeRecord> merged_records(const Options& options) {
   std::map<std::string, EpisodeRecord> by_key;
   for (unsigned k = 1; k <= options.merge_shards; ++k) {
-    for (EpisodeRecord& record : shard_records(options, k)) {
-      by_key.emplace(record.type + "/" + std::to_string(record.index) + "/" + record.controller,
-                     std::move(record));
-    }
+    add_shard_records(options, k, by_key);
   }
   std::vector<EpisodeRecord> records;
   for (const PlannedRun& run : plan_of(options)) {
