@@ -16,7 +16,7 @@ namespace {
 const std::vector<std::string> kConditionTypes = {
     "distance_below", "distance_above",  "speech_finished",   "goal_reached", "navigation_failed",
     "time_elapsed",   "perceived_group", "dialogue_finished", "heard",        "floor_free",
-    "addressed"};
+    "addressed",      "not_understood"};
 const std::vector<std::string> kActionTypes = {"say",
                                                "set_goal",
                                                "approach",
@@ -236,6 +236,8 @@ class ScriptReader {
       condition = DialogueFinishedCondition{};
     } else if (type == "heard") {
       condition = HeardCondition{read_text(entry, "act")};
+    } else if (type == "not_understood") {
+      condition = NotUnderstoodCondition{};
     } else if (type == "floor_free") {
       condition = FloorFreeCondition{read_human(entry, "person")};
     } else if (type == "addressed") {

@@ -57,8 +57,9 @@ ScriptInterfaces Script::interfaces() const {
             uses.perceived_groups || std::holds_alternative<PerceivedGroupCondition>(condition);
         uses.dialogue =
             uses.dialogue || std::holds_alternative<DialogueFinishedCondition>(condition);
-        uses.speech_recognition =
-            uses.speech_recognition || std::holds_alternative<HeardCondition>(condition);
+        uses.speech_recognition = uses.speech_recognition ||
+                                  std::holds_alternative<HeardCondition>(condition) ||
+                                  std::holds_alternative<NotUnderstoodCondition>(condition);
       }
     }
   }

@@ -5,6 +5,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/core/rng_streams.hpp"
+#include "ari_social_sim/dialogue/exemplar_index.hpp"
 
 namespace ari_social_sim::scenario {
 namespace {
@@ -61,6 +62,11 @@ bool ari_addressed(const world::WorldSnapshot& world) {
                return group.robot_joining == world.ari->id && group.addressee == world.ari->id &&
                       group.speaker != model::kNoObject && group.speaker != world.ari->id;
              });
+}
+
+// A recogniser's empty final (noise it decoded to nothing) is no utterance to answer.
+bool has_words(const std::string& transcript) {
+  return !dialogue::normalised_words(transcript).empty();
 }
 
 }  // namespace
@@ -144,6 +150,8 @@ void ScriptRunner::update(const Observations& observations, Commands& commands) 
   for (const perception::VoiceTranscript& transcript : observations.transcripts) {
     if (const std::optional<std::string> act = heard_lines_.act_of(transcript.text)) {
       heard_in_state_.push_back(*act);
+    } else if (has_words(transcript.text)) {
+      not_understood_in_state_ = true;
     }
   }
   addressed_in_state_ = addressed_in_state_ || ari_addressed(observations.world);
@@ -219,6 +227,7 @@ void ScriptRunner::enter(size_t state, const Observations& observations, Command
   state_enter_s_ = now_s_;
   finished_in_state_.clear();
   heard_in_state_.clear();
+  not_understood_in_state_ = false;
   addressed_in_state_ = false;
   record_visit(scenario_.script.states[state].name);
   run(scenario_.script.states[state].on_enter, observations, commands);
@@ -271,6 +280,7 @@ bool ScriptRunner::holds(const Condition& condition, const Observations& observa
           [&](const DialogueFinishedCondition&) { return dialogue_end_.has_value(); },
           [&](const FloorFreeCondition& c) { return floor_free(c.person, world); },
           [&](const AddressedCondition&) { return addressed_in_state_; },
+          [&](const NotUnderstoodCondition&) { return not_understood_in_state_; },
           [&](const HeardCondition& c) {
             return std::any_of(heard_in_state_.begin(), heard_in_state_.end(),
                                [&](const std::string& act) { return act_matches(c.act, act); });

@@ -2,7 +2,9 @@
 """rostest, must-show 2 of issue 30 (group_discussion_audio.test): group_discussion succeeds
 with ARI hearing through its microphone array and pocketsphinx. The final transcripts come from
 speech_recognition_node's voices only (no simulated voice is published), one of them shares most
-of its words with Irene's question, and ARI answers the time only after that transcript arrived."""
+of its words with Irene's question, and ARI answers the time only after that transcript arrived.
+When pocketsphinx gives words ARI cannot take for a line, ARI asks Irene to say it again
+(`not_understood`) and she asks "What is the time?", which counts as her question too."""
 import threading
 import unittest
 

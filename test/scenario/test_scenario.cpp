@@ -36,17 +36,18 @@ void expect_rejected(const std::string& script, const std::vector<std::string>& 
   world::test::expect_config_error([&] { load_scenario_file(path); }, path, fragments);
 }
 
-TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStatesAfterLooking) {
+// The seed's six states after looking, and a request to repeat what ARI did not understand.
+TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStatesAfterLookingAndARepair) {
   const Scenario s = load_scenario_file(kSource + "/scenarios/group_discussion.yaml");
   EXPECT_EQ(s.name, "group_discussion");
   EXPECT_EQ(s.scene.humans.size(), 2u);
   ASSERT_TRUE(s.scene.ari.has_value());
   EXPECT_DOUBLE_EQ(s.scene.ari->pose.position.x(), 1.0);
   EXPECT_DOUBLE_EQ(s.script.time_limit_s, 120.0);
-  ASSERT_EQ(s.script.states.size(), 7u);
+  ASSERT_EQ(s.script.states.size(), 8u);
   EXPECT_EQ(s.script.start, "look");
-  const std::vector<std::string> names = {"look",        "grouping",  "ask_help", "ask_time",
-                                          "answer_time", "thank_ari", "leave"};
+  const std::vector<std::string> names = {"look",      "grouping",    "ask_help",  "ask_time",
+                                          "ask_again", "answer_time", "thank_ari", "leave"};
   for (size_t i = 0; i < names.size(); ++i) {
     EXPECT_EQ(s.script.states[i].name, names[i]);
   }
@@ -66,7 +67,7 @@ TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStatesAfterLooking) {
   EXPECT_EQ(grouping.transitions[0].next, "ask_help");
   const auto& failed = std::get<StopAction>(grouping.transitions[1].actions[0]);
   EXPECT_FALSE(failed.success);
-  const auto& home = std::get<DistanceCondition>(s.script.states[6].transitions[0].when[0]);
+  const auto& home = std::get<DistanceCondition>(s.script.states[7].transitions[0].when[0]);
   EXPECT_FALSE(home.to_agent.has_value());
   EXPECT_EQ(home.to_point, Eigen::Vector2d(1.0, 5.0));
   EXPECT_DOUBLE_EQ(home.distance_m, 0.5);
@@ -78,7 +79,7 @@ TEST(Scenario, EveryShippedScenarioLoads) {
     const char* name;
     size_t humans, states;
     bool dialogue;
-  } shipped[] = {{"group_discussion", 2, 7, false},
+  } shipped[] = {{"group_discussion", 2, 8, false},
                  {"waiting_room", 6, 4, true},
                  {"corridor", 6, 1, false},
                  {"join_group", 0, 4, false},
@@ -133,14 +134,16 @@ TEST(Scenario, EveryConditionAndActionTypeReads) {
       "            - {type: heard, act: 'greet*'}\n"
       "            - {type: floor_free, person: 10}\n"
       "            - {type: addressed}\n"
+      "            - {type: not_understood}\n"
       "          do: [{type: stop, success: true, reason: done}]\n"
       "        - when: []\n"
       "          next: a\n"));
   const State& a = s.script.states[0];
   EXPECT_EQ(a.on_enter.size(), 11u);
-  EXPECT_EQ(a.transitions[0].when.size(), 10u);
+  EXPECT_EQ(a.transitions[0].when.size(), 11u);
   EXPECT_EQ(std::get<FloorFreeCondition>(a.transitions[0].when[8]).person, 10u);
   EXPECT_TRUE(std::holds_alternative<AddressedCondition>(a.transitions[0].when[9]));
+  EXPECT_TRUE(std::holds_alternative<NotUnderstoodCondition>(a.transitions[0].when[10]));
   EXPECT_EQ(std::get<HeardCondition>(a.transitions[0].when[7]).act, "greet*");
   EXPECT_TRUE(a.transitions[0].next.empty());
   EXPECT_TRUE(a.transitions[1].when.empty());
@@ -217,6 +220,8 @@ TEST(Scenario, ConditionErrorsNameTheCondition) {
   expect_rejected(when("{type: perceived_group, members: [10, bob]}"),
                   {at + ".members", "ari or human ids", "'bob'"});
   expect_rejected(when("{type: heard}"), {at + ".act", "required"});
+  expect_rejected(when("{type: not_understood, act: 'QUESTION:TIME'}"),
+                  {at, "unknown field(s) act"});
   expect_rejected(when("{type: floor_free}"), {at + ".person", "required"});
   expect_rejected(when("{type: floor_free, person: 77}"), {at + ".person", "77"});
   // No human of the script says it: the state would wait for ever.

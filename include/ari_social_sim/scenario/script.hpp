@@ -66,6 +66,11 @@ struct HeardCondition {
   std::string act;
 };
 
+/// ARI's speech recognition gave, after the current state was entered, a final transcript with
+/// words that it could take for no human line of the script: what a dialogue system answers with
+/// a request to repeat.
+struct NotUnderstoodCondition {};
+
 /// Nobody of `person`'s conversation group holds the floor (the world state's groups[].speaker;
 /// backchannels take no floor): a pause to enter in. For a person in no group: the person is
 /// silent.
@@ -77,10 +82,10 @@ struct FloorFreeCondition {
 /// ARI (the world state's groups[].addressee).
 struct AddressedCondition {};
 
-using Condition =
-    std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
-                 NavigationFailedCondition, TimeElapsedCondition, PerceivedGroupCondition,
-                 DialogueFinishedCondition, HeardCondition, FloorFreeCondition, AddressedCondition>;
+using Condition = std::variant<DistanceCondition, SpeechFinishedCondition, GoalReachedCondition,
+                               NavigationFailedCondition, TimeElapsedCondition,
+                               PerceivedGroupCondition, DialogueFinishedCondition, HeardCondition,
+                               NotUnderstoodCondition, FloorFreeCondition, AddressedCondition>;
 
 // ---- Actions: what entering a state or firing a transition does (section 5) ----
 

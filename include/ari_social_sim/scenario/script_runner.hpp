@@ -108,6 +108,7 @@ class ScriptRunner {
   std::vector<FinishedAct> finished_in_state_;  // utterances that ended since entering the state
   HeardLines heard_lines_;
   std::vector<std::string> heard_in_state_;  // acts ARI heard since entering the state
+  bool not_understood_in_state_{false};      // and words it took for no line
   bool addressed_in_state_{false};           // a member spoke to ARI since entering the state
   std::vector<SayAction> ari_says_;  // ARI's utterances asked for and not yet heard, in order
   size_t lines_labelled_{0};
