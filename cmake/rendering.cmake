@@ -68,6 +68,12 @@ if(CATKIN_ENABLE_TESTING)
     SOURCES test/rendering/test_detector_study.cpp
     LIBRARIES ari_rendering opencv_objdetect)
   target_compile_definitions(test_detector_study PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  # detector_study: the same detectors on the shipped scenarios' images (docs/cameras.md, "Stock
+  # detectors in the shipped scenarios"); a program run by hand, about an hour on one core.
+  add_executable(detector_study bench/detector_study.cpp)
+  target_link_libraries(detector_study ari_engine ari_rendering opencv_objdetect)
+  target_compile_definitions(detector_study PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  set_target_properties(detector_study PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
 endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)

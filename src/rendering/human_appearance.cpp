@@ -87,7 +87,9 @@ HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed) {
   look.build = std::clamp(rng.normal(1.0, 0.06), 0.88, 1.15);
   look.female_build = traits.gender == model::Gender::kFemale ||
                       (traits.gender == model::Gender::kNonIdentified && rng.bernoulli(0.5));
-  look.skin = pick(kSkinTones, rng);
+  const size_t tone = rng.uniform_index(kSkinTones.size());
+  look.skin = kSkinTones[tone];
+  look.skin_tone = static_cast<int>(tone) + 1;
   // Greying starts in the forties and is common after 60.
   const double grey_probability = std::clamp((traits.age_years - 40.0) / 35.0, 0.0, 0.9);
   look.hair = rng.bernoulli(grey_probability) ? kGreyHair : pick(kHairColours, rng);

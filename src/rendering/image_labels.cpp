@@ -88,6 +88,7 @@ std::vector<PersonLabel> label_people(Renderer& renderer, const PinholeModel& mo
     }
     label.distance_m = (camera.head<2>() - person.pose.body.position).norm();
     label.mask = person.figure->appearance().mask;
+    label.skin_tone = person.figure->appearance().skin_tone;
     out.push_back(label);
   }
   return out;

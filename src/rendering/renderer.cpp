@@ -1,11 +1,13 @@
 #include "ari_social_sim/rendering/renderer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "ari_social_sim/rendering/render_mesh.hpp"
 #include "egl_context.hpp"
@@ -15,9 +17,9 @@
 namespace ari_social_sim::rendering {
 namespace {
 
-// Shading is deliberately plain (ambient, one directional light, a fill light at the camera):
-// enough for people, walls and furniture to be told apart in images and by detectors, cheap on
-// llvmpipe.
+// Shading is deliberately plain, cheap on llvmpipe: outdoors ambient, a sun and a fill light at
+// the camera; indoors (a scene with lamps) the ceiling's lamps as the light, with their fall-off,
+// a little bounced light and the fill light.
 constexpr const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -55,6 +57,9 @@ layout(location = 0) out vec4 out_colour;
 layout(location = 1) out float out_depth;
 layout(location = 2) out float out_label;
 uniform vec3 camera_position;
+// The lamps nearest the camera (Renderer::Impl::kMaxLamps), centres of their emitting faces.
+uniform int lamp_count;
+uniform vec3 lamps[32];
 const vec3 sun = normalize(vec3(0.35, 0.55, 1.0));
 // Surface codes (rendering::Surface).
 const int kFloor = 1;
@@ -104,6 +109,41 @@ float texture_of(int surface, vec3 p) {
   return 1.0;
 }
 
+// Light from the ceiling's lamp panels at p with normal n: each a downward Lambertian emitter
+// (intensity falling with the cosine from straight down), irradiance with the cosine of incidence
+// over the squared distance. `towards` gets the mean direction the light comes from.
+float lamp_light(vec3 p, vec3 n, out vec3 towards) {
+  float light = 0.0;
+  towards = vec3(0.0);
+  for (int i = 0; i < lamp_count; ++i) {
+    vec3 d = lamps[i] - p;
+    float distance2 = max(dot(d, d), 0.04);
+    vec3 l = d * inversesqrt(distance2);
+    float arriving = max(l.z, 0.0) / distance2;
+    light += arriving * max(dot(n, l), 0.0);
+    towards += arriving * l;
+  }
+  towards = normalize(towards + vec3(0.0, 0.0, 1e-6));
+  return light;
+}
+
+// Indoors: the lamps scaled so that a face 1 m from a lamp's foot and 0.9 m under it (about 0.27
+// of a unit emitter) is about as lit as the sun and sky lit it outdoors, plus bounced light and
+// the fill light. Skin's highlight is the lamps' (Blinn-Phong from their mean direction), so
+// foreheads, noses and cheekbones catch it from above as they do under a ceiling.
+float indoor_lighting(int surface, vec3 n, vec3 to_camera, float fill, out float highlight) {
+  vec3 towards;
+  float lamp = 2.4 * lamp_light(v_world, n, towards);
+  highlight = 0.0;
+  if (surface == kSkin) {
+    highlight = 0.3 * min(lamp, 1.0) * pow(max(dot(n, normalize(towards + to_camera)), 0.0), 16.0);
+  }
+  if (surface == kCeiling) {
+    return 0.3 + 0.15 * fill;
+  }
+  return 0.12 + lamp + 0.2 * fill;
+}
+
 void main() {
   int surface = int(v_surface + 0.5);
   vec3 c = v_colour * texture_of(surface, v_world);
@@ -120,11 +160,17 @@ void main() {
   vec3 n = normalize(v_normal);
   vec3 to_camera = normalize(camera_position - v_world);
   float fill = max(dot(n, to_camera), 0.0);
-  float lighting = surface == kCeiling
-                       ? 0.45 + 0.15 * fill
-                       : 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
-  // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
-  float highlight = surface == kSkin ? 0.22 * pow(fill, 12.0) : 0.0;
+  float highlight;
+  float lighting;
+  if (lamp_count > 0) {
+    lighting = indoor_lighting(surface, n, to_camera, fill, highlight);
+  } else {
+    lighting = surface == kCeiling
+                   ? 0.45 + 0.15 * fill
+                   : 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
+    // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
+    highlight = surface == kSkin ? 0.22 * pow(fill, 12.0) : 0.0;
+  }
   // Colours are display (sRGB) values and light adds up linearly: shade in linear terms.
   out_colour = vec4(min(c * pow(lighting, 1.0 / 2.2) + highlight, vec3(1.0)), 1.0);
 }
@@ -227,6 +273,11 @@ struct Renderer::Impl {
   GLint world_to_optical_location{-1};
   GLint projection_location{-1};
   GLint camera_position_location{-1};
+  GLint lamp_count_location{-1};
+  GLint lamps_location{-1};
+  // The shader's lamp array: the nearest lamps light a view, the farther ones add little.
+  static constexpr size_t kMaxLamps = 32;
+  std::vector<Eigen::Vector3f> lamps;  // every lamp of the static scene
   GpuMesh static_mesh;
   GpuMesh dynamic_mesh;
   // One framebuffer per image size: a rig alternates between cameras of different sizes.
@@ -240,6 +291,20 @@ struct Renderer::Impl {
       target = std::make_unique<MultisampleTarget>(width, height, samples);
     }
     return *target;
+  }
+
+  void upload_nearest_lamps(const Eigen::Vector3f& camera) {
+    static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "glUniform3fv reads packed xyz");
+    std::vector<Eigen::Vector3f> nearest = lamps;
+    const size_t count = std::min(nearest.size(), kMaxLamps);
+    std::partial_sort(nearest.begin(), nearest.begin() + count, nearest.end(),
+                      [&camera](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+                        return (a - camera).squaredNorm() < (b - camera).squaredNorm();
+                      });
+    glUniform1i(lamp_count_location, static_cast<GLint>(count));
+    if (count > 0) {
+      glUniform3fv(lamps_location, static_cast<GLsizei>(count), nearest.front().data());
+    }
   }
 
   Framebuffer& framebuffer_of(int width, int height) {
@@ -260,6 +325,8 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->world_to_optical_location = glGetUniformLocation(impl_->program, "world_to_optical");
   impl_->projection_location = glGetUniformLocation(impl_->program, "projection");
   impl_->camera_position_location = glGetUniformLocation(impl_->program, "camera_position");
+  impl_->lamp_count_location = glGetUniformLocation(impl_->program, "lamp_count");
+  impl_->lamps_location = glGetUniformLocation(impl_->program, "lamps");
   impl_->static_mesh.create();
   impl_->dynamic_mesh.create();
 }
@@ -281,6 +348,15 @@ const std::string& Renderer::device_name() const {
 void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primitives) {
   impl_->context.make_current();
   impl_->static_mesh.upload(mesh_of(primitives));
+  impl_->lamps.clear();
+  for (const RenderPrimitive& primitive : primitives) {
+    if (primitive.surface == Surface::kLamp) {
+      // The panel's lower face, which gives the light.
+      impl_->lamps.push_back(
+          (primitive.X_world_shape * Eigen::Vector3d(0.0, 0.0, -0.5 * primitive.size.z()))
+              .cast<float>());
+    }
+  }
 }
 
 void Renderer::set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives) {
@@ -335,6 +411,7 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   glUniformMatrix4fv(impl_->projection_location, 1, GL_FALSE, projection.data());
   const Eigen::Vector3f camera_position = X_world_optical.translation().cast<float>();
   glUniform3fv(impl_->camera_position_location, 1, camera_position.data());
+  impl_->upload_nearest_lamps(camera_position);
   if (options.only_dynamic) {
     impl_->dynamic_mesh.draw(static_cast<GLint>(options.only_dynamic->first),
                              static_cast<GLsizei>(options.only_dynamic->count));

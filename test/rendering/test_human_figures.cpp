@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <set>
 #include <string>
 
 #include "ari_social_sim/core/angles.hpp"
@@ -40,12 +41,23 @@ TEST(HumanAppearance, TheSameTraitsAndSeedGiveTheSameLookAndStaturesFollowTheSur
        {std::pair{model::Gender::kMale, 1.75}, std::pair{model::Gender::kFemale, 1.62}}) {
     double sum = 0.0, squares = 0.0;
     std::map<std::array<float, 3>, int> tones;
+    std::map<int, std::set<float>> luma_by_label;  // the skin_tone label, for recall by tone
     constexpr int kPeople = 3000;
     for (uint32_t id = 0; id < kPeople; ++id) {
       const HumanAppearance look = appearance_of({id, 35.0, gender, false}, 11);
       sum += look.height_m;
       squares += look.height_m * look.height_m;
       ++tones[{look.skin.x(), look.skin.y(), look.skin.z()}];
+      luma_by_label[look.skin_tone].insert(look.skin.dot(Eigen::Vector3f(0.299f, 0.587f, 0.114f)));
+    }
+    // Labels 1 to 6, one colour each, each darker than the one before.
+    ASSERT_EQ(luma_by_label.size(), 6u);
+    EXPECT_EQ(luma_by_label.begin()->first, 1);
+    float lighter = 1.0f;
+    for (const auto& [label, lumas] : luma_by_label) {
+      ASSERT_EQ(lumas.size(), 1u) << label;
+      EXPECT_LT(*lumas.begin(), lighter) << label;
+      lighter = *lumas.begin();
     }
     const double average = sum / kPeople;
     const double spread = std::sqrt(squares / kPeople - average * average);

@@ -36,7 +36,8 @@ void expect_rejected(const std::string& script, const std::vector<std::string>& 
   world::test::expect_config_error([&] { load_scenario_file(path); }, path, fragments);
 }
 
-// The seed's six states after looking, and a request to repeat what ARI did not understand.
+// D6.4's GroupDiscussionScript: six states after looking, and a request to repeat what ARI did
+// not understand.
 TEST(Scenario, GroupDiscussionReadsAsTheSeedsSixStatesAfterLookingAndARepair) {
   const Scenario s = load_scenario_file(kSource + "/scenarios/group_discussion.yaml");
   EXPECT_EQ(s.name, "group_discussion");

@@ -79,9 +79,11 @@ for a in data["annotations"]:
         fail("annotation %d: bbox %r outside %dx%d" % (a["id"], a["bbox"], image["width"], image["height"]))
     if a["iscrowd"] != 0 or a["area"] != w * h or not 0 <= a["occlusion"] <= 1:
         fail("annotation %d: %r" % (a["id"], a))
-    for key in ("person_id", "truncated", "distance_m", "mask"):
+    for key in ("person_id", "truncated", "distance_m", "mask", "skin_tone"):
         if key not in a:
             fail("annotation %d: no %s" % (a["id"], key))
+    if a["skin_tone"] not in range(1, 7):
+        fail("annotation %d: skin_tone %r" % (a["id"], a["skin_tone"]))
     if (a["category_id"] == 2) != ("face_yaw_deg" in a):
         fail("annotation %d: face_yaw_deg on faces only" % a["id"])
 print("images %d persons %d faces %d" % (len(images), counts[1], counts[2]))

@@ -36,6 +36,7 @@ struct HumanAppearance {
   bool mask{false};
   model::Emotion emotion{model::Emotion::kNeutral};  // what the face's brows and mouth show
   Eigen::Vector3f skin{0.88f, 0.70f, 0.57f};
+  int skin_tone{2};  // which of the six tones `skin` is: 1 the lightest, 6 the darkest
   Eigen::Vector3f hair{0.24f, 0.16f, 0.10f};
   Eigen::Vector3f iris{0.25f, 0.16f, 0.10f};
   Eigen::Vector3f top{0.2f, 0.35f, 0.75f};

@@ -29,6 +29,7 @@ struct PersonLabel {
   double face_yaw_deg{180.0};  // angle between where the face points and the camera, 0 frontal
   double distance_m{0.0};      // from the camera to the person's feet centre, horizontally
   bool mask{false};            // the person wears a mask over nose and mouth
+  int skin_tone{0};            // HumanAppearance::skin_tone: 1 the lightest to 6 the darkest
 };
 
 struct LabelOptions {

@@ -1,0 +1,378 @@
+// Stock OpenCV detectors on the head camera's images of the shipped scenarios, as a user gets them
+// (docs/cameras.md, "Stock detectors in the shipped scenarios"): each scenario's episodes run in
+// process and the head camera renders them with the camera effects, as export_dataset does. On
+// every frame: HOG people detection at native resolution and at 0.35 of it, the two frontal face
+// cascades (alt2 and default) and the profile cascade, the cascades on the image and on its
+// histogram-equalised copy (cv::equalizeHist, the usual first step before a cascade). Scored
+// against the images' labels: recall overall and by skin tone, false detections on turned heads
+// and in frames that show nobody. Prints Markdown tables.
+//
+// usage: detector_study [--frames N] [--every SECONDS] [--episode-frames N] [--scenarios a,b,...]
+//   --frames: frames per scenario (default 210: 1,050 over the five shipped scenarios)
+//   --every: sim seconds between frames (default 1.0)
+//   --episode-frames: at most this many frames of one episode (default 50), so that each
+//                     scenario's frames come from several seeds (1, 2, ...)
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/objdetect.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../test/common/detector_scoring.hpp"
+#include "ari_social_sim/core/error.hpp"
+#include "ari_social_sim/engine/episode.hpp"
+#include "ari_social_sim/rendering/camera_rig.hpp"
+#include "ari_social_sim/rendering/snapshot_cameras.hpp"
+#include "ari_social_sim/scenario/scenario.hpp"
+
+namespace {
+
+using namespace ari_social_sim;
+using namespace ari_social_sim::rendering::detector_scoring;
+using rendering::PersonLabel;
+
+constexpr double kHogScale = 0.35;  // test_detector_study's scale (docs/cameras.md)
+constexpr int kSkinTones = 6;
+
+struct Options {
+  int frames_per_scenario{210};
+  double every_s{1.0};
+  int frames_per_episode{50};
+  std::vector<std::string> scenarios{"corridor", "group_discussion", "join_conversation",
+                                     "join_group", "waiting_room"};
+};
+
+[[noreturn]] void usage(const std::string& problem) {
+  std::fprintf(stderr,
+               "detector_study: %s\nusage: detector_study [--frames N] [--every SECONDS] "
+               "[--episode-frames N] [--scenarios a,b,...]\n",
+               problem.c_str());
+  std::exit(2);
+}
+
+double number_of(const std::string& option, const std::string& text, double low, double high) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(value >= low && value <= high)) {
+    usage(option + ": expected a number in [" + std::to_string(low) + ", " + std::to_string(high) +
+          "], got '" + text + "'");
+  }
+  return value;
+}
+
+Options parse(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; i += 2) {
+    const std::string option = argv[i];
+    if (i + 1 >= argc) {
+      usage(option + ": expected a value");
+    }
+    const std::string value = argv[i + 1];
+    if (option == "--frames") {
+      options.frames_per_scenario = static_cast<int>(number_of(option, value, 1, 100000));
+    } else if (option == "--every") {
+      options.every_s = number_of(option, value, 0.05, 60.0);
+    } else if (option == "--episode-frames") {
+      options.frames_per_episode = static_cast<int>(number_of(option, value, 1, 100000));
+    } else if (option == "--scenarios") {
+      options.scenarios.clear();
+      std::stringstream list(value);
+      for (std::string name; std::getline(list, name, ',');) {
+        options.scenarios.push_back(name);
+      }
+    } else {
+      usage("unknown option '" + option + "'");
+    }
+  }
+  return options;
+}
+
+// Found of total, overall and by skin tone (1 to 6).
+struct Recall {
+  int found{0}, total{0};
+  std::array<int, kSkinTones + 1> tone_found{}, tone_total{};
+
+  void add(const PersonLabel& label, bool hit) {
+    found += hit ? 1 : 0;
+    ++total;
+    if (label.skin_tone >= 1 && label.skin_tone <= kSkinTones) {
+      tone_found[label.skin_tone] += hit ? 1 : 0;
+      ++tone_total[label.skin_tone];
+    }
+  }
+  static double rate(int found, int total) { return total > 0 ? 100.0 * found / total : 0.0; }
+};
+
+// Detections per frame, summed over frames.
+struct FalseRate {
+  int detections{0}, frames{0};
+  void add(int count) {
+    detections += count;
+    ++frames;
+  }
+};
+
+// What each face cascade found in one image, with and without equalisation.
+struct FaceDetections {
+  std::vector<cv::Rect> alt2, frontal_default, profile;
+};
+
+class Study {
+ public:
+  Study() {
+    hog_.setSVMDetector(cv::HOGDescriptor::getDefaultPeopleDetector());
+    load(alt2_, kFrontalAlt2Cascade);
+    load(frontal_default_, kFrontalDefaultCascade);
+    load(profile_, kProfileCascade);
+  }
+
+  void add(const cv::Mat& rgb, const std::vector<PersonLabel>& labels) {
+    cv::Mat grey, equalised;
+    cv::cvtColor(rgb, grey, cv::COLOR_RGB2GRAY);
+    cv::equalizeHist(grey, equalised);
+    const Needs needs = needs_of(labels);
+    if (needs.hog) {
+      score_hog(grey, labels);
+    }
+    const std::array<FaceDetections, 2> faces = {detect_faces(grey, needs),
+                                                 detect_faces(equalised, needs)};
+    for (int e = 0; e < 2; ++e) {
+      score_faces(faces[e], labels, e);
+    }
+    ++frames_;
+  }
+
+  void print() const;
+
+ private:
+  static void load(cv::CascadeClassifier& cascade, const char* file) {
+    if (!cascade.load(file)) {
+      std::fprintf(stderr, "detector_study: cannot load %s (Debian's opencv-data)\n", file);
+      std::exit(1);
+    }
+  }
+
+  // Which detectors a frame is scored on: a detector runs only where its result counts (HOG
+  // native takes about 2 s a frame, each cascade a few tenths).
+  struct Needs {
+    bool hog{false}, frontal{false}, profile{false};
+  };
+
+  static Needs needs_of(const std::vector<PersonLabel>& labels) {
+    Needs needs;
+    needs.hog = needs.frontal = needs.profile = labels.empty();
+    bool all_turned = !labels.empty();
+    for (const PersonLabel& label : labels) {
+      needs.hog =
+          needs.hog || (fully_visible(label) && label.distance_m >= 2.0 && label.distance_m <= 6.0);
+      all_turned = all_turned && label.face_yaw_deg > 45.0;
+      if (near_unmasked_face(label)) {
+        needs.frontal = needs.frontal || label.face_yaw_deg <= 25.0;
+        needs.profile = needs.profile || label.face_yaw_deg >= 60.0;
+      }
+    }
+    needs.frontal = needs.frontal || all_turned;
+    return needs;
+  }
+
+  FaceDetections detect_faces(const cv::Mat& grey, const Needs& needs) {
+    FaceDetections found;
+    if (needs.frontal) {
+      found.alt2 = cascade_faces(alt2_, grey);
+      found.frontal_default = cascade_faces(frontal_default_, grey);
+    }
+    if (needs.profile) {
+      found.profile = profile_faces(profile_, grey);
+    }
+    return found;
+  }
+
+  static bool fully_visible(const PersonLabel& label) {
+    return label.occlusion < 0.01 && !label.truncated;
+  }
+
+  static bool near_unmasked_face(const PersonLabel& label) {
+    return label.face_box && !label.mask && label.distance_m >= 0.8 && label.distance_m <= 3.0;
+  }
+
+  // HOG as OpenCV's people detection sample runs it on the native image (window stride 8, scale
+  // step 1.05), and as test_detector_study runs it at 0.35 of the size.
+  void score_hog(const cv::Mat& grey, const std::vector<PersonLabel>& labels) {
+    std::vector<cv::Rect> native, scaled_windows, scaled;
+    hog_.detectMultiScale(grey, native, 0.0, cv::Size(8, 8), cv::Size(), 1.05, 2.0);
+    cv::Mat small;
+    cv::resize(grey, small, cv::Size(), kHogScale, kHogScale, cv::INTER_AREA);
+    hog_.detectMultiScale(small, scaled_windows, 0.0, cv::Size(4, 4), cv::Size(32, 32), 1.05, 2.0);
+    for (const cv::Rect& w : scaled_windows) {
+      scaled.emplace_back(cvRound(w.x / kHogScale), cvRound(w.y / kHogScale),
+                          cvRound(w.width / kHogScale), cvRound(w.height / kHogScale));
+    }
+    for (std::vector<cv::Rect>* windows : {&native, &scaled}) {
+      for (cv::Rect& window : *windows) {
+        const rendering::PixelBox person = person_in_hog_window(window);
+        window = cv::Rect(person.x, person.y, person.width, person.height);
+      }
+    }
+    for (const PersonLabel& label : labels) {
+      if (fully_visible(label) && label.distance_m >= 3.0 && label.distance_m <= 6.0) {
+        hog_native_.add(label, any_overlaps(native, label.body_box));
+      }
+      if (fully_visible(label) && label.distance_m >= 2.0 && label.distance_m <= 6.0) {
+        hog_scaled_.add(label, any_overlaps(scaled, label.body_box));
+      }
+    }
+    if (labels.empty()) {
+      hog_native_empty_.add(static_cast<int>(native.size()));
+      hog_scaled_empty_.add(static_cast<int>(scaled.size()));
+    }
+  }
+
+  void score_faces(const FaceDetections& found, const std::vector<PersonLabel>& labels, int e) {
+    bool all_turned = !labels.empty();
+    for (const PersonLabel& label : labels) {
+      all_turned = all_turned && label.face_yaw_deg > 45.0;
+      if (!near_unmasked_face(label)) {
+        continue;
+      }
+      if (label.face_yaw_deg <= 25.0) {
+        alt2_recall_[e].add(label, any_overlaps(found.alt2, *label.face_box));
+        default_recall_[e].add(label, any_overlaps(found.frontal_default, *label.face_box));
+      } else if (label.face_yaw_deg >= 60.0) {
+        profile_recall_[e].add(label, any_overlaps(found.profile, *label.face_box));
+        profile_centred_[e].add(label, any_centred(found.profile, *label.face_box));
+      }
+    }
+    if (all_turned) {
+      alt2_turned_[e].add(detections_on_people(found.alt2, labels));
+      default_turned_[e].add(detections_on_people(found.frontal_default, labels));
+    }
+    if (labels.empty()) {
+      alt2_empty_[e].add(static_cast<int>(found.alt2.size()));
+      default_empty_[e].add(static_cast<int>(found.frontal_default.size()));
+      profile_empty_[e].add(static_cast<int>(found.profile.size()));
+    }
+  }
+
+  cv::HOGDescriptor hog_;
+  cv::CascadeClassifier alt2_, frontal_default_, profile_;
+  int frames_{0};
+  Recall hog_native_, hog_scaled_;
+  FalseRate hog_native_empty_, hog_scaled_empty_;
+  // [0]: the image as it is; [1]: equalised.
+  std::array<Recall, 2> alt2_recall_, default_recall_, profile_recall_, profile_centred_;
+  std::array<FalseRate, 2> alt2_turned_, default_turned_, alt2_empty_, default_empty_,
+      profile_empty_;
+};
+
+void print_recall(const char* detector, const char* who, const Recall& r) {
+  std::printf("| %s | %s | %d of %d | %.1f %% |", detector, who, r.found, r.total,
+              Recall::rate(r.found, r.total));
+  for (int tone = 1; tone <= kSkinTones; ++tone) {
+    if (r.tone_total[tone] > 0) {
+      std::printf(" %.0f %% (%d) |", Recall::rate(r.tone_found[tone], r.tone_total[tone]),
+                  r.tone_total[tone]);
+    } else {
+      std::printf(" - |");
+    }
+  }
+  const double gap = Recall::rate(r.tone_found[1], r.tone_total[1]) -
+                     Recall::rate(r.tone_found[kSkinTones], r.tone_total[kSkinTones]);
+  std::printf(" %+.1f |\n", gap);
+}
+
+void print_false(const char* detector, const char* frames, const FalseRate& f) {
+  std::printf("| %s | %s | %d in %d | %.3f |\n", detector, frames, f.detections, f.frames,
+              f.frames > 0 ? double(f.detections) / f.frames : 0.0);
+}
+
+void Study::print() const {
+  std::printf("\n%d frames\n\n", frames_);
+  std::printf(
+      "| detector | who | found | recall | tone 1 | tone 2 | tone 3 | tone 4 | tone 5 | tone 6 | "
+      "tone 1 - tone 6 (points) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  print_recall("HOG, native", "fully visible, 3-6 m", hog_native_);
+  print_recall("HOG, 0.35 of the image", "fully visible, 2-6 m", hog_scaled_);
+  const char* preprocessing[] = {"", ", equalizeHist"};
+  for (int e = 0; e < 2; ++e) {
+    const std::string p = preprocessing[e];
+    const char* frontal = "unmasked faces within 25 deg, 0.8-3 m";
+    const char* turned = "unmasked faces turned 60-90 deg, 0.8-3 m";
+    print_recall(("frontal alt2" + p).c_str(), frontal, alt2_recall_[e]);
+    print_recall(("frontal default" + p).c_str(), frontal, default_recall_[e]);
+    print_recall(("profile, IoU >= 0.5" + p).c_str(), turned, profile_recall_[e]);
+    print_recall(("profile, centred" + p).c_str(), turned, profile_centred_[e]);
+  }
+  std::printf("\n| detector | frames | detections | per frame |\n|---|---|---|---|\n");
+  print_false("HOG, native", "nobody in view", hog_native_empty_);
+  print_false("HOG, 0.35 of the image", "nobody in view", hog_scaled_empty_);
+  for (int e = 0; e < 2; ++e) {
+    const std::string p = preprocessing[e];
+    print_false(("frontal alt2" + p).c_str(), "every face turned > 45 deg (on people)",
+                alt2_turned_[e]);
+    print_false(("frontal default" + p).c_str(), "every face turned > 45 deg (on people)",
+                default_turned_[e]);
+    print_false(("frontal alt2" + p).c_str(), "nobody in view", alt2_empty_[e]);
+    print_false(("frontal default" + p).c_str(), "nobody in view", default_empty_[e]);
+    print_false(("profile" + p).c_str(), "nobody in view", profile_empty_[e]);
+  }
+}
+
+rendering::CameraRigConfig head_camera_every(double every_s) {
+  rendering::CameraRigConfig config;
+  for (rendering::CameraSpec& spec : config.cameras) {
+    spec.enabled = spec.name == "head_front_camera";
+    spec.rate_hz = 1.0 / every_s;
+  }
+  return config;
+}
+
+// Renders the scenario's episodes (seeds 1, 2, ...) into the study until it has `frames` of them.
+void study_scenario(const std::string& name, const Options& options,
+                    const engine::EpisodeConfig& config, Study& study) {
+  const scenario::Scenario scenario = scenario::load_scenario_file(
+      scenario::scenario_file_of(name, std::string(ARI_SOURCE_DIR) + "/scenarios"));
+  rendering::CameraRig rig(head_camera_every(options.every_s));
+  rig.set_world(scenario.scene.world, rendering::SceneStyle{});
+  int frames = 0, empty = 0;
+  uint64_t seed = 1;
+  for (; frames < options.frames_per_scenario; ++seed) {
+    engine::Episode episode(scenario, seed, config);
+    rendering::SnapshotCameras cameras(rig, seed);
+    for (int in_episode = 0; in_episode < options.frames_per_episode &&
+                             frames < options.frames_per_scenario && !episode.finished();
+         episode.step()) {
+      for (const rendering::LabelledImage& image : cameras.render_due(episode.snapshot())) {
+        study.add(image.colour, image.labels);
+        empty += image.labels.empty() ? 1 : 0;
+        ++frames;
+        ++in_episode;
+      }
+    }
+  }
+  std::fprintf(stderr, "detector_study: %s: %d frames (%d showing nobody) of seeds 1-%llu\n",
+               name.c_str(), frames, empty, static_cast<unsigned long long>(seed - 1));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options options = parse(argc, argv);
+  try {
+    const engine::EpisodeConfig config =
+        engine::EpisodeConfig::load(std::string(ARI_SOURCE_DIR) + "/config");
+    Study study;
+    for (const std::string& name : options.scenarios) {
+      study_scenario(name, options, config, study);
+    }
+    study.print();
+  } catch (const core::ConfigError& e) {
+    usage(e.what());
+  }
+  return 0;
+}
