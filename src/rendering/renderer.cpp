@@ -60,6 +60,9 @@ uniform vec3 camera_position;
 // The lamps nearest the camera (Renderer::Impl::kMaxLamps), centres of their emitting faces.
 uniform int lamp_count;
 uniform vec3 lamps[32];
+// Where people stand on the floor, nearest the camera first: x, y and the feet's radius.
+uniform int contact_count;
+uniform vec3 contacts[16];
 const vec3 sun = normalize(vec3(0.35, 0.55, 1.0));
 // Surface codes (rendering::Surface).
 const int kFloor = 1;
@@ -144,6 +147,18 @@ float indoor_lighting(int surface, vec3 n, vec3 to_camera, float fill, out float
   return 0.12 + lamp + 0.2 * fill;
 }
 
+// Soft contact shadows (ambient occlusion): the floor around someone's feet sees less of the room
+// and its lamps, darkest under the feet and fading over a few tenths of a metre.
+float floor_occlusion(vec2 p) {
+  float open = 1.0;
+  for (int i = 0; i < contact_count; ++i) {
+    vec2 d = p - contacts[i].xy;
+    float r = contacts[i].z;
+    open *= 1.0 - 0.55 * exp(-dot(d, d) / (r * r));
+  }
+  return open;
+}
+
 void main() {
   int surface = int(v_surface + 0.5);
   vec3 c = v_colour * texture_of(surface, v_world);
@@ -170,6 +185,9 @@ void main() {
                    : 0.25 + 0.25 * max(dot(n, sun), 0.0) + 0.35 * max(n.z, 0.0) + 0.3 * fill;
     // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
     highlight = surface == kSkin ? 0.22 * pow(fill, 12.0) : 0.0;
+  }
+  if (surface == kFloor) {
+    lighting *= floor_occlusion(v_world.xy);
   }
   // Colours are display (sRGB) values and light adds up linearly: shade in linear terms.
   out_colour = vec4(min(c * pow(lighting, 1.0 / 2.2) + highlight, vec3(1.0)), 1.0);
@@ -264,6 +282,39 @@ struct Framebuffer {
   }
 };
 
+// Where each labelled figure (a person) touches the floor: the centre of its vertices within
+// kFeetHeightM of the floor, and a radius a little beyond the farthest of them.
+std::vector<Eigen::Vector3f> floor_contacts(const RenderMesh& mesh) {
+  constexpr float kFeetHeightM = 0.12f;
+  struct Feet {
+    Eigen::Vector2f sum{Eigen::Vector2f::Zero()};
+    int count{0};
+    std::vector<Eigen::Vector2f> points;
+  };
+  std::map<float, Feet> by_label;
+  const std::vector<float>& v = mesh.vertices;
+  for (size_t i = 0; i + RenderMesh::kFloatsPerVertex <= v.size();
+       i += RenderMesh::kFloatsPerVertex) {
+    const float label = v[i + RenderMesh::kLabelOffset];
+    if (label > 0.0f && v[i + 2] < kFeetHeightM) {
+      Feet& feet = by_label[label];
+      feet.points.emplace_back(v[i], v[i + 1]);
+      feet.sum += feet.points.back();
+      ++feet.count;
+    }
+  }
+  std::vector<Eigen::Vector3f> contacts;
+  for (const auto& [label, feet] : by_label) {
+    const Eigen::Vector2f centre = feet.sum / static_cast<float>(feet.count);
+    float reach = 0.0f;
+    for (const Eigen::Vector2f& p : feet.points) {
+      reach = std::max(reach, (p - centre).norm());
+    }
+    contacts.emplace_back(centre.x(), centre.y(), std::clamp(reach + 0.1f, 0.2f, 0.5f));
+  }
+  return contacts;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -275,9 +326,14 @@ struct Renderer::Impl {
   GLint camera_position_location{-1};
   GLint lamp_count_location{-1};
   GLint lamps_location{-1};
-  // The shader's lamp array: the nearest lamps light a view, the farther ones add little.
+  GLint contact_count_location{-1};
+  GLint contacts_location{-1};
+  // The shader's arrays: the nearest lamps light a view, the farther ones add little; the
+  // nearest people's contact shadows are the ones large enough to see.
   static constexpr size_t kMaxLamps = 32;
-  std::vector<Eigen::Vector3f> lamps;  // every lamp of the static scene
+  static constexpr size_t kMaxContacts = 16;
+  std::vector<Eigen::Vector3f> lamps;     // every lamp of the static scene
+  std::vector<Eigen::Vector3f> contacts;  // (x, y, radius) of every labelled figure's feet
   GpuMesh static_mesh;
   GpuMesh dynamic_mesh;
   // One framebuffer per image size: a rig alternates between cameras of different sizes.
@@ -293,17 +349,20 @@ struct Renderer::Impl {
     return *target;
   }
 
-  void upload_nearest_lamps(const Eigen::Vector3f& camera) {
+  // Sets a shader array to the `max` points nearest the camera (in the floor plan for contacts,
+  // whose z is a radius) and its count uniform to how many there are.
+  static void upload_nearest(std::vector<Eigen::Vector3f> points, const Eigen::Vector3f& camera,
+                             size_t max, GLint count_location, GLint array_location) {
     static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "glUniform3fv reads packed xyz");
-    std::vector<Eigen::Vector3f> nearest = lamps;
-    const size_t count = std::min(nearest.size(), kMaxLamps);
-    std::partial_sort(nearest.begin(), nearest.begin() + count, nearest.end(),
+    const size_t count = std::min(points.size(), max);
+    std::partial_sort(points.begin(), points.begin() + count, points.end(),
                       [&camera](const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-                        return (a - camera).squaredNorm() < (b - camera).squaredNorm();
+                        return (a - camera).head<2>().squaredNorm() <
+                               (b - camera).head<2>().squaredNorm();
                       });
-    glUniform1i(lamp_count_location, static_cast<GLint>(count));
+    glUniform1i(count_location, static_cast<GLint>(count));
     if (count > 0) {
-      glUniform3fv(lamps_location, static_cast<GLsizei>(count), nearest.front().data());
+      glUniform3fv(array_location, static_cast<GLsizei>(count), points.front().data());
     }
   }
 
@@ -327,6 +386,8 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->camera_position_location = glGetUniformLocation(impl_->program, "camera_position");
   impl_->lamp_count_location = glGetUniformLocation(impl_->program, "lamp_count");
   impl_->lamps_location = glGetUniformLocation(impl_->program, "lamps");
+  impl_->contact_count_location = glGetUniformLocation(impl_->program, "contact_count");
+  impl_->contacts_location = glGetUniformLocation(impl_->program, "contacts");
   impl_->static_mesh.create();
   impl_->dynamic_mesh.create();
 }
@@ -366,6 +427,7 @@ void Renderer::set_dynamic_primitives(const std::vector<RenderPrimitive>& primit
 void Renderer::set_dynamic_mesh(const RenderMesh& mesh) {
   impl_->context.make_current();
   impl_->dynamic_mesh.upload(mesh);
+  impl_->contacts = floor_contacts(mesh);
 }
 
 void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_world_optical,
@@ -411,7 +473,10 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   glUniformMatrix4fv(impl_->projection_location, 1, GL_FALSE, projection.data());
   const Eigen::Vector3f camera_position = X_world_optical.translation().cast<float>();
   glUniform3fv(impl_->camera_position_location, 1, camera_position.data());
-  impl_->upload_nearest_lamps(camera_position);
+  Impl::upload_nearest(impl_->lamps, camera_position, Impl::kMaxLamps, impl_->lamp_count_location,
+                       impl_->lamps_location);
+  Impl::upload_nearest(impl_->contacts, camera_position, Impl::kMaxContacts,
+                       impl_->contact_count_location, impl_->contacts_location);
   if (options.only_dynamic) {
     impl_->dynamic_mesh.draw(static_cast<GLint>(options.only_dynamic->first),
                              static_cast<GLsizei>(options.only_dynamic->count));

@@ -132,5 +132,95 @@ TEST(Renderer, PersonAppearsWhereTheProjectionPutsThem) {
   EXPECT_EQ(disagreements, 0);
 }
 
+// A camera at `position` looking straight down, image x along world -y and image y along -x.
+Eigen::Isometry3d camera_looking_down(const Eigen::Vector3d& position) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.linear().col(0) = -Eigen::Vector3d::UnitY();
+  X.linear().col(1) = -Eigen::Vector3d::UnitX();
+  X.linear().col(2) = -Eigen::Vector3d::UnitZ();
+  X.translation() = position;
+  return X;
+}
+
+RenderPrimitive floor_slab() {
+  RenderPrimitive floor = test::box({0.0, 0.0, -0.01}, {20.0, 20.0, 0.02});
+  floor.surface = Surface::kFloor;
+  return floor;
+}
+
+// Mean grey level of the floor's pixels between `inner` and `outer` metres of `centre` (z = 0),
+// leaving out labelled pixels (people).
+double floor_brightness(const RenderedImage& image, const PinholeModel& model,
+                        const Eigen::Isometry3d& X_world_optical, const Eigen::Vector2d& centre,
+                        double inner, double outer) {
+  cv::Mat grey;
+  cv::cvtColor(image.colour, grey, cv::COLOR_RGB2GRAY);
+  double sum = 0.0;
+  int count = 0;
+  for (int v = 0; v < grey.rows; ++v) {
+    for (int u = 0; u < grey.cols; ++u) {
+      // The ray through (u, v) meets the floor at z = 0.
+      const Eigen::Vector3d ray =
+          X_world_optical.linear() *
+          Eigen::Vector3d((u - model.cx) / model.fx, (v - model.cy) / model.fy, 1.0);
+      const Eigen::Vector3d origin = X_world_optical.translation();
+      const Eigen::Vector2d hit = (origin + ray * (-origin.z() / ray.z())).head<2>();
+      const double distance = (hit - centre).norm();
+      const bool person = !image.labels.empty() && image.labels.at<uint16_t>(v, u) > 0;
+      if (distance >= inner && distance < outer && !person) {
+        sum += grey.at<uint8_t>(v, u);
+        ++count;
+      }
+    }
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+TEST(Renderer, LampsLightTheFloorUnderThemMost) {
+  Renderer renderer;
+  RenderPrimitive lamp = test::box({0.0, 0.0, 2.49}, {0.6, 1.2, 0.02});
+  lamp.surface = Surface::kLamp;
+  renderer.set_static_primitives({floor_slab(), lamp});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(640, 480, 100.0 * kDeg);
+  const Eigen::Isometry3d X_world_optical = camera_looking_down({0.0, 0.0, 2.0});
+  RenderedImage image;
+  renderer.render(model, X_world_optical, ViewOptions{}, image);
+  const double under = floor_brightness(image, model, X_world_optical, {0.0, 0.0}, 0.0, 0.3);
+  const double beside = floor_brightness(image, model, X_world_optical, {0.0, 0.0}, 1.5, 1.8);
+  std::printf("floor under the lamp %.1f, 1.5-1.8 m from its foot %.1f\n", under, beside);
+  // Lamp light (2.4 cos^2 / d^2) falls from 0.38 under a lamp 2.5 m up to about 0.19 at 1.65 m
+  // from its foot; with bounced and fill light the floor's light falls by about a third, its
+  // display value (light^(1/2.2)) by about 15 %.
+  EXPECT_LT(beside, 0.92 * under);
+  EXPECT_GT(beside, 0.7 * under);
+}
+
+TEST(Renderer, PeopleCastSoftContactShadowsOnTheFloor) {
+  Renderer renderer;
+  renderer.set_static_primitives({floor_slab()});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(640, 480, 90.0 * kDeg);
+  const Eigen::Isometry3d X_world_optical = camera_looking_down({0.0, 0.0, 3.5});
+  ViewOptions options;
+  options.labels = true;
+  RenderedImage alone, with_person;
+  renderer.render(model, X_world_optical, options, alone);
+  FigureInput person;
+  person.traits.id = 2;
+  PeopleFigures figures;
+  figures.update(0.0, {person});
+  renderer.set_dynamic_mesh(figures.mesh());
+  renderer.render(model, X_world_optical, options, with_person);
+  const auto ring = [&](const RenderedImage& image, double inner, double outer) {
+    return floor_brightness(image, model, X_world_optical, {0.0, 0.0}, inner, outer);
+  };
+  const double near_before = ring(alone, 0.3, 0.4), near_after = ring(with_person, 0.3, 0.4);
+  const double far_before = ring(alone, 1.5, 1.7), far_after = ring(with_person, 1.5, 1.7);
+  std::printf("floor 0.3-0.4 m from the feet %.1f -> %.1f, 1.5-1.7 m %.1f -> %.1f\n", near_before,
+              near_after, far_before, far_after);
+  // Beside the feet the floor sees less light; a metre and a half away the shadow is gone.
+  EXPECT_LT(near_after, 0.95 * near_before);
+  EXPECT_NEAR(far_after, far_before, 0.5);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::rendering
