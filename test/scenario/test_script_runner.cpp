@@ -98,6 +98,14 @@ struct Stage {
     ++obs.world.step;
     runner.update(obs, commands);
   }
+  // `who` says `act` for `seconds` (one tick), then the tick after the end.
+  void say(ScriptRunner& runner, Commands& commands, const AgentRef& who, const std::string& act,
+           double seconds) {
+    start(who, act);
+    tick(runner, commands, seconds);
+    stop(who);
+    tick(runner, commands);
+  }
 };
 
 class GroupDiscussionRunner : public ::testing::Test {
@@ -143,15 +151,9 @@ TEST_F(GroupDiscussionRunner, PlaysTheSeedsScriptInOrder) {
   stage.tick(runner, commands);
   stage.obs.transcripts.clear();
   EXPECT_EQ(commands.log.back(), "say ARI ANSWER:TIME");
-  stage.start(ari, "ANSWER:TIME");
-  stage.tick(runner, commands, 1.0);
-  stage.stop(ari);
-  stage.tick(runner, commands);
+  stage.say(runner, commands, ari, "ANSWER:TIME", 1.0);
   EXPECT_EQ(commands.log.back(), "say human 11 GOODBYE");
-  stage.start(irene, "GOODBYE");
-  stage.tick(runner, commands, 1.0);
-  stage.stop(irene);
-  stage.tick(runner, commands);
+  stage.say(runner, commands, irene, "GOODBYE", 1.0);
   EXPECT_EQ(runner.state(), "leave");
   const std::vector<std::string> tail(commands.log.end() - 2, commands.log.end());
   EXPECT_EQ(tail, (std::vector<std::string>{"say ARI GOODBYE", "navigate 1.000000"}));
@@ -209,10 +211,7 @@ TEST_F(GroupDiscussionRunner, OnlyATranscriptHeardInTheStateAndNearIreneLineCoun
   stage.obs.world.ari->pose.position = {4.0, 3.0};
   stage.tick(runner, commands);
   stage.obs.transcripts.clear();
-  stage.start(AgentRef::ari(), "QUESTION:HELP");
-  stage.tick(runner, commands);
-  stage.stop(AgentRef::ari());
-  stage.tick(runner, commands);
+  stage.say(runner, commands, AgentRef::ari(), "QUESTION:HELP", 0.05);
   ASSERT_EQ(runner.state(), "ask_time");
   // Irene's goodbye, and an empty final, are not the question.
   for (const std::string heard : {"thank you good bye", ""}) {
@@ -230,10 +229,7 @@ TEST_F(GroupDiscussionRunner, WordsTakenForNoLineMakeAriAskAgain) {
   stage.tick(runner, commands);
   stage.obs.world.ari->pose.position = {4.0, 3.0};
   stage.tick(runner, commands);
-  stage.start(ari, "QUESTION:HELP");
-  stage.tick(runner, commands);
-  stage.stop(ari);
-  stage.tick(runner, commands);
+  stage.say(runner, commands, ari, "QUESTION:HELP", 0.05);
   ASSERT_EQ(runner.state(), "ask_time");
   // pocketsphinx's reading of her question in a failed run: one word of six shared.
   stage.obs.transcripts = {{"voice1", "oh yes we're a bit that right", 0.5}};
@@ -244,10 +240,7 @@ TEST_F(GroupDiscussionRunner, WordsTakenForNoLineMakeAriAskAgain) {
   // She asks again once ARI has finished, and a transcript of the shorter question is heard.
   stage.tick(runner, commands);
   EXPECT_EQ(commands.log.back(), "say ARI REQUEST:REPEAT");
-  stage.start(ari, "REQUEST:REPEAT");
-  stage.tick(runner, commands, 2.0);
-  stage.stop(ari);
-  stage.tick(runner, commands);
+  stage.say(runner, commands, ari, "REQUEST:REPEAT", 2.0);
   EXPECT_EQ(runner.state(), "ask_time");
   EXPECT_EQ(commands.log.back(), "say human 11 QUESTION:TIME");
   stage.start(irene, "QUESTION:TIME");
