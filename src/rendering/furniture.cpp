@@ -16,6 +16,8 @@ const Eigen::Vector3f kPotColour{0.62f, 0.33f, 0.22f};
 const Eigen::Vector3f kLeafColour{0.20f, 0.45f, 0.18f};
 const Eigen::Vector3f kDispenserColour{0.90f, 0.90f, 0.88f};
 const Eigen::Vector3f kBottleColour{0.55f, 0.72f, 0.90f};
+const Eigen::Vector3f kPanelColour{0.80f, 0.80f, 0.78f};  // a desk's laminate front
+const Eigen::Vector3f kPlinthColour{0.25f, 0.25f, 0.27f};
 constexpr double kSeatHeightM = 0.45;  // a waiting-room chair's
 constexpr double kSeatPitchM = 0.5;    // one seat per half metre of a row
 constexpr double kLegRadiusM = 0.02;
@@ -58,21 +60,24 @@ bool inside(const model::StaticObject& object, const Eigen::Vector2d& point) {
          std::abs(local.y()) <= 0.5 * object.size.y();
 }
 
-// The side of a chair's footprint (its frame's +-x or +-y, as a unit vector in that frame) with
-// the nearest wall or furniture behind it: where its back goes. -x when nothing is within 1 m.
-Eigen::Vector2d back_side(const model::StaticObject& chair, const model::WorldDescription& world) {
-  const Eigen::Vector2d sides[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+// Of `sides` of an object's footprint (unit vectors of its frame), the one whose probe, stepped
+// out from the footprint's edge, first lands in another object that `counts`; `sides[0]` when
+// none does within `reach_m`.
+template <class Counts>
+Eigen::Vector2d nearest_side(const model::StaticObject& object,
+                             const std::vector<Eigen::Vector2d>& sides,
+                             const model::WorldDescription& world, double reach_m, Counts counts) {
   Eigen::Vector2d best = sides[0];
   double nearest = std::numeric_limits<double>::infinity();
   for (const Eigen::Vector2d& side : sides) {
-    const double half_depth = 0.5 * std::abs(side.dot(chair.size));
-    for (double gap = 0.05; gap < 1.0 && gap < nearest; gap += 0.05) {
-      const Eigen::Vector2d probe =
-          chair.pose.position + Eigen::Rotation2Dd(chair.pose.theta) * ((half_depth + gap) * side);
-      const bool hit = std::any_of(world.objects.begin(), world.objects.end(),
-                                   [&](const model::StaticObject& other) {
-                                     return &other != &chair && inside(other, probe);
-                                   });
+    const double half_depth = 0.5 * std::abs(side.dot(object.size));
+    for (double gap = 0.05; gap < reach_m && gap < nearest; gap += 0.05) {
+      const Eigen::Vector2d probe = object.pose.position + Eigen::Rotation2Dd(object.pose.theta) *
+                                                               ((half_depth + gap) * side);
+      const bool hit = std::any_of(
+          world.objects.begin(), world.objects.end(), [&](const model::StaticObject& other) {
+            return &other != &object && counts(other) && inside(other, probe);
+          });
       if (hit) {
         nearest = gap;
         best = side;
@@ -80,6 +85,22 @@ Eigen::Vector2d back_side(const model::StaticObject& chair, const model::WorldDe
     }
   }
   return best;
+}
+
+// The side of a chair's footprint with the nearest wall or furniture behind it within 1 m: where
+// its back goes; -x when there is none.
+Eigen::Vector2d back_side(const model::StaticObject& chair, const model::WorldDescription& world) {
+  return nearest_side(chair, {{-1, 0}, {1, 0}, {0, -1}, {0, 1}}, world, 1.0,
+                      [](const model::StaticObject&) { return true; });
+}
+
+// Of a desk's two long sides, the one facing the nearest wall within 3 m: where the staff sit.
+Eigen::Vector2d staff_side(const model::StaticObject& desk, const model::WorldDescription& world) {
+  const bool long_along_x = desk.size.x() >= desk.size.y();
+  const Eigen::Vector2d across = long_along_x ? Eigen::Vector2d(0, 1) : Eigen::Vector2d(1, 0);
+  return nearest_side(desk, {-across, across}, world, 3.0, [](const model::StaticObject& other) {
+    return other.type == model::ShapeType::kWall;
+  });
 }
 
 // Chairs side by side along the footprint's long edge, backs on `back` (a unit side).
@@ -158,6 +179,37 @@ std::vector<RenderPrimitive> dispenser(const model::StaticObject& object, double
                kBottleColour)};
 }
 
+// A reception counter: a work top at the object's height on the staff's side (the long side
+// towards the nearest wall), a laminate front on a dark plinth, and on the visitors' side a raised
+// transaction ledge at standing height (1.1 m).
+std::vector<RenderPrimitive> reception_desk(const model::StaticObject& object, double height_m,
+                                            const model::WorldDescription& world) {
+  constexpr double kLedgeHeightM = 1.1, kLedgeDepthM = 0.3, kPlinthM = 0.1;
+  const Eigen::Vector2d staff = staff_side(object, world);
+  const Eigen::Vector2d along(std::abs(staff.y()), std::abs(staff.x()));
+  const double length = along.dot(object.size), depth = std::abs(staff.dot(object.size));
+  const auto extent = [&](double along_m, double across_m, double z_m) {
+    return Eigen::Vector3d(along.x() * along_m + std::abs(staff.x()) * across_m,
+                           along.y() * along_m + std::abs(staff.y()) * across_m, z_m);
+  };
+  const Eigen::Vector3d staff3(staff.x(), staff.y(), 0.0);
+  const Eigen::Isometry3d X = object_frame(object);
+  const double ledge = std::max(kLedgeHeightM, height_m + 0.1);
+  const double visitors_side = -0.5 * depth + 0.5 * kLedgeDepthM;  // along staff3
+  return {part(PrimitiveShape::kBox, offset(X, {0, 0, 0.5 * kPlinthM}),
+               extent(length - 0.04, depth - 0.04, kPlinthM), kPlinthColour),
+          part(PrimitiveShape::kBox, offset(X, {0, 0, 0.5 * (kPlinthM + height_m)}),
+               extent(length, depth, height_m - kPlinthM), kPanelColour),
+          part(PrimitiveShape::kBox, offset(X, Eigen::Vector3d(0, 0, height_m - 0.015)),
+               extent(length, depth, 0.03), kTableTopColour, Surface::kWood),
+          part(PrimitiveShape::kBox,
+               offset(X, visitors_side * staff3 + Eigen::Vector3d(0, 0, 0.5 * (height_m + ledge))),
+               extent(length, kLedgeDepthM, ledge - height_m), kPanelColour),
+          part(PrimitiveShape::kBox,
+               offset(X, visitors_side * staff3 + Eigen::Vector3d(0, 0, ledge + 0.015)),
+               extent(length, kLedgeDepthM, 0.03), kTableTopColour, Surface::kWood)};
+}
+
 }  // namespace
 
 std::optional<std::vector<RenderPrimitive>> furniture_of(const model::StaticObject& object,
@@ -171,6 +223,9 @@ std::optional<std::vector<RenderPrimitive>> furniture_of(const model::StaticObje
   }
   if (named(object, "plant") && object.type == model::ShapeType::kCircle) {
     return plant(object);
+  }
+  if (named(object, "desk") && object.type == model::ShapeType::kBox) {
+    return reception_desk(object, height_m, world);
   }
   if (named(object, "dispenser") && object.type == model::ShapeType::kBox) {
     return dispenser(object, height_m);

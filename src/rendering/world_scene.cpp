@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include "ari_social_sim/rendering/doorways.hpp"
 #include "ari_social_sim/rendering/furniture.hpp"
 
 namespace ari_social_sim::rendering {
@@ -62,6 +63,10 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
   const double ceiling = ceiling_height(world, style);
   if (style.ceiling && ceiling > 0.0) {
     add_ceiling(world, style, ceiling, out);
+  }
+  for (const Doorway& doorway : doorways_of(world, style.wall_height_m)) {
+    const std::vector<RenderPrimitive> parts = doorway_primitives(doorway, kWallColour);
+    out.insert(out.end(), parts.begin(), parts.end());
   }
 
   for (const model::StaticObject& object : world.objects) {

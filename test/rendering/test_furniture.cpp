@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -80,8 +81,29 @@ TEST(Furniture, PartsStayInTheFootprintThePhysicsCollidesWith) {
     }
   }
   // Other objects stay blocks.
-  EXPECT_FALSE(furniture_of(object_named("reception desk"), 0.75, waiting_room()).has_value());
+  EXPECT_FALSE(furniture_of(object_named("information stand"), 0.75, waiting_room()).has_value());
   EXPECT_FALSE(furniture_of(object_named("north wall"), 2.5, waiting_room()).has_value());
+}
+
+TEST(Furniture, TheReceptionDeskHasAWorkTopAndALedgeOnTheVisitorsSide) {
+  // The desk (9.4, 1.6), 2.6 x 0.7, has the south wall 1.25 m behind it and the room in front:
+  // the staff sit on its south side, visitors stand on its north side.
+  const std::optional<std::vector<RenderPrimitive>> parts =
+      furniture_of(object_named("reception desk"), 0.75, waiting_room());
+  ASSERT_TRUE(parts.has_value());
+  const RenderPrimitive& ledge_top = highest_part(*parts);
+  EXPECT_NEAR(ledge_top.X_world_shape.translation().z() + 0.5 * ledge_top.size.z(), 1.13, 1e-9);
+  // The ledge runs the desk's length on its north edge, 0.3 m deep.
+  EXPECT_NEAR(ledge_top.size.x(), 2.6, 1e-9);
+  EXPECT_NEAR(ledge_top.size.y(), 0.3, 1e-9);
+  EXPECT_NEAR(ledge_top.X_world_shape.translation().y(), 1.6 + 0.35 - 0.15, 1e-9);
+  // The work top covers the whole footprint at the desk's height.
+  const bool work_top = std::any_of(parts->begin(), parts->end(), [](const RenderPrimitive& p) {
+    return p.surface == Surface::kWood &&
+           std::abs(p.X_world_shape.translation().z() - 0.735) < 1e-9 &&
+           std::abs(p.size.y() - 0.7) < 1e-9;
+  });
+  EXPECT_TRUE(work_top);
 }
 
 }  // namespace
