@@ -344,6 +344,7 @@ class PhysicsNode {
       person.mask = human.mask;
       person.emotion = static_cast<model::Emotion>(human.emotion);
       person.speaking = human.speech.is_speaking;
+      person.seated_fraction = posture_of(human).seated_fraction();
       people.push_back(person);
     }
     physics_->set_people(people);

@@ -26,6 +26,7 @@ FigureInput figure_input_of(const world::HumanSnapshot& human) {
   input.face_yaw_rad = human.gaze.direction_rad;
   input.head_pitch_rad = human.head_pitch_rad;
   input.speaking = human.speech.is_speaking;
+  input.seated = human.posture.seated_fraction();
   return input;
 }
 
@@ -37,6 +38,7 @@ FigureInput figure_input_of(const physics::PersonState& person) {
   input.face_yaw_rad = person.face_yaw_rad;
   input.head_pitch_rad = person.head_pitch_rad;
   input.speaking = person.speaking;
+  input.seated = person.seated_fraction;
   return input;
 }
 
@@ -56,7 +58,8 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
       found = people_.insert_or_assign(id, std::move(person)).first;
     }
     Person& person = found->second;
-    const double speed = input.velocity_mps.norm();
+    // Standing up and sitting down move the body, but the feet stay put: no stride.
+    const double speed = input.seated > 0.0 ? 0.0 : input.velocity_mps.norm();
     const double dt = std::max(0.0, time_s - person.last_time_s);
     person.last_time_s = time_s;
     const double stride = kStrideShare * person.figure.appearance().height_m;
@@ -70,6 +73,7 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     posed.pose.head_yaw_rad = input.face_yaw_rad;
     posed.pose.head_pitch_rad = input.head_pitch_rad;
     posed.pose.gait_phase_rad = person.gait_phase_rad;
+    posed.pose.seated = input.seated;
     posed.pose.gait_amplitude =
         speed < kStandingSpeedMps ? 0.0 : std::min(1.0, speed / kBriskSpeedMps);
     // Each person's syllables start at their own offset, so that speakers do not move in step.
