@@ -1,5 +1,6 @@
 #include "ari_social_sim/perception/visibility.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ari_social_sim/perception/grid_raycast.hpp"
@@ -55,9 +56,12 @@ double visible_fraction(const FieldOfView& sensor, const SightObstacles& obstacl
       const double entry = ray_entry(eye, direction, people[other], radius);
       blocked = entry >= 0.0 && entry < reach;
     }
+    // The map stops a ray one body radius short of the person: what lies within reach of them
+    // is what they sit on or lean against (a chair under a seated person is in the map, and the
+    // map has no heights), below or behind their body rather than in front of it.
     if (!blocked && obstacles.grid != nullptr) {
       blocked = !segment_is_clear(*obstacles.grid, obstacles.occupied_threshold, eye,
-                                  eye + reach * direction);
+                                  eye + std::max(0.0, reach - radius) * direction);
     }
     visible += blocked ? 0 : 1;
   }
