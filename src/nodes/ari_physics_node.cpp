@@ -39,6 +39,7 @@
 #include "nodes/physics/point_head_interface.hpp"
 #include "nodes/physics/sim_clock.hpp"
 #include "world_conversions/ari_base.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
