@@ -28,6 +28,11 @@ double visible_fraction(const FieldOfView& sensor, const SightObstacles& obstacl
                         int ray_count) {
   const std::vector<Eigen::Vector2d>& people = *obstacles.people;
   const double radius = obstacles.person_radius_m;
+  // A seated person's circle lies on the chair's cells; the map is read only up to one radius
+  // before it, or the chair would hide whoever sits on it. A standing person is checked up to
+  // their circle: what the map holds that close to them stands between them and the sensor.
+  const bool seated = obstacles.seated != nullptr && (*obstacles.seated)[target];
+  const double map_margin_m = seated ? radius : 0.0;
   const Eigen::Vector2d& eye = sensor.X_map_sensor.position;
   const Eigen::Vector2d to_target = people[target] - eye;
   const double distance = to_target.norm();
@@ -56,12 +61,9 @@ double visible_fraction(const FieldOfView& sensor, const SightObstacles& obstacl
       const double entry = ray_entry(eye, direction, people[other], radius);
       blocked = entry >= 0.0 && entry < reach;
     }
-    // The map stops a ray one body radius short of the person: what lies within reach of them
-    // is what they sit on or lean against (a chair under a seated person is in the map, and the
-    // map has no heights), below or behind their body rather than in front of it.
     if (!blocked && obstacles.grid != nullptr) {
       blocked = !segment_is_clear(*obstacles.grid, obstacles.occupied_threshold, eye,
-                                  eye + std::max(0.0, reach - radius) * direction);
+                                  eye + std::max(0.0, reach - map_margin_m) * direction);
     }
     visible += blocked ? 0 : 1;
   }
