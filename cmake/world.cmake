@@ -19,6 +19,7 @@ add_library(ari_world
   src/world/member_manner.cpp
   src/world/map_sensor.cpp
   src/world/object.cpp
+  src/world/posture.cpp
   src/world/request_check.cpp
   src/world/robot_reaction.cpp
   src/world/scene.cpp
@@ -42,6 +43,7 @@ if(CATKIN_ENABLE_TESTING)
       test/world/test_group_navigation.cpp
       test/world/test_group_turnover.cpp
       test/world/test_map_sensor.cpp
+      test/world/test_posture.cpp
       test/world/test_request_check.cpp
       test/world/test_robot_reaction.cpp
       test/world/test_scene.cpp

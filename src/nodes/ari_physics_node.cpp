@@ -39,6 +39,7 @@
 #include "nodes/physics/point_head_interface.hpp"
 #include "nodes/physics/sim_clock.hpp"
 #include "world_conversions/ari_base.hpp"
+#include "world_conversions/world_state.hpp"
 
 namespace ari_social_sim::nodes {
 namespace {
@@ -344,6 +345,7 @@ class PhysicsNode {
       person.mask = human.mask;
       person.emotion = static_cast<model::Emotion>(human.emotion);
       person.speaking = human.speech.is_speaking;
+      person.seated_fraction = posture_of(human).seated_fraction();
       people.push_back(person);
     }
     physics_->set_people(people);

@@ -90,9 +90,11 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
 
   std::set<model::ObjectId> present;
   people_.clear();
+  seated_.clear();
   for (const world::HumanSnapshot& human : snapshot.humans) {
     present.insert(human.id);
     people_.push_back(human.pose.position);
+    seated_.push_back(!human.posture.is_standing());
   }
   bodies_.track_ids().retain(present);
   faces_.track_ids().retain(present);
@@ -102,7 +104,7 @@ const PerceptionFrame& PerceptionPipeline::update(const world::WorldSnapshot& sn
     frame_.sensors = AriSensors::of(*snapshot.ari, config_);
     const SightObstacles obstacles{sight_map_ ? &*sight_map_ : nullptr,
                                    config_.occlusion.occupied_threshold, &people_,
-                                   config_.occlusion.person_radius_m};
+                                   config_.occlusion.person_radius_m, &seated_};
     bodies_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.bodies);
     faces_.update(snapshot, frame_.sensors, obstacles, dt_s, frame_.faces);
     const model::OccupancyGrid* sound_map =

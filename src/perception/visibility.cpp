@@ -1,5 +1,6 @@
 #include "ari_social_sim/perception/visibility.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ari_social_sim/perception/grid_raycast.hpp"
@@ -27,6 +28,11 @@ double visible_fraction(const FieldOfView& sensor, const SightObstacles& obstacl
                         int ray_count) {
   const std::vector<Eigen::Vector2d>& people = *obstacles.people;
   const double radius = obstacles.person_radius_m;
+  // A seated person's circle lies on the chair's cells; the map is read only up to one radius
+  // before it, or the chair would hide whoever sits on it. A standing person is checked up to
+  // their circle: what the map holds that close to them stands between them and the sensor.
+  const bool seated = obstacles.seated != nullptr && (*obstacles.seated)[target];
+  const double map_margin_m = seated ? radius : 0.0;
   const Eigen::Vector2d& eye = sensor.X_map_sensor.position;
   const Eigen::Vector2d to_target = people[target] - eye;
   const double distance = to_target.norm();
@@ -57,7 +63,7 @@ double visible_fraction(const FieldOfView& sensor, const SightObstacles& obstacl
     }
     if (!blocked && obstacles.grid != nullptr) {
       blocked = !segment_is_clear(*obstacles.grid, obstacles.occupied_threshold, eye,
-                                  eye + reach * direction);
+                                  eye + std::max(0.0, reach - map_margin_m) * direction);
     }
     visible += blocked ? 0 : 1;
   }

@@ -18,8 +18,7 @@ const Eigen::Vector3f kDispenserColour{0.90f, 0.90f, 0.88f};
 const Eigen::Vector3f kBottleColour{0.55f, 0.72f, 0.90f};
 const Eigen::Vector3f kPanelColour{0.80f, 0.80f, 0.78f};  // a desk's laminate front
 const Eigen::Vector3f kPlinthColour{0.25f, 0.25f, 0.27f};
-constexpr double kSeatHeightM = 0.45;  // a waiting-room chair's
-constexpr double kSeatPitchM = 0.5;    // one seat per half metre of a row
+constexpr double kSeatPitchM = 0.5;  // one seat per half metre of a row
 constexpr double kLegRadiusM = 0.02;
 
 bool named(const model::StaticObject& object, const char* word) {
@@ -123,23 +122,24 @@ std::vector<RenderPrimitive> chairs(const model::StaticObject& object, double he
   for (int k = 0; k < seats; ++k) {
     const Eigen::Vector3d centre = (-0.5 * length + (k + 0.5) * pitch) * along3;
     out.push_back(part(PrimitiveShape::kBox,
-                       offset(X, centre + Eigen::Vector3d(0, 0, kSeatHeightM - 0.03)),
+                       offset(X, centre + Eigen::Vector3d(0, 0, kChairSeatHeightM - 0.03)),
                        extent(pitch - 0.04, depth, 0.06), kFabricColour));
     for (const double a : {-1.0, 1.0}) {
       for (const double b : {-1.0, 1.0}) {
         const Eigen::Vector3d leg = centre + a * (0.5 * pitch - 0.05) * along3 +
                                     b * (0.5 * depth - 0.04) * back3 +
-                                    Eigen::Vector3d(0, 0, 0.5 * (kSeatHeightM - 0.06));
-        out.push_back(part(PrimitiveShape::kCylinder, offset(X, leg),
-                           Eigen::Vector3d(2 * kLegRadiusM, 2 * kLegRadiusM, kSeatHeightM - 0.06),
-                           kFrameColour));
+                                    Eigen::Vector3d(0, 0, 0.5 * (kChairSeatHeightM - 0.06));
+        out.push_back(
+            part(PrimitiveShape::kCylinder, offset(X, leg),
+                 Eigen::Vector3d(2 * kLegRadiusM, 2 * kLegRadiusM, kChairSeatHeightM - 0.06),
+                 kFrameColour));
       }
     }
   }
-  const double back_height = std::max(height_m, kSeatHeightM + 0.3) - kSeatHeightM;
+  const double back_height = std::max(height_m, kChairSeatHeightM + 0.3) - kChairSeatHeightM;
   out.push_back(part(PrimitiveShape::kBox,
                      offset(X, (0.5 * depth - 0.025) * back3 +
-                                   Eigen::Vector3d(0, 0, kSeatHeightM + 0.5 * back_height)),
+                                   Eigen::Vector3d(0, 0, kChairSeatHeightM + 0.5 * back_height)),
                      extent(length - 0.04, 0.05, back_height), kFabricColour));
   return out;
 }

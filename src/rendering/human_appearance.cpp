@@ -104,6 +104,7 @@ HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed) {
   look.mask = traits.mask;
   look.emotion = traits.emotion;
   look.mask_colour = pick(kMasks, rng);
+  look.left_handed = rng.bernoulli(0.1);  // drawn last: the earlier draws keep their values
   return look;
 }
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/world/posture.hpp"
 
 namespace ari_social_sim::rendering {
 namespace {
@@ -36,6 +37,24 @@ constexpr double kShoulderSwingRad = 0.38;
 constexpr double kArmAbductionRad = 0.14;     // arms hang a little away from the body
 constexpr double kStanceAbductionRad = 0.07;  // standing feet a little apart
 constexpr double kJawDropShare = 0.06;        // of the head's height, the mouth fully open
+// Sitting and rising: the trunk leans forward by up to kRiseLeanRad halfway through the change
+// (about 35 deg of trunk flexion; docs/cameras.md), and reclines against the backrest by
+// kSeatedReclineRad once seated; the hips stay on the seat for the first kHipsStillShare of a
+// rise. Seated, the upper arms tilt forward and the elbows bend so the hands rest on the thighs.
+constexpr double kRiseLeanRad = 0.6;
+constexpr double kSeatedReclineRad = 0.08;
+constexpr double kHipsStillShare = 0.3;
+constexpr double kSeatedArmPitchRad = 0.4;
+constexpr double kSeatedElbowFlexRad = 1.0;
+constexpr double kSeatFrontM = 0.2;  // hips to the seat's front edge: a chair 0.45 m deep
+// Gestures while speaking: the upper arm forward by kGestureArmPitchRad and the elbow bent by
+// kGestureElbowFlexRad more than at rest bring the forearm up in front of the trunk, where most
+// conversational gestures are made (McNeill's central gesture space); beats move both by a
+// fraction. The non-dominant hand gestures at kOtherHandShare of the dominant one's amplitude.
+constexpr double kGestureArmPitchRad = 0.45;
+constexpr double kGestureElbowFlexRad = 1.1;
+constexpr double kBeatShare = 0.1;
+constexpr double kOtherHandShare = 0.5;
 
 // The face in shares of the head's height (chin to crown; the head frame's origin is halfway),
 // from adult means (Farkas, 1994): the nasion 0.04 above the middle, the nose 0.23 long (nasion to
@@ -81,6 +100,17 @@ Eigen::Isometry3f rotation_y(double angle) {
 Eigen::Isometry3f rotation_x(double angle) {
   return Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(angle), Eigen::Vector3f::UnitX()));
 }
+// 0 below 0, 1 above 1, a smooth S in between.
+double smoothstep(double x) {
+  const double t = std::clamp(x, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Positive: forward. Seated fraction in [0, 1].
+double trunk_lean_rad(double seated) {
+  return kRiseLeanRad * std::sin(M_PI * seated) - kSeatedReclineRad * seated;
+}
+
 Eigen::Isometry3f translation(double x, double y, double z) {
   return Eigen::Isometry3f(
       Eigen::Translation3f(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)));
@@ -98,9 +128,11 @@ HumanFigure::HumanFigure(const HumanAppearance& look) : look_(look) {
   shin_m_ = (kKneeShare - kAnkleShare) * scale_;
   upper_arm_m_ = kUpperArmShare * scale_;
   forearm_m_ = kForearmShare * scale_;
+  hand_m_ = kHandShare * scale_;
   const double shoulder_width =
       kShoulderWidthShare * scale_ * look.build * (look.female_build ? 0.92 : 1.0);
   shoulder_joint_y_ = 0.5 * shoulder_width - 0.03 * scale_;
+  thigh_radius_m_ = 0.045 * scale_ * look.build;
   hip_joint_y_ = 0.25 * kHipWidthShare * scale_ * look.build * (look.female_build ? 1.05 : 1.0);
   // Chin to crown is the head's height; it is 0.85 of that deep and 0.68 of that wide.
   head_radii_ = 0.5 * look.head_height_m * Eigen::Vector3d(0.85, 0.68, 1.0);
@@ -117,7 +149,7 @@ void HumanFigure::add_part(Joint joint, bool face, const RenderPrimitive& primit
 
 void HumanFigure::build_legs() {
   const double s = scale_;
-  const double thigh_radius = 0.045 * s * look_.build;
+  const double thigh_radius = thigh_radius_m_;
   const double shin_radius = 0.034 * s * look_.build;
   for (const auto& [hip, knee, ankle] :
        {std::array<Joint, 3>{kLeftHip, kLeftKnee, kLeftAnkle},
@@ -193,10 +225,9 @@ void HumanFigure::build_trunk_and_arms() {
              shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * forearm_m_},
                    {2.0 * forearm_radius, 2.0 * forearm_radius, forearm_m_ + forearm_radius},
                    forearm_colour, kLimbSegments));
-    const double hand = kHandShare * s;
     add_part(elbow, false,
-             shape(PrimitiveShape::kSphere, {0.0, 0.0, -forearm_m_ - 0.45 * hand},
-                   {0.045 * s, 0.028 * s, hand}, look_.skin, kFeatureSegments));
+             shape(PrimitiveShape::kSphere, {0.0, 0.0, -forearm_m_ - 0.45 * hand_m_},
+                   {0.045 * s, 0.028 * s, hand_m_}, look_.skin, kFeatureSegments));
   }
 }
 
@@ -494,10 +525,13 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
       translation(pose.body.position.x(), pose.body.position.y(), 0.0) *
       Eigen::Isometry3f(
           Eigen::AngleAxisf(static_cast<float>(pose.body.theta), Eigen::Vector3f::UnitZ()));
-  frames[kPelvis] = body;
+  const Eigen::Isometry3f trunk = trunk_frame(pose, body);
+  frames[kPelvis] = trunk;
   const double head_turn = std::clamp(core::angle_difference(pose.head_yaw_rad, pose.body.theta),
                                       -kMaxHeadTurnRad, kMaxHeadTurnRad);
-  frames[kHead] = body * translation(0.0, 0.0, head_centre_z_) *
+  // The neck keeps the head level however the trunk leans: people look ahead as they rise.
+  frames[kHead] = trunk * translation(0.0, 0.0, head_centre_z_) *
+                  rotation_y(-trunk_lean_rad(std::clamp(pose.seated, 0.0, 1.0))) *
                   Eigen::Isometry3f(
                       Eigen::AngleAxisf(static_cast<float>(head_turn), Eigen::Vector3f::UnitZ())) *
                   rotation_y(pose.head_pitch_rad);
@@ -505,31 +539,22 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
                                              -kJawDropShare * look_.head_height_m *
                                                  std::clamp(pose.mouth_open, 0.0, 1.0));
   const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
-  const double phase = pose.gait_phase_rad;
-  // Legs swing in antiphase; a knee bends while its leg swings forward. Arms swing against the
-  // leg on their side.
+  const double seated = std::clamp(pose.seated, 0.0, 1.0);
+  // Arms swing against the leg on their side; seated, the hands rest on the thighs.
   for (const double side : {1.0, -1.0}) {
-    const double leg_phase = side > 0.0 ? phase : phase + M_PI;
-    // Standing, the feet are a little apart and the left one a little ahead (a relaxed stance);
-    // the stance fades as the stride takes over.
-    const double stance = 1.0 - amplitude;
-    const double hip_pitch =
-        amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
-    const double knee_flex =
-        amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
-    const Eigen::Isometry3f hip = body * translation(0.0, side * hip_joint_y_, hip_z_) *
-                                  rotation_x(side * stance * kStanceAbductionRad) *
-                                  rotation_y(-hip_pitch);
-    const Eigen::Isometry3f knee = hip * translation(0.0, 0.0, -thigh_m_) * rotation_y(knee_flex);
-    // The foot stays flat on its heading whatever the leg does.
-    Eigen::Isometry3f ankle = body;
-    ankle.translation() = (knee * translation(0.0, 0.0, -shin_m_)).translation();
-    const double arm_pitch = -amplitude * kShoulderSwingRad * std::sin(leg_phase);
+    const double leg_phase = side > 0.0 ? pose.gait_phase_rad : pose.gait_phase_rad + M_PI;
+    const double gesture = gesture_share(pose, side);
+    const double beat = 1.0 + kBeatShare * std::clamp(pose.gesture_beat, -1.0, 1.0);
+    const double arm_pitch = -amplitude * kShoulderSwingRad * std::sin(leg_phase) +
+                             seated * kSeatedArmPitchRad + gesture * beat * kGestureArmPitchRad;
     const Eigen::Isometry3f shoulder =
-        body * translation(0.0, side * shoulder_joint_y_, shoulder_z_ - 0.03 * scale_) *
+        trunk * translation(0.0, side * shoulder_joint_y_, shoulder_z_ - 0.03 * scale_) *
         rotation_x(side * kArmAbductionRad) * rotation_y(-arm_pitch);
     const Eigen::Isometry3f elbow =
-        shoulder * translation(0.0, 0.0, -upper_arm_m_) * rotation_y(-(0.15 + 0.3 * amplitude));
+        shoulder * translation(0.0, 0.0, -upper_arm_m_) *
+        rotation_y(-(0.15 + 0.3 * amplitude + seated * kSeatedElbowFlexRad +
+                     gesture * beat * kGestureElbowFlexRad));
+    const auto [hip, knee, ankle] = leg_frames(pose, body, side);
     frames[side > 0.0 ? kLeftHip : kRightHip] = hip;
     frames[side > 0.0 ? kLeftKnee : kRightKnee] = knee;
     frames[side > 0.0 ? kLeftAnkle : kRightAnkle] = ankle;
@@ -539,12 +564,96 @@ HumanFigure::JointFrames HumanFigure::joint_frames(const FigurePose& pose) const
   return frames;
 }
 
+double HumanFigure::seated_hip_z(const FigurePose& pose) const {
+  // The thighs rest on the seat and, when the shins are too short for them to lie flat with the
+  // feet on the floor, slope down to the knees: the hips sit high enough for the thighs to clear
+  // the seat's front edge, kSeatFrontM ahead of them.
+  const double resting_z = pose.seat_height_m + thigh_radius_m_;
+  const double slope =
+      0.5 * M_PI - thigh_pitch_rad(resting_z, 0.0, world::kSeatToFeetM, kAnkleShare * scale_);
+  return resting_z + kSeatFrontM * std::tan(std::max(0.0, slope));
+}
+
+double HumanFigure::thigh_pitch_rad(double hip_z, double hip_x, double ankle_x,
+                                    double ankle_z) const {
+  const double dx = ankle_x - hip_x, dz = ankle_z - hip_z;
+  const double d = std::min(std::hypot(dx, dz), thigh_m_ + shin_m_);
+  const double thigh_off = std::acos(std::clamp(
+      (thigh_m_ * thigh_m_ + d * d - shin_m_ * shin_m_) / (2.0 * thigh_m_ * d), -1.0, 1.0));
+  return std::atan2(dx, -dz) + thigh_off;
+}
+
+Eigen::Isometry3f HumanFigure::trunk_frame(const FigurePose& pose,
+                                           const Eigen::Isometry3f& body) const {
+  const double seated = std::clamp(pose.seated, 0.0, 1.0);
+  if (seated <= 0.0) {
+    return body;  // the trunk's parts are placed for a standing figure
+  }
+  // The hips leave the seat only once the trunk has leant forward (flexion before extension,
+  // the sit-to-stand's phases; docs/cameras.md), and settle on it last when sitting down.
+  const double rise = smoothstep((1.0 - seated - kHipsStillShare) / (1.0 - kHipsStillShare));
+  const double hip_z = seated_hip_z(pose) + rise * (hip_z_ - seated_hip_z(pose));
+  return body * translation(0.0, 0.0, hip_z) * rotation_y(trunk_lean_rad(seated)) *
+         translation(0.0, 0.0, -hip_z_);
+}
+
+std::array<Eigen::Isometry3f, 3> HumanFigure::leg_frames(const FigurePose& pose,
+                                                         const Eigen::Isometry3f& body,
+                                                         double side) const {
+  const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
+  const double seated = std::clamp(pose.seated, 0.0, 1.0);
+  const double leg_phase = side > 0.0 ? pose.gait_phase_rad : pose.gait_phase_rad + M_PI;
+  // Standing, the feet are a little apart and the left one a little ahead (a relaxed stance);
+  // the stance fades as the stride takes over, and as the figure sits.
+  const double stance = (1.0 - amplitude) * (1.0 - seated);
+  double hip_pitch =
+      amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
+  double knee_flex = amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
+  const Eigen::Vector3f hip_point =
+      trunk_frame(pose, body) *
+      Eigen::Vector3f(0.0f, static_cast<float>(side * hip_joint_y_), static_cast<float>(hip_z_));
+  if (seated > 0.0) {
+    // Two-link reach (law of cosines) from the hip to the ankle above the foot, which stays on
+    // the floor seated * kSeatToFeetM ahead of the body: the knee bends forward.
+    const Eigen::Vector3f ankle_point =
+        body * Eigen::Vector3f(static_cast<float>(seated * world::kSeatToFeetM),
+                               static_cast<float>(side * hip_joint_y_),
+                               static_cast<float>(kAnkleShare * scale_));
+    const Eigen::Vector3f reach = body.linear().transpose() * (ankle_point - hip_point);
+    const double d = std::min(static_cast<double>(reach.norm()), thigh_m_ + shin_m_);
+    const double knee_inner = std::acos(std::clamp(
+        (thigh_m_ * thigh_m_ + shin_m_ * shin_m_ - d * d) / (2.0 * thigh_m_ * shin_m_), -1.0, 1.0));
+    hip_pitch += thigh_pitch_rad(0.0, 0.0, reach.x(), reach.z());
+    knee_flex += M_PI - knee_inner;
+  }
+  Eigen::Isometry3f hip = body;
+  hip.translation() = hip_point;
+  hip = hip * rotation_x(side * stance * kStanceAbductionRad) * rotation_y(-hip_pitch);
+  const Eigen::Isometry3f knee = hip * translation(0.0, 0.0, -thigh_m_) * rotation_y(knee_flex);
+  // The foot stays flat on its heading whatever the leg does.
+  Eigen::Isometry3f ankle = body;
+  ankle.translation() = (knee * translation(0.0, 0.0, -shin_m_)).translation();
+  return {hip, knee, ankle};
+}
+
 void HumanFigure::append_posed(const FigurePose& pose, float body_label, float face_label,
                                RenderMesh& out) const {
   const JointFrames frames = joint_frames(pose);
   for (const Part& part : parts_) {
     append_moved(part.mesh, frames[part.joint], part.face ? face_label : body_label, out);
   }
+}
+
+// How much the arm on `side` (+1 the figure's left) gestures: the dominant one fully.
+double HumanFigure::gesture_share(const FigurePose& pose, double side) const {
+  const bool dominant = (side > 0.0) == look_.left_handed;
+  return std::clamp(pose.gesture, 0.0, 1.0) * (dominant ? 1.0 : kOtherHandShare);
+}
+
+Eigen::Vector3d HumanFigure::hand_centre(const FigurePose& pose, bool left) const {
+  const Eigen::Isometry3f& elbow = joint_frames(pose)[left ? kLeftElbow : kRightElbow];
+  return (elbow * Eigen::Vector3f(0.0f, 0.0f, static_cast<float>(-forearm_m_ - 0.45 * hand_m_)))
+      .cast<double>();
 }
 
 Eigen::Isometry3d HumanFigure::head_frame(const FigurePose& pose) const {

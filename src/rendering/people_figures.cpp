@@ -15,6 +15,14 @@ constexpr double kBriskSpeedMps = 1.2;
 constexpr double kStandingSpeedMps = 0.05;
 // The mouth opens and closes at a syllable rate while the person speaks.
 constexpr double kSyllablesPerSecond = 4.0;
+// Gestures rise into place and fall back with this time constant when speech starts and ends,
+// and beat on every other syllable (beats fall on stressed syllables).
+constexpr double kGestureTimeConstantS = 0.35;
+
+// Each person's syllables start at their own offset, so that speakers do not move in step.
+double syllable_phase(double time_s, uint32_t id) {
+  return 2.0 * M_PI * kSyllablesPerSecond * time_s + 1.7 * id;
+}
 
 }  // namespace
 
@@ -26,6 +34,7 @@ FigureInput figure_input_of(const world::HumanSnapshot& human) {
   input.face_yaw_rad = human.gaze.direction_rad;
   input.head_pitch_rad = human.head_pitch_rad;
   input.speaking = human.speech.is_speaking;
+  input.seated = human.posture.seated_fraction();
   return input;
 }
 
@@ -37,6 +46,7 @@ FigureInput figure_input_of(const physics::PersonState& person) {
   input.face_yaw_rad = person.face_yaw_rad;
   input.head_pitch_rad = person.head_pitch_rad;
   input.speaking = person.speaking;
+  input.seated = person.seated_fraction;
   return input;
 }
 
@@ -51,17 +61,21 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     present.insert(id);
     auto found = people_.find(id);
     if (found == people_.end() || found->second.traits != input.traits) {
+      // Someone first seen speaking is already gesturing.
       Person person{input.traits, HumanFigure(appearance_of(input.traits, appearance_seed_)), 0.0,
-                    time_s};
+                    time_s, input.speaking ? 1.0 : 0.0};
       found = people_.insert_or_assign(id, std::move(person)).first;
     }
     Person& person = found->second;
-    const double speed = input.velocity_mps.norm();
+    // Standing up and sitting down move the body, but the feet stay put: no stride.
+    const double speed = input.seated > 0.0 ? 0.0 : input.velocity_mps.norm();
     const double dt = std::max(0.0, time_s - person.last_time_s);
     person.last_time_s = time_s;
     const double stride = kStrideShare * person.figure.appearance().height_m;
     person.gait_phase_rad =
         std::fmod(person.gait_phase_rad + 2.0 * M_PI * speed * dt / stride, 2.0 * M_PI);
+    person.gesture += ((input.speaking ? 1.0 : 0.0) - person.gesture) *
+                      (1.0 - std::exp(-dt / kGestureTimeConstantS));
 
     PosedPerson posed;
     posed.id = id;
@@ -70,12 +84,13 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     posed.pose.head_yaw_rad = input.face_yaw_rad;
     posed.pose.head_pitch_rad = input.head_pitch_rad;
     posed.pose.gait_phase_rad = person.gait_phase_rad;
+    posed.pose.seated = input.seated;
     posed.pose.gait_amplitude =
         speed < kStandingSpeedMps ? 0.0 : std::min(1.0, speed / kBriskSpeedMps);
-    // Each person's syllables start at their own offset, so that speakers do not move in step.
-    posed.pose.mouth_open =
-        input.speaking ? 0.5 + 0.5 * std::sin(2.0 * M_PI * kSyllablesPerSecond * time_s + 1.7 * id)
-                       : 0.0;
+    const double syllable = syllable_phase(time_s, id);
+    posed.pose.mouth_open = input.speaking ? 0.5 + 0.5 * std::sin(syllable) : 0.0;
+    posed.pose.gesture = person.gesture;
+    posed.pose.gesture_beat = std::sin(0.5 * syllable);
     const size_t index = posed_.size();
     posed.body_label = static_cast<uint16_t>(2 * index + 1);
     posed.face_label = static_cast<uint16_t>(2 * index + 2);

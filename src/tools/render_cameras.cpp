@@ -30,10 +30,16 @@ constexpr const char* kUsage = R"(Usage:
   render_cameras --world WORLD_YAML --out DIR [--overwrite]
 
 Renders ARI's head camera, torso RGB-D camera (colour and depth), front and rear fisheyes and the
-T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world and five people
-around it (one speaking, one in a mask, one walking), and writes DIR/camera_head.png, camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m
-false-coloured, black where invalid), camera_fisheye_front.png, camera_fisheye_rear.png,
-camera_t265_fisheye1.png and camera_t265_fisheye2.png. DIR is created when missing; pictures
+T265 fisheye pair once, with ARI at (6.0, 2.6) facing north-west in the world and seven people
+around it (one speaking, one in a mask, one walking, two seated), and writes DIR/camera_head.png,
+camera_torso_rgb.png, camera_torso_depth.png (0 to 5 m false-coloured, black where invalid),
+camera_fisheye_front.png, camera_fisheye_rear.png, camera_t265_fisheye1.png and
+camera_t265_fisheye2.png; then the head and torso colour cameras of four more scenes, as
+camera_head_SCENE.png and camera_torso_rgb_SCENE.png: a conversation of three (group), someone
+walking past (walking), a patient in a mask (mask) and patients seated on a row of chairs with a
+companion standing by (seated). The people are placed for the waiting room
+(worlds/hospital_waiting_room.yaml); in another world they stand where they stand. DIR is
+created when missing; pictures
 already there are replaced only with --overwrite (checked before rendering). Each picture
 appears under its name only once it is whole. SIGINT (Ctrl-C) or SIGTERM stops between two
 pictures: those written are kept, the others are not rendered. A second Ctrl-C kills at once.
@@ -116,17 +122,28 @@ rendering::FigureInput person(uint32_t id, double age, model::Gender gender, boo
   return input;
 }
 
+// Someone sitting on the seat at `seat`, facing `facing`.
+rendering::FigureInput seated_person(uint32_t id, double age, model::Gender gender,
+                                     const Eigen::Vector2d& seat, double facing) {
+  rendering::FigureInput input = person(id, age, gender, false, {seat, facing}, facing);
+  input.seated = 1.0;
+  return input;
+}
+
 std::vector<Shot> shots() {
   using model::Gender;
   // Overview: ARI faces north-west towards the middle rows of chairs; two people talk in front
-  // of it (one speaking, one in a mask), one walks past on its left and two wait nearby.
+  // of it (one speaking, one in a mask), one walks past on its left, two wait nearby and two sit
+  // on the south row's seats (every half metre from x = 2.75 m, facing south).
   Shot overview{"", {{6.0, 2.6}, 2.0}, 0.15, 0.05, {}};
   overview.people = {person(1, 34, Gender::kFemale, false, {{5.1, 4.2}, -0.9}, -1.1,
                             Eigen::Vector2d::Zero(), true),
                      person(2, 61, Gender::kMale, true, {{4.5, 3.7}, 0.2}, 0.5),
                      person(3, 27, Gender::kMale, false, {{4.3, 2.0}, 1.6}, 1.6, {0.0, 1.2}),
                      person(4, 45, Gender::kFemale, false, {{7.2, 0.9}, 2.3}, 2.5),
-                     person(5, 9, Gender::kMale, false, {{6.9, 3.4}, -2.0}, -2.2)};
+                     person(5, 9, Gender::kMale, false, {{6.9, 3.4}, -2.0}, -2.2),
+                     seated_person(6, 74, Gender::kFemale, {2.75, 5.0}, -M_PI / 2),
+                     seated_person(7, 52, Gender::kMale, {3.75, 5.0}, -M_PI / 2)};
   // A conversation of three, 2.2 m ahead of ARI in the open middle of the room: one speaks.
   Shot group{"group", {{6.0, 4.0}, M_PI}, 0.0, 0.1, {}};
   const Eigen::Vector2d centre(3.8, 4.1);
@@ -146,7 +163,13 @@ std::vector<Shot> shots() {
   // A patient in a surgical mask facing ARI from 1.3 m.
   Shot masked{"mask", {{6.0, 4.0}, M_PI}, 0.0, 0.0, {}};
   masked.people = {person(37, 58, Gender::kFemale, true, {{4.6, 4.0}, 0.0}, 0.0)};
-  return {overview, group, walking, masked};
+  // Waiting patients on the south row 1.7 m ahead of ARI, a companion standing by them.
+  Shot seated{"seated", {{3.6, 3.3}, M_PI / 2}, 0.0, 0.15, {}};
+  seated.people = {
+      seated_person(41, 79, Gender::kFemale, {3.25, 5.0}, -M_PI / 2),
+      seated_person(42, 35, Gender::kMale, {4.25, 5.0}, -M_PI / 2),
+      person(43, 50, Gender::kMale, false, {{2.8, 4.6}, 0.3}, 0.5, Eigen::Vector2d::Zero(), true)};
+  return {overview, group, walking, masked, seated};
 }
 
 // The pictures a shot makes: every camera for the overview, head and torso for the others.

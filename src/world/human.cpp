@@ -23,6 +23,7 @@ Human::Human(const HumanSpec& spec, core::Rng gaze_rng, core::Rng reaction_rng)
       gaze_rng_(gaze_rng),
       reaction_rng_(reaction_rng) {
   pose_ = spec.pose;
+  posture_.posture = spec.posture;
   navigation_ = &add_component(std::make_unique<HumanNavigation>());
   speech_ = &add_component(std::make_unique<SpeechGenerator>(spec.words_per_minute));
   if (spec.gaze) {
@@ -70,6 +71,7 @@ const std::optional<core::Pose2>& Human::goal() const {
 void Human::set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps) {
   ARI_DCHECK(velocity_mps.allFinite() && std::isfinite(angular_velocity_rps));
   mode_ = MotionMode::kDirect;
+  posture_.change_to(Posture::kStanding);
   navigation_->clear_goal();
   direct_velocity_ = velocity_mps;
   direct_angular_velocity_ = angular_velocity_rps;
@@ -78,6 +80,7 @@ void Human::set_velocity(const Eigen::Vector2d& velocity_mps, double angular_vel
 void Human::set_goal(const core::Pose2& goal) {
   ARI_DCHECK(goal.position.allFinite() && std::isfinite(goal.theta));
   mode_ = MotionMode::kNavigation;
+  posture_.change_to(Posture::kStanding);
   navigation_->set_goal(goal);
 }
 
@@ -113,6 +116,13 @@ void Human::set_orientation(double theta_rad) {
 }
 
 void Human::apply_motion(const StepContext& context) {
+  if (!posture_.is_standing()) {
+    apply_posture(context.dt_s);
+    return;
+  }
+  if (body()->GetType() != b2_dynamicBody) {
+    body()->SetType(b2_dynamicBody);
+  }
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
   double rotation = 0.0;
   switch (mode_) {
@@ -135,6 +145,20 @@ void Human::apply_motion(const StepContext& context) {
       b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
   pose_.theta = core::wrap_angle(pose_.theta + rotation);
   angular_velocity_ = rotation / context.dt_s;
+}
+
+void Human::apply_posture(double dt_s) {
+  // Kinematic: no contact moves it, so a seated person stays on the seat whoever brushes past;
+  // and none is made with furniture, so the seat under them is no obstacle.
+  if (body()->GetType() != b2_kinematicBody) {
+    body()->SetType(b2_kinematicBody);
+  }
+  const double speed_mps = posture_.advance(dt_s);
+  const Eigen::Vector2d velocity =
+      speed_mps * Eigen::Vector2d(std::cos(pose_.theta), std::sin(pose_.theta));
+  body()->SetLinearVelocity(
+      b2Vec2(static_cast<float>(velocity.x()), static_cast<float>(velocity.y())));
+  angular_velocity_ = 0.0;
 }
 
 void Human::apply_reaction(const ReactionMotion& reaction, double dt_s, Eigen::Vector2d& velocity,

@@ -59,11 +59,25 @@ void insert_sorted(std::vector<std::unique_ptr<T>>& items, std::unique_ptr<T> it
 class StaticBody : public Object {
  public:
   explicit StaticBody(const model::StaticObject& description)
-      : Object(description.id, ObjectKind::kStatic) {
+      : Object(description.id, ObjectKind::kStatic),
+        is_wall_(description.type == model::ShapeType::kWall) {
     pose_ = description.pose;
   }
   void sync_from_body(double dt_s) override {}
+  bool is_wall() const { return is_wall_; }
+
+ private:
+  bool is_wall_;
 };
+
+bool is_furniture(const Object& object) {
+  return object.kind() == ObjectKind::kStatic && !static_cast<const StaticBody&>(object).is_wall();
+}
+
+bool is_seated(const Object& object) {
+  return object.kind() == ObjectKind::kHuman &&
+         static_cast<const Human&>(object).posture().seated_fraction() > 0.0;
+}
 
 b2Body* make_agent_body(b2World& physics, const core::Pose2& pose, Object& owner) {
   b2BodyDef def;
@@ -166,7 +180,8 @@ GroupNavigation* Simulation::mutable_group(model::ObjectId id) {
 }
 
 void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
-                                 const Object* ignore, const std::string& what) const {
+                                 const Object* ignore, const std::string& what,
+                                 bool on_a_seat) const {
   const b2Transform transform(to_b2(pose.position), b2Rot(static_cast<float>(pose.theta)));
   b2AABB box;
   shape.ComputeAABB(&box, transform, 0);
@@ -180,11 +195,15 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
     const b2Shape* shape;
     b2Transform transform;
     const Object* ignore;
+    bool on_a_seat;
     const Object* hit{nullptr};
     bool ReportFixture(b2Fixture* fixture) override {
       const Object* other = object_of(fixture->GetBody());
       if (other == nullptr || other == ignore) {
         return true;  // the floor fence is checked as the floor's bounds above
+      }
+      if (on_a_seat && is_furniture(*other)) {
+        return true;  // the world knows no seats: any furniture may be the chair
       }
       if (b2TestOverlap(shape, 0, fixture->GetShape(), 0, transform,
                         fixture->GetBody()->GetTransform())) {
@@ -197,6 +216,7 @@ void Simulation::check_placement(const b2Shape& shape, const core::Pose2& pose,
   query.shape = &shape;
   query.transform = transform;
   query.ignore = ignore;
+  query.on_a_seat = on_a_seat;
   physics_->QueryAABB(&query, box);
   if (query.hit != nullptr) {
     const char* kind = query.hit->kind() == ObjectKind::kStatic  ? "wall or furniture"
@@ -240,7 +260,8 @@ const Human& Simulation::add_human(HumanSpec spec) {
   circle.m_radius = static_cast<float>(spec.motion.body_radius_m);
   check_placement(circle, spec.pose, nullptr,
                   what + " at (" + std::to_string(spec.pose.position.x()) + ", " +
-                      std::to_string(spec.pose.position.y()) + ")");
+                      std::to_string(spec.pose.position.y()) + ")",
+                  spec.posture == Posture::kSitting);
 
   auto human = std::make_unique<Human>(
       spec, core::rng_for(config_.seed, core::rng_streams::kHumanGaze, spec.id),
@@ -254,6 +275,10 @@ const Human& Simulation::add_human(HumanSpec spec) {
   fixture.density = kHumanMassKg / (b2_pi * circle.m_radius * circle.m_radius);
   fixture.friction = 0.0f;
   body->CreateFixture(&fixture);
+  if (spec.posture == Posture::kSitting) {
+    // As Human::apply_posture keeps it: not pushed off the seat, not pushed out of the chair.
+    body->SetType(b2_kinematicBody);
+  }
   human->attach_body(body);
   register_object(*human);
   agents_changed();
@@ -547,6 +572,14 @@ void Simulation::set_human_reaction(model::ObjectId human_id, ReactionProfile pr
   human.set_reaction(profile);
 }
 
+void Simulation::set_human_posture(model::ObjectId human_id, Posture posture) {
+  Human& human = existing_human(RequestCheck("set_posture"), human_id);
+  if (posture == Posture::kSitting && human.motion_mode() != MotionMode::kGroup) {
+    human.stop();
+  }
+  human.change_posture(posture);
+}
+
 void Simulation::set_human_gaze(model::ObjectId human_id, const GazeModel& model) {
   const RequestCheck check("set_gaze_targets");
   Human& human = existing_human(check, human_id);
@@ -766,8 +799,8 @@ void Simulation::set_pose(model::ObjectId id, const core::Pose2& pose) {
   Object* object = &existing_agent(check, "id", id);
   check.pose_on_floor("pose", pose, world_);
   b2Body* body = object->body();
-  check_placement(*body->GetFixtureList()->GetShape(), pose, object,
-                  "object " + std::to_string(id));
+  check_placement(*body->GetFixtureList()->GetShape(), pose, object, "object " + std::to_string(id),
+                  is_seated(*object));
   if (object->kind() == ObjectKind::kHuman) {
     release_from_group(static_cast<Human&>(*object));
   }

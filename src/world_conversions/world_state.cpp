@@ -52,6 +52,16 @@ world::SpeechSnapshot from_msg(const SpeechState& msg) {
 
 }  // namespace
 
+world::PostureState posture_of(const HumanState& msg) {
+  if (msg.posture == HumanState::POSTURE_UNSET ||
+      !(msg.posture_progress >= 0.0f && msg.posture_progress <= 1.0f)) {
+    return {};
+  }
+  return {msg.posture == HumanState::POSTURE_SITTING ? world::Posture::kSitting
+                                                     : world::Posture::kStanding,
+          msg.posture_progress};
+}
+
 WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame_id) {
   WorldState msg;
   msg.header.stamp = ros::Time(snapshot.time_s);
@@ -94,6 +104,9 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     h.gaze.since = human.gaze.since_s;
     h.head_pitch = human.head_pitch_rad;
     h.speech = to_msg(human.speech);
+    h.posture = human.posture.posture == world::Posture::kSitting ? HumanState::POSTURE_SITTING
+                                                                  : HumanState::POSTURE_STANDING;
+    h.posture_progress = static_cast<float>(human.posture.progress);
     msg.humans.push_back(std::move(h));
   }
   for (const world::GroupSnapshot& group : snapshot.groups) {
@@ -187,6 +200,7 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
     human.gaze = {h.gaze.target_id, h.gaze.direction, h.gaze.since};
     human.head_pitch_rad = h.head_pitch;
     human.speech = from_msg(h.speech);
+    human.posture = posture_of(h);
     snapshot.humans.push_back(std::move(human));
   }
   for (const GroupState& g : msg.groups) {
@@ -304,6 +318,11 @@ std::optional<InputProblem> input_problem(const WorldState& msg) {
     }
     check.that(known_reaction, field + ".reaction",
                "'" + h.reaction + "', not one of " + core::choice_names(world::kReactionProfiles));
+    check.one_of(field + ".posture", h.posture, HumanState::POSTURE_UNSET,
+                 HumanState::POSTURE_SITTING);
+    check.that(h.posture_progress >= 0.0f && h.posture_progress <= 1.0f,
+               field + ".posture_progress",
+               core::number_text(h.posture_progress) + ", not in [0, 1]");
   }
   for (size_t i = 0; i < msg.groups.size(); ++i) {
     const std::string field = "groups[" + std::to_string(i) + "]";

@@ -26,6 +26,9 @@ nav_msgs::OccupancyGrid to_msg(const model::OccupancyGrid& grid, const std::stri
 /// The snapshot a /sim/world_state message carries: the inverse of to_msg (the message holds a
 /// speaker's previous act but no longer history).
 world::WorldSnapshot from_msg(const WorldState& msg);
+/// A human's posture from its state; POSTURE_UNSET (a publisher from before postures) and a
+/// progress outside [0, 1] (input_problem refuses it) read as standing, settled.
+world::PostureState posture_of(const HumanState& msg);
 /// A /map message as a grid (an origin rotation, which the world never writes, is ignored).
 model::OccupancyGrid from_msg(const nav_msgs::OccupancyGrid& msg);
 

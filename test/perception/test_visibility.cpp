@@ -11,8 +11,8 @@ const FieldOfView kFisheye{{{0.0, 0.0}, 0.0}, core::kPi / 2, 10.0};
 
 double fraction(const std::vector<Eigen::Vector2d>& people, size_t target,
                 const model::OccupancyGrid* grid = nullptr, const FieldOfView& fov = kFisheye,
-                int rays = 100) {
-  return visible_fraction(fov, {grid, 50, &people, 0.2}, target, rays);
+                int rays = 100, const std::vector<bool>* seated = nullptr) {
+  return visible_fraction(fov, {grid, 50, &people, 0.2, seated}, target, rays);
 }
 
 TEST(Visibility, AnOpenViewSeesAll) {
@@ -46,6 +46,23 @@ TEST(Visibility, AWallHidesWhatIsBehindIt) {
   const double edge = fraction({{4.0, 2.1}}, 0, &grid);
   EXPECT_GT(edge, 0.2);
   EXPECT_LT(edge, 0.8);
+}
+
+TEST(Visibility, OnlyASeatedPersonIsSeenPastTheMapWithinOneRadiusOfThem) {
+  // A wall 0.1 m thick over x = 2.70..2.80, a person at x = 3.05. A ray at u (-1..1) of the
+  // person's half width meets the circle at x = 3.05 - 0.2 sqrt(1 - u^2): 2.85 for the centre
+  // ray, 3.05 at the rim. A standing person is checked up to there, past the wall: hidden.
+  // A seated one up to 0.2 m less, 2.65..2.85: only rays checked past the wall's raster, which
+  // starts at about 2.76, are hidden: 3.05 - 0.2 sqrt(1 - u^2) - 0.2 > 2.76 for |u| > 0.9,
+  // the outer tenth of the rays.
+  const model::OccupancyGrid grid = test::map_with_wall({2.75, -1.0}, {2.75, 1.0});
+  const std::vector<bool> standing{false};
+  const std::vector<bool> seated{true};
+  EXPECT_DOUBLE_EQ(fraction({{3.05, 0.0}}, 0, &grid, kFisheye, 100, &standing), 0.0);
+  EXPECT_DOUBLE_EQ(fraction({{3.05, 0.0}}, 0, &grid, kFisheye, 100, nullptr), 0.0);
+  EXPECT_NEAR(fraction({{3.05, 0.0}}, 0, &grid, kFisheye, 100, &seated), 0.9, 0.02);
+  // Seated 0.5 m behind the wall (circle from x = 3.3, map checked up to 3.1 or more): hidden.
+  EXPECT_DOUBLE_EQ(fraction({{3.5, 0.0}}, 0, &grid, kFisheye, 100, &seated), 0.0);
 }
 
 TEST(Visibility, RaysOutsideTheWedgeDoNotCount) {

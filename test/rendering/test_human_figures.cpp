@@ -334,5 +334,160 @@ TEST(ImageLabels, OcclusionFaceBoxesAndDepthAgreeWithTheScene) {
   EXPECT_LT(farthest, 4.4);
 }
 
+// The lowest labelled point (m above the floor) of a figure seen from its side, between
+// `from_m` and `to_m` ahead of it: a level camera 3 m away at `camera_z` looks along +x at a
+// figure at (3, 0) facing +y, so the figure's "ahead" is the image's left. At the height the
+// point is expected at, the camera sees it on its middle row whatever its depth.
+double lowest_point_m(const FigurePose& pose, const HumanFigure& figure, double from_m, double to_m,
+                      double camera_z) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  RenderMesh mesh;
+  figure.append_posed(pose, 1.0f, 2.0f, mesh);
+  renderer.set_dynamic_mesh(mesh);
+  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+  ViewOptions options;
+  options.labels = true;
+  RenderedImage image;
+  renderer.render(model, test::level_camera_facing_x({0.0, 0.0, camera_z}), options, image);
+  int lowest_row = -1;
+  for (int u = static_cast<int>(model.cx - to_m * model.fx / 3.0);
+       u <= static_cast<int>(model.cx - from_m * model.fx / 3.0); ++u) {
+    for (int v = 0; v < image.labels.rows; ++v) {
+      if (image.labels.at<uint16_t>(v, u) > 0) {
+        lowest_row = std::max(lowest_row, v);
+      }
+    }
+  }
+  return camera_z - (lowest_row - model.cy) * 3.0 / model.fy;
+}
+
+TEST(HumanFigure, ASeatedFigureRestsOnTheSeatWithItsFeetOnTheFloorAndItsEyesAtSittingHeight) {
+  for (const auto gender : {model::Gender::kFemale, model::Gender::kMale}) {
+    const HumanFigure figure(appearance_of({3, 40.0, gender, false}, 5));
+    FigurePose pose;
+    pose.body = {{3.0, 0.0}, M_PI / 2};
+    pose.seated = 1.0;
+    // Thighs on the seat (0.45 m) up to its front edge 0.2 m ahead; soles on the floor ahead.
+    const double thighs_z = lowest_point_m(pose, figure, 0.1, 0.2, kChairSeatHeightM);
+    const double soles_z = lowest_point_m(pose, figure, 0.35, 0.6, 0.0);
+    const Eigen::Vector3d eye = figure.head_frame(pose) * figure.eyes()[0];
+    std::printf("%s, %.3f m tall, seated: thighs' underside %.3f m, soles %.3f m, eyes %.3f m\n",
+                gender == model::Gender::kMale ? "man" : "woman", figure.appearance().height_m,
+                thighs_z, soles_z, eye.z());
+    EXPECT_NEAR(thighs_z, kChairSeatHeightM, 0.03);
+    EXPECT_NEAR(soles_z, 0.0, 0.01);
+    // Sitting eye height 0.74 m (women) to 0.79 m (men) above the seat (Pheasant and Haslegrave
+    // 2006, British adults' medians), so 1.19 to 1.24 m above the floor; within 5 cm for a
+    // figure of about average stature.
+    EXPECT_NEAR(eye.z(), gender == model::Gender::kMale ? 1.24 : 1.19, 0.05);
+  }
+}
+
+TEST(PeopleFigures, SpeakersGestureWithTheirDominantHandInBeatsAndStopWhenSilent) {
+  FigureInput person = standing_at(2, {0.0, 0.0}, 0.0);
+  PeopleFigures figures;
+  const auto dominant_hand_z = [&figures] {
+    const PosedPerson& posed = figures.posed()[0];
+    return posed.figure->hand_centre(posed.pose, posed.figure->appearance().left_handed).z();
+  };
+  figures.update(0.0, {person});
+  const double at_rest = dominant_hand_z();
+  // Speaking: the gesture rises within a second (time constant 0.35 s) and beats.
+  person.speaking = true;
+  double lowest = 10.0, highest = 0.0;
+  for (double t = 0.02; t <= 3.0; t += 0.02) {
+    figures.update(t, {person});
+    if (t >= 1.5) {
+      lowest = std::min(lowest, dominant_hand_z());
+      highest = std::max(highest, dominant_hand_z());
+    }
+  }
+  const double gesture = figures.posed()[0].pose.gesture;
+  // Silent again: the arms fall back to rest.
+  person.speaking = false;
+  for (double t = 3.02; t <= 5.0; t += 0.02) {
+    figures.update(t, {person});
+  }
+  std::printf(
+      "dominant hand at rest %.3f m, gesturing %.3f to %.3f m, gesture %.3f, after %.3f m\n",
+      at_rest, lowest, highest, gesture, dominant_hand_z());
+  EXPECT_GT(gesture, 0.98);
+  EXPECT_GT(lowest, at_rest + 0.15);  // the forearm up in front of the trunk
+  EXPECT_GT(highest - lowest, 0.03);  // beats
+  EXPECT_NEAR(dominant_hand_z(), at_rest, 0.01);
+  EXPECT_LT(figures.posed()[0].pose.gesture, 0.01);
+}
+
+TEST(HumanFigure, TheOtherHandGesturesLessAndOneInTenIsLeftHanded) {
+  int left_handed = 0;
+  for (uint32_t id = 0; id < 2000; ++id) {
+    left_handed += appearance_of({id, 35.0, model::Gender::kMale, false}, 4).left_handed ? 1 : 0;
+  }
+  EXPECT_NEAR(left_handed / 2000.0, 0.106, 0.02);
+  const HumanFigure figure(appearance_of({5, 35.0, model::Gender::kFemale, false}, 1));
+  FigurePose rest, gesturing;
+  gesturing.gesture = 1.0;
+  const bool left = figure.appearance().left_handed;
+  const double dominant_rise =
+      figure.hand_centre(gesturing, left).z() - figure.hand_centre(rest, left).z();
+  const double other_rise =
+      figure.hand_centre(gesturing, !left).z() - figure.hand_centre(rest, !left).z();
+  EXPECT_GT(dominant_rise, 0.15);
+  EXPECT_GT(other_rise, 0.3 * dominant_rise);
+  EXPECT_LT(other_rise, 0.8 * dominant_rise);
+}
+
+TEST(HumanFigure, StandingUpTheTrunkLeansForwardThenTheHipsRise) {
+  const HumanFigure figure(appearance_of({3, 70.0, model::Gender::kFemale, false}, 5));
+  double previous_head_z = 0.0;
+  for (const double seated : {1.0, 0.8, 0.5, 0.2, 0.0}) {
+    FigurePose pose;
+    pose.seated = seated;
+    const Eigen::Vector3d head = figure.head_frame(pose).translation();
+    std::printf("seated %.1f: head at x %.3f, z %.3f m\n", seated, head.x(), head.z());
+    if (seated == 0.5) {
+      EXPECT_GT(head.x(), 0.25);  // the head well ahead of the hips: the trunk leans forward
+    }
+    EXPECT_GE(head.z(), previous_head_z - 0.05);  // the head hardly drops, then rises
+    previous_head_z = head.z();
+  }
+  FigurePose standing;
+  EXPECT_NEAR(previous_head_z, figure.head_frame(standing).translation().z(), 1e-6);
+}
+
+TEST(ImageLabels, ASeatedPersonsBodyAndFaceBoxesAreFound) {
+  Renderer renderer;
+  renderer.set_static_primitives({});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+  // ARI's head camera height, 2.5 m from a seated person facing it.
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.4});
+  FigureInput person = standing_at(1, {2.5, 0.0}, M_PI);
+  person.seated = 1.0;
+  PeopleFigures figures;
+  figures.update(0.0, {person});
+  renderer.set_dynamic_mesh(figures.mesh());
+  ViewOptions options;
+  options.labels = true;
+  options.depth = true;
+  RenderedImage image;
+  renderer.render(model, X_world_optical, options, image);
+  const std::vector<PersonLabel> labels =
+      label_people(renderer, model, X_world_optical, figures, image.labels);
+  ASSERT_EQ(labels.size(), 1u);
+  ASSERT_TRUE(labels[0].face_box.has_value());
+  const cv::Rect face(labels[0].face_box->x, labels[0].face_box->y, labels[0].face_box->width,
+                      labels[0].face_box->height);
+  const cv::Mat face_pixels = image.labels == figures.posed()[0].face_label;
+  EXPECT_GE(cv::countNonZero(face_pixels(face)), 0.85 * cv::countNonZero(face_pixels));
+  // The body box spans the seated figure: from the crown (about 1.3 m) to the soles, 1.4 m
+  // below the camera at 2.5 m: rows cy + fy * (1.4 - z) / depth.
+  const cv::Rect body = cv::boundingRect(image.labels > 0);
+  const double top_z = 1.4 - (body.y - model.cy) * 2.5 / model.fy;
+  std::printf("seated body box %d x %d px, top at %.3f m\n", body.width, body.height, top_z);
+  EXPECT_NEAR(top_z, 1.3, 0.1);
+  EXPECT_GT(face.y, body.y - 1);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::rendering

@@ -63,6 +63,18 @@ TEST(Scene, UnknownGenderAndMissingPositionAreNamed) {
   expect_rejected("humans:\n  - {id: 10}\n", {"humans[0].position", "required"});
 }
 
+TEST(Scene, PostureIsReadAndABadOneIsNamed) {
+  const auto simulation = build_simulation(
+      load_scene_file(write_scene("humans:\n  - {id: 10, position: [3, 3], posture: sitting}\n"
+                                  "  - {id: 11, position: [4, 3]}\n")),
+      SimulationConfig{});
+  EXPECT_EQ(simulation->find_human(10)->posture().posture, Posture::kSitting);
+  EXPECT_DOUBLE_EQ(simulation->find_human(10)->posture().seated_fraction(), 1.0);
+  EXPECT_EQ(simulation->find_human(11)->posture().posture, Posture::kStanding);
+  expect_rejected("humans:\n  - {id: 10, position: [3, 3], posture: kneeling}\n",
+                  {"humans[0].posture", "standing or sitting", "kneeling"});
+}
+
 TEST(Scene, GroupConversationParametersAreCheckedAndCanSwitchItOff) {
   const std::string humans =
       "humans:\n  - {id: 10, position: [3, 3]}\n  - {id: 11, position: [4, 3]}\n";

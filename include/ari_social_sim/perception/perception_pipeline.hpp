@@ -79,6 +79,7 @@ class PerceptionPipeline {
   std::optional<model::OccupancyGrid> sight_map_;
   std::optional<model::OccupancyGrid> sound_map_;
   std::vector<Eigen::Vector2d> people_;
+  std::vector<bool> seated_;  // per entry of people_: not standing and settled
   std::optional<double> last_time_s_;
   bool listening_{true};
   PerceptionFrame frame_;

@@ -45,6 +45,7 @@ struct PersonState {
   bool mask{false};
   model::Emotion emotion{model::Emotion::kNeutral};
   bool speaking{false};
+  double seated_fraction{0.0};  // 0 standing, 1 seated (world::PostureState::seated_fraction)
 };
 
 /// A person's 3D shape at one instant, for collisions and rendering.

@@ -8,6 +8,9 @@
 
 namespace ari_social_sim::rendering {
 
+/// m; the top of a chair's seat (a waiting-room chair's), where a seated figure rests.
+constexpr double kChairSeatHeightM = 0.45;
+
 /// A world object drawn as the furniture its name says it is, within the footprint and height the
 /// physics collides with: a chair (or a row of chairs, one seat per half metre) with legs, a seat
 /// and a backrest on the side facing the nearest wall or furniture; a table with a top, a pedestal

@@ -34,6 +34,7 @@ struct HumanAppearance {
   HairStyle hair_style{HairStyle::kShort};
   bool short_sleeves{false};
   bool mask{false};
+  bool left_handed{false};                           // gestures most with the left hand
   model::Emotion emotion{model::Emotion::kNeutral};  // what the face's brows and mouth show
   Eigen::Vector3f skin{0.88f, 0.70f, 0.57f};
   int skin_tone{2};  // which of the six tones `skin` is: 1 the lightest, 6 the darkest
@@ -54,6 +55,7 @@ struct HumanAppearance {
 ///   - Head: 0.13 of an adult's stature (chin to crown), up to 0.21 for a toddler.
 ///   - Skin: six tones from light to dark in about equal shares; hair darker on average and grey
 ///     or white more often with age; clothes from everyday colours.
+///   - Handedness: one in ten left-handed (Papadatou-Pastou et al. 2020: 10.6 %).
 HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed);
 
 }  // namespace ari_social_sim::rendering

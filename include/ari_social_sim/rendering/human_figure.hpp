@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ari_social_sim/core/pose2.hpp"
+#include "ari_social_sim/rendering/furniture.hpp"
 #include "ari_social_sim/rendering/human_appearance.hpp"
 #include "ari_social_sim/rendering/render_mesh.hpp"
 
@@ -13,13 +14,22 @@ namespace ari_social_sim::rendering {
 
 /// A figure's pose at one instant.
 struct FigurePose {
-  core::Pose2 body;  // map frame: feet centre and heading
+  core::Pose2 body;  // map frame: below the pelvis (the feet's centre when standing) and heading
   double head_yaw_rad{
       0.0};  // map frame; the head turns to it, at most kMaxHeadTurnRad off the body
   double head_pitch_rad{0.0};  // positive: the head tips down (a nod), about its centre
   double gait_phase_rad{0.0};  // where the legs are in a stride: 0 and pi are mid-stance
   double gait_amplitude{0.0};  // 0 standing still, 1 a brisk walk
   double mouth_open{0.0};      // 0 closed, 1 open as on a stressed syllable
+  /// 0 standing, 1 seated (world::PostureState::seated_fraction): the thighs on a seat at
+  /// seat_height_m, the feet world::kSeatToFeetM ahead of `body`; in between, standing up or
+  /// sitting down (the trunk leans forward, the hips rise).
+  double seated{0.0};
+  double seat_height_m{kChairSeatHeightM};
+  /// 0 arms at rest, 1 gesturing as a speaker does: the forearms raised into the space in front
+  /// of the trunk, the dominant hand more; `gesture_beat` in [-1, 1] moves them in beats.
+  double gesture{0.0};
+  double gesture_beat{0.0};
 };
 
 /// A person drawn as an articulated solid: feet, lower and upper legs, pelvis, torso, shoulders,
@@ -60,6 +70,9 @@ class HumanFigure {
   };
   const std::vector<SurfacePoint>& face_surface() const { return face_surface_; }
 
+  /// A hand's centre in the map: the figure's left hand, or its right.
+  Eigen::Vector3d hand_centre(const FigurePose& pose, bool left) const;
+
   /// The irises' centres in the head frame: the figure's right eye, then its left.
   const std::array<Eigen::Vector3d, 2>& eyes() const { return eyes_; }
 
@@ -88,6 +101,20 @@ class HumanFigure {
   using JointFrames = std::array<Eigen::Isometry3f, kJointCount>;
 
   JointFrames joint_frames(const FigurePose& pose) const;
+  double gesture_share(const FigurePose& pose, double side) const;
+  /// The trunk's frame (the kPelvis joint's: the trunk's parts are placed for a standing figure):
+  /// the body's, its hips lowered towards the seat and the trunk leaning as `pose.seated` says.
+  /// Height (m) of the hip joints of a figure settled on the seat.
+  double seated_hip_z(const FigurePose& pose) const;
+  /// How far (rad, forward from straight down) the thigh pitches for the leg to reach from a hip
+  /// at (hip_x, hip_z) to an ankle at (ankle_x, ankle_z), in the body's sagittal plane, the knee
+  /// bending forward; the leg points straight at an ankle out of its reach.
+  double thigh_pitch_rad(double hip_z, double hip_x, double ankle_x, double ankle_z) const;
+  Eigen::Isometry3f trunk_frame(const FigurePose& pose, const Eigen::Isometry3f& body) const;
+  /// One leg's hip, knee and ankle frames: the standing stance and stride, or, once the figure
+  /// sits at all, the thigh and shin that reach from the hip to the foot on the floor.
+  std::array<Eigen::Isometry3f, 3> leg_frames(const FigurePose& pose, const Eigen::Isometry3f& body,
+                                              double side) const;
   void add_part(Joint joint, bool face, const RenderPrimitive& primitive);
   void build_legs();
   void build_trunk_and_arms();
@@ -116,8 +143,9 @@ class HumanFigure {
   // Lengths (m), from the appearance.
   double scale_{1.0};  // stature below the chin / 0.87: a segment of share k is k * scale_ long
   double chin_z_{0.0}, head_centre_z_{0.0}, shoulder_z_{0.0}, hip_z_{0.0};
-  double thigh_m_{0.0}, shin_m_{0.0}, upper_arm_m_{0.0}, forearm_m_{0.0};
+  double thigh_m_{0.0}, shin_m_{0.0}, upper_arm_m_{0.0}, forearm_m_{0.0}, hand_m_{0.0};
   double hip_joint_y_{0.0}, shoulder_joint_y_{0.0};
+  double thigh_radius_m_{0.0};
   Eigen::Vector3d head_radii_{Eigen::Vector3d::Zero()};
   std::vector<Part> parts_;
   std::vector<Ellipsoid> skin_volumes_;  // skull and jaw: features are set into them

@@ -22,6 +22,7 @@ struct FigureInput {
   double face_yaw_rad{0.0};                               // gaze direction, map frame
   double head_pitch_rad{0.0};                             // positive: down (a nod)
   bool speaking{false};
+  double seated{0.0};  // 0 standing, 1 seated (world::PostureState::seated_fraction)
 };
 
 FigureInput figure_input_of(const world::HumanSnapshot& human);
@@ -66,6 +67,7 @@ class PeopleFigures {
     HumanFigure figure;
     double gait_phase_rad{0.0};
     double last_time_s{0.0};
+    double gesture{0.0};  // FigurePose::gesture, following whether they speak
   };
 
   uint64_t appearance_seed_;

@@ -9,6 +9,7 @@
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/head_nod.hpp"
 #include "ari_social_sim/world/object.hpp"
+#include "ari_social_sim/world/posture.hpp"
 #include "ari_social_sim/world/robot_reaction.hpp"
 #include "ari_social_sim/world/speech_generator.hpp"
 
@@ -80,6 +81,8 @@ struct HumanSpec {
   ReactionProfile reaction{ReactionProfile::kIgnore};
   /// The reaction's distances, times and shares; none: ReactionParams' defaults.
   std::optional<ReactionParams> reaction_params;
+  /// Sitting: on a seat centred at `pose`, facing its orientation, from the start (settled).
+  Posture posture{Posture::kStanding};
 
   /// A human as a scene file's `humans` entry writes it (config_fields.hpp).
   template <class V>
@@ -101,6 +104,9 @@ struct HumanSpec {
              kReactionProfiles);
     v.section("reaction_params", reaction_params,
               "distances, times and gaze shares of the reaction to ARI");
+    v.choice("posture", posture,
+             "sitting: on a seat centred at position, facing orientation (docs/world.md)",
+             kPostures);
   }
 
   /// Throws core::RequestError naming the first field outside what visit allows, its value and
@@ -126,14 +132,18 @@ class Human : public Object {
   const HumanSpec& spec() const { return spec_; }
   MotionMode motion_mode() const { return mode_; }
 
-  /// Direct velocity (map frame), held until another command. Expects finite numbers: requests
-  /// are checked by Simulation::set_human_velocity.
+  /// Direct velocity (map frame), held until another command, from when a seated human has stood
+  /// up. Expects finite numbers: requests are checked by Simulation::set_human_velocity.
   void set_velocity(const Eigen::Vector2d& velocity_mps, double angular_velocity_rps);
-  /// Walks to a goal with HumanNavigation (eq. 3.1-3.7). Expects a finite pose: requests are
-  /// checked by Simulation::set_human_goal.
+  /// Walks to a goal with HumanNavigation (eq. 3.1-3.7), standing up first if seated. Expects a
+  /// finite pose: requests are checked by Simulation::set_human_goal.
   void set_goal(const core::Pose2& goal);
   /// Stands still.
   void stop();
+  /// Stands up or sits down (posture.hpp): until standing and settled the human does not move
+  /// but for the change itself and keeps its heading; gaze, speech and groups carry on.
+  void change_posture(Posture target) { posture_.change_to(target); }
+  const PostureState& posture() const { return posture_; }
   /// Hands the movement to a GroupNavigation script (called by the script).
   void join_group(model::ObjectId group_id);
   /// Called by the group script when the human leaves it.
@@ -175,6 +185,9 @@ class Human : public Object {
   void sync_from_body(double dt_s) override;
 
  private:
+  // Holds a human who is not standing still against any push (a kinematic body), but for the
+  // change of posture under way; lets a standing one be moved by its plan and its contacts.
+  void apply_posture(double dt_s);
   // The reaction's velocity and turn in place of, or on top of, what was planned.
   void apply_reaction(const ReactionMotion& reaction, double dt_s, Eigen::Vector2d& velocity,
                       double& rotation) const;
@@ -194,6 +207,7 @@ class Human : public Object {
   GazeGenerator* gaze_{nullptr};
   std::optional<GazeEvent> conversation_gaze_;
   std::optional<HeadNod> nod_;
+  PostureState posture_;
 };
 
 }  // namespace ari_social_sim::world

@@ -128,6 +128,10 @@ class Simulation {
   /// `set_reaction: profile: expected ignore, yield, curious, avoid or block, got 'shy'`.
   void set_human_reaction(model::ObjectId human_id, const std::string& profile);
   void set_human_reaction(model::ObjectId human_id, ReactionProfile profile);
+  /// Makes a human stand up (kSeatToFeetM forward, over kPostureChangeS) or sit down (as far back,
+  /// onto the seat behind them: the world does not check that there is one). Sitting down ends a
+  /// walk or a velocity command; a seated member stays in its group. Throws for an unknown id.
+  void set_human_posture(model::ObjectId human_id, Posture posture);
   /// Installs or replaces a human's gaze model (/sim/set_gaze_targets). Throws for an unknown id,
   /// an invalid model (GazeModel::validate), or a target that is not another object of the world.
   void set_human_gaze(model::ObjectId human_id, const GazeModel& model);
@@ -265,8 +269,10 @@ class Simulation {
   void release_from_group(Human& human);
   /// A group has members: one left without any is dropped.
   void drop_empty_groups();
+  /// Throws unless the shape at `pose` lies on the floor and overlaps nothing but `ignore`, nor
+  /// furniture when `on_a_seat` (a seated human overlaps the chair under them; walls still count).
   void check_placement(const b2Shape& shape, const core::Pose2& pose, const Object* ignore,
-                       const std::string& what) const;
+                       const std::string& what, bool on_a_seat = false) const;
   void add_floor_fence();
   void register_object(Object& object);
   /// Marks the neighbour grid out of date: call whenever an agent moves, appears or disappears.

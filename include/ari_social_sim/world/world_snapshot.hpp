@@ -53,6 +53,7 @@ struct HumanSnapshot {
   GazeSnapshot gaze;
   double head_pitch_rad{0.0};  // positive: down; a nod (docs/world.md "Conversation")
   SpeechSnapshot speech;
+  PostureState posture;  // standing or sitting, and how far a change into it has got
 };
 
 struct AriSnapshot {
