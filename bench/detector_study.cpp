@@ -193,8 +193,9 @@ class Study {
     return found;
   }
 
+  // HOG's people are pedestrians: those seated are not counted.
   static bool fully_visible(const PersonLabel& label) {
-    return label.occlusion < 0.01 && !label.truncated;
+    return label.occlusion < 0.01 && !label.truncated && !label.seated;
   }
 
   static bool near_unmasked_face(const PersonLabel& label) {

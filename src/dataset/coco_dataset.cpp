@@ -51,7 +51,8 @@ std::string annotation_json(uint64_t id, uint64_t image_id, int category,
              fixed4(occlusion).c_str(), bool_text(truncated).c_str(),
              fixed4(label.distance_m).c_str()) +
          face_fields + ", \"mask\": " + bool_text(label.mask) +
-         ", \"skin_tone\": " + std::to_string(label.skin_tone) + "}";
+         ", \"skin_tone\": " + std::to_string(label.skin_tone) +
+         ", \"seated\": " + bool_text(label.seated) + "}";
 }
 
 // The id an entry line starts with, `PREFIX{"id": N, ...`; false when it does not.

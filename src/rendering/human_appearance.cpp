@@ -14,10 +14,15 @@ Eigen::Vector3f rgb(int r, int g, int b) {
   return Eigen::Vector3f(r, g, b) / 255.0f;
 }
 
-// Six skin tones from light to dark, each about a sixth of the people drawn.
-const std::array<Eigen::Vector3f, 6> kSkinTones{{rgb(243, 209, 184), rgb(226, 181, 148),
-                                                 rgb(200, 152, 114), rgb(164, 114, 80),
-                                                 rgb(121, 82, 56), rgb(86, 58, 42)}};
+// Six skin tones from light to dark, each about a sixth of the people drawn: one colour in each
+// of the six colorimetric skin classes by individual typology angle ITA = atan((L* - 50) / b*)
+// (very light > 55 deg, light > 41, intermediate > 28, tan > 10, brown > -30, dark; Chardon et
+// al. 1991, Del Bino et al. 2006), at ITA 60, 48, 34.5, 19, -10 and -40 deg with b* 15 to 18 (13
+// for the darkest) and a* 8 to 12, converted from CIELAB (D65) to sRGB: L* from 76 down to 39.
+// The colours before spanned L* 86 to 27, lighter and darker than skin measures.
+const std::array<Eigen::Vector3f, 6> kSkinTones{{rgb(213, 181, 160), rgb(192, 159, 137),
+                                                 rgb(177, 142, 119), rgb(164, 127, 104),
+                                                 rgb(140, 103, 81), rgb(116, 85, 72)}};
 
 const std::array<Eigen::Vector3f, 5> kHairColours{
     {rgb(28, 24, 22), rgb(62, 42, 30), rgb(104, 72, 46), rgb(186, 152, 100), rgb(132, 66, 38)}};

@@ -89,6 +89,7 @@ std::vector<PersonLabel> label_people(Renderer& renderer, const PinholeModel& mo
     label.distance_m = (camera.head<2>() - person.pose.body.position).norm();
     label.mask = person.figure->appearance().mask;
     label.skin_tone = person.figure->appearance().skin_tone;
+    label.seated = person.pose.seated >= 0.5;
     out.push_back(label);
   }
   return out;

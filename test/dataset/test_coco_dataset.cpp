@@ -74,14 +74,15 @@ TEST(CocoDataset, WritesInfoImagesAnnotationsAndCategoriesWithFixedDecimals) {
   EXPECT_NE(json.find("{\"id\": 1000001001, \"image_id\": 1000001, \"category_id\": 1, \"bbox\": "
                       "[100, 50, 40, 120], \"area\": 4800, \"iscrowd\": 0, \"person_id\": 10, "
                       "\"occlusion\": 0.1250, \"truncated\": false, \"distance_m\": 2.5000, "
-                      "\"mask\": true, \"skin_tone\": 6}"),
+                      "\"mask\": true, \"skin_tone\": 6, \"seated\": false}"),
             std::string::npos)
       << json;
   // The face: its own occlusion, inside the image (not cut off), and its yaw.
   EXPECT_NE(json.find("{\"id\": 1000001002, \"image_id\": 1000001, \"category_id\": 2, \"bbox\": "
                       "[110, 50, 12, 15], \"area\": 180, \"iscrowd\": 0, \"person_id\": 10, "
                       "\"occlusion\": 0.0000, \"truncated\": false, \"distance_m\": 2.5000, "
-                      "\"face_yaw_deg\": 12.3457, \"mask\": true, \"skin_tone\": 6}"),
+                      "\"face_yaw_deg\": 12.3457, \"mask\": true, \"skin_tone\": 6, "
+                      "\"seated\": false}"),
             std::string::npos)
       << json;
   EXPECT_NE(json.find("{\"id\": 1000001003, \"image_id\": 1000001, \"category_id\": 1, \"bbox\": "

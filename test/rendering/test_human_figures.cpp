@@ -307,6 +307,7 @@ TEST(ImageLabels, OcclusionFaceBoxesAndDepthAgreeWithTheScene) {
               front.occlusion, front.face_yaw_deg, back.occlusion, back.face_yaw_deg);
   EXPECT_EQ(front.occlusion, 0.0);
   EXPECT_FALSE(front.truncated);
+  EXPECT_FALSE(front.seated);
   EXPECT_NEAR(front.distance_m, 4.0, 0.01);
   ASSERT_TRUE(front.face_box.has_value());
   EXPECT_LT(front.face_yaw_deg, 10.0);
@@ -476,6 +477,7 @@ TEST(ImageLabels, ASeatedPersonsBodyAndFaceBoxesAreFound) {
       label_people(renderer, model, X_world_optical, figures, image.labels);
   ASSERT_EQ(labels.size(), 1u);
   ASSERT_TRUE(labels[0].face_box.has_value());
+  EXPECT_TRUE(labels[0].seated);
   const cv::Rect face(labels[0].face_box->x, labels[0].face_box->y, labels[0].face_box->width,
                       labels[0].face_box->height);
   const cv::Mat face_pixels = image.labels == figures.posed()[0].face_label;

@@ -79,7 +79,7 @@ for a in data["annotations"]:
         fail("annotation %d: bbox %r outside %dx%d" % (a["id"], a["bbox"], image["width"], image["height"]))
     if a["iscrowd"] != 0 or a["area"] != w * h or not 0 <= a["occlusion"] <= 1:
         fail("annotation %d: %r" % (a["id"], a))
-    for key in ("person_id", "truncated", "distance_m", "mask", "skin_tone"):
+    for key in ("person_id", "truncated", "distance_m", "mask", "skin_tone", "seated"):
         if key not in a:
             fail("annotation %d: no %s" % (a["id"], key))
     if a["skin_tone"] not in range(1, 7):

@@ -30,6 +30,7 @@ struct PersonLabel {
   double distance_m{0.0};      // from the camera to the person's feet centre, horizontally
   bool mask{false};            // the person wears a mask over nose and mouth
   int skin_tone{0};            // HumanAppearance::skin_tone: 1 the lightest to 6 the darkest
+  bool seated{false};  // sitting, or more than halfway down while sitting down or standing up
 };
 
 struct LabelOptions {
