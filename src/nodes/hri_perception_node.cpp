@@ -60,7 +60,7 @@ constexpr char kHeadInfoTopic[] = "/head_front_camera/color/camera_info";
 constexpr int kDefaultFaceSize = 128;
 
 struct BodyTopics {
-  ros::Publisher roi, cropped;  // cropped with ~crops only
+  ros::Publisher roi, posture, cropped;  // cropped with ~crops only
 };
 struct FaceTopics {
   ros::Publisher roi, expression, softbiometrics, mask, cropped, aligned;  // the last two: ~crops
@@ -159,7 +159,9 @@ class HriPerceptionNode {
   BodyTopics advertise_body(const std::string& id) {
     ros::NodeHandle nh = per_id_handle(nh_);
     const std::string ns = "/humans/bodies/" + id + "/";
-    BodyTopics topics{nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1), {}};
+    BodyTopics topics{nh.advertise<NormalizedRegionOfInterest2D>(ns + "roi", 1),
+                      nh.advertise<BodyPosture>(ns + "posture", 1),
+                      {}};
     if (run_.crops) {
       topics.cropped = nh.advertise<sensor_msgs::Image>(ns + "cropped", 1);
     }
@@ -477,7 +479,9 @@ class HriPerceptionNode {
     // Per-id subtopics first, so that a listener diffing the tracked lists below finds every
     // new id's topics already there.
     for (const perception::PerceivedBody& body : frame.bodies) {
-      bodies_.of(body.body_id, now_s).roi.publish(roi_msg(body.roi, body.visible_fraction, header));
+      BodyTopics& topics = bodies_.of(body.body_id, now_s);
+      topics.roi.publish(roi_msg(body.roi, body.visible_fraction, header));
+      topics.posture.publish(posture_msg(body, header));
     }
     for (const perception::PerceivedFace& face : frame.faces) {
       FaceTopics& topics = faces_.of(face.face_id, now_s);

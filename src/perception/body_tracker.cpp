@@ -39,6 +39,7 @@ void BodyTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     body.distance_m = camera.distance_to(human.pose.position);
     body.X_map_body = perturb_pose(config_.body_errors.pose, human.pose, body.distance_m, rng_);
     body.visible_fraction = visible;
+    body.posture = human.posture.apparent();
     body.roi = fisheye_region(camera, camera_config.z_m, body.X_map_body.position,
                               config_.occlusion.person_radius_m,
                               config_.human_model.eye_height_m + kHeadTopAboveEyes_m);

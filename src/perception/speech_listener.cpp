@@ -37,15 +37,24 @@ void SpeechListener::finish(const Utterance& utterance, double now_s) {
 SpeechListener::Hearing SpeechListener::hearing(const std::vector<world::HumanSnapshot>& humans,
                                                 const AriSensors& sensors,
                                                 const model::OccupancyGrid* sound_map,
-                                                int occupied_threshold) {
+                                                int occupied_threshold) const {
   Hearing hearing;
   hearing.audible.assign(humans.size(), false);
+  const double radius_m = config_.occlusion.person_radius_m;
   for (size_t i = 0; i < humans.size(); ++i) {
     const Eigen::Vector2d& position = humans[i].pose.position;
     hearing.index_of[humans[i].id] = i;
-    hearing.audible[i] = (position - sensors.microphone).norm() <= sensors.listening_range_m &&
+    const Eigen::Vector2d to_speaker = position - sensors.microphone;
+    const double distance_m = to_speaker.norm();
+    // As for sight (visibility.hpp): a seated speaker sits on a chair the map holds (it has no
+    // heights) and the voice rises over it, so the map is read only up to one body radius
+    // short of their circle; a standing speaker's voice is checked all the way.
+    const double margin_m = humans[i].posture.is_standing() ? 0.0 : 2.0 * radius_m;
+    const Eigen::Vector2d heard_from =
+        distance_m > margin_m ? position - margin_m / distance_m * to_speaker : sensors.microphone;
+    hearing.audible[i] = distance_m <= sensors.listening_range_m &&
                          (sound_map == nullptr || segment_is_clear(*sound_map, occupied_threshold,
-                                                                   sensors.microphone, position));
+                                                                   sensors.microphone, heard_from));
   }
   return hearing;
 }

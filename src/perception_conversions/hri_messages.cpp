@@ -91,6 +91,14 @@ SoftBiometrics softbiometrics_msg(const perception::PerceivedFace& face,
   return msg;
 }
 
+BodyPosture posture_msg(const perception::PerceivedBody& body, const std_msgs::Header& header) {
+  BodyPosture msg;
+  msg.header = header;
+  msg.posture =
+      body.posture == world::Posture::kSitting ? BodyPosture::SITTING : BodyPosture::STANDING;
+  return msg;
+}
+
 Expression expression_msg(const perception::PerceivedFace& face, const std_msgs::Header& header) {
   const perception::ExpressionLabel label = perception::expression_of(face.emotion);
   Expression msg;

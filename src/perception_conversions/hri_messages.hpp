@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ari_social_sim/BodyPosture.h"
 #include "ari_social_sim/EngagementLevel.h"
 #include "ari_social_sim/Expression.h"
 #include "ari_social_sim/Gaze.h"
@@ -33,6 +34,8 @@ SoftBiometrics softbiometrics_msg(const perception::PerceivedFace& face,
 /// The hri_msgs/Expression constant of the emotion's expression (perception::expression_of: the
 /// constants' values include their double quotes) with its valence and arousal.
 Expression expression_msg(const perception::PerceivedFace& face, const std_msgs::Header& header);
+/// hri_msgs/BodyPosture STANDING or SITTING: the posture the body shows.
+BodyPosture posture_msg(const perception::PerceivedBody& body, const std_msgs::Header& header);
 LiveSpeech speech_msg(const perception::SpeechResult& result, const std::string& language,
                       const std_msgs::Header& header);
 EngagementLevel engagement_msg(perception::EngagementLevel level, const std_msgs::Header& header);

@@ -3,6 +3,7 @@
 world_node playing test/integration/perception_scene.yaml (everyone standing still):
   - a person behind a wall is not tracked, nor one outside the fisheye's field of view;
   - a person facing away has a body but no face;
+  - each body's posture is its human's: the seated one SITTING (2), the standing ones STANDING (1);
   - a person in the head camera facing ARI has a face whose soft biometrics, expression and mask
     equal the ground truth;
   - an utterance in range arrives word by word, then final; one through a wall does not arrive.
@@ -17,7 +18,7 @@ import rostest
 import tf2_ros
 from std_msgs.msg import Bool, String
 
-from ari_social_sim.msg import (Expression, Gaze, IdsList, IdsMatch, LiveSpeech,
+from ari_social_sim.msg import (BodyPosture, Expression, Gaze, IdsList, IdsMatch, LiveSpeech,
                                 SoftBiometrics, WorldState)
 from ari_social_sim.srv import Say
 from topic_collector import Collector
@@ -89,6 +90,20 @@ class HriPerception(unittest.TestCase):
         self.assertEqual(self.face_of(FACING_AWAY), "")
         for msg in self.faces.all():
             self.assertEqual(len(msg.ids), 1)
+
+    def test_each_body_reports_its_humans_posture(self):
+        # Abel (12) sits, Fiona (13) and Sam (14) stand; not latched (REP-155): the next message.
+        expected = {FACING_AWAY: BodyPosture.SITTING, FACING_ARI: BodyPosture.STANDING,
+                    SPEAKER: BodyPosture.STANDING}
+        state = self.state.last()
+        for human_id, posture in expected.items():
+            truth = next(h for h in state.humans if h.id == human_id)
+            self.assertEqual(truth.posture, posture)  # HumanState uses BodyPosture's values
+            topic = "/humans/bodies/%s/posture" % self.body_of(human_id)
+            msg = rospy.wait_for_message(topic, BodyPosture, timeout=10)
+            self.assertEqual(msg.posture, posture, topic)
+            self.assertEqual(msg.header.frame_id, "base_footprint")
+        self.assertEqual((BodyPosture.STANDING, BodyPosture.SITTING), (1, 2))
 
     def test_a_face_turned_to_ari_reports_the_ground_truth(self):
         face_id = self.face_of(FACING_ARI)

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 
 #include "ari_social_sim/perception/body_tracker.hpp"
 #include "perception_scenes.hpp"
@@ -42,6 +43,26 @@ TEST_F(BodyTrackerTest, WithoutErrorsBodiesAreTheGroundTruth) {
   const std::vector<PerceivedBody> again = perceive(snapshot);
   EXPECT_EQ(again[0].body_id, bodies[0].body_id);
   EXPECT_EQ(again[1].body_id, bodies[1].body_id);
+}
+
+TEST_F(BodyTrackerTest, ABodyShowsTheWorldsPostureEvenWithErrorsOn) {
+  make(PerceptionConfig{});
+  world::WorldSnapshot snapshot = snapshot_with_ari();
+  snapshot.humans = {human_at(10, 2.0, 1.0, 0.0), human_at(11, 2.0, -1.0, 0.0),
+                     human_at(12, 3.0, 0.0, 0.0)};
+  snapshot.humans[1].posture = {world::Posture::kSitting, 1.0};
+  // Sitting down, 0.3 of the way: still more standing than seated.
+  snapshot.humans[2].posture = {world::Posture::kSitting, 0.3};
+  std::map<model::ObjectId, world::Posture> seen;
+  for (int frame = 0; frame < 20; ++frame) {
+    for (const PerceivedBody& body : perceive(snapshot)) {
+      seen[body.human] = body.posture;
+    }
+  }
+  ASSERT_EQ(seen.size(), 3u);
+  EXPECT_EQ(seen[10], world::Posture::kStanding);
+  EXPECT_EQ(seen[11], world::Posture::kSitting);
+  EXPECT_EQ(seen[12], world::Posture::kStanding);
 }
 
 TEST_F(BodyTrackerTest, BehindAWallBehindARIOrBeyondRangeIsNotTracked) {

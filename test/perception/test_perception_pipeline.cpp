@@ -159,6 +159,25 @@ TEST(PerceptionPipeline, SameSeedSameFramesOtherSeedOtherFrames) {
   EXPECT_NE(a.back().find("B "), std::string::npos);
 }
 
+TEST(PerceptionPipeline, TheMapBeforeAPersonHidesThemOnlyWhileTheyStand) {
+  // A wall 0.1 m thick over x = 2.70..2.80 (as a seat's front), a person centred at x = 3.05:
+  // standing, every ray to them crosses it (no body); seated, the map is read one radius short
+  // of them and only rays beyond 0.9 of their half width are hidden (test_visibility): of the
+  // 9 rays per person (at 0, +-0.22, +-0.44, +-0.67, +-0.89 of it) at most the outer two, so
+  // 7/9 or more show, above the body camera's 0.2.
+  PerceptionPipeline pipeline(test::config_without_errors());
+  pipeline.set_sight_map(test::map_with_wall({2.75, -1.0}, {2.75, 1.0}));
+  world::WorldSnapshot snapshot = snapshot_with_ari(1.0);
+  snapshot.humans = {human_at(10, 3.05, 0.0, core::kPi)};
+  EXPECT_TRUE(pipeline.update(snapshot).bodies.empty());
+  snapshot.time_s = 1.05;
+  snapshot.humans[0].posture = {world::Posture::kSitting, 1.0};
+  const PerceptionFrame& frame = pipeline.update(snapshot);
+  ASSERT_EQ(frame.bodies.size(), 1u);
+  EXPECT_GE(frame.bodies[0].visible_fraction, 7.0 / 9.0);
+  EXPECT_EQ(frame.bodies[0].posture, world::Posture::kSitting);
+}
+
 TEST(PerceptionPipeline, GoingBackInTimeForgetsEveryone) {
   PerceptionPipeline pipeline(test::config_without_errors());
   world::WorldSnapshot snapshot = snapshot_with_ari(10.0);

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <tuple>
 
+#include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/perception/speech_listener.hpp"
 #include "perception_scenes.hpp"
 
@@ -85,6 +87,29 @@ TEST_F(SpeechListenerTest, NothingArrivesThroughAWallOrBeyondRange) {
     world::WorldSnapshot snapshot = snapshot_with_ari(0.4 * word);
     snapshot.humans = {behind_wall, far_away};
     EXPECT_TRUE(hear(snapshot, &grid).empty());
+  }
+}
+
+TEST_F(SpeechListenerTest, ASeatedSpeakerIsHeardOverTheChairUnderThemAStandingOneIsNot) {
+  // A chair's front, 0.1 m thick over x = 2.70..2.80, and a speaker at x = 3.05, ARI facing them
+  // from the origin. Standing: the line to their centre crosses it. Seated: the map is read up
+  // to 3.05 - 2 x 0.2 = 2.65 m, short of it. Seated behind a wall 0.75 m away, still not heard.
+  const model::OccupancyGrid chair = test::map_with_wall({2.75, -1.0}, {2.75, 1.0});
+  const model::OccupancyGrid wall = test::map_with_wall({2.3, -1.0}, {2.3, 1.0});
+  for (const auto& [posture, grid, heard] : {std::tuple{world::Posture::kStanding, &chair, false},
+                                             std::tuple{world::Posture::kSitting, &chair, true},
+                                             std::tuple{world::Posture::kSitting, &wall, false}}) {
+    make(test::config_without_errors());
+    world::HumanSnapshot speaker = human_at(10, 3.05, 0.0, core::kPi);
+    speaker.posture = {posture, 1.0};
+    size_t voices = 0;
+    for (uint32_t word = 0; word < 5; ++word) {
+      speaking(speaker, kContent, 0.0, word);
+      world::WorldSnapshot snapshot = snapshot_with_ari(0.4 * word);
+      snapshot.humans = {speaker};
+      voices += hear(snapshot, grid).size();
+    }
+    EXPECT_EQ(voices > 0, heard) << world::posture_name(posture);
   }
 }
 

@@ -379,8 +379,8 @@ TEST(HumanFigure, ASeatedFigureRestsOnTheSeatWithItsFeetOnTheFloorAndItsEyesAtSi
     EXPECT_NEAR(thighs_z, kChairSeatHeightM, 0.03);
     EXPECT_NEAR(soles_z, 0.0, 0.01);
     // Sitting eye height 0.74 m (women) to 0.79 m (men) above the seat (Pheasant and Haslegrave
-    // 2006, British adults' medians), so 1.19 to 1.24 m above the floor; within 5 cm for a
-    // figure of about average stature.
+    // 2006, British adults' medians; docs/references.md), so 1.19 to 1.24 m above the floor;
+    // within 5 cm for a figure of about average stature.
     EXPECT_NEAR(eye.z(), gender == model::Gender::kMale ? 1.24 : 1.19, 0.05);
   }
 }

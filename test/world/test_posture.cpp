@@ -55,6 +55,21 @@ TEST(PostureState, AChangeMovesTheSeatToFeetDistanceInTheChangeTime) {
   EXPECT_TRUE(state.is_standing());
 }
 
+TEST(PostureState, TheApparentPostureTurnsHalfwayThroughAChange) {
+  // Standing up over 34 steps of 0.05 s: seated fraction 1 - k/34, over 0.5 until step 17.
+  PostureState state{Posture::kSitting, 1.0};
+  EXPECT_EQ(state.apparent(), Posture::kSitting);
+  state.change_to(Posture::kStanding);
+  for (int k = 0; k < 16; ++k) {
+    state.advance(kStepS);
+  }
+  EXPECT_EQ(state.apparent(), Posture::kSitting);  // 16/34 up: seated fraction 0.53
+  state.advance(kStepS);
+  state.advance(kStepS);
+  EXPECT_EQ(state.apparent(), Posture::kStanding);  // 18/34 up: 0.47
+  EXPECT_EQ((PostureState{Posture::kStanding, 1.0}.apparent()), Posture::kStanding);
+}
+
 TEST(PostureState, AChangeTurnedBackMidwayTakesOnlyWhatItHadDone) {
   PostureState state{Posture::kSitting, 1.0};
   state.change_to(Posture::kStanding);

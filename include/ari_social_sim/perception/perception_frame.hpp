@@ -9,6 +9,7 @@
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/perception/ari_sensors.hpp"
+#include "ari_social_sim/world/posture.hpp"
 
 // What ARI perceives in one frame: plain data that hri_perception_node publishes as ROS4HRI
 // topics and frames, and that tests and the batch tool read. Poses are in the map frame; heights
@@ -50,6 +51,8 @@ struct PerceivedBody {
   double distance_m{0.0};  ///< From the fisheye.
   double visible_fraction{1.0};
   ImageRegion roi;  ///< In the fisheye image.
+  /// The world's PostureState::apparent(); no error model changes it.
+  world::Posture posture{world::Posture::kStanding};
 };
 
 /// A face seen by the head camera, with what the face analysers report about it.

@@ -68,8 +68,8 @@ class SpeechListener {
   VoiceTrack& voice_of(model::ObjectId human);
   void finish(const Utterance& utterance, double now_s);
   // The stages of update(), in order.
-  static Hearing hearing(const std::vector<world::HumanSnapshot>& humans, const AriSensors& sensors,
-                         const model::OccupancyGrid* sound_map, int occupied_threshold);
+  Hearing hearing(const std::vector<world::HumanSnapshot>& humans, const AriSensors& sensors,
+                  const model::OccupancyGrid* sound_map, int occupied_threshold) const;
   void finish_ended_utterances(const std::vector<world::HumanSnapshot>& humans,
                                const Hearing& hearing, double now_s);
   void hear_new_words(const std::vector<world::HumanSnapshot>& humans, const Hearing& hearing,

@@ -37,6 +37,11 @@ struct PostureState {
   /// True only when standing and settled: the one state in which a human walks.
   bool is_standing() const { return posture == Posture::kStanding && progress >= 1.0; }
   bool is_changing() const { return progress < 1.0; }
+  /// The posture the body shows, as a posture recogniser would name it: sitting while more than
+  /// half seated (the hips nearer the seat than their standing height), standing otherwise.
+  Posture apparent() const {
+    return seated_fraction() > 0.5 ? Posture::kSitting : Posture::kStanding;
+  }
 
   /// Starts the change into `target`; a change under way turns back from where it got to. Nothing
   /// when already in or changing into `target`.
