@@ -260,7 +260,8 @@ void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen:
 void HumanFigure::add_skull_and_jaw() {
   const double h = look_.head_height_m;
   skin_volumes_ = {{Eigen::Vector3d::Zero(), 2.0 * head_radii_},
-                   {Eigen::Vector3d(0.15 * h, 0.0, -0.3 * h), Eigen::Vector3d(0.4, 0.42, 0.4) * h}};
+                   {Eigen::Vector3d(0.15 * h, 0.0, -0.3 * h), Eigen::Vector3d(0.4, 0.42, 0.4) * h},
+                   {Eigen::Vector3d(0.26 * h, 0.0, -0.4 * h), Eigen::Vector3d(0.2, 0.26, 0.2) * h}};
   for (const auto& [centre, diameters] : skin_volumes_) {
     add_part(kHead, true,
              shape(PrimitiveShape::kSphere, centre, diameters, look_.skin, kHeadSegments));
@@ -285,16 +286,19 @@ void HumanFigure::add_ears() {
 std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
   const double h = look_.head_height_m;
   const Eigen::Vector3d& r = head_radii_;
-  // Hair: a cap over the crown and the back of the head, leaving the forehead below the hairline,
-  // and over the temples; long hair falls behind the neck to the shoulders.
+  // Hair: a cap over the crown from the forehead's hairline and one over the back of the head down
+  // to the nape, whose edges draw the hairline around the head; sideburns in front of the ears
+  // down to the tragus. In profile the temple and sideburn are dark beside the eye, as face
+  // detectors trained on real profiles expect.
   std::vector<Ellipsoid> hair;
   if (look_.hair_style != HairStyle::kBald) {
-    hair.emplace_back(Eigen::Vector3d(-0.12 * h, 0.0, 0.08 * h),
-                      Eigen::Vector3d(2.0 * r.x() * 0.98, 2.0 * r.y() * 1.07, 2.0 * r.z() * 0.97));
-    // Over the temples and down to the tops of the ears on both sides.
+    hair.emplace_back(Eigen::Vector3d(-0.01 * h, 0.0, 0.15 * h),
+                      Eigen::Vector3d(0.75, 0.76, 0.8) * h);
+    hair.emplace_back(Eigen::Vector3d(-0.19 * h, 0.0, 0.08 * h),
+                      Eigen::Vector3d(0.55, 0.74, 0.82) * h);
     for (double side : {-1.0, 1.0}) {
-      hair.emplace_back(Eigen::Vector3d(-0.07 * h, side * 0.17 * h, 0.1 * h),
-                        Eigen::Vector3d(0.72, 0.38, 0.6) * h);
+      hair.emplace_back(Eigen::Vector3d(0.06 * h, side * 0.3 * h, 0.05 * h),
+                        Eigen::Vector3d(0.14, 0.1, 0.26) * h);
     }
   }
   if (look_.hair_style == HairStyle::kLong) {
@@ -352,13 +356,16 @@ void HumanFigure::add_eyes() {
     const double y = side * kEyeShare * h;
     add_face_feature(kHead, y, 0.02 * h, Eigen::Vector3d(0.1, 0.22, 0.15) * h, 0.006 * h,
                      darker(look_.skin, 0.4f));
-    add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.06, 0.13, 0.06) * h, 0.012 * h,
+    add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.06, 0.13, 0.06) * h, 0.008 * h,
                      Eigen::Vector3f(0.9f, 0.88f, 0.84f));
-    add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.04, 0.06, 0.06) * h, 0.016 * h,
+    add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.04, 0.06, 0.06) * h, 0.012 * h,
                      look_.iris * 0.5f);
+    // The upper lid with its lashes over the eye's top half.
+    add_face_feature(kHead, y, 0.018 * h, Eigen::Vector3d(0.06, 0.15, 0.04) * h, 0.02 * h,
+                     darker(look_.skin, 0.35f));
     // The outer corner with the lashes, what marks the eye in profile.
-    add_face_feature(kHead, y + side * 0.065 * h, 0.005 * h, Eigen::Vector3d(0.06, 0.06, 0.05) * h,
-                     0.01 * h, darker(look_.skin, 0.3f));
+    add_face_feature(kHead, y + side * 0.065 * h, 0.005 * h, Eigen::Vector3d(0.08, 0.08, 0.06) * h,
+                     0.012 * h, darker(look_.skin, 0.3f));
     eyes_[side < 0.0 ? 0 : 1] = Eigen::Vector3d(face_front(y, 0.0) + 0.016 * h, y, 0.0);
   }
 }
