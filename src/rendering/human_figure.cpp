@@ -291,23 +291,27 @@ std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
   // down to the tragus. In profile the temple and sideburn are dark beside the eye, as face
   // detectors trained on real profiles expect.
   std::vector<Ellipsoid> hair;
+  auto add = [&](const Eigen::Vector3d& centre, const Eigen::Vector3d& diameters, int segments) {
+    hair.emplace_back(centre, diameters);
+    add_part(kHead, false, shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, segments));
+  };
   if (look_.hair_style != HairStyle::kBald) {
-    hair.emplace_back(Eigen::Vector3d(-0.01 * h, 0.0, 0.15 * h),
-                      Eigen::Vector3d(0.75, 0.76, 0.8) * h);
-    hair.emplace_back(Eigen::Vector3d(-0.19 * h, 0.0, 0.08 * h),
-                      Eigen::Vector3d(0.55, 0.74, 0.82) * h);
-    for (double side : {-1.0, 1.0}) {
-      hair.emplace_back(Eigen::Vector3d(0.06 * h, side * 0.3 * h, 0.05 * h),
-                        Eigen::Vector3d(0.14, 0.1, 0.26) * h);
-    }
+    add(Eigen::Vector3d(-0.01 * h, 0.0, 0.15 * h), Eigen::Vector3d(0.75, 0.76, 0.8) * h,
+        kHeadSegments);
+    add(Eigen::Vector3d(-0.19 * h, 0.0, 0.08 * h), Eigen::Vector3d(0.55, 0.74, 0.82) * h,
+        kHeadSegments);
+  } else {
+    // Bald men keep a fringe over the back and the sides below the crown (male pattern baldness).
+    add(Eigen::Vector3d(-0.12 * h, 0.0, -0.1 * h), Eigen::Vector3d(0.66, 0.72, 0.74) * h,
+        kHeadSegments);
+  }
+  for (double side : {-1.0, 1.0}) {
+    add(Eigen::Vector3d(0.06 * h, side * 0.3 * h, 0.05 * h), Eigen::Vector3d(0.14, 0.1, 0.26) * h,
+        kFeatureSegments);
   }
   if (look_.hair_style == HairStyle::kLong) {
-    hair.emplace_back(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.45 * h),
-                      Eigen::Vector3d(1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h));
-  }
-  for (const auto& [centre, diameters] : hair) {
-    add_part(kHead, false,
-             shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, kHeadSegments));
+    add(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.45 * h),
+        Eigen::Vector3d(1.2 * r.x(), 2.0 * r.y() * 1.02, 1.1 * h), kHeadSegments);
   }
   return hair;
 }
