@@ -250,6 +250,10 @@ void HumanFigure::add_face_feature(Joint joint, double y, double z, const Eigen:
   const Eigen::Vector3d skin(face_front(y, z), y, z);
   RenderPrimitive feature =
       shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(), size, colour, kFeatureSegments);
+  // Skin-coloured features (brow ridge, cheekbones) shine as the skin they are set into does.
+  if (colour == look_.skin) {
+    feature = glossy(feature);
+  }
   feature.X_world_shape = Eigen::Translation3d(skin + (rise - 0.5 * size.x()) * normal) *
                           Eigen::Isometry3d(axes) *
                           Eigen::AngleAxisd(roll_rad, Eigen::Vector3d::UnitX());
@@ -264,7 +268,7 @@ void HumanFigure::add_skull_and_jaw() {
                    {Eigen::Vector3d(0.26 * h, 0.0, -0.4 * h), Eigen::Vector3d(0.2, 0.26, 0.2) * h}};
   for (const auto& [centre, diameters] : skin_volumes_) {
     add_part(kHead, true,
-             shape(PrimitiveShape::kSphere, centre, diameters, look_.skin, kHeadSegments));
+             glossy(shape(PrimitiveShape::kSphere, centre, diameters, look_.skin, kHeadSegments)));
   }
 }
 
