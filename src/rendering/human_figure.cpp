@@ -481,8 +481,10 @@ void HumanFigure::collect_face_surface(const std::vector<Ellipsoid>& hair) {
       const float* v = &mesh.vertices[i * RenderMesh::kFloatsPerVertex];
       const Eigen::Vector3d point(v[0], v[1], v[2]);
       bool covered = false;
+      // The hair's facets lie inside its ellipsoids, by up to 4 % with 16 segments: skin just
+      // inside an ellipsoid's surface may still show between them.
       for (const auto& [centre, diameters] : hair) {
-        covered = covered || ((point - centre).cwiseQuotient(0.5 * diameters)).squaredNorm() < 1.0;
+        covered = covered || ((point - centre).cwiseQuotient(0.48 * diameters)).squaredNorm() < 1.0;
       }
       // Features are set into the skull and jaw: what lies deeper than their skin is hidden.
       for (const auto& [centre, diameters] : skin_volumes_) {

@@ -388,12 +388,14 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
       "whose faces all turn more than 45 deg (%.3f per frame)\n",
       eligible, frames, found, 100.0 * recall, found_centred, 100.0 * centred_recall,
       frontal_on_turned, turned_frames, false_rate);
-  // What the figures reach (docs/cameras.md); the aim is 60 % of the turned faces. True profiles
-  // (75-90 degrees) are still mostly missed.
+  // What the figures reach (docs/cameras.md): 72.4 % centred and 35.1 % with IoU >= 0.5 against
+  // an aim of 60 %; true profiles (75-90 degrees) are found half as often as three-quarter views.
+  // The frontal cascade's 0.041 per frame, against an aim of 0.02, are mostly on faces turned 45
+  // to 60 degrees and overlap their boxes.
   EXPECT_GE(eligible, 100);
-  EXPECT_GE(recall, 0.08);
-  EXPECT_GE(centred_recall, 0.24);
-  EXPECT_LE(false_rate, 0.03);
+  EXPECT_GE(recall, 0.33);
+  EXPECT_GE(centred_recall, 0.70);
+  EXPECT_LE(false_rate, 0.045);
 }
 
 }  // namespace
