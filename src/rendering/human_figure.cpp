@@ -368,9 +368,9 @@ void HumanFigure::add_eyes() {
                      Eigen::Vector3f(0.9f, 0.88f, 0.84f));
     add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.04, 0.06, 0.06) * h, 0.012 * h,
                      look_.iris * 0.5f);
-    // The upper lid with its lashes over the eye's top half.
+    // The upper lid over the eye's top half: skin in the brow's shadow.
     add_face_feature(kHead, y, 0.018 * h, Eigen::Vector3d(0.06, 0.15, 0.04) * h, 0.02 * h,
-                     darker(look_.skin, 0.35f));
+                     darker(look_.skin, 0.6f));
     // The outer corner with the lashes, what marks the eye in profile.
     add_face_feature(kHead, y + side * 0.065 * h, 0.005 * h, Eigen::Vector3d(0.08, 0.08, 0.06) * h,
                      0.012 * h, darker(look_.skin, 0.3f));
