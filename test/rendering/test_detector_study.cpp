@@ -390,8 +390,8 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
       frontal_on_turned, turned_frames, false_rate);
   // What the figures reach (docs/cameras.md): 73.1 % centred and 36.6 % with IoU >= 0.5 against
   // an aim of 60 %; true profiles (75-90 degrees) are found half as often as three-quarter views.
-  // The frontal cascade's 0.041 per frame, against an aim of 0.02, are mostly on faces turned 45
-  // to 60 degrees and overlap their boxes.
+  // The frontal cascade's 0.041 per frame, against an aim of 0.02, are mostly centred on faces
+  // turned 45 to 60 degrees.
   EXPECT_GE(eligible, 100);
   EXPECT_GE(recall, 0.35);
   EXPECT_GE(centred_recall, 0.72);
