@@ -388,14 +388,14 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
       "whose faces all turn more than 45 deg (%.3f per frame)\n",
       eligible, frames, found, 100.0 * recall, found_centred, 100.0 * centred_recall,
       frontal_on_turned, turned_frames, false_rate);
-  // What the figures reach (docs/cameras.md): 73.1 % centred and 36.6 % with IoU >= 0.5 against
-  // an aim of 60 %; true profiles (75-90 degrees) are found half as often as three-quarter views.
-  // The frontal cascade's 0.041 per frame, against an aim of 0.02, are mostly centred on faces
+  // What the figures reach (docs/cameras.md): 73.9 % centred and 38.1 % with IoU >= 0.5 against
+  // an aim of 60 %; true profiles (75-90 degrees) are found less often than three-quarter views.
+  // The frontal cascade's 0.037 per frame, against an aim of 0.02, are mostly centred on faces
   // turned 45 to 60 degrees.
   EXPECT_GE(eligible, 100);
-  EXPECT_GE(recall, 0.35);
+  EXPECT_GE(recall, 0.37);
   EXPECT_GE(centred_recall, 0.72);
-  EXPECT_LE(false_rate, 0.045);
+  EXPECT_LE(false_rate, 0.04);
 }
 
 }  // namespace
