@@ -136,7 +136,7 @@ float lamp_light(vec3 p, vec3 n, out vec3 towards) {
 // foreheads, noses and cheekbones catch it from above as they do under a ceiling.
 float indoor_lighting(int surface, vec3 n, vec3 to_camera, float fill, out float highlight) {
   vec3 towards;
-  float lamp = 2.6 * lamp_light(v_world, n, towards);
+  float lamp = 2.4 * lamp_light(v_world, n, towards);
   highlight = 0.0;
   if (surface == kSkin) {
     highlight = 0.3 * min(lamp, 1.0) * pow(max(dot(n, normalize(towards + to_camera)), 0.0), 16.0);
@@ -144,7 +144,7 @@ float indoor_lighting(int surface, vec3 n, vec3 to_camera, float fill, out float
   if (surface == kCeiling) {
     return 0.3 + 0.15 * fill;
   }
-  return 0.18 + lamp + 0.08 * fill;
+  return 0.12 + lamp + 0.2 * fill;
 }
 
 // Soft contact shadows (ambient occlusion): the floor around someone's feet sees less of the room

@@ -96,15 +96,18 @@ TEST(CameraRig, PersonInFrontOfAriAppearsWhereCameraInfoProjectsThem) {
   ASSERT_EQ(frame.colour.cols, 1280);
   ASSERT_TRUE(frame.depth.empty());
 
-  // The face's pixels (labelled) centre where camera_info's K projects the head's centre.
+  // The face's pixels (labelled) centre where camera_info's K projects the face's middle (halfway
+  // from the hairline to the chin).
   const PosedPerson& posed = figures.posed()[0];
   const cv::Moments face = cv::moments(frame.labels == posed.face_label, true);
   const CameraInfo& info = rig.info(kHead);
-  const Eigen::Vector3d head_optical =
-      X_world_optical.inverse() * posed.figure->head_frame(posed.pose).translation();
+  const std::vector<Eigen::Vector3d>& outline = posed.figure->face_outline();
+  const Eigen::Vector3d head_optical = X_world_optical.inverse() *
+                                       posed.figure->head_frame(posed.pose) *
+                                       (0.5 * (outline[0] + outline[1]));
   const double u = info.K[0] * head_optical.x() / head_optical.z() + info.K[2];
   const double v = info.K[4] * head_optical.y() / head_optical.z() + info.K[5];
-  std::printf("face at (%.2f, %.2f) px, head projected (%.2f, %.2f) px, %.0f face pixels\n",
+  std::printf("face at (%.2f, %.2f) px, its middle projected (%.2f, %.2f) px, %.0f face pixels\n",
               face.m10 / face.m00, face.m01 / face.m00, u, v, face.m00);
   ASSERT_GT(face.m00, 1500);  // a 0.15 m wide face at 2.5 m: about 60 px across
   EXPECT_NEAR(face.m10 / face.m00, u, 4.0);

@@ -105,18 +105,22 @@ TEST(Renderer, PersonAppearsWhereTheProjectionPutsThem) {
   ViewOptions options;
   options.labels = true;
   renderer.render(model, X_world_optical, options, image);
-  // The face's labelled pixels centre on the head's projection, within a tenth of its width.
+  // The face's labelled pixels centre on the projection of the face's middle (halfway from the
+  // hairline to the chin, below the head's centre), within a tenth of the head's width.
   const PosedPerson& posed = figures.posed()[0];
   const cv::Mat face = image.labels == posed.face_label;
   const cv::Moments moments = cv::moments(face, true);
   ASSERT_GT(moments.m00, 1000);
-  const Eigen::Vector3d head_world = posed.figure->head_frame(posed.pose).translation();
+  const std::vector<Eigen::Vector3d>& outline = posed.figure->face_outline();
+  const Eigen::Vector3d head_world =
+      posed.figure->head_frame(posed.pose) * (0.5 * (outline[0] + outline[1]));
   const Eigen::Vector2d expected = *model.project(X_world_optical.inverse() * head_world);
   const double head_width_px =
       model.fx * posed.figure->appearance().head_height_m * 0.68 / position.norm();
-  std::printf("face centroid (%.1f, %.1f), head projected (%.1f, %.1f), head %.0f px wide\n",
-              moments.m10 / moments.m00, moments.m01 / moments.m00, expected.x(), expected.y(),
-              head_width_px);
+  std::printf(
+      "face centroid (%.1f, %.1f), face's middle projected (%.1f, %.1f), head %.0f px wide\n",
+      moments.m10 / moments.m00, moments.m01 / moments.m00, expected.x(), expected.y(),
+      head_width_px);
   EXPECT_NEAR(moments.m10 / moments.m00, expected.x(), 0.1 * head_width_px);
   EXPECT_NEAR(moments.m01 / moments.m00, expected.y(), 0.1 * head_width_px);
   // The label image and the colour image agree on where the person is: labelled pixels are

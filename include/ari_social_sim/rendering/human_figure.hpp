@@ -121,7 +121,8 @@ class HumanFigure {
   void build_head();
   // build_head's stages. An ellipsoid is (centre, diameters) in the head frame.
   using Ellipsoid = std::pair<Eigen::Vector3d, Eigen::Vector3d>;
-  /// How far in front of the head's centre the skin (skull and jaw) is at (y, z) of the head frame.
+  /// How far in front of the head's centre the skin (skull, jaw and chin) is at (y, z) of the head
+  /// frame.
   double face_front(double y, double z) const;
   /// Adds a feature set into the face at (y, z): an ellipsoid of `size` (across the skin's normal,
   /// across the face, up), its axis along the skin's normal there, standing `rise` out of the skin.
@@ -148,7 +149,7 @@ class HumanFigure {
   double thigh_radius_m_{0.0};
   Eigen::Vector3d head_radii_{Eigen::Vector3d::Zero()};
   std::vector<Part> parts_;
-  std::vector<Ellipsoid> skin_volumes_;  // skull and jaw: features are set into them
+  std::vector<Ellipsoid> skin_volumes_;  // skull, jaw and chin: features are set into them
   std::vector<Eigen::Vector3d> face_outline_;
   std::vector<SurfacePoint> face_surface_;
   std::array<Eigen::Vector3d, 2> eyes_{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
