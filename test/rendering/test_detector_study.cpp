@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/detector_scoring.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/rendering/ari_cameras.hpp"
@@ -25,9 +26,9 @@
 namespace ari_social_sim::rendering {
 namespace {
 
-constexpr char kFaceCascade[] = "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml";
-constexpr char kProfileCascade[] = "/usr/share/opencv4/haarcascades/haarcascade_profileface.xml";
-constexpr double kMatchIou = 0.5;
+using namespace detector_scoring;
+
+constexpr const char* kFaceCascade = kFrontalAlt2Cascade;
 // HOG runs on the head camera's image scaled by this, so that people 2 to 6 m away are 105 to 315
 // pixels tall and the renderer's hard edges are averaged away (INTER_AREA). Measured with the
 // window stride below: 0.3, 0.35 and 0.5 found 87.9, 89.3 and 85.0 % of an earlier figure
@@ -118,75 +119,6 @@ class StudyScenes {
   CameraRig rig_;
   PeopleFigures figures_;
 };
-
-PixelBox box_of(const cv::Rect& rect) {
-  return {rect.x, rect.y, rect.width, rect.height};
-}
-
-// A detection centred on the face's box, as tall as the face within a factor of two. The profile
-// cascade's square window holds the ear and the cheek as well as the face, while a turned face's
-// box is narrow (from the head's middle to the nose's tip, about 0.6 of its height): IoU >= 0.5
-// would need a detection of nearly exactly the face's height, so profile detections are also scored
-// this way (docs/cameras.md).
-bool centred_on(const cv::Rect& detection, const PixelBox& face) {
-  const double u = detection.x + 0.5 * detection.width, v = detection.y + 0.5 * detection.height;
-  return u >= face.x && u <= face.x + face.width && v >= face.y && v <= face.y + face.height &&
-         detection.height >= 0.5 * face.height && detection.height <= 2.0 * face.height;
-}
-
-// The profile cascade was trained on faces looking one way (to the image's left): it runs on the
-// image and on its mirror, whose detections are mirrored back.
-std::vector<cv::Rect> profile_faces(cv::CascadeClassifier& cascade, const cv::Mat& grey) {
-  std::vector<cv::Rect> faces, mirrored_faces;
-  cascade.detectMultiScale(grey, faces, 1.1, 3, 0, cv::Size(24, 24));
-  cv::Mat mirror;
-  cv::flip(grey, mirror, 1);
-  cascade.detectMultiScale(mirror, mirrored_faces, 1.1, 3, 0, cv::Size(24, 24));
-  for (const cv::Rect& face : mirrored_faces) {
-    faces.emplace_back(grey.cols - face.x - face.width, face.y, face.width, face.height);
-  }
-  return faces;
-}
-
-// Detection rate in bins of one quantity.
-class RateTable {
- public:
-  RateTable(std::string quantity, std::vector<double> edges)
-      : quantity_(std::move(quantity)),
-        edges_(std::move(edges)),
-        found_(edges_.size() - 1),
-        total_(edges_.size() - 1) {}
-
-  void add(double value, bool found) {
-    for (size_t i = 0; i + 1 < edges_.size(); ++i) {
-      if (value >= edges_[i] && value < edges_[i + 1]) {
-        total_[i] += 1;
-        found_[i] += found ? 1 : 0;
-      }
-    }
-  }
-  void print(const char* detector) const {
-    std::printf("| %s: %s | found | of | rate |\n|---|---|---|---|\n", detector, quantity_.c_str());
-    for (size_t i = 0; i < total_.size(); ++i) {
-      std::printf(
-          "| %g to %g | %d | %d | %s |\n", edges_[i], edges_[i + 1], found_[i], total_[i],
-          total_[i] > 0 ? (std::to_string(100 * found_[i] / total_[i]) + " %").c_str() : "-");
-    }
-  }
-
- private:
-  std::string quantity_;
-  std::vector<double> edges_;
-  std::vector<int> found_, total_;
-};
-
-// The person inside a HOG window: Dalal and Triggs' 64 x 128 training windows hold the person with
-// a 16-pixel margin on every side, so the person box is the window less a quarter of its width and
-// an eighth of its height on each side.
-PixelBox person_in_hog_window(const cv::Rect& window) {
-  return {window.x + window.width / 4, window.y + window.height / 8, window.width / 2,
-          window.height * 3 / 4};
-}
 
 TEST(DetectorStudy, HogFindsUprightFullyVisiblePeopleTwoToSixMetresAway) {
   StudyScenes scenes;
@@ -312,17 +244,6 @@ TEST(DetectorStudy, HaarFindsFacesTurnedToTheCameraAndFiresRarelyWithoutThem) {
   EXPECT_LE(double(false_detections) / empty_frames, 0.05);
 }
 
-// The frontal detections that fall on someone (their centre in a person's box): on turned heads
-// when every face is turned. Those on the room (tiles, furniture) are the empty frames' count.
-int frontals_on_people(const std::vector<cv::Rect>& frontals,
-                       const std::vector<PersonLabel>& labels) {
-  return static_cast<int>(std::count_if(frontals.begin(), frontals.end(), [&](const cv::Rect& f) {
-    return std::any_of(labels.begin(), labels.end(), [&](const PersonLabel& label) {
-      return label.body_box.contains(f.x + f.width / 2, f.y + f.height / 2);
-    });
-  }));
-}
-
 // Heads turned 30 to 110 degrees from the camera (body turn; the gaze adds up to 0.2 rad), 0.8 to
 // 3 m away: the profile cascade should find the turned faces, the frontal one should not fire on
 // them.
@@ -373,7 +294,7 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
     }
     if (all_turned) {
       ++turned_frames;
-      frontal_on_turned += frontals_on_people(frontals, frame.labels);
+      frontal_on_turned += detections_on_people(frontals, frame.labels);
     }
   }
   profile_by_yaw.print("Haar profile, IoU >= 0.5");

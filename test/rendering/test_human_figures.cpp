@@ -282,24 +282,34 @@ TEST(PeopleFigures, FiguresAreBuiltOncePerPersonAndTheSameInputsGiveTheSameMesh)
   EXPECT_FALSE(a.owner_of(5).has_value());
 }
 
-// One person 4 m away hides part of another 6 m away on the same line of sight: the labels give
-// the front one no occlusion and a face box, the back one an occlusion between 0.3 and 0.9 and,
-// turned away, no face box; depth at the front person's pixels is their distance.
-TEST(ImageLabels, OcclusionFaceBoxesAndDepthAgreeWithTheScene) {
+PinholeModel head_camera() {
+  return PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
+}
+
+// `people` posed by `figures` and seen by the head camera from `camera_z` above the origin,
+// looking along +x: the image with depth and labels, and the people's labels.
+std::vector<PersonLabel> render_labelled(const std::vector<FigureInput>& people, double camera_z,
+                                         PeopleFigures& figures, RenderedImage& image) {
   Renderer renderer;
   renderer.set_static_primitives({});
-  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
-  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.5});
-  PeopleFigures figures;
-  figures.update(0.0, {standing_at(1, {4.0, 0.15}, M_PI), standing_at(2, {6.0, 0.0}, 0.0)});
+  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, camera_z});
+  figures.update(0.0, people);
   renderer.set_dynamic_mesh(figures.mesh());
   ViewOptions options;
   options.labels = true;
   options.depth = true;
+  renderer.render(head_camera(), X_world_optical, options, image);
+  return label_people(renderer, head_camera(), X_world_optical, figures, image.labels);
+}
+
+// One person 4 m away hides part of another 6 m away on the same line of sight: the labels give
+// the front one no occlusion and a face box, the back one an occlusion between 0.3 and 0.9 and,
+// turned away, no face box; depth at the front person's pixels is their distance.
+TEST(ImageLabels, OcclusionFaceBoxesAndDepthAgreeWithTheScene) {
+  PeopleFigures figures;
   RenderedImage image;
-  renderer.render(model, X_world_optical, options, image);
-  const std::vector<PersonLabel> labels =
-      label_people(renderer, model, X_world_optical, figures, image.labels);
+  const std::vector<PersonLabel> labels = render_labelled(
+      {standing_at(1, {4.0, 0.15}, M_PI), standing_at(2, {6.0, 0.0}, 0.0)}, 1.5, figures, image);
   ASSERT_EQ(labels.size(), 2u);
   const PersonLabel& front = labels[0].person_id == 1 ? labels[0] : labels[1];
   const PersonLabel& back = labels[0].person_id == 1 ? labels[1] : labels[0];
@@ -458,23 +468,13 @@ TEST(HumanFigure, StandingUpTheTrunkLeansForwardThenTheHipsRise) {
 }
 
 TEST(ImageLabels, ASeatedPersonsBodyAndFaceBoxesAreFound) {
-  Renderer renderer;
-  renderer.set_static_primitives({});
-  const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
   // ARI's head camera height, 2.5 m from a seated person facing it.
-  const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.4});
   FigureInput person = standing_at(1, {2.5, 0.0}, M_PI);
   person.seated = 1.0;
   PeopleFigures figures;
-  figures.update(0.0, {person});
-  renderer.set_dynamic_mesh(figures.mesh());
-  ViewOptions options;
-  options.labels = true;
-  options.depth = true;
   RenderedImage image;
-  renderer.render(model, X_world_optical, options, image);
-  const std::vector<PersonLabel> labels =
-      label_people(renderer, model, X_world_optical, figures, image.labels);
+  const std::vector<PersonLabel> labels = render_labelled({person}, 1.4, figures, image);
+  const PinholeModel model = head_camera();
   ASSERT_EQ(labels.size(), 1u);
   ASSERT_TRUE(labels[0].face_box.has_value());
   EXPECT_TRUE(labels[0].seated);
