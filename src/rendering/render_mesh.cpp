@@ -32,8 +32,26 @@ class TriangleWriter {
     flat_triangle(a, b, c);
     flat_triangle(a, c, d);
   }
+  // The parallelogram with corners a, b, b + d - a and d, split into a grid of quads no wider than
+  // the primitive's max_facet_m.
+  void facet_quad(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& d) {
+    const int across = cells((b - a).norm()), up = cells((d - a).norm());
+    const Eigen::Vector3d step_across = (b - a) / across, step_up = (d - a) / up;
+    for (int i = 0; i < across; ++i) {
+      for (int j = 0; j < up; ++j) {
+        const Eigen::Vector3d corner = a + i * step_across + j * step_up;
+        flat_quad(corner, corner + step_across, corner + step_across + step_up, corner + step_up);
+      }
+    }
+  }
 
  private:
+  int cells(double length_m) const {
+    return primitive_.max_facet_m > 0.0
+               ? std::max(1, static_cast<int>(std::ceil(length_m / primitive_.max_facet_m)))
+               : 1;
+  }
+
   void vertex(const Eigen::Vector3d& p_local, const Eigen::Vector3d& n_local) {
     const Eigen::Vector3d p = primitive_.X_world_shape * p_local;
     const Eigen::Vector3d n = (rotation_ * n_local).normalized();
@@ -62,12 +80,13 @@ void append_box(const Eigen::Vector3d& half, TriangleWriter& out) {
     return Eigen::Vector3d((i & 1) ? half.x() : -half.x(), (i & 2) ? half.y() : -half.y(),
                            (i & 4) ? half.z() : -half.z());
   };
-  out.flat_quad(corner(0), corner(2), corner(3), corner(1));  // bottom (-z)
-  out.flat_quad(corner(4), corner(5), corner(7), corner(6));  // top (+z)
-  out.flat_quad(corner(0), corner(1), corner(5), corner(4));  // -y
-  out.flat_quad(corner(2), corner(6), corner(7), corner(3));  // +y
-  out.flat_quad(corner(0), corner(4), corner(6), corner(2));  // -x
-  out.flat_quad(corner(1), corner(3), corner(7), corner(5));  // +x
+  // Each face counter-clockwise from outside: a corner and its two neighbours.
+  out.facet_quad(corner(0), corner(2), corner(1));  // bottom (-z)
+  out.facet_quad(corner(4), corner(5), corner(6));  // top (+z)
+  out.facet_quad(corner(0), corner(1), corner(4));  // -y
+  out.facet_quad(corner(2), corner(6), corner(3));  // +y
+  out.facet_quad(corner(0), corner(4), corner(2));  // -x
+  out.facet_quad(corner(1), corner(3), corner(5));  // +x
 }
 
 // Extrudes a counter-clockwise convex outline from z = -half_height to +half_height. Round

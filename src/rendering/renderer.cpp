@@ -19,7 +19,10 @@ namespace {
 
 // Shading is deliberately plain, cheap on llvmpipe: outdoors ambient, a sun and a fill light at
 // the camera; indoors (a scene with lamps) the ceiling's lamps as the light, with their fall-off,
-// a little bounced light and the fill light.
+// a little bounced light and the fill light. The lamps light each vertex (Gouraud shading), and
+// the floor's contact shadows are found per vertex too: looping over lamps and people for every
+// pixel cost more than the rest of a frame on llvmpipe. Large surfaces are split into facets
+// (RenderPrimitive::max_facet_m) over which their light and shadows hardly change.
 constexpr const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -28,14 +31,54 @@ layout(location = 3) in float surface;
 layout(location = 4) in float label;
 uniform mat4 world_to_optical;
 uniform mat4 projection;
+// The lamps nearest the camera (Renderer::Impl::kMaxLamps), centres of their emitting faces.
+uniform int lamp_count;
+uniform vec3 lamps[32];
 out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_colour;
 flat out float v_surface;
 out float v_depth;
 flat out float v_label;
+out float v_lamp;
+out vec3 v_lamp_direction;
+out float v_floor_open;
+// Where people stand on the floor, nearest the camera first: x, y and the feet's radius.
+uniform int contact_count;
+uniform vec3 contacts[16];
+
+// Light from the ceiling's lamp panels at the vertex: each a downward Lambertian emitter
+// (intensity falling with the cosine from straight down), irradiance with the cosine of incidence
+// over the squared distance; and the mean direction it comes from, weighted the same way.
+void light_from_lamps() {
+  v_lamp = 0.0;
+  v_lamp_direction = vec3(0.0, 0.0, 1e-6);
+  for (int i = 0; i < lamp_count; ++i) {
+    vec3 d = lamps[i] - position;
+    float distance2 = max(dot(d, d), 0.04);
+    vec3 l = d * inversesqrt(distance2);
+    float arriving = max(l.z, 0.0) / distance2;
+    v_lamp += arriving * max(dot(normal, l), 0.0);
+    v_lamp_direction += arriving * l;
+  }
+}
+
+// Soft contact shadows (ambient occlusion): the floor around someone's feet sees less of the room
+// and its lamps, darkest under the feet and fading over a few tenths of a metre.
+float floor_occlusion(vec2 p) {
+  float open = 1.0;
+  for (int i = 0; i < contact_count; ++i) {
+    vec2 d = p - contacts[i].xy;
+    float r = contacts[i].z;
+    open *= 1.0 - 0.55 * exp(-dot(d, d) / (r * r));
+  }
+  return open;
+}
+
 void main() {
   vec4 p = world_to_optical * vec4(position, 1.0);
+  light_from_lamps();
+  v_floor_open = floor_occlusion(position.xy);  // 1 but for the floor (contact_count 0)
   v_world = position;
   v_normal = normal;
   v_colour = colour;
@@ -57,12 +100,10 @@ layout(location = 0) out vec4 out_colour;
 layout(location = 1) out float out_depth;
 layout(location = 2) out float out_label;
 uniform vec3 camera_position;
-// The lamps nearest the camera (Renderer::Impl::kMaxLamps), centres of their emitting faces.
 uniform int lamp_count;
-uniform vec3 lamps[32];
-// Where people stand on the floor, nearest the camera first: x, y and the feet's radius.
-uniform int contact_count;
-uniform vec3 contacts[16];
+in float v_lamp;
+in vec3 v_lamp_direction;
+in float v_floor_open;
 const vec3 sun = normalize(vec3(0.35, 0.55, 1.0));
 // Surface codes (rendering::Surface).
 const int kFloor = 1;
@@ -112,51 +153,21 @@ float texture_of(int surface, vec3 p) {
   return 1.0;
 }
 
-// Light from the ceiling's lamp panels at p with normal n: each a downward Lambertian emitter
-// (intensity falling with the cosine from straight down), irradiance with the cosine of incidence
-// over the squared distance. `towards` gets the mean direction the light comes from.
-float lamp_light(vec3 p, vec3 n, out vec3 towards) {
-  float light = 0.0;
-  towards = vec3(0.0);
-  for (int i = 0; i < lamp_count; ++i) {
-    vec3 d = lamps[i] - p;
-    float distance2 = max(dot(d, d), 0.04);
-    vec3 l = d * inversesqrt(distance2);
-    float arriving = max(l.z, 0.0) / distance2;
-    light += arriving * max(dot(n, l), 0.0);
-    towards += arriving * l;
-  }
-  towards = normalize(towards + vec3(0.0, 0.0, 1e-6));
-  return light;
-}
-
 // Indoors: the lamps scaled so that a face 1 m from a lamp's foot and 0.9 m under it (about 0.27
 // of a unit emitter) is about as lit as the sun and sky lit it outdoors, plus bounced light and
 // the fill light. Skin's highlight is the lamps' (Blinn-Phong from their mean direction), so
 // foreheads, noses and cheekbones catch it from above as they do under a ceiling.
 float indoor_lighting(int surface, vec3 n, vec3 to_camera, float fill, out float highlight) {
-  vec3 towards;
-  float lamp = 2.4 * lamp_light(v_world, n, towards);
+  float lamp = 2.4 * v_lamp;
   highlight = 0.0;
   if (surface == kSkin) {
-    highlight = 0.3 * min(lamp, 1.0) * pow(max(dot(n, normalize(towards + to_camera)), 0.0), 16.0);
+    vec3 half_way = normalize(normalize(v_lamp_direction) + to_camera);
+    highlight = 0.3 * min(lamp, 1.0) * pow(max(dot(n, half_way), 0.0), 16.0);
   }
   if (surface == kCeiling) {
     return 0.3 + 0.15 * fill;
   }
   return 0.12 + lamp + 0.2 * fill;
-}
-
-// Soft contact shadows (ambient occlusion): the floor around someone's feet sees less of the room
-// and its lamps, darkest under the feet and fading over a few tenths of a metre.
-float floor_occlusion(vec2 p) {
-  float open = 1.0;
-  for (int i = 0; i < contact_count; ++i) {
-    vec2 d = p - contacts[i].xy;
-    float r = contacts[i].z;
-    open *= 1.0 - 0.55 * exp(-dot(d, d) / (r * r));
-  }
-  return open;
 }
 
 void main() {
@@ -186,9 +197,7 @@ void main() {
     // Skin's colourless highlight of the fill light (Blinn-Phong: light and view coincide).
     highlight = surface == kSkin ? 0.22 * pow(fill, 12.0) : 0.0;
   }
-  if (surface == kFloor) {
-    lighting *= floor_occlusion(v_world.xy);
-  }
+  lighting *= v_floor_open;
   // Colours are display (sRGB) values and light adds up linearly: shade in linear terms.
   out_colour = vec4(min(c * pow(lighting, 1.0 / 2.2) + highlight, vec3(1.0)), 1.0);
 }
@@ -335,6 +344,7 @@ struct Renderer::Impl {
   std::vector<Eigen::Vector3f> lamps;     // every lamp of the static scene
   std::vector<Eigen::Vector3f> contacts;  // (x, y, radius) of every labelled figure's feet
   GpuMesh static_mesh;
+  GpuMesh floor_mesh;  // the static floors: only their vertices look for contact shadows
   GpuMesh dynamic_mesh;
   // One framebuffer per image size: a rig alternates between cameras of different sizes.
   std::map<std::pair<int, int>, Framebuffer> framebuffers;
@@ -389,6 +399,7 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->contact_count_location = glGetUniformLocation(impl_->program, "contact_count");
   impl_->contacts_location = glGetUniformLocation(impl_->program, "contacts");
   impl_->static_mesh.create();
+  impl_->floor_mesh.create();
   impl_->dynamic_mesh.create();
 }
 
@@ -398,6 +409,7 @@ Renderer::~Renderer() {
     framebuffer.destroy();
   }
   impl_->static_mesh.destroy();
+  impl_->floor_mesh.destroy();
   impl_->dynamic_mesh.destroy();
   glDeleteProgram(impl_->program);
 }
@@ -408,7 +420,12 @@ const std::string& Renderer::device_name() const {
 
 void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primitives) {
   impl_->context.make_current();
-  impl_->static_mesh.upload(mesh_of(primitives));
+  std::vector<RenderPrimitive> floors, others;
+  for (const RenderPrimitive& primitive : primitives) {
+    (primitive.surface == Surface::kFloor ? floors : others).push_back(primitive);
+  }
+  impl_->floor_mesh.upload(mesh_of(floors));
+  impl_->static_mesh.upload(mesh_of(others));
   impl_->lamps.clear();
   for (const RenderPrimitive& primitive : primitives) {
     if (primitive.surface == Surface::kLamp) {
@@ -475,14 +492,17 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   glUniform3fv(impl_->camera_position_location, 1, camera_position.data());
   Impl::upload_nearest(impl_->lamps, camera_position, Impl::kMaxLamps, impl_->lamp_count_location,
                        impl_->lamps_location);
-  Impl::upload_nearest(impl_->contacts, camera_position, Impl::kMaxContacts,
-                       impl_->contact_count_location, impl_->contacts_location);
+  glUniform1i(impl_->contact_count_location, 0);
   if (options.only_dynamic) {
     impl_->dynamic_mesh.draw(static_cast<GLint>(options.only_dynamic->first),
                              static_cast<GLsizei>(options.only_dynamic->count));
   } else {
     impl_->static_mesh.draw();
     impl_->dynamic_mesh.draw();
+    // The contact shadows' loop runs for the floor's vertices only: its count is theirs alone.
+    Impl::upload_nearest(impl_->contacts, camera_position, Impl::kMaxContacts,
+                         impl_->contact_count_location, impl_->contacts_location);
+    impl_->floor_mesh.draw();
   }
 
   if (multisample) {

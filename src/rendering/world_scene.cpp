@@ -15,6 +15,10 @@ const Eigen::Vector3f kFurnitureColour{0.55f, 0.40f, 0.28f};
 const Eigen::Vector3f kCeilingColour{0.93f, 0.93f, 0.91f};
 const Eigen::Vector3f kLampColour{1.0f, 0.98f, 0.94f};
 constexpr double kSlabThickness = 0.02;  // floor, ceiling and lamp panels
+// Facets of the boxes the lamps light per vertex: the floor's finer, for contact shadows of about
+// 0.3 m radius.
+constexpr double kLitFacetM = 0.25;
+constexpr double kFloorFacetM = 0.125;
 
 // The top of the tallest wall: where the ceiling rests. None when the world has no wall.
 double ceiling_height(const model::WorldDescription& world, const SceneStyle& style) {
@@ -108,6 +112,12 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
         out.push_back(prism);
         break;
       }
+    }
+  }
+  // The lamps light each vertex: boxes' faces in facets over which their light hardly changes.
+  for (RenderPrimitive& primitive : out) {
+    if (primitive.shape == PrimitiveShape::kBox) {
+      primitive.max_facet_m = primitive.surface == Surface::kFloor ? kFloorFacetM : kLitFacetM;
     }
   }
   return out;

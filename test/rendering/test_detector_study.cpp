@@ -309,12 +309,13 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
       "whose faces all turn more than 45 deg (%.3f per frame)\n",
       eligible, frames, found, 100.0 * recall, found_centred, 100.0 * centred_recall,
       frontal_on_turned, turned_frames, false_rate);
-  // What the figures reach under the ceiling's lamps (docs/cameras.md); the aim is 60 % of the
-  // turned faces and at most 0.02 frontal detections per frame.
+  // What the figures reach (docs/cameras.md: 46.3 % with IoU >= 0.5, 67.9 % centred, 0.023
+  // frontal detections per frame); the aim is 60 % of the turned faces and at most 0.02 frontal
+  // detections per frame.
   EXPECT_GE(eligible, 100);
-  EXPECT_GE(recall, 0.33);
-  EXPECT_GE(centred_recall, 0.42);
-  EXPECT_LE(false_rate, 0.06);
+  EXPECT_GE(recall, 0.44);
+  EXPECT_GE(centred_recall, 0.65);
+  EXPECT_LE(false_rate, 0.03);
 }
 
 }  // namespace

@@ -149,6 +149,7 @@ Eigen::Isometry3d camera_looking_down(const Eigen::Vector3d& position) {
 RenderPrimitive floor_slab() {
   RenderPrimitive floor = test::box({0.0, 0.0, -0.01}, {20.0, 20.0, 0.02});
   floor.surface = Surface::kFloor;
+  floor.max_facet_m = 0.125;  // lit per vertex, as world_scene facets floors
   return floor;
 }
 

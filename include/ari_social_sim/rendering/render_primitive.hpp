@@ -39,6 +39,9 @@ struct RenderPrimitive {
   Eigen::Vector3f colour{0.7f, 0.7f, 0.7f};       // linear RGB in [0, 1]
   Surface surface{Surface::kMatte};
   int round_segments{32};  // facets around a cylinder's or ellipsoid's axis; small parts need fewer
+  /// Boxes: each face split into a grid of quads no wider than this (m); 0 keeps one quad a face.
+  /// The lamps light the scene per vertex, so large surfaces (floors, walls, ceilings) need it.
+  double max_facet_m{0.0};
 };
 
 /// A pose upright on the floor plan: at (xy, z), turned by `yaw` about world z.
