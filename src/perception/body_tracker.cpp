@@ -42,7 +42,7 @@ void BodyTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     body.posture = human.posture.apparent();
     body.roi = fisheye_region(camera, camera_config.z_m, body.X_map_body.position,
                               config_.occlusion.person_radius_m,
-                              config_.human_model.eye_height_m + kHeadTopAboveEyes_m);
+                              config_.human_model.eye_height(body.posture) + kHeadTopAboveEyes_m);
     bodies.push_back(std::move(body));
   }
 }

@@ -108,9 +108,11 @@ void FaceTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
                                      core::angle_difference(human.gaze.direction_rad, head));
     face.gaze_target = human.gaze.target;
     face.pitch_rad = human.head_pitch_rad;
+    face.posture = human.posture.apparent();
     analyse(human, face);
-    face.roi = pinhole_region(camera, camera_config.z_m, face.X_map_face.position,
-                              config_.human_model.eye_height_m, kFaceWidth_m, kFaceHeight_m);
+    face.roi =
+        pinhole_region(camera, camera_config.z_m, face.X_map_face.position,
+                       config_.human_model.eye_height(face.posture), kFaceWidth_m, kFaceHeight_m);
     faces.push_back(std::move(face));
   }
 }

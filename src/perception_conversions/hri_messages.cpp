@@ -194,17 +194,18 @@ std::vector<geometry_msgs::TransformStamped> hri_transforms(
   std::vector<geometry_msgs::TransformStamped> transforms;
   for (const perception::PerceivedBody& body : frame.bodies) {
     const core::Pose2 X_base_body = body.X_map_body.relative_to(frame.X_map_base);
+    const double hips = human_model.hip_height(body.posture);
     transforms.push_back(transform(header, robot_frame, body_frame(body.body_id),
-                                   X_base_body.position.x(), X_base_body.position.y(),
-                                   human_model.hip_height_m, X_base_body.theta));
+                                   X_base_body.position.x(), X_base_body.position.y(), hips,
+                                   X_base_body.theta));
     transforms.push_back(transform(header, body_frame(body.body_id), head_frame(body.body_id), 0, 0,
-                                   human_model.eye_height_m - human_model.hip_height_m, 0));
+                                   human_model.eye_height(body.posture) - hips, 0));
   }
   for (const perception::PerceivedFace& face : frame.faces) {
     const core::Pose2 X_base_face = face.X_map_face.relative_to(frame.X_map_base);
-    geometry_msgs::TransformStamped face_pose =
-        transform(header, robot_frame, face_frame(face.face_id), X_base_face.position.x(),
-                  X_base_face.position.y(), human_model.eye_height_m, X_base_face.theta);
+    geometry_msgs::TransformStamped face_pose = transform(
+        header, robot_frame, face_frame(face.face_id), X_base_face.position.x(),
+        X_base_face.position.y(), human_model.eye_height(face.posture), X_base_face.theta);
     // A nod tips the face, and the gaze frame with it.
     face_pose.transform.rotation = yaw_pitch_quaternion(X_base_face.theta, face.pitch_rad);
     transforms.push_back(face_pose);

@@ -52,5 +52,32 @@ TEST(HriTransforms, ANoddingFaceTipsItsFrameDown) {
   EXPECT_NEAR(x_axis_of(find(level, "face_abcde")).z(), 0.0, 1e-12);
 }
 
+TEST(HriTransforms, ASeatedPersonsBodyHeadAndFaceFramesAreLower) {
+  perception::PerceptionFrame frame;
+  frame.has_ari = true;
+  perception::PerceivedBody body;
+  body.body_id = "bseat";
+  body.X_map_body = {{2.0, 0.0}, M_PI};
+  body.posture = world::Posture::kSitting;
+  frame.bodies.push_back(body);
+  body.body_id = "bstand";
+  body.posture = world::Posture::kStanding;
+  frame.bodies.push_back(body);
+  perception::PerceivedFace face;
+  face.face_id = "fseat";
+  face.X_map_face = {{2.0, 0.0}, M_PI};
+  face.posture = world::Posture::kSitting;
+  frame.faces.push_back(face);
+  std_msgs::Header header;
+  header.frame_id = "map";
+  const perception::HumanModelConfig model;  // hips 0.95 / 0.55 m, eyes 1.60 / 1.20 m
+  const auto transforms = hri_transforms(frame, model, header, "base_footprint", false);
+  EXPECT_DOUBLE_EQ(find(transforms, "body_bseat").transform.translation.z, 0.55);
+  EXPECT_DOUBLE_EQ(find(transforms, "head_bseat").transform.translation.z, 1.20 - 0.55);
+  EXPECT_DOUBLE_EQ(find(transforms, "face_fseat").transform.translation.z, 1.20);
+  EXPECT_DOUBLE_EQ(find(transforms, "body_bstand").transform.translation.z, 0.95);
+  EXPECT_DOUBLE_EQ(find(transforms, "head_bstand").transform.translation.z, 1.60 - 0.95);
+}
+
 }  // namespace
 }  // namespace ari_social_sim::nodes

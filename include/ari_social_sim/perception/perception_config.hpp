@@ -14,6 +14,7 @@
 #include "ari_social_sim/model/object_id.hpp"
 #include "ari_social_sim/model/person_attributes.hpp"
 #include "ari_social_sim/perception/gcff.hpp"
+#include "ari_social_sim/world/posture.hpp"
 
 // Parameters of ARI's simulated perception (docs/perception.md). Defaults are ARI's sensors
 // (ari_robot's URDF, D6.4 §3.5) and moderate error levels; config/perception.yaml spells them out.
@@ -118,7 +119,18 @@ struct OcclusionConfig {
 struct HumanModelConfig {
   double hip_height_m{0.95};
   double eye_height_m{1.60};
+  // Seated on a 0.45 m seat: hips about 0.1 m above it, eyes about 0.75 m (sitting eye height of
+  // adults, docs/cameras.md "Seated figures").
+  double seated_hip_height_m{0.55};
+  double seated_eye_height_m{1.20};
   double head_turn_limit_deg{60.0};
+
+  double hip_height(world::Posture posture) const {
+    return posture == world::Posture::kSitting ? seated_hip_height_m : hip_height_m;
+  }
+  double eye_height(world::Posture posture) const {
+    return posture == world::Posture::kSitting ? seated_eye_height_m : eye_height_m;
+  }
 
   template <class V>
   void visit(V& v) {
@@ -131,6 +143,13 @@ struct HumanModelConfig {
     v.rule("eye_height", eye_height_m > hip_height_m,
            "more than hip_height (" + core::number_text(hip_height_m) + ")",
            core::number_text(eye_height_m));
+    v.field("seated_hip_height", seated_hip_height_m, "m, body_<id> origin of a seated person",
+            core::positive());
+    v.field("seated_eye_height", seated_eye_height_m,
+            "m, face_<id>, gaze_<id> and head_<id> origin of a seated person", core::positive());
+    v.rule("seated_eye_height", seated_eye_height_m > seated_hip_height_m,
+           "more than seated_hip_height (" + core::number_text(seated_hip_height_m) + ")",
+           core::number_text(seated_eye_height_m));
   }
 };
 

@@ -62,7 +62,9 @@ struct PerceivedFace {
   std::string person_id;   ///< Set by the person manager (PersonRegistry), not the detector.
   core::Pose2 X_map_face;  ///< Sellion; theta = where the face points. Noisy.
   double pitch_rad{0.0};   ///< Positive: the face tips down (a nod).
-  double gaze_rad{0.0};    ///< Gaze direction in the map frame.
+  /// The world's PostureState::apparent(): a seated person's face is lower.
+  world::Posture posture{world::Posture::kStanding};
+  double gaze_rad{0.0};                           ///< Gaze direction in the map frame.
   model::ObjectId gaze_target{model::kNoObject};  ///< Whom or what the person looks at.
   double distance_m{0.0};                         ///< From the head camera.
   double age_years{0.0};
