@@ -80,7 +80,9 @@ class HriPerception(unittest.TestCase):
             truth = next(h for h in state.humans if h.id == human_id)
             self.assertAlmostEqual(t.transform.translation.x, truth.pose.x, places=3)
             self.assertAlmostEqual(t.transform.translation.y, truth.pose.y, places=3)
-            self.assertAlmostEqual(t.transform.translation.z, 0.95, places=3)
+            # Mid-hips: perception's human_model, seated (Abel) or standing.
+            hips = 0.55 if human_id == FACING_AWAY else 0.95
+            self.assertAlmostEqual(t.transform.translation.z, hips, places=3)
             parent = self.tf_buffer.lookup_transform("base_footprint", "body_" + body_id,
                                                      rospy.Time(0))
             self.assertEqual(parent.header.frame_id, "base_footprint")
