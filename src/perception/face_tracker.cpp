@@ -10,9 +10,12 @@
 namespace ari_social_sim::perception {
 namespace {
 
-// Face size for the image region (an adult face, chin to hairline, ear to ear).
+// Face size for the image region (an adult face, chin to hairline, ear to ear), and how far its
+// centre is below the eyes: the hairline about 8 cm above them, the chin about 12 cm below
+// (Farkas 1994's adult means), as the figures in the cameras draw it.
 constexpr double kFaceWidth_m = 0.16;
-constexpr double kFaceHeight_m = 0.22;
+constexpr double kFaceHeight_m = 0.20;
+constexpr double kFaceCentreBelowEyes_m = 0.02;
 // The oldest age a face analyser reports; hri_msgs/SoftBiometrics.age is a uint8.
 constexpr double kMaxAge_years = 120.0;
 
@@ -110,9 +113,9 @@ void FaceTracker::update(const world::WorldSnapshot& snapshot, const AriSensors&
     face.pitch_rad = human.head_pitch_rad;
     face.posture = human.posture.apparent();
     analyse(human, face);
-    face.roi =
-        pinhole_region(camera, camera_config.z_m, face.X_map_face.position,
-                       config_.human_model.eye_height(face.posture), kFaceWidth_m, kFaceHeight_m);
+    face.roi = pinhole_region(camera, camera_config.z_m, face.X_map_face.position,
+                              config_.human_model.eye_height(face.posture) - kFaceCentreBelowEyes_m,
+                              kFaceWidth_m, kFaceHeight_m);
     faces.push_back(std::move(face));
   }
 }
