@@ -147,6 +147,11 @@ TEST(GroupConfig, ValidateRefusesABadValueBuiltInCode) {
 TEST(PerceptionConfig, EyesAboveHips) {
   expect_config_error([] { parse("human_model: {hip_height: 1.0, eye_height: 0.9}"); },
                       {"human_model.eye_height", "more than hip_height"});
+  expect_config_error(
+      [] { parse("human_model: {seated_hip_height: 0.6, seated_eye_height: 0.5}"); },
+      {"human_model.seated_eye_height", "more than seated_hip_height (0.6)", "0.5"});
+  expect_config_error([] { parse("human_model: {seated_hip_height: -0.2}"); },
+                      {"human_model.seated_hip_height"});
 }
 
 TEST(PerceptionConfig, WithoutErrorsZeroesEveryErrorModelOnly) {
