@@ -25,6 +25,8 @@
 #include <vector>
 
 #include "../test/common/detector_scoring.hpp"
+#include "ari_social_sim/core/bounds.hpp"
+#include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/engine/episode.hpp"
 #include "ari_social_sim/rendering/camera_rig.hpp"
@@ -56,30 +58,22 @@ struct Options {
   std::exit(2);
 }
 
-double number_of(const std::string& option, const std::string& text, double low, double high) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !(value >= low && value <= high)) {
-    usage(option + ": expected a number in [" + std::to_string(low) + ", " + std::to_string(high) +
-          "], got '" + text + "'");
-  }
-  return value;
-}
+const core::NumberOption kFrames{"--frames", core::between(1, 100000)};
+const core::NumberOption kEvery{"--every", core::between(0.05, 60.0)};
+const core::NumberOption kEpisodeFrames{"--episode-frames", core::between(1, 100000)};
 
+// Throws core::ConfigError naming the option and what it expects.
 Options parse(int argc, char** argv) {
   Options options;
-  for (int i = 1; i < argc; i += 2) {
+  for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
-    if (i + 1 >= argc) {
-      usage(option + ": expected a value");
-    }
-    const std::string value = argv[i + 1];
+    const std::string value = core::option_value(argc, argv, i);
     if (option == "--frames") {
-      options.frames_per_scenario = static_cast<int>(number_of(option, value, 1, 100000));
+      options.frames_per_scenario = static_cast<int>(kFrames.parse(value));
     } else if (option == "--every") {
-      options.every_s = number_of(option, value, 0.05, 60.0);
+      options.every_s = kEvery.parse(value);
     } else if (option == "--episode-frames") {
-      options.frames_per_episode = static_cast<int>(number_of(option, value, 1, 100000));
+      options.frames_per_episode = static_cast<int>(kEpisodeFrames.parse(value));
     } else if (option == "--scenarios") {
       options.scenarios.clear();
       std::stringstream list(value);
@@ -87,7 +81,7 @@ Options parse(int argc, char** argv) {
         options.scenarios.push_back(name);
       }
     } else {
-      usage("unknown option '" + option + "'");
+      throw core::ConfigError("unknown option '" + option + "'");
     }
   }
   return options;
@@ -363,8 +357,8 @@ void study_scenario(const std::string& name, const Options& options,
 }  // namespace
 
 int main(int argc, char** argv) {
-  const Options options = parse(argc, argv);
   try {
+    const Options options = parse(argc, argv);
     const engine::EpisodeConfig config =
         engine::EpisodeConfig::load(std::string(ARI_SOURCE_DIR) + "/config");
     Study study;
