@@ -34,11 +34,6 @@ std::string json_list(const std::vector<T>& items, Format format) {
   return out + "]";
 }
 
-// A box touching the image's border: the part outside is cut off.
-bool at_border(const rendering::PixelBox& box, int width, int height) {
-  return box.x == 0 || box.y == 0 || box.x + box.width == width || box.y + box.height == height;
-}
-
 std::string annotation_json(uint64_t id, uint64_t image_id, int category,
                             const rendering::PixelBox& box, const rendering::PersonLabel& label,
                             double occlusion, bool truncated, const std::string& face_fields) {
@@ -128,7 +123,7 @@ void CocoDataset::add(const DatasetImage& image,
       // border.
       annotations_.push_back(annotation_json(
           DatasetIds::annotation(image.id, ordinal++), image.id, kFaceCategory, *label.face_box,
-          label, label.face_occlusion, at_border(*label.face_box, image.width, image.height),
+          label, label.face_occlusion, label.face_box->reaches_border(image.width, image.height),
           ", \"face_yaw_deg\": " + fixed4(label.face_yaw_deg)));
       ++faces_;
     }

@@ -72,8 +72,7 @@ std::vector<PersonLabel> label_people(Renderer& renderer, const PinholeModel& mo
     label.occlusion =
         whole.pixels > 0 ? std::clamp(1.0 - double(seen[i].pixels) / whole.pixels, 0.0, 1.0) : 0.0;
     const PixelBox full = whole.box();
-    label.truncated = full.x == 0 || full.y == 0 || full.x + full.width == model.width ||
-                      full.y + full.height == model.height;
+    label.truncated = full.reaches_border(model.width, model.height);
     label.face_occlusion =
         whole.face_pixels > 0
             ? std::clamp(1.0 - double(seen[i].face_pixels) / whole.face_pixels, 0.0, 1.0)

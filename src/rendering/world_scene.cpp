@@ -9,7 +9,7 @@
 namespace ari_social_sim::rendering {
 namespace {
 
-const Eigen::Vector3f kFloorColour{0.72f, 0.70f, 0.66f};
+const Eigen::Vector3f kFloorColour{0.50f, 0.52f, 0.55f};  // grey-blue sheet vinyl
 const Eigen::Vector3f kWallColour{0.86f, 0.85f, 0.80f};
 const Eigen::Vector3f kFurnitureColour{0.55f, 0.40f, 0.28f};
 const Eigen::Vector3f kCeilingColour{0.93f, 0.93f, 0.91f};

@@ -30,6 +30,11 @@ struct PixelBox {
   /// The smallest box holding both.
   PixelBox united(const PixelBox& other) const;
   bool contains(int u, int v) const { return u >= x && u < x + width && v >= y && v < y + height; }
+  /// Whether the box, clipped to a width x height image, meets its border: what it bounds is
+  /// cut off there.
+  bool reaches_border(int image_width, int image_height) const {
+    return x == 0 || y == 0 || x + width == image_width || y + height == image_height;
+  }
 };
 
 /// The box around the images of `points` (metres, in a frame placed at X_optical_frame), clipped
