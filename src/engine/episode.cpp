@@ -85,6 +85,9 @@ class Episode::InProcessCommands : public scenario::Commands {
     world_.set_group_arrangement(group, arrangement, heading_rad);
   }
   void leave_group(model::ObjectId agent) override { world_.leave_group(agent); }
+  void set_posture(model::ObjectId human, world::Posture posture) override {
+    world_.set_human_posture(human, posture);
+  }
 
  private:
   world::Simulation& world_;

@@ -38,6 +38,7 @@
 #include "ari_social_sim/SetGroupArrangement.h"
 #include "ari_social_sim/SetGroupCentre.h"
 #include "ari_social_sim/SetGroupConversation.h"
+#include "ari_social_sim/SetPosture.h"
 #include "ari_social_sim/SetReaction.h"
 #include "ari_social_sim/SpawnHuman.h"
 #include "ari_social_sim/StepSimulation.h"
@@ -339,6 +340,13 @@ class RosCommands : public scenario::Commands {
     LeaveGroup service;
     service.request.agent_id = agent;
     call("/sim/leave_group", service);
+  }
+
+  void set_posture(model::ObjectId human, world::Posture posture) override {
+    SetPosture service;
+    service.request.id = human;
+    service.request.posture = world::posture_name(posture);
+    call("/sim/set_posture", service);
   }
 
  private:

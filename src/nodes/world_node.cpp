@@ -36,6 +36,7 @@
 #include "ari_social_sim/SetGroupCentre.h"
 #include "ari_social_sim/SetGroupConversation.h"
 #include "ari_social_sim/SetPose.h"
+#include "ari_social_sim/SetPosture.h"
 #include "ari_social_sim/SetReaction.h"
 #include "ari_social_sim/SetVelocity.h"
 #include "ari_social_sim/SpawnHuman.h"
@@ -160,6 +161,7 @@ class WorldNode {
     services_.push_back(
         nh_.advertiseService("/sim/set_gaze_targets", &WorldNode::set_gaze_targets, this));
     services_.push_back(nh_.advertiseService("/sim/set_reaction", &WorldNode::set_reaction, this));
+    services_.push_back(nh_.advertiseService("/sim/set_posture", &WorldNode::set_posture, this));
     services_.push_back(nh_.advertiseService("/sim/reset", &WorldNode::reset, this));
     services_.push_back(nh_.advertiseService("/sim/pause", &WorldNode::pause, this));
     services_.push_back(nh_.advertiseService("/sim/step", &WorldNode::step_service, this));
@@ -457,6 +459,12 @@ class WorldNode {
 
   bool set_reaction(SetReaction::Request& req, SetReaction::Response& res) {
     return answer(res, [&] { simulation_->set_human_reaction(req.id, req.profile); });
+  }
+
+  bool set_posture(SetPosture::Request& req, SetPosture::Response& res) {
+    return answer(res, [&] {
+      simulation_->set_human_posture(req.id, world::requested_posture(req.posture));
+    });
   }
 
   bool reset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {

@@ -30,6 +30,7 @@ const std::vector<std::string> kActionTypes = {"say",
                                                "set_group_centre",
                                                "leave_group",
                                                "set_group_arrangement",
+                                               "set_posture",
                                                "converse",
                                                "stop"};
 
@@ -60,6 +61,17 @@ std::string read_text(const core::YamlMap& map, const std::string& key) {
 
 model::ObjectId read_id(const core::YamlMap& map, const std::string& key) {
   return map.required<unsigned>(key, core::positive());
+}
+
+// A required field that names one of `choices`, e.g. `arrangement: expected circle, vis-a-vis,
+// l-shape or side-by-side, got 'ring'`.
+template <class Choices>
+auto read_named_choice(const core::YamlMap& map, const std::string& key, const Choices& choices) {
+  const std::string name = map.required<std::string>(key);
+  if (!core::names_a_choice(name, choices)) {
+    map.fail(key, core::choice_names(choices), "'" + name + "'");
+  }
+  return core::parse_choice(name, choices, key);
 }
 
 // A human (never ARI) named by id.
@@ -307,15 +319,13 @@ class ScriptReader {
                                     entry.required<Eigen::Vector2d>("centre")};
     } else if (type == "leave_group") {
       action = LeaveGroupAction{read_agent(entry, "who")};
+    } else if (type == "set_posture") {
+      action = SetPostureAction{read_human(entry, "who"),
+                                read_named_choice(entry, "posture", world::kPostures)};
     } else if (type == "set_group_arrangement") {
       SetGroupArrangementAction a;
       a.group = read_group_ref(entry, "group");
-      const std::string arrangement = entry.required<std::string>("arrangement");
-      if (!core::names_a_choice(arrangement, model::kArrangements)) {
-        entry.fail("arrangement", core::choice_names(model::kArrangements),
-                   "'" + arrangement + "'");
-      }
-      a.arrangement = core::parse_choice(arrangement, model::kArrangements, "arrangement");
+      a.arrangement = read_named_choice(entry, "arrangement", model::kArrangements);
       if (entry.has("heading")) {
         a.heading_rad = entry.required<double>(
             "heading", core::between(-core::kMaxHeadingRad, core::kMaxHeadingRad));

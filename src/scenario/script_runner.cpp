@@ -104,6 +104,10 @@ std::string describe(const Action& action) {
             return "set_group_arrangement (" + std::to_string(a.group) + ", " +
                    model::to_string(a.arrangement) + ")";
           },
+          [](const SetPostureAction& a) {
+            return "set_posture (of human " + std::to_string(a.human) + ", " +
+                   world::posture_name(a.posture) + ")";
+          },
           [](const ConverseAction&) { return std::string("converse"); },
           [](const StopAction& a) {
             return std::string(a.success ? "stop (success)" : "stop (failure)");
@@ -338,6 +342,7 @@ bool ScriptRunner::run(const std::vector<Action>& actions, const Observations& o
               [&](const SetGroupArrangementAction& a) {
                 commands.set_group_arrangement(a.group, a.arrangement, a.heading_rad);
               },
+              [&](const SetPostureAction& a) { commands.set_posture(a.human, a.posture); },
               [&](const ConverseAction&) { conversation_->start(); },
               [&](const StopAction& a) { end(a.success, a.reason); },
           },

@@ -1,5 +1,7 @@
 #include "ari_social_sim/world/service_requests.hpp"
 
+#include <optional>
+
 #include "ari_social_sim/world/request_check.hpp"
 
 namespace ari_social_sim::world {
@@ -77,6 +79,16 @@ model::Arrangement requested_arrangement(const std::string& request, const std::
   model::Arrangement arrangement = unnamed;
   read_choice(RequestCheck(request), "arrangement", text, model::kArrangements, arrangement);
   return arrangement;
+}
+
+Posture requested_posture(const std::string& text) {
+  const RequestCheck check("set_posture");
+  std::optional<Posture> posture;
+  read_choice(check, "posture", text, kPostures, posture);
+  if (!posture) {
+    check.fail("posture", core::choice_names(kPostures), "''");
+  }
+  return *posture;
 }
 
 }  // namespace ari_social_sim::world

@@ -41,7 +41,8 @@ from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup
                                 DialogueStep, JoinGroup, LeaveGroup, RemoveHuman, Say,
                                 SetGazeTargets, SetGoal, SetGroupArrangement, SetGroupCentre,
                                 SetGroupConversation,
-                                SetPose, SetReaction, SetVelocity, SpawnHuman, StepSimulation)
+                                SetPose, SetPosture, SetReaction, SetVelocity, SpawnHuman,
+                                StepSimulation)
 
 from fuzz_values import mutate
 from wall_clock import wait_wall
@@ -125,6 +126,8 @@ def baselines(rng, world):
                                                        mean_duration=1.0)),
         "/sim/set_reaction": (SetReaction, dict(id=human, profile=rng.choice(
             ["ignore", "yield", "curious", "avoid", "block"]))),
+        "/sim/set_posture": (SetPosture, dict(id=human, posture=rng.choice(["standing",
+                                                                           "sitting"]))),
         "/sim/step": (StepSimulation, dict(steps=1)),
         "/sim/dialogue/reset": (DialogueReset, dict(seed=rng.randint(1, 100))),
         "/sim/dialogue/step": (DialogueStep, dict(acts=["greet()"], addressees=[], text="")),

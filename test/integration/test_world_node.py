@@ -14,11 +14,11 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import SetBool, Trigger
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
-from ari_social_sim.msg import WorldState
+from ari_social_sim.msg import HumanState, WorldState
 from ari_social_sim.srv import (AddGroupMembers, CreateGroup, CreateWalkingGroup, JoinGroup,
                                 LeaveGroup, RemoveHuman, Say, SetGazeTargets, SetGoal,
-                                SetGroupArrangement, SetGroupCentre, SetPose, SetReaction,
-                                SetVelocity,
+                                SetGroupArrangement, SetGroupCentre, SetPose, SetPosture,
+                                SetReaction, SetVelocity,
                                 SpawnHuman, StepSimulation)
 
 STEP_S = 0.05  # world_node's default step
@@ -103,7 +103,7 @@ class WorldNodeContract(unittest.TestCase):
                      "create_group", "add_group_members", "set_group_centre", "say",
                      "set_gaze_targets", "set_reaction", "reset", "pause", "step",
                      "create_walking_group", "set_group_arrangement", "join_group",
-                     "leave_group"]:
+                     "leave_group", "set_posture"]:
             rospy.wait_for_service("/sim/" + name, timeout=30)
         cls.call = {
             "spawn": rospy.ServiceProxy("/sim/spawn_human", SpawnHuman),
@@ -124,6 +124,7 @@ class WorldNodeContract(unittest.TestCase):
             "arrange": rospy.ServiceProxy("/sim/set_group_arrangement", SetGroupArrangement),
             "join": rospy.ServiceProxy("/sim/join_group", JoinGroup),
             "leave": rospy.ServiceProxy("/sim/leave_group", LeaveGroup),
+            "posture": rospy.ServiceProxy("/sim/set_posture", SetPosture),
         }
 
     def setUp(self):
@@ -465,6 +466,38 @@ class WorldNodeContract(unittest.TestCase):
                                  ospace_radius=0.0, arrangement="line")
         self.assertFalse(bad.success)
         self.assertIn("create_group: arrangement: expected circle", bad.message)
+
+    def test_15_set_posture_sits_a_human_down_and_up_in_place(self):
+        # Paused and stepped: the group's members still walk to their places after the reset.
+        self.assertTrue(self.call["pause"](True).success)
+        stepped = self.call["step"](steps=1)
+        before = human(self.state.wait(
+            lambda m: abs(m.header.stamp.to_sec() - stepped.sim_time) < 1e-6), 10)
+        self.assertEqual(before.posture, HumanState.POSTURE_STANDING)
+        made = self.call["posture"](id=10, posture="sitting")
+        self.assertTrue(made.success, made.message)
+        stepped = self.call["step"](steps=int(math.ceil(1.8 / STEP_S)))  # 1.7 s to sit down
+        seated = human(self.state.wait(
+            lambda m: abs(m.header.stamp.to_sec() - stepped.sim_time) < 1e-6), 10)
+        self.assertEqual(seated.posture, HumanState.POSTURE_SITTING)
+        self.assertEqual(seated.posture_progress, 1.0)
+        # Sitting down carries the position 0.45 m back, onto the seat behind.
+        moved = math.hypot(seated.pose.x - before.pose.x, seated.pose.y - before.pose.y)
+        self.assertAlmostEqual(moved, 0.45, delta=0.01)
+        made = self.call["posture"](id=10, posture="standing")
+        self.assertTrue(made.success, made.message)
+        stepped = self.call["step"](steps=int(math.ceil(1.8 / STEP_S)))
+        up = human(self.state.wait(
+            lambda m: abs(m.header.stamp.to_sec() - stepped.sim_time) < 1e-6), 10)
+        self.assertEqual(up.posture, HumanState.POSTURE_STANDING)
+        self.assertEqual(up.posture_progress, 1.0)
+        bad = self.call["posture"](id=10, posture="lying")
+        self.assertFalse(bad.success)
+        self.assertEqual(bad.message, "set_posture: posture: expected standing or sitting, "
+                                      "got 'lying'")
+        bad = self.call["posture"](id=999, posture="sitting")
+        self.assertFalse(bad.success)
+        self.assertEqual(bad.message, "set_posture: id: no human with id 999")
 
 
 if __name__ == "__main__":

@@ -204,6 +204,11 @@ class LiveChain {
       chain_.world_->set_group_arrangement(group, arrangement, heading_rad);
     }
     void leave_group(model::ObjectId agent) override { chain_.world_->leave_group(agent); }
+    void set_posture(model::ObjectId human, world::Posture posture) override {
+      // /sim/set_posture, with the posture's name as scenario_node sends it.
+      chain_.world_->set_human_posture(human,
+                                       world::requested_posture(world::posture_name(posture)));
+    }
 
    private:
     LiveChain& chain_;

@@ -24,6 +24,7 @@ class NoCommands : public Commands {
   void set_group_centre(model::ObjectId, const Eigen::Vector2d&) override {}
   void set_group_arrangement(model::ObjectId, model::Arrangement, std::optional<double>) override {}
   void leave_group(model::ObjectId) override {}
+  void set_posture(model::ObjectId, world::Posture) override {}
 };
 
 // test/integration/scenario_humans.yaml from 2 s of sim time to 5.5 s: Ana walks (state walk).

@@ -123,6 +123,7 @@ TEST(Scenario, EveryConditionAndActionTypeReads) {
       "        - {type: create_group, group: {id: 5, members: [10, 12], centre: [4, 4]}}\n"
       "        - {type: add_group_members, group: 5, members: [11]}\n"
       "        - {type: set_group_centre, group: 2, centre: [2, 2]}\n"
+      "        - {type: set_posture, who: 11, posture: sitting}\n"
       "      transitions:\n"
       "        - when:\n"
       "            - {type: distance_above, from: 10, to: ari, distance: 2}\n"
@@ -140,7 +141,10 @@ TEST(Scenario, EveryConditionAndActionTypeReads) {
       "        - when: []\n"
       "          next: a\n"));
   const State& a = s.script.states[0];
-  EXPECT_EQ(a.on_enter.size(), 11u);
+  EXPECT_EQ(a.on_enter.size(), 12u);
+  const auto& sits = std::get<SetPostureAction>(a.on_enter[11]);
+  EXPECT_EQ(sits.human, 11u);
+  EXPECT_EQ(sits.posture, world::Posture::kSitting);
   EXPECT_EQ(a.transitions[0].when.size(), 11u);
   EXPECT_EQ(std::get<FloorFreeCondition>(a.transitions[0].when[8]).person, 10u);
   EXPECT_TRUE(std::holds_alternative<AddressedCondition>(a.transitions[0].when[9]));
@@ -288,6 +292,12 @@ TEST(Scenario, ActionErrorsNameTheAction) {
   expect_rejected(enter("{type: create_walking_group, group: {id: 4, members: [10], goal: "
                         "{position: [1, 1]}}}"),
                   {at + ".group.members", "2 to 4 humans", "1"});
+  expect_rejected(enter("{type: set_posture, who: 10, posture: lying}"),
+                  {at + ".posture", "standing or sitting", "'lying'"});
+  expect_rejected(enter("{type: set_posture, who: ari, posture: sitting}"),
+                  {at + ".who", "a human id", "ari"});
+  expect_rejected(enter("{type: set_posture, who: 99, posture: sitting}"),
+                  {at + ".who", "a human of the scene or one the script adds", "99"});
   expect_rejected(enter("{type: stop, reason: why}"), {at + ".success", "required"});
 }
 

@@ -51,6 +51,9 @@ class RecordingCommands : public Commands {
     record("arrangement " + std::to_string(group) + " " + model::to_string(arrangement));
   }
   void leave_group(model::ObjectId agent) override { record("leave " + std::to_string(agent)); }
+  void set_posture(model::ObjectId human, world::Posture posture) override {
+    record("posture " + std::to_string(human) + " " + world::posture_name(posture));
+  }
 
  private:
   void record(const std::string& line) {
@@ -398,6 +401,22 @@ TEST(ScriptRunner, HumanGoalReachedWithinTheTolerance) {
   paul.pose.position = {4.8, 2.0};  // 0.20 m away
   stage.tick(runner, commands);
   EXPECT_TRUE(runner.finished());
+}
+
+TEST(ScriptRunner, SetPostureAsksTheWorldToSitAHumanDown) {
+  const Scenario s = inline_scenario(
+      "  time_limit: 60\n  start: a\n  states:\n"
+      "    - name: a\n      enter: [{type: set_posture, who: 10, posture: sitting}]\n"
+      "      transitions: [{when: [{type: time_elapsed, seconds: 1}], do: "
+      "[{type: set_posture, who: 10, posture: standing}, {type: stop, success: true}]}]\n");
+  ScriptRunner runner(s, 2);
+  RecordingCommands commands;
+  Stage stage;
+  while (!runner.finished()) {
+    stage.tick(runner, commands, 0.5);
+  }
+  EXPECT_EQ(commands.log, (std::vector<std::string>{"posture 10 sitting", "posture 10 standing"}));
+  EXPECT_EQ(runner.outcome()->success, true);
 }
 
 TEST(ScriptRunner, PerceivedGroupNeedsEveryListedMember) {

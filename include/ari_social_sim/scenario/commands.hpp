@@ -9,6 +9,7 @@
 #include "ari_social_sim/scenario/agent_ref.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/posture.hpp"
 #include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::scenario {
@@ -49,6 +50,8 @@ class Commands {
                                      std::optional<double> heading_rad) = 0;
   /// A human or ARI leaves its group (/sim/leave_group).
   virtual void leave_group(model::ObjectId agent) = 0;
+  /// A human stands up or sits down in place (/sim/set_posture).
+  virtual void set_posture(model::ObjectId human, world::Posture posture) = 0;
 };
 
 }  // namespace ari_social_sim::scenario

@@ -12,6 +12,7 @@
 #include "ari_social_sim/scenario/random_group.hpp"
 #include "ari_social_sim/world/group_navigation.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/posture.hpp"
 #include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::scenario {
@@ -150,6 +151,12 @@ struct SetGroupArrangementAction {
   std::optional<double> heading_rad;
 };
 
+/// A human stands up or sits down in place (/sim/set_posture).
+struct SetPostureAction {
+  model::ObjectId human{model::kNoObject};
+  world::Posture posture{world::Posture::kStanding};
+};
+
 struct SetGroupCentreAction {
   model::ObjectId group{model::kNoObject};
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
@@ -170,7 +177,7 @@ using Action =
     std::variant<SayAction, SetGoalAction, ApproachAction, JoinGroupAction, CancelNavigationAction,
                  AddHumanAction, RemoveHumanAction, CreateGroupAction, AddGroupMembersAction,
                  SetGroupCentreAction, LeaveGroupAction, SetGroupArrangementAction, ConverseAction,
-                 StopAction, CreateWalkingGroupAction>;
+                 StopAction, CreateWalkingGroupAction, SetPostureAction>;
 
 // ---- The state machine ----
 

@@ -7,6 +7,7 @@
 #include "ari_social_sim/model/fformation_arrangement.hpp"
 #include "ari_social_sim/world/gaze_generator.hpp"
 #include "ari_social_sim/world/human.hpp"
+#include "ari_social_sim/world/posture.hpp"
 #include "ari_social_sim/world/walking_group.hpp"
 
 namespace ari_social_sim::world {
@@ -66,5 +67,9 @@ struct WalkingGroupRequest {
 /// 'line'`.
 model::Arrangement requested_arrangement(const std::string& request, const std::string& text,
                                          model::Arrangement unnamed);
+
+/// The posture /sim/set_posture names: `standing` or `sitting`. Throws core::RequestError for
+/// another text, e.g. `set_posture: posture: expected standing or sitting, got 'lying'`.
+Posture requested_posture(const std::string& text);
 
 }  // namespace ari_social_sim::world
