@@ -26,6 +26,7 @@ from topic_collector import Collector
 SAMPLES, SAMPLE_PERIOD_S = 16, 0.5   # wall time over which links are sampled
 OWNER_RADIUS_M = 0.75                # a feature belongs to the nearest human within this
 STEADY_FRAMES = 20                   # perception frames (1 s) in a row: a steadily tracked feature
+LATE_LINKS_S = 3.0                   # wall time after the samples that late links still count
 ANONYMOUS = re.compile(r"^anonymous_person_[a-j]{5}$")
 
 
@@ -75,6 +76,10 @@ class PersonManagerStandin(unittest.TestCase):
         time.sleep(3.0)  # steady state
         first_match = len(cls.matches.all())
         cls.samples = [cls.sample() for _ in range(SAMPLES)]
+        # A person made near the end of the samples has its links sent before this test's
+        # subscribers to its topics have connected, which on a loaded machine takes more than a
+        # second: their latched links arrive after. Listen on for them.
+        time.sleep(LATE_LINKS_S)
         # Who the face identifier named during the samples (person -> face matches).
         cls.named = {m.id1 for m in cls.matches.all()[first_match:]
                      if m.id1_type == IdsMatch.PERSON and m.confidence > 0}
@@ -196,7 +201,7 @@ class PersonManagerStandin(unittest.TestCase):
 
     def orphan_features(self):
         """Faces and bodies tracked for 1 s (20 perception frames) in a row during the samples
-        that no person's link ever named meanwhile. (A feature that flickers makes an anonymous
+        that no person's link named meanwhile or within LATE_LINKS_S after. (A feature that flickers makes an anonymous
         person that lives a cycle or two, too briefly for a subscriber to connect each time.)"""
         begin, end = self.samples[0]["time"], self.samples[-1]["time"]
         steady = set()
@@ -213,7 +218,8 @@ class PersonManagerStandin(unittest.TestCase):
         for topics in everyone:
             with topics.lock:
                 for kind, topic in (("face", "face_id"), ("body", "body_id")):
-                    linked |= {(kind, v) for t, v in topics.times[topic] if begin <= t <= end + 1}
+                    linked |= {(kind, v) for t, v in topics.times[topic]
+                               if begin <= t <= end + LATE_LINKS_S}
         return sorted("%s %s" % f for f in steady - linked), len(steady)
 
     def test_links_are_resent_at_10_hz_and_person_frames_follow(self):
