@@ -20,8 +20,8 @@ constexpr int kSteps = 200;  // 10 s
 
 // room_6x6 with ARI, Ana (10) and Luc (11) in group 1; on entering its only state the script
 // spawns Zoe (12, walking, looking at Ana) and Max (13, curious about ARI), moves Max and Luc into
-// a new group 2, sends Ana walking (which drops group 1), lets her speak, and spawns and removes
-// Eve (14).
+// a new group 2 where Max sits down, sends Ana walking (which drops group 1), lets her speak, and
+// spawns and removes Eve (14).
 scenario::Scenario requests_scenario() {
   const std::string text =
       "world: " + kSource +
@@ -43,6 +43,7 @@ scenario::Scenario requests_scenario() {
       "        - {type: create_group, group: {id: 2, members: [13], centre: [4.5, 4.5]}}\n"
       "        - {type: add_group_members, group: 2, members: [11]}\n"
       "        - {type: set_group_centre, group: 2, centre: [4, 4.5]}\n"
+      "        - {type: set_posture, who: 13, posture: sitting}\n"
       "        - {type: set_goal, who: 10, position: [2, 4.5]}\n"
       "        - {type: say, speaker: 10, act: INFORM, text: over there by the window}\n"
       "        - {type: add_human, human: {id: 14, position: [1, 3]}}\n"
@@ -75,6 +76,7 @@ void send_requests(world::Simulation& world) {
   world.add_group(group);
   world.add_group_members(2, {11});
   world.set_group_centre(2, {4.0, 4.5});
+  world.set_human_posture(13, world::Posture::kSitting);
   world.set_human_goal(10, {{2.0, 4.5}, 0.0});
   world.say(10, "INFORM", "over there by the window");
   world::HumanSpec eve;
@@ -131,6 +133,8 @@ TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
     EXPECT_EQ(a.gaze.target, b.gaze.target) << "human " << b.id;
     EXPECT_EQ(a.reaction, b.reaction) << "human " << b.id;
     EXPECT_EQ(a.speech.previous_act, b.speech.previous_act) << "human " << b.id;
+    EXPECT_EQ(a.posture.posture, b.posture.posture) << "human " << b.id;
+    EXPECT_EQ(a.posture.progress, b.posture.progress) << "human " << b.id;
   }
   // Zoe walked her 4 m east and looks at Ana; Ana walked north out of group 1, which was dropped;
   // group 2 is Max and Luc.
@@ -139,6 +143,8 @@ TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
   EXPECT_NEAR(direct.humans[0].pose.position.y(), 4.5, 0.1);
   EXPECT_EQ(direct.humans[0].speech.previous_act, "INFORM");
   EXPECT_EQ(direct.humans[3].reaction, world::ReactionProfile::kCurious);
+  EXPECT_EQ(direct.humans[3].posture.posture, world::Posture::kSitting);  // Max, settled
+  EXPECT_EQ(direct.humans[3].posture.progress, 1.0);
   ASSERT_EQ(in_process.groups.size(), 1u);
   EXPECT_EQ(in_process.groups[0].id, 2u);
   EXPECT_EQ(in_process.groups[0].members, (std::vector<model::ObjectId>{13, 11}));
