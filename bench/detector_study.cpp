@@ -198,11 +198,18 @@ class Study {
     return label.occlusion < 0.01 && !label.truncated && !label.seated;
   }
 
+  static bool near_unmasked(const PersonLabel& label) {
+    return label.face_box && !label.mask && label.distance_m >= 0.8 && label.distance_m <= 3.0;
+  }
+
   // A face cut by the image's border (the COCO export's `truncated` face) is not one a face
   // detector can find whole: it is not scored.
+  static bool cut_by_border(const PersonLabel& label, const cv::Size& image) {
+    return label.face_box && label.face_box->reaches_border(image.width, image.height);
+  }
+
   static bool near_unmasked_face(const PersonLabel& label, const cv::Size& image) {
-    return label.face_box && !label.mask && label.distance_m >= 0.8 && label.distance_m <= 3.0 &&
-           !label.face_box->reaches_border(image.width, image.height);
+    return near_unmasked(label) && !cut_by_border(label, image);
   }
 
   // HOG as OpenCV's people detection sample runs it on the native image (window stride 8, scale
@@ -269,9 +276,7 @@ class Study {
 
   // Faces the recall would count but for the image's border cutting them.
   void count_cut_face(const PersonLabel& label, const cv::Size& image) {
-    const bool cut = label.face_box && !label.mask && label.distance_m >= 0.8 &&
-                     label.distance_m <= 3.0 &&
-                     label.face_box->reaches_border(image.width, image.height);
+    const bool cut = near_unmasked(label) && cut_by_border(label, image);
     cut_frontal_ += cut && label.face_yaw_deg <= 25.0 ? 1 : 0;
     cut_turned_ += cut && label.face_yaw_deg >= 60.0 ? 1 : 0;
   }

@@ -298,7 +298,6 @@ std::vector<Eigen::Vector3f> floor_contacts(const RenderMesh& mesh) {
   constexpr float kFeetHeightM = 0.12f;
   struct Feet {
     Eigen::Vector2f sum{Eigen::Vector2f::Zero()};
-    int count{0};
     std::vector<Eigen::Vector2f> points;
   };
   std::map<float, Feet> by_label;
@@ -310,12 +309,11 @@ std::vector<Eigen::Vector3f> floor_contacts(const RenderMesh& mesh) {
       Feet& feet = by_label[label];
       feet.points.emplace_back(v[i], v[i + 1]);
       feet.sum += feet.points.back();
-      ++feet.count;
     }
   }
   std::vector<Eigen::Vector3f> contacts;
   for (const auto& [label, feet] : by_label) {
-    const Eigen::Vector2f centre = feet.sum / static_cast<float>(feet.count);
+    const Eigen::Vector2f centre = feet.sum / static_cast<float>(feet.points.size());
     float reach = 0.0f;
     for (const Eigen::Vector2f& p : feet.points) {
       reach = std::max(reach, (p - centre).norm());
@@ -422,13 +420,9 @@ const std::string& Renderer::device_name() const {
 void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primitives) {
   impl_->context.make_current();
   std::vector<RenderPrimitive> floors, others;
-  for (const RenderPrimitive& primitive : primitives) {
-    (primitive.surface == Surface::kFloor ? floors : others).push_back(primitive);
-  }
-  impl_->floor_mesh.upload(mesh_of(floors));
-  impl_->static_mesh.upload(mesh_of(others));
   impl_->lamps.clear();
   for (const RenderPrimitive& primitive : primitives) {
+    (primitive.surface == Surface::kFloor ? floors : others).push_back(primitive);
     if (primitive.surface == Surface::kLamp) {
       // The panel's lower face, which gives the light.
       impl_->lamps.push_back(
@@ -436,6 +430,8 @@ void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primiti
               .cast<float>());
     }
   }
+  impl_->floor_mesh.upload(mesh_of(floors));
+  impl_->static_mesh.upload(mesh_of(others));
 }
 
 void Renderer::set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives) {
