@@ -1,7 +1,8 @@
 // Stock OpenCV detectors on the head camera's images of the shipped scenarios, as a user gets them
 // (docs/cameras.md, "Stock detectors in the shipped scenarios"): each scenario's episodes run in
 // process and the head camera renders them with the camera effects, as export_dataset does. On
-// every frame: HOG people detection at native resolution and at 0.35 of it, the two frontal face
+// every frame: HOG people detection at native resolution (as OpenCV's C++ and Python samples run
+// it) and at 0.35 of it, the two frontal face
 // cascades (alt2 and default) and the profile cascade, the cascades on the image and on its
 // histogram-equalised copies: global (cv::equalizeHist, the usual first step before a cascade)
 // and local (CLAHE, clip limit 2 on 8 x 8 tiles, the values of OpenCV's tutorial). Scored
@@ -138,7 +139,7 @@ class Study {
     clahe_->apply(grey, local);
     const Needs needs = needs_of(labels, grey.size());
     if (needs.hog) {
-      score_hog(grey, labels);
+      score_hog(rgb, grey, labels);
     }
     const std::array<FaceDetections, kPreprocessings> faces = {
         detect_faces(grey, needs), detect_faces(equalised, needs), detect_faces(local, needs)};
@@ -212,27 +213,43 @@ class Study {
     return near_unmasked(label) && !cut_by_border(label, image);
   }
 
-  // HOG as OpenCV's people detection sample runs it on the native image (window stride 8, scale
-  // step 1.05), and as test_detector_study runs it at 0.35 of the size.
-  void score_hog(const cv::Mat& grey, const std::vector<PersonLabel>& labels) {
-    std::vector<cv::Rect> native, scaled_windows, scaled;
-    hog_.detectMultiScale(grey, native, 0.0, cv::Size(8, 8), cv::Size(), 1.05, 2.0);
-    cv::Mat small;
-    cv::resize(grey, small, cv::Size(), kHogScale, kHogScale, cv::INTER_AREA);
-    hog_.detectMultiScale(small, scaled_windows, 0.0, cv::Size(4, 4), cv::Size(32, 32), 1.05, 2.0);
-    for (const cv::Rect& w : scaled_windows) {
-      scaled.emplace_back(cvRound(w.x / kHogScale), cvRound(w.y / kHogScale),
-                          cvRound(w.width / kHogScale), cvRound(w.height / kHogScale));
+  // The person box a HOG window is scored with.
+  using PersonInWindow = rendering::PixelBox (*)(const cv::Rect&);
+
+  // HOG's windows on `image` resized by `scale`, as person boxes in the image's pixels.
+  std::vector<cv::Rect> hog_people(const cv::Mat& image, double scale, const cv::Size& stride,
+                                   const cv::Size& padding, PersonInWindow person_in) {
+    cv::Mat resized = image;
+    if (scale != 1.0) {
+      cv::resize(image, resized, cv::Size(), scale, scale, cv::INTER_AREA);
     }
-    for (std::vector<cv::Rect>* windows : {&native, &scaled}) {
-      for (cv::Rect& window : *windows) {
-        const rendering::PixelBox person = person_in_hog_window(window);
-        window = cv::Rect(person.x, person.y, person.width, person.height);
-      }
+    std::vector<cv::Rect> windows, people;
+    hog_.detectMultiScale(resized, windows, 0.0, stride, padding, 1.05, 2.0);
+    for (const cv::Rect& w : windows) {
+      const rendering::PixelBox person =
+          person_in(cv::Rect(cvRound(w.x / scale), cvRound(w.y / scale), cvRound(w.width / scale),
+                             cvRound(w.height / scale)));
+      people.emplace_back(person.x, person.y, person.width, person.height);
     }
+    return people;
+  }
+
+  // HOG at native resolution as OpenCV's two people detection samples run it (window stride 8,
+  // scale step 1.05): the C++ sample on the grey image without padding, scored with Dalal and
+  // Triggs' person box; the Python sample on the colour image with 32 pixels of padding, which
+  // lets a window reach past the image's border, scored with the box it draws. And at 0.35 of the
+  // size, as test_detector_study runs it.
+  void score_hog(const cv::Mat& rgb, const cv::Mat& grey, const std::vector<PersonLabel>& labels) {
+    const std::vector<cv::Rect> native =
+        hog_people(grey, 1.0, cv::Size(8, 8), cv::Size(), person_in_hog_window);
+    const std::vector<cv::Rect> padded =
+        hog_people(rgb, 1.0, cv::Size(8, 8), cv::Size(32, 32), person_drawn_in_hog_window);
+    const std::vector<cv::Rect> scaled =
+        hog_people(grey, kHogScale, cv::Size(4, 4), cv::Size(32, 32), person_in_hog_window);
     for (const PersonLabel& label : labels) {
       if (fully_visible(label) && label.distance_m >= 3.0 && label.distance_m <= 6.0) {
         hog_native_.add(label, any_overlaps(native, label.body_box));
+        hog_padded_.add(label, any_overlaps(padded, label.body_box));
       }
       if (fully_visible(label) && label.distance_m >= 2.0 && label.distance_m <= 6.0) {
         hog_scaled_.add(label, any_overlaps(scaled, label.body_box));
@@ -240,6 +257,7 @@ class Study {
     }
     if (labels.empty()) {
       hog_native_empty_.add(static_cast<int>(native.size()));
+      hog_padded_empty_.add(static_cast<int>(padded.size()));
       hog_scaled_empty_.add(static_cast<int>(scaled.size()));
     }
   }
@@ -285,8 +303,8 @@ class Study {
   cv::CascadeClassifier alt2_, frontal_default_, profile_;
   int cut_frontal_{0}, cut_turned_{0};
   int frames_{0};
-  Recall hog_native_, hog_scaled_;
-  FalseRate hog_native_empty_, hog_scaled_empty_;
+  Recall hog_native_, hog_padded_, hog_scaled_;
+  FalseRate hog_native_empty_, hog_padded_empty_, hog_scaled_empty_;
   cv::Ptr<cv::CLAHE> clahe_{cv::createCLAHE(2.0, cv::Size(8, 8))};
   // Indexed as kPreprocessingNames.
   std::array<Recall, kPreprocessings> alt2_recall_, default_recall_, profile_recall_,
@@ -325,6 +343,7 @@ void Study::print() const {
       "| detector | who | found | recall | tone 1 | tone 2 | tone 3 | tone 4 | tone 5 | tone 6 | "
       "tone 1 - tone 6 (points) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   print_recall("HOG, native", "fully visible, 3-6 m", hog_native_);
+  print_recall("HOG, native, Python sample", "fully visible, 3-6 m", hog_padded_);
   print_recall("HOG, 0.35 of the image", "fully visible, 2-6 m", hog_scaled_);
   for (int e = 0; e < kPreprocessings; ++e) {
     const std::string p = kPreprocessingNames[e];
@@ -337,6 +356,7 @@ void Study::print() const {
   }
   std::printf("\n| detector | frames | detections | per frame |\n|---|---|---|---|\n");
   print_false("HOG, native", "nobody in view", hog_native_empty_);
+  print_false("HOG, native, Python sample", "nobody in view", hog_padded_empty_);
   print_false("HOG, 0.35 of the image", "nobody in view", hog_scaled_empty_);
   for (int e = 0; e < kPreprocessings; ++e) {
     const std::string p = kPreprocessingNames[e];

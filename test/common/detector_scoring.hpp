@@ -75,6 +75,15 @@ inline PixelBox person_in_hog_window(const cv::Rect& window) {
           window.height * 3 / 4};
 }
 
+/// The person OpenCV's Python people detection sample draws in a HOG window: the window less 15 %
+/// of its width and 5 % of its height on each side (it finds the window "slightly larger" than
+/// the person). That box is about 0.39 as wide as tall, a standing person's proportion.
+inline PixelBox person_drawn_in_hog_window(const cv::Rect& window) {
+  const int side = static_cast<int>(0.15 * window.width);
+  const int top = static_cast<int>(0.05 * window.height);
+  return {window.x + side, window.y + top, window.width - 2 * side, window.height - 2 * top};
+}
+
 /// The detections that fall on someone (their centre in a person's box): on turned heads when
 /// every face is turned. Those on the room (tiles, furniture) are the empty frames' count.
 inline int detections_on_people(const std::vector<cv::Rect>& detections,
