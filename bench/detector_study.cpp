@@ -11,20 +11,26 @@
 // tables.
 //
 // usage: detector_study [--frames N] [--every SECONDS] [--episode-frames N] [--scenarios a,b,...]
+//                       [--misses DIR]
 //   --frames: frames per scenario (default 210: 1,050 over the five shipped scenarios)
 //   --every: sim seconds between frames (default 1.0)
 //   --episode-frames: at most this many frames of one episode (default 50), so that each
 //                     scenario's frames come from several seeds (1, 2, ...)
+//   --misses: write a crop of each face a frontal cascade misses on the image as it is into DIR
+//             (which must exist), named by scenario, seed, sim time, skin tone and cascade
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/objdetect.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../test/common/detector_scoring.hpp"
@@ -54,12 +60,13 @@ struct Options {
   int frames_per_episode{50};
   std::vector<std::string> scenarios{"corridor", "group_discussion", "join_conversation",
                                      "join_group", "waiting_room"};
+  std::string misses_dir;  // empty: no crops
 };
 
 [[noreturn]] void usage(const std::string& problem) {
   std::fprintf(stderr,
                "detector_study: %s\nusage: detector_study [--frames N] [--every SECONDS] "
-               "[--episode-frames N] [--scenarios a,b,...]\n",
+               "[--episode-frames N] [--scenarios a,b,...] [--misses DIR]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -80,6 +87,11 @@ Options parse(int argc, char** argv) {
       options.every_s = kEvery.parse(value);
     } else if (option == "--episode-frames") {
       options.frames_per_episode = static_cast<int>(kEpisodeFrames.parse(value));
+    } else if (option == "--misses") {
+      if (!std::filesystem::is_directory(value)) {
+        throw core::ConfigError("--misses: expected an existing directory, got '" + value + "'");
+      }
+      options.misses_dir = value;
     } else if (option == "--scenarios") {
       options.scenarios.clear();
       std::stringstream list(value);
@@ -125,14 +137,15 @@ struct FaceDetections {
 
 class Study {
  public:
-  Study() {
+  explicit Study(std::string misses_dir) : misses_dir_(std::move(misses_dir)) {
     hog_.setSVMDetector(cv::HOGDescriptor::getDefaultPeopleDetector());
     load(alt2_, kFrontalAlt2Cascade);
     load(frontal_default_, kFrontalDefaultCascade);
     load(profile_, kProfileCascade);
   }
 
-  void add(const cv::Mat& rgb, const std::vector<PersonLabel>& labels) {
+  // `frame` names the image in the crops of misses.
+  void add(const cv::Mat& rgb, const std::vector<PersonLabel>& labels, const std::string& frame) {
     cv::Mat grey, equalised, local;
     cv::cvtColor(rgb, grey, cv::COLOR_RGB2GRAY);
     cv::equalizeHist(grey, equalised);
@@ -145,6 +158,9 @@ class Study {
         detect_faces(grey, needs), detect_faces(equalised, needs), detect_faces(local, needs)};
     for (int e = 0; e < kPreprocessings; ++e) {
       score_faces(faces[e], labels, grey.size(), e);
+    }
+    if (!misses_dir_.empty()) {
+      save_frontal_misses(faces[0], labels, rgb, frame);
     }
     ++frames_;
   }
@@ -292,6 +308,34 @@ class Study {
     }
   }
 
+  // A crop twice the face's size around each face the frontal recall counts and a cascade missed.
+  void save_frontal_misses(const FaceDetections& found, const std::vector<PersonLabel>& labels,
+                           const cv::Mat& rgb, const std::string& frame) const {
+    for (const PersonLabel& label : labels) {
+      if (!near_unmasked_face(label, rgb.size()) || label.face_yaw_deg > 25.0) {
+        continue;
+      }
+      const rendering::PixelBox& face = *label.face_box;
+      const cv::Rect around = cv::Rect(face.x - face.width / 2, face.y - face.height / 2,
+                                       2 * face.width, 2 * face.height) &
+                              cv::Rect(0, 0, rgb.cols, rgb.rows);
+      cv::Mat crop;
+      cv::cvtColor(rgb(around), crop, cv::COLOR_RGB2BGR);
+      for (const auto& [name, detections] :
+           {std::pair{"alt2", &found.alt2}, std::pair{"default", &found.frontal_default}}) {
+        if (!any_overlaps(*detections, face)) {
+          const std::string file = misses_dir_ + "/" + frame + "_person" +
+                                   std::to_string(label.person_id) + "_tone" +
+                                   std::to_string(label.skin_tone) + "_" + name + ".png";
+          if (!cv::imwrite(file, crop)) {
+            std::fprintf(stderr, "detector_study: cannot write %s\n", file.c_str());
+            std::exit(1);
+          }
+        }
+      }
+    }
+  }
+
   // Faces the recall would count but for the image's border cutting them.
   void count_cut_face(const PersonLabel& label, const cv::Size& image) {
     const bool cut = near_unmasked(label) && cut_by_border(label, image);
@@ -299,6 +343,7 @@ class Study {
     cut_turned_ += cut && label.face_yaw_deg >= 60.0 ? 1 : 0;
   }
 
+  std::string misses_dir_;
   cv::HOGDescriptor hog_;
   cv::CascadeClassifier alt2_, frontal_default_, profile_;
   int cut_frontal_{0}, cut_turned_{0};
@@ -395,7 +440,10 @@ void study_scenario(const std::string& name, const Options& options,
                              frames < options.frames_per_scenario && !episode.finished();
          episode.step()) {
       for (const rendering::LabelledImage& image : cameras.render_due(episode.snapshot())) {
-        study.add(image.colour, image.labels);
+        char frame[64];
+        std::snprintf(frame, sizeof(frame), "_%llu_%06.1fs", static_cast<unsigned long long>(seed),
+                      image.time_s);
+        study.add(image.colour, image.labels, name + frame);
         empty += image.labels.empty() ? 1 : 0;
         ++frames;
         ++in_episode;
@@ -413,7 +461,7 @@ int main(int argc, char** argv) {
     const Options options = parse(argc, argv);
     const engine::EpisodeConfig config =
         engine::EpisodeConfig::load(std::string(ARI_SOURCE_DIR) + "/config");
-    Study study;
+    Study study(options.misses_dir);
     for (const std::string& name : options.scenarios) {
       study_scenario(name, options, config, study);
     }
