@@ -2,13 +2,12 @@
 // (docs/cameras.md, "Stock detectors in the shipped scenarios"): each scenario's episodes run in
 // process and the head camera renders them with the camera effects, as export_dataset does. On
 // every frame: HOG people detection at native resolution (as OpenCV's C++ and Python samples run
-// it) and at 0.35 of it, the two frontal face
-// cascades (alt2 and default) and the profile cascade, the cascades on the image and on its
-// histogram-equalised copies: global (cv::equalizeHist, the usual first step before a cascade)
-// and local (CLAHE, clip limit 2 on 8 x 8 tiles, the values of OpenCV's tutorial). Scored
-// against the images' labels: recall overall and by skin tone (faces cut by the image's border
-// left out), false detections on turned heads and in frames that show nobody. Prints Markdown
-// tables.
+// it) and at 0.35 of it, the two frontal face cascades (alt2 and default) and the profile
+// cascade, the cascades on the image and on its histogram-equalised copies: global
+// (cv::equalizeHist, the usual first step before a cascade) and local (CLAHE, clip limit 2 on 8 x 8
+// tiles, the values of OpenCV's tutorial). Scored against the images' labels: recall overall and by
+// skin tone (faces cut by the image's border left out), false detections on turned heads and in
+// frames that show nobody. Prints Markdown tables.
 //
 // usage: detector_study [--frames N] [--every SECONDS] [--episode-frames N] [--scenarios a,b,...]
 //                       [--misses DIR]
@@ -17,7 +16,8 @@
 //   --episode-frames: at most this many frames of one episode (default 50), so that each
 //                     scenario's frames come from several seeds (1, 2, ...)
 //   --misses: write a crop of each face a frontal cascade misses on the image as it is into DIR
-//             (which must exist), named by scenario, seed, sim time, skin tone and cascade
+//             (which must exist), named by scenario, seed, sim time, person, skin tone and
+//             cascade
 
 #include <algorithm>
 #include <array>
