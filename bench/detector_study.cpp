@@ -190,8 +190,8 @@ class Study {
           needs.hog || (fully_visible(label) && label.distance_m >= 2.0 && label.distance_m <= 6.0);
       all_turned = all_turned && label.face_yaw_deg > 45.0;
       if (near_unmasked_face(label, image)) {
-        needs.frontal = needs.frontal || label.face_yaw_deg <= 25.0;
-        needs.profile = needs.profile || label.face_yaw_deg >= 60.0;
+        needs.frontal = needs.frontal || frontal_face(label);
+        needs.profile = needs.profile || turned_face(label);
       }
     }
     needs.frontal = needs.frontal || all_turned;
@@ -228,6 +228,11 @@ class Study {
   static bool near_unmasked_face(const PersonLabel& label, const cv::Size& image) {
     return near_unmasked(label) && !cut_by_border(label, image);
   }
+
+  // The faces the frontal cascades' recall counts (within 25 deg of the camera) and the profile
+  // cascade's (turned 60-90 deg).
+  static bool frontal_face(const PersonLabel& label) { return label.face_yaw_deg <= 25.0; }
+  static bool turned_face(const PersonLabel& label) { return label.face_yaw_deg >= 60.0; }
 
   // The person box a HOG window is scored with.
   using PersonInWindow = rendering::PixelBox (*)(const cv::Rect&);
@@ -289,10 +294,10 @@ class Study {
       if (!near_unmasked_face(label, image)) {
         continue;
       }
-      if (label.face_yaw_deg <= 25.0) {
+      if (frontal_face(label)) {
         alt2_recall_[e].add(label, any_overlaps(found.alt2, *label.face_box));
         default_recall_[e].add(label, any_overlaps(found.frontal_default, *label.face_box));
-      } else if (label.face_yaw_deg >= 60.0) {
+      } else if (turned_face(label)) {
         profile_recall_[e].add(label, any_overlaps(found.profile, *label.face_box));
         profile_centred_[e].add(label, any_centred(found.profile, *label.face_box));
       }
@@ -312,35 +317,40 @@ class Study {
   void save_frontal_misses(const FaceDetections& found, const std::vector<PersonLabel>& labels,
                            const cv::Mat& rgb, const std::string& frame) const {
     for (const PersonLabel& label : labels) {
-      if (!near_unmasked_face(label, rgb.size()) || label.face_yaw_deg > 25.0) {
+      if (!near_unmasked_face(label, rgb.size()) || !frontal_face(label)) {
         continue;
       }
       const rendering::PixelBox& face = *label.face_box;
-      const cv::Rect around = cv::Rect(face.x - face.width / 2, face.y - face.height / 2,
-                                       2 * face.width, 2 * face.height) &
-                              cv::Rect(0, 0, rgb.cols, rgb.rows);
-      cv::Mat crop;
-      cv::cvtColor(rgb(around), crop, cv::COLOR_RGB2BGR);
       for (const auto& [name, detections] :
            {std::pair{"alt2", &found.alt2}, std::pair{"default", &found.frontal_default}}) {
         if (!any_overlaps(*detections, face)) {
-          const std::string file = misses_dir_ + "/" + frame + "_person" +
-                                   std::to_string(label.person_id) + "_tone" +
-                                   std::to_string(label.skin_tone) + "_" + name + ".png";
-          if (!cv::imwrite(file, crop)) {
-            std::fprintf(stderr, "detector_study: cannot write %s\n", file.c_str());
-            std::exit(1);
-          }
+          save_crop(rgb, face,
+                    frame + "_person" + std::to_string(label.person_id) + "_tone" +
+                        std::to_string(label.skin_tone) + "_" + name + ".png");
         }
       }
+    }
+  }
+
+  void save_crop(const cv::Mat& rgb, const rendering::PixelBox& face,
+                 const std::string& name) const {
+    const cv::Rect around = cv::Rect(face.x - face.width / 2, face.y - face.height / 2,
+                                     2 * face.width, 2 * face.height) &
+                            cv::Rect(0, 0, rgb.cols, rgb.rows);
+    cv::Mat crop;
+    cv::cvtColor(rgb(around), crop, cv::COLOR_RGB2BGR);
+    const std::string file = misses_dir_ + "/" + name;
+    if (!cv::imwrite(file, crop)) {
+      std::fprintf(stderr, "detector_study: cannot write %s\n", file.c_str());
+      std::exit(1);
     }
   }
 
   // Faces the recall would count but for the image's border cutting them.
   void count_cut_face(const PersonLabel& label, const cv::Size& image) {
     const bool cut = near_unmasked(label) && cut_by_border(label, image);
-    cut_frontal_ += cut && label.face_yaw_deg <= 25.0 ? 1 : 0;
-    cut_turned_ += cut && label.face_yaw_deg >= 60.0 ? 1 : 0;
+    cut_frontal_ += cut && frontal_face(label) ? 1 : 0;
+    cut_turned_ += cut && turned_face(label) ? 1 : 0;
   }
 
   std::string misses_dir_;

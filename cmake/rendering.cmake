@@ -76,6 +76,10 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(detector_study ari_engine ari_rendering opencv_objdetect)
   target_compile_definitions(detector_study PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   set_target_properties(detector_study PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
+  # Its options are checked before any rendering (test_detector_study runs it with bad ones).
+  add_dependencies(test_detector_study detector_study)
+  target_compile_definitions(test_detector_study PRIVATE
+    ARI_DETECTOR_STUDY_BIN="$<TARGET_FILE:detector_study>")
 endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../common/detector_scoring.hpp"
+#include "../tools/program_run.hpp"
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/rendering/ari_cameras.hpp"
@@ -320,3 +321,16 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
 
 }  // namespace
 }  // namespace ari_social_sim::rendering
+
+// The study over the shipped scenarios (bench/detector_study) refuses bad options before it
+// renders anything, naming the option and what it expects.
+TEST(DetectorStudy, TheScenarioStudyRefusesBadOptions) {
+  using ari_social_sim::tools::test::expect_refused;
+  using ari_social_sim::tools::test::run_program;
+  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--misses /nonexistent/crops"),
+                 "--misses: expected an existing directory, got '/nonexistent/crops'");
+  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--frames 0"),
+                 "--frames: expected a finite number in [1, 100000], got '0'");
+  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--misses"), "--misses");
+  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--shots 3"), "unknown option '--shots'");
+}
