@@ -138,7 +138,8 @@ void render_frames(benchmark::State& state, const std::string& camera) {
 }
 
 // Frames of the head camera at 1280x960 with ten people walking, as articulated figures posed per
-// frame or as the earlier shapes; items = frames.
+// frame or as the earlier shapes; items = frames. Each frame is the one due at its time (10 Hz),
+// as in a run, so that motion blur sees the people move.
 void render_ten_people(benchmark::State& state, rendering::CameraRig& rig, bool use_figures) {
   const Eigen::Isometry3d X = rendering::X_world_optical(rig.cameras()[0], kAri, 0.15, 0.05);
   rendering::PeopleFigures figures;
@@ -146,10 +147,12 @@ void render_ten_people(benchmark::State& state, rendering::CameraRig& rig, bool 
   double t = 0.0;
   auto people = [&] { return use_figures ? figures_at(t, 10, figures) : shapes_at(t, 10); };
   rig.set_dynamic_mesh(people());
+  rig.due(t);
   rig.render(0, X, frame);
   for (auto _ : state) {
     t += 0.1;
     rig.set_dynamic_mesh(people());
+    rig.due(t);
     rig.render(0, X, frame);
     benchmark::DoNotOptimize(frame.colour.data);
   }
@@ -170,11 +173,13 @@ BENCHMARK(BM_HeadCameraTenPeople)
     ->Unit(benchmark::kMillisecond);
 
 // Ten figures with the camera effects: effects:0 none (the renderer's image as drawn), 1 the
-// sensor alone (no anti-aliasing, the default), 2 the sensor with 4-sample anti-aliasing.
+// sensor alone (no anti-aliasing, the default), 2 the sensor with 4-sample anti-aliasing, 3 the
+// sensor with motion blur (one person walking, the others swaying).
 void BM_HeadCameraEffects(benchmark::State& state) {
   rendering::CameraEffects effects;
   effects.enabled = state.range(0) > 0;
   effects.antialiasing_samples = state.range(0) == 2 ? 4 : 1;
+  effects.motion_blur = state.range(0) == 3;
   rendering::CameraRig rig = rig_with({"head_front_camera"}, 0, 0, effects);
   render_ten_people(state, rig, /*use_figures=*/true);
 }
@@ -183,6 +188,7 @@ BENCHMARK(BM_HeadCameraEffects)
     ->Arg(0)
     ->Arg(1)
     ->Arg(2)
+    ->Arg(3)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 

@@ -16,11 +16,13 @@ add_library(ari_rendering
   src/rendering/egl_context.cpp
   src/rendering/figure_regions.cpp
   src/rendering/fisheye_renderer.cpp
+  src/rendering/frame_motion.cpp
   src/rendering/furniture.cpp
   src/rendering/gl_program.cpp
   src/rendering/human_appearance.cpp
   src/rendering/human_figure.cpp
   src/rendering/image_labels.cpp
+  src/rendering/motion_blur.cpp
   src/rendering/multisample_target.cpp
   src/rendering/people_crops.cpp
   src/rendering/people_figures.cpp
@@ -53,6 +55,7 @@ if(CATKIN_ENABLE_TESTING)
       test/rendering/test_fisheye_renderer.cpp
       test/rendering/test_furniture.cpp
       test/rendering/test_human_figures.cpp
+      test/rendering/test_motion_blur.cpp
       test/rendering/test_people_crops.cpp
       test/rendering/test_physics_primitives.cpp
       test/rendering/test_renderer.cpp

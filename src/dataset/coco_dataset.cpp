@@ -214,6 +214,7 @@ std::string CocoDataset::info_json() const {
          ", \"seeds\": " + json_list(seeds, [](uint64_t seed) { return std::to_string(seed); }) +
          ", \"cameras\": " + json_list(s.cameras, json_string) +
          ", \"every_s\": " + (s.every_s ? fixed4(*s.every_s) : "null") +
+         ", \"motion_blur\": " + (s.motion_blur ? "true" : "false") +
          ", \"frame_rate_hz\": " + rates + "}";
 }
 

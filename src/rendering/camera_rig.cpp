@@ -28,6 +28,7 @@ CameraRig::CameraRig(const CameraRigConfig& config, uint64_t seed)
       renderer_(std::make_unique<Renderer>()) {
   if (config.effects.enabled) {
     samples_ = config.effects.antialiasing_samples;
+    motion_blur_ = config.effects.motion_blur;
   }
   for (const CameraSpec& spec : config.cameras) {
     if (!spec.enabled) {
@@ -48,6 +49,8 @@ CameraRig::CameraRig(const CameraRigConfig& config, uint64_t seed)
       infos_.push_back(camera_info_of(model));
     }
     next_due_s_.push_back(0.0);
+    frame_time_s_.push_back(0.0);
+    motions_.emplace_back();
     sensors_.push_back(config.effects.enabled
                            ? sensor_of(spec, config.effects, seed, cameras_.size() - 1)
                            : nullptr);
@@ -60,6 +63,9 @@ void CameraRig::set_world(const model::WorldDescription& world, const SceneStyle
 
 void CameraRig::set_dynamic_mesh(const RenderMesh& mesh) {
   renderer_->set_dynamic_mesh(mesh);
+  if (motion_blur_) {
+    label_centres_ = label_centres(mesh);
+  }
 }
 
 std::vector<size_t> CameraRig::due(double time_s) {
@@ -69,6 +75,7 @@ std::vector<size_t> CameraRig::due(double time_s) {
       continue;
     }
     due_now.push_back(i);
+    frame_time_s_[i] = time_s;
     const double period = 1.0 / cameras_[i].rate_hz;
     // The next frame on the k / rate grid strictly after now.
     next_due_s_[i] = (std::floor(time_s * cameras_[i].rate_hz + 1e-6) + 1.0) * period;
@@ -78,6 +85,10 @@ std::vector<size_t> CameraRig::due(double time_s) {
 
 void CameraRig::restart(uint64_t seed) {
   std::fill(next_due_s_.begin(), next_due_s_.end(), 0.0);
+  std::fill(frame_time_s_.begin(), frame_time_s_.end(), 0.0);
+  for (FrameMotion& motion : motions_) {
+    motion.restart();
+  }
   for (const std::unique_ptr<CameraSensor>& sensor : sensors_) {
     if (sensor) {
       sensor->restart(seed);
@@ -85,10 +96,19 @@ void CameraRig::restart(uint64_t seed) {
   }
 }
 
-void CameraRig::expose(size_t i, cv::Mat& colour) {
+void CameraRig::expose(size_t i, cv::Mat& colour, const cv::Mat& labels,
+                       const ImageMotion& motion) {
   if (sensors_[i]) {
-    sensors_[i]->expose(colour);
+    sensors_[i]->expose(colour, labels, motion);
   }
+}
+
+ImageMotion CameraRig::motion_of(size_t i, const Eigen::Isometry3d& X_world_optical) {
+  if (!motion_blur_) {
+    return {};
+  }
+  return motions_[i].per_second(frame_time_s_[i], 1.0 / cameras_[i].rate_hz, X_world_optical,
+                                pinholes_[i], label_centres_);
 }
 
 void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, CameraFrame& out,
@@ -97,18 +117,18 @@ void CameraRig::render(size_t i, const Eigen::Isometry3d& X_world_optical, Camer
   out.labels.release();
   if (spec.kind == CameraKind::kFisheye) {
     fisheyes_[i]->render(*renderer_, X_world_optical, out.colour, samples_);
-    expose(i, out.colour);
+    expose(i, out.colour, cv::Mat(), ImageMotion());
     out.depth.release();
     return;
   }
   ViewOptions options;
   options.depth = spec.kind == CameraKind::kRgbd;
-  options.labels = labels;
+  options.labels = labels || motion_blur_;  // motion blur finds the people by their labels
   options.samples = samples_;
   renderer_->render(pinholes_[i], X_world_optical, options, scratch_);
   // Swapping hands the rendered buffers over without a copy; the renderer refills the old ones.
   std::swap(out.colour, scratch_.colour);
-  expose(i, out.colour);
+  expose(i, out.colour, scratch_.labels, motion_of(i, X_world_optical));
   if (labels) {
     std::swap(out.labels, scratch_.labels);
   }

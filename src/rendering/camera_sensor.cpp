@@ -117,10 +117,15 @@ double CameraSensor::exposure_gain(const cv::Mat& rgb) const {
                     effects_.max_gain);
 }
 
-void CameraSensor::expose(cv::Mat& rgb) {
+void CameraSensor::expose(cv::Mat& rgb, const cv::Mat& labels, const ImageMotion& motion) {
   last_gain_ = effects_.auto_exposure ? exposure_gain(rgb) : 1.0;
   const Exposure exposure{static_cast<float>(std::min(last_gain_, 1.0)),
                           static_cast<float>(std::max(last_gain_, 1.0))};
+  if (effects_.motion_blur) {
+    apply_motion_blur(
+        rgb, labels,
+        motion.scaled(static_cast<float>(exposure.time * effects_.longest_exposure_s)));
+  }
   // Light collected per display value and channel in this frame's exposure time.
   for (int c = 0; c < 3; ++c) {
     for (int v = 0; v < 256; ++v) {

@@ -1,8 +1,8 @@
 // export_dataset: labelled images of ARI's cameras from a scenario's episodes, as a COCO dataset.
 //
-//   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N] [--cameras
-//   head,torso]
-//                  [--audio] --out DIR [--every SECONDS] [--overwrite | --resume]
+//   export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]
+//                  [--cameras head,torso] [--audio] --out DIR [--every SECONDS] [--motion-blur]
+//                  [--overwrite | --resume]
 //   export_dataset ...the same plan... --merge-shards N [--overwrite]
 //
 // The episodes are run_episodes' (episode i with seed S + i, S defaulting to the scenario's seed;
@@ -78,7 +78,7 @@ const std::vector<int> kPngParameters{cv::IMWRITE_PNG_COMPRESSION, 3, cv::IMWRIT
 constexpr const char* kUsage =
     "usage: export_dataset --scenario NAME|FILE --episodes N [--seed S] [--shard K/N]\n"
     "                      [--cameras head,torso] [--audio] --out DIR [--every SECONDS]\n"
-    "                      [--overwrite | --resume]\n"
+    "                      [--motion-blur] [--overwrite | --resume]\n"
     "       export_dataset ...the shards' options, without --shard... --merge-shards N\n"
     "                      [--overwrite]\n";
 
@@ -90,6 +90,10 @@ time with --every. Writes DIR/images/CAMERA/NAME_SEED_FRAME.png and the labels a
 DIR/annotations.json (DIR/annotations_shardK-of-N.json with --shard). NAME is one of the
 package's scenarios or a scenario file; N in [1, 1000000]; seeds in [0, 2147483647]; SECONDS in
 [0.01, 86400]. Output of these seeds already in DIR is replaced only with --overwrite.
+
+--motion-blur smears people and the background as they move while the shutter is open
+(docs/cameras.md, "Camera effects"). It needs frames at the cameras' own rate: frames sampled
+--every more than 0.25 s apart have none.
 
 --audio (with or without --cameras) writes each episode's audio as ARI's microphone array hears
 it: DIR/audio/NAME_SEED.wav (six channels, 16 kHz, 16 bits), NAME_SEED.rttm (who speaks when),
@@ -123,7 +127,8 @@ struct Options {
   std::vector<std::string> cameras;  // rig names, in --cameras' order
   std::string out;
   std::optional<double> every_s;
-  bool audio{false};  // each episode's array audio with its labels (docs/audio.md)
+  bool motion_blur{false};  // the cameras' motion blur (rendering::CameraEffects)
+  bool audio{false};        // each episode's array audio with its labels (docs/audio.md)
   bool overwrite{false};
   bool resume{false};
   bool shard_given{false};               // --shard, even 1/1, which --merge-shards refuses
@@ -160,15 +165,16 @@ Options parse_options(int argc, char** argv) {
   Options options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--overwrite" || arg == "--resume" || arg == "--audio") {
+    if (arg == "--overwrite" || arg == "--resume" || arg == "--audio" || arg == "--motion-blur") {
       (arg == "--overwrite" ? options.overwrite
        : arg == "--resume"  ? options.resume
-                            : options.audio) = true;
+       : arg == "--audio"   ? options.audio
+                            : options.motion_blur) = true;
       continue;
     }
     core::check_known_option(
         arg, {"--scenario", "--episodes", "--seed", "--shard", "--cameras", "--audio", "--out",
-              "--every", "--overwrite", "--resume", "--merge-shards"});
+              "--every", "--motion-blur", "--overwrite", "--resume", "--merge-shards"});
     const std::string value = core::option_value(argc, argv, i);
     options.shard_given = options.shard_given || arg == "--shard";
     if (arg == "--scenario") {
@@ -270,6 +276,7 @@ dataset::DatasetSettings dataset_settings(const Export& run) {
   settings.scenario = run.scenario.name;
   settings.plan = run.options.plan;
   settings.every_s = run.options.every_s;
+  settings.motion_blur = run.options.motion_blur;
   for (const rendering::CameraSpec& spec : run.rig.cameras) {
     if (spec.enabled) {
       settings.cameras.push_back(spec.name);
@@ -381,6 +388,7 @@ Export prepare(int argc, char** argv) {
       spec.rate_hz = 1.0 / *options.every_s;
     }
   }
+  run.rig.effects.motion_blur = options.motion_blur;
   run.rig.validate();
 
   if (fs::exists(options.out) && !fs::is_directory(options.out)) {

@@ -61,7 +61,8 @@ TEST(CocoDataset, WritesInfoImagesAnnotationsAndCategoriesWithFixedDecimals) {
   EXPECT_NE(json.find("\"episodes\": 3, \"first_seed\": 7, \"shard\": \"2/2\", \"seeds\": [8]"),
             std::string::npos)
       << json;
-  EXPECT_NE(json.find("\"every_s\": 2.0000, \"frame_rate_hz\": {\"head_front_camera\": 0.5000, "
+  EXPECT_NE(json.find("\"every_s\": 2.0000, \"motion_blur\": false, "
+                      "\"frame_rate_hz\": {\"head_front_camera\": 0.5000, "
                       "\"torso_front_camera\": 0.5000}"),
             std::string::npos)
       << json;

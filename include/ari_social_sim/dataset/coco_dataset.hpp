@@ -18,6 +18,7 @@ struct DatasetSettings {
   std::vector<std::string> cameras;   // CameraSpec::name of each camera exported
   std::vector<double> frame_rate_hz;  // each camera's frames per second of sim time
   std::optional<double> every_s;      // --every; unset: each camera's own rate
+  bool motion_blur{false};            // --motion-blur
 };
 
 /// One image of the dataset, with the fields COCO leaves to the producer: the camera, the episode

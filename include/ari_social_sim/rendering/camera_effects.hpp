@@ -22,6 +22,8 @@ struct CameraEffects {
   bool bayer{true};                  // a Bayer sensor and the image processor's demosaicing
   double full_well_electrons{4300};  // electrons a pixel holds at white: shot noise
   double read_noise_electrons{3.0};  // the read-out's noise (std), electrons
+  bool motion_blur{false};           // smear what moves while the shutter is open
+  double longest_exposure_s{0.033};  // auto exposure's longest: a 30 fps sensor mode's frame
 
   template <class V>
   void visit(V& v) {
@@ -57,6 +59,14 @@ struct CameraEffects {
             core::between(100.0, 1e6));
     v.field("read_noise_electrons", read_noise_electrons,
             "standard deviation of the read-out noise, electrons", core::between(0.0, 1000.0));
+    v.field("motion_blur", motion_blur,
+            "smear people and the background along their motion in the image while the shutter "
+            "is open (auto exposure's time, at most longest_exposure_s); pinhole cameras, from "
+            "their second frame. Off by default: it costs frame time (docs/PERFORMANCE.md)");
+    v.field("longest_exposure_s", longest_exposure_s,
+            "the exposure time of a frame at the renderer's brightness, the longest auto exposure "
+            "uses (it shortens it for brighter scenes), seconds",
+            core::between(0.0001, 0.5));
   }
 };
 

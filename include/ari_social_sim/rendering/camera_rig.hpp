@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <map>
 #include <memory>
 #include <opencv2/core/mat.hpp>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "ari_social_sim/rendering/camera_rig_config.hpp"
 #include "ari_social_sim/rendering/camera_sensor.hpp"
 #include "ari_social_sim/rendering/fisheye_renderer.hpp"
+#include "ari_social_sim/rendering/frame_motion.hpp"
 #include "ari_social_sim/rendering/renderer.hpp"
 #include "ari_social_sim/rendering/world_scene.hpp"
 
@@ -45,7 +47,8 @@ class CameraRig {
   void set_dynamic_mesh(const RenderMesh& mesh);
 
   /// Indices of the cameras with a frame due at sim time t: camera i's k-th frame is due at
-  /// k / rate_hz. A frame that could not be taken in time is skipped, not queued.
+  /// k / rate_hz. A frame that could not be taken in time is skipped, not queued. With motion
+  /// blur, the next render() of a camera due is its frame at t, compared with its last one.
   std::vector<size_t> due(double time_s);
   /// Starts every camera again for a clock that starts again (the next episode of a batch): the
   /// schedule at sim time 0 (without it, due() would wait for the last run's time) and the
@@ -60,7 +63,8 @@ class CameraRig {
   const PinholeModel& pinhole(size_t i) const { return pinholes_[i]; }
 
  private:
-  void expose(size_t i, cv::Mat& colour);
+  void expose(size_t i, cv::Mat& colour, const cv::Mat& labels, const ImageMotion& motion);
+  ImageMotion motion_of(size_t i, const Eigen::Isometry3d& X_world_optical);
 
   std::vector<CameraSpec> cameras_;
   std::vector<CameraInfo> infos_;
@@ -69,6 +73,10 @@ class CameraRig {
   std::vector<std::unique_ptr<CameraSensor>> sensors_;      // null without camera effects
   int samples_{1};                                          // per pixel, for anti-aliasing
   std::vector<double> next_due_s_;
+  bool motion_blur_{false};
+  std::vector<double> frame_time_s_;                   // of each camera's frame due last
+  std::vector<FrameMotion> motions_;                   // each camera's, for motion blur
+  std::map<uint16_t, Eigen::Vector3f> label_centres_;  // the dynamic mesh's people
   DepthEncoding depth_encoding_;
   std::unique_ptr<Renderer> renderer_;
   RenderedImage scratch_;

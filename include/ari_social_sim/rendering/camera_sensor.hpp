@@ -7,11 +7,13 @@
 
 #include "ari_social_sim/core/rng.hpp"
 #include "ari_social_sim/rendering/camera_effects.hpp"
+#include "ari_social_sim/rendering/motion_blur.hpp"
 
 namespace ari_social_sim::rendering {
 
 /// One camera's sensor and image processor: turns the light a frame's pixels received (the
-/// renderer's display values) into what the camera outputs. In order: auto exposure, the optics'
+/// renderer's display values) into what the camera outputs. In order: auto exposure, motion blur
+/// (when on), the optics'
 /// blur, vignetting, white balance, a Bayer mosaic, photon shot noise and read noise in
 /// electrons, quantisation with the output's gamma, demosaicing. Deterministic: the k-th frame of a
 /// camera has the same noise for the same seed, whatever the other cameras do.
@@ -27,7 +29,10 @@ class CameraSensor {
   void restart(uint64_t seed);
 
   /// Exposes the next frame in place. `rgb`: CV_8UC3, RGB, of the size given at construction.
-  void expose(cv::Mat& rgb);
+  /// With motion blur on, `motion` (over a second) smears it for the exposure time auto exposure
+  /// chose, people found by `labels` (CV_16UC1; may be empty).
+  void expose(cv::Mat& rgb, const cv::Mat& labels = cv::Mat(),
+              const ImageMotion& motion = ImageMotion());
   /// The gain auto exposure chose for the last frame (1 without it).
   double last_gain() const { return last_gain_; }
 
