@@ -76,6 +76,79 @@ TEST(HumanAppearance, TheSameTraitsAndSeedGiveTheSameLookAndStaturesFollowTheSur
   EXPECT_GT(child.head_height_m / child.height_m, 0.16);
 }
 
+// Hair darkens with skin as it does in people: black hair for most of the darkest tone, blond and
+// red hair mostly with the lightest; over all tones black the most common and red about 2 %.
+TEST(HumanAppearance, HairDarkensWithSkinTone) {
+  constexpr int kPeople = 12000;
+  std::array<int, 7> people{}, black{}, blond{}, red{};
+  for (uint32_t id = 0; id < kPeople; ++id) {
+    // At 25 nobody is grey yet.
+    const HumanAppearance look = appearance_of({id, 25.0, model::Gender::kFemale, false}, 2);
+    const int tone = look.skin_tone;
+    ++people[tone];
+    black[tone] += look.hair.x() < 0.15f ? 1 : 0;
+    blond[tone] += look.hair.y() > 0.5f ? 1 : 0;
+    red[tone] += look.hair.x() - look.hair.y() > 0.2f ? 1 : 0;
+  }
+  const auto share = [&](const std::array<int, 7>& counts, int tone) {
+    return static_cast<double>(counts[tone]) / people[tone];
+  };
+  EXPECT_NEAR(share(black, 6), 0.85, 0.03);
+  EXPECT_NEAR(share(black, 1), 0.05, 0.02);
+  EXPECT_NEAR(share(blond, 1), 0.22, 0.03);
+  EXPECT_LT(share(blond, 6), 0.03);
+  EXPECT_EQ(red[5] + red[6], 0);
+  for (int tone = 2; tone <= 6; ++tone) {
+    EXPECT_GT(share(black, tone), share(black, tone - 1)) << tone;
+  }
+  int all_black = 0, all_red = 0;
+  for (int tone = 1; tone <= 6; ++tone) {
+    all_black += black[tone];
+    all_red += red[tone];
+  }
+  EXPECT_NEAR(static_cast<double>(all_black) / kPeople, 0.46, 0.02);
+  EXPECT_NEAR(static_cast<double>(all_red) / kPeople, 0.023, 0.006);
+}
+
+// Grey hairs come with middle age, later and fewer with darker skin, as Panhard et al. (2012)
+// counted in 4,192 people: at 50, 6-23 % had half their hair grey; between 45 and 65, 74 % had
+// grey hairs, 27 % of their hair on average.
+TEST(HumanAppearance, HairGreysFromMiddleAgeLaterWithDarkerSkin) {
+  constexpr int kPeople = 12000;
+  const auto look_at = [](uint32_t id, double age) {
+    return appearance_of({id, age, model::Gender::kMale, false}, 3);
+  };
+  std::array<int, 7> people{}, half_grey_at_50{};
+  double share_25 = 0.0, share_45_to_65 = 0.0;
+  int greying_45_to_65 = 0, lighter_at_85 = 0;
+  for (uint32_t id = 0; id < kPeople; ++id) {
+    const HumanAppearance at_50 = look_at(id, 50.0);
+    ++people[at_50.skin_tone];
+    half_grey_at_50[at_50.skin_tone] += at_50.hair_grey_share >= 0.5 ? 1 : 0;
+    share_25 += look_at(id, 25.0).hair_grey_share;
+    const HumanAppearance middle_aged = look_at(id, 45.0 + (id % 21));
+    share_45_to_65 += middle_aged.hair_grey_share;
+    greying_45_to_65 += middle_aged.hair_grey_share > 0.0 ? 1 : 0;
+    const auto luma = [](const HumanAppearance& look) { return look.hair.sum(); };
+    lighter_at_85 += luma(look_at(id, 85.0)) > luma(look_at(id, 30.0)) ? 1 : 0;
+  }
+  const auto share_of = [&](int tone) {
+    return static_cast<double>(half_grey_at_50[tone]) / people[tone];
+  };
+  std::printf(
+      "half grey at 50: tone 1 %.3f, tone 6 %.3f; 45-65: %.3f greying, mean share %.3f; "
+      "mean share at 25 %.4f\n",
+      share_of(1), share_of(6), static_cast<double>(greying_45_to_65) / kPeople,
+      share_45_to_65 / kPeople, share_25 / kPeople);
+  // The lightest and darkest tones stand for the survey's groups that grey first and last.
+  EXPECT_NEAR(share_of(1), 0.13, 0.03);
+  EXPECT_NEAR(share_of(6), 0.055, 0.02);
+  EXPECT_NEAR(static_cast<double>(greying_45_to_65) / kPeople, 0.74, 0.06);
+  EXPECT_NEAR(share_45_to_65 / kPeople, 0.27, 0.04);
+  EXPECT_LT(share_25 / kPeople, 0.01);
+  EXPECT_GT(lighter_at_85, 0.95 * kPeople);
+}
+
 // A person seen from the side 10 m away covers the image rows of their stature, plus at most 3 %
 // (hair, and the perspective of their near side).
 TEST(HumanFigure, RenderedFigureIsAsTallAsTheStatureAndStridesWhenWalking) {

@@ -38,7 +38,8 @@ struct HumanAppearance {
   model::Emotion emotion{model::Emotion::kNeutral};  // what the face's brows and mouth show
   Eigen::Vector3f skin{0.88f, 0.70f, 0.57f};
   int skin_tone{2};  // which of the six tones `skin` is: 1 the lightest, 6 the darkest
-  Eigen::Vector3f hair{0.24f, 0.16f, 0.10f};
+  Eigen::Vector3f hair{0.24f, 0.16f, 0.10f};  // the colour seen: pigmented and grey hairs mixed
+  double hair_grey_share{0.0};                // the share of grey hairs, 0-1
   Eigen::Vector3f iris{0.25f, 0.16f, 0.10f};
   Eigen::Vector3f top{0.2f, 0.35f, 0.75f};
   Eigen::Vector3f trousers{0.15f, 0.18f, 0.28f};
@@ -53,8 +54,9 @@ struct HumanAppearance {
 ///     birth-to-two (Weech's rule) and reach the adult stature at 18; people over 60 lose about
 ///     1 cm per decade.
 ///   - Head: 0.13 of an adult's stature (chin to crown), up to 0.21 for a toddler.
-///   - Skin: six tones from light to dark in about equal shares; hair darker on average and grey
-///     or white more often with age; clothes from everyday colours.
+///   - Skin: six tones from light to dark in about equal shares; hair colour darkening with skin
+///     tone; grey hairs from middle age, later and fewer with darker skin (Panhard et al. 2012);
+///     clothes from everyday colours.
 ///   - Handedness: one in ten left-handed (Papadatou-Pastou et al. 2020: 10.6 %).
 HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed);
 
