@@ -8,33 +8,45 @@
 namespace ari_social_sim::rendering {
 namespace {
 
-constexpr float kSmallestBlurPx = 0.5f;
+// Shorter smears are lost in the optics' blur (0.6 px, CameraEffects::optical_blur_px).
+constexpr float kSmallestBlurPx = 1.0f;
 
 bool blurs(const Eigen::Vector2f& motion) {
   return motion.norm() >= kSmallestBlurPx;
 }
 
-// A normalised kernel that spreads a point evenly along `motion`, centred: the path of a point
-// while the shutter is open. Sampled four times per pixel of length and splatted bilinearly, so
-// that a motion of a fraction of a pixel or at any angle keeps its length.
-cv::Mat line_kernel(const Eigen::Vector2f& motion) {
-  const int radius = static_cast<int>(std::ceil(0.5f * motion.norm())) + 1;
-  const int size = 2 * radius + 1;
-  cv::Mat kernel = cv::Mat::zeros(size, size, CV_32FC1);
-  const int samples = std::max(2, static_cast<int>(std::ceil(4.0f * motion.norm())));
-  for (int k = 0; k < samples; ++k) {
-    const Eigen::Vector2f at =
-        Eigen::Vector2f::Constant(radius) + motion * (static_cast<float>(k) / (samples - 1) - 0.5f);
-    const int x = static_cast<int>(std::floor(at.x()));
-    const int y = static_cast<int>(std::floor(at.y()));
-    const float fx = at.x() - x;
-    const float fy = at.y() - y;
-    kernel.at<float>(y, x) += (1 - fx) * (1 - fy);
-    kernel.at<float>(y, x + 1) += fx * (1 - fy);
-    kernel.at<float>(y + 1, x) += (1 - fx) * fy;
-    kernel.at<float>(y + 1, x + 1) += fx * fy;
+// `image` smeared evenly along `motion`, each pixel the mean of the `motion`-long segment through
+// it: the path of a point while the shutter is open. A box filter along the rows or columns when
+// the motion strays less than half a pixel from them, else along the rows of a copy turned so that
+// the motion runs along them (a box filter costs the same for any length; a line kernel's
+// convolution cost a frame's time a person). `border`: how the image goes on past its edges.
+cv::Mat smeared(const cv::Mat& image, const Eigen::Vector2f& motion, int border) {
+  const int length = std::max(1, static_cast<int>(std::lround(motion.norm())));
+  const double angle = std::atan2(motion.y(), motion.x());
+  cv::Mat out;
+  if (std::abs(motion.y()) < 0.5f) {
+    cv::blur(image, out, cv::Size(length, 1), cv::Point(-1, -1), border);
+    return out;
   }
-  return kernel / cv::sum(kernel)[0];
+  if (std::abs(motion.x()) < 0.5f) {
+    cv::blur(image, out, cv::Size(1, length), cv::Point(-1, -1), border);
+    return out;
+  }
+  // A canvas just large enough for the turned image, the image in its middle.
+  const double c = std::abs(std::cos(angle));
+  const double s = std::abs(std::sin(angle));
+  const cv::Size canvas(static_cast<int>(std::ceil(image.cols * c + image.rows * s)) + 2,
+                        static_cast<int>(std::ceil(image.cols * s + image.rows * c)) + 2);
+  const cv::Point2f centre(0.5f * (image.cols - 1), 0.5f * (image.rows - 1));
+  cv::Mat to_canvas = cv::getRotationMatrix2D(centre, angle * 180.0 / M_PI, 1.0);
+  to_canvas.at<double>(0, 2) += 0.5 * (canvas.width - image.cols);
+  to_canvas.at<double>(1, 2) += 0.5 * (canvas.height - image.rows);
+  cv::Mat turned;
+  cv::warpAffine(image, turned, to_canvas, canvas, cv::INTER_LINEAR, border);
+  cv::blur(turned, turned, cv::Size(length, 1), cv::Point(-1, -1), border);
+  cv::warpAffine(turned, out, to_canvas, image.size(), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+                 border);
+  return out;
 }
 
 // The box around each moving label's pixels, indexed by label (empty for the others).
@@ -58,18 +70,35 @@ std::vector<cv::Rect> boxes_of(const cv::Mat& labels, const ImageMotion& motion)
   return boxes;
 }
 
+// Three channels of colour and, as a fourth, the first channel of `weight` (CV_32FC3).
+cv::Mat with_weight(const cv::Mat& colour, const cv::Mat& weight) {
+  std::vector<cv::Mat> channels;
+  cv::split(colour, channels);
+  cv::Mat weight_channel;
+  cv::extractChannel(weight, weight_channel, 0);
+  channels.push_back(weight_channel);
+  cv::Mat out;
+  cv::merge(channels, out);
+  return out;
+}
+
 // What the camera would see behind a person, where they stand: the image there averaged along
 // the motion from the pixels that are not theirs (normalised convolution) over twice the smear's
 // length, so that the pixels their passing uncovers show the background, not the person again.
 // `image`: CV_8UC3; `mask3`: the person's pixels, CV_32FC3 in {0, 1}.
 cv::Mat behind_person(const cv::Mat& image, const cv::Mat& mask3, const Eigen::Vector2f& shift) {
-  const cv::Mat kernel = line_kernel(2.0f * shift);
-  cv::Mat around, weight, seen;
+  cv::Mat seen;
   image.convertTo(seen, CV_32FC3);
   const cv::Mat open = cv::Scalar::all(1.0) - mask3;
-  cv::filter2D(seen.mul(open), around, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_CONSTANT);
-  cv::filter2D(open, weight, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_CONSTANT);
-  const cv::Mat filled = around / cv::max(weight, 1e-3);
+  // The light around and its weight smeared together, as four channels.
+  std::vector<cv::Mat> around_weight;
+  cv::split(smeared(with_weight(seen.mul(open), open), 2.0f * shift, cv::BORDER_CONSTANT),
+            around_weight);
+  const cv::Mat weight = cv::max(around_weight[3], 1e-3);
+  cv::Mat filled;
+  cv::merge(std::vector<cv::Mat>{around_weight[0] / weight, around_weight[1] / weight,
+                                 around_weight[2] / weight},
+            filled);
   return seen.mul(open) + filled.mul(mask3);
 }
 
@@ -77,20 +106,22 @@ cv::Mat behind_person(const cv::Mat& image, const cv::Mat& mask3, const Eigen::V
 // person where they passed while the shutter was open, the rest from what is behind.
 void smear_person(const cv::Mat& sharp, const cv::Mat& labels, uint16_t label, cv::Rect box,
                   const Eigen::Vector2f& shift, cv::Mat& out) {
-  const cv::Mat kernel = line_kernel(shift);
-  const int margin = kernel.rows / 2;
+  const int margin = static_cast<int>(std::ceil(shift.norm())) + 1;
   box = cv::Rect(box.x - margin, box.y - margin, box.width + 2 * margin, box.height + 2 * margin) &
         cv::Rect(0, 0, out.cols, out.rows);
-  cv::Mat mask, mask3, person, smeared, coverage;
+  cv::Mat mask, mask3, person;
   cv::compare(labels(box), label, mask, cv::CMP_EQ);
   mask.convertTo(mask, CV_32FC1, 1.0 / 255.0);
   cv::merge(std::vector<cv::Mat>{mask, mask, mask}, mask3);
   sharp(box).convertTo(person, CV_32FC3);
   person = person.mul(mask3);
-  cv::filter2D(person, smeared, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_CONSTANT);
-  cv::filter2D(mask3, coverage, -1, kernel, cv::Point(-1, -1), 0, cv::BORDER_CONSTANT);
+  std::vector<cv::Mat> light_coverage;
+  cv::split(smeared(with_weight(person, mask3), shift, cv::BORDER_CONSTANT), light_coverage);
+  cv::Mat light, coverage;
+  cv::merge(std::vector<cv::Mat>(light_coverage.begin(), light_coverage.begin() + 3), light);
+  cv::merge(std::vector<cv::Mat>(3, light_coverage[3]), coverage);
   const cv::Mat behind = behind_person(out(box), mask3, shift);
-  cv::Mat blended = smeared + (cv::Scalar::all(1.0) - coverage).mul(behind);
+  cv::Mat blended = light + (cv::Scalar::all(1.0) - coverage).mul(behind);
   cv::Mat out_box = out(box);  // converted in place: same size and type
   blended.convertTo(out_box, CV_8UC3);
 }
@@ -115,8 +146,7 @@ void apply_motion_blur(cv::Mat& rgb, const cv::Mat& labels, const ImageMotion& m
   }
   const cv::Mat sharp = people_move ? rgb.clone() : cv::Mat();
   if (blurs(motion.background)) {
-    cv::filter2D(rgb, rgb, -1, line_kernel(motion.background), cv::Point(-1, -1), 0,
-                 cv::BORDER_REPLICATE);
+    smeared(rgb, motion.background, cv::BORDER_REPLICATE).copyTo(rgb);
   }
   for (const auto& [label, shift] : motion.labelled) {
     if (label < boxes.size() && !boxes[label].empty()) {

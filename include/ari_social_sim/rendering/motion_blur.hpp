@@ -19,7 +19,7 @@ struct ImageMotion {
 
 /// Smears an image as a shutter open during `motion` does: the whole frame along the background's
 /// motion, then each person's pixels (where `labels`, CV_16UC1, holds their label) along their own,
-/// over what the first step left behind them. Motions under half a pixel leave pixels as they are.
+/// over what the first step left behind them. Motions under a pixel leave pixels as they are.
 /// `rgb`: CV_8UC3.
 void apply_motion_blur(cv::Mat& rgb, const cv::Mat& labels, const ImageMotion& motion);
 
