@@ -310,13 +310,13 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
       "whose faces all turn more than 45 deg (%.3f per frame)\n",
       eligible, frames, found, 100.0 * recall, found_centred, 100.0 * centred_recall,
       frontal_on_turned, turned_frames, false_rate);
-  // What the figures reach (docs/cameras.md: 45.5 % with IoU >= 0.5, 62.7 % centred, 0.023
-  // frontal detections per frame); the aim is 60 % of the turned faces, which the centred recall
-  // must keep, and at most 0.02 frontal detections per frame.
+  // What the figures reach (docs/cameras.md: 41.0 % with IoU >= 0.5, 69.4 % centred, 0.009
+  // frontal detections per frame); the aims, which they must keep: 60 % of the turned faces
+  // (centred) and at most 0.02 frontal detections per frame.
   EXPECT_GE(eligible, 100);
   EXPECT_GE(recall, 0.39);
   EXPECT_GE(centred_recall, 0.60);
-  EXPECT_LE(false_rate, 0.03);
+  EXPECT_LE(false_rate, 0.02);
 }
 
 }  // namespace
