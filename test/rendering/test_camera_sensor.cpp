@@ -121,5 +121,21 @@ TEST(CameraSensor, BadEffectsAreNamed) {
   }
 }
 
+// Motion blur's exposure time must be a time a shutter can stay open.
+TEST(CameraSensor, ABadLongestExposureIsNamed) {
+  CameraEffects effects;
+  effects.motion_blur = true;
+  effects.longest_exposure_s = 0.0;
+  try {
+    core::check_fields(effects, "effects");
+    FAIL() << "an exposure of 0 s accepted";
+  } catch (const core::ConfigError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("longest_exposure_s: expected a number [0.0001, 0.5], got 0"),
+        std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace ari_social_sim::rendering
