@@ -486,6 +486,7 @@ class ScenarioNode {
     scenario::Observations observations;
     observations.world = from_msg(msg);
     observations.navigation = commands_.navigation();
+    log_navigation_failure(observations.navigation);
     if (persons_) {
       tf_->renew_if_stale();
       identities_.update(observations.world, sightings());
@@ -532,6 +533,15 @@ class ScenarioNode {
       }
     }
     logged_person_ids_ = person_ids;
+  }
+
+  // The script sees only that navigation failed; the log says why.
+  void log_navigation_failure(const scenario::NavigationStatus& navigation) {
+    const bool failed = navigation.state == scenario::NavigationState::kFailed;
+    if (failed && !navigation_failure_logged_) {
+      ROS_WARN("scenario_node: ARI's navigation failed: %s", navigation.reason.c_str());
+    }
+    navigation_failure_logged_ = failed;
   }
 
   // A world started paused stands at sim time 0, which ROS takes for "no time yet"; one step
@@ -586,6 +596,7 @@ class ScenarioNode {
   scenario::GroupMemory groups_;
   scenario::PersonIdentities identities_;
   std::map<model::ObjectId, std::string> logged_person_ids_;  // the matches last logged
+  bool navigation_failure_logged_{false};
   ros::NodeHandle nh_;
   std::unique_ptr<RenewingTfBuffer> tf_;       // when the script approaches or sees groups
   std::unique_ptr<PerceivedPersons> persons_;  // when the script approaches or sees groups

@@ -1,9 +1,13 @@
 """Shared by the rostests that play a whole scenario with ~start_world false: start the world
-once scenario_node listens, then wait for its outcome."""
+once scenario_node listens, then wait for its outcome; the nodes' warnings for a failure's
+message."""
+import collections
+import threading
 import time
 
 import rosgraph
 import rospy
+from rosgraph_msgs.msg import Log
 from std_srvs.srv import SetBool
 
 
@@ -35,3 +39,27 @@ def wait_until_finished(recorder, timeout_s):
     """Waits until recorder.status (a ScenarioStatus, under recorder.lock) says finished."""
     wait_until(recorder, lambda: recorder.status is not None and recorder.status.finished,
                timeout_s)
+
+
+class NodeWarnings:
+    """The last warnings and errors the other nodes logged (/rosout_agg). A scenario's reason says
+    that ARI's navigation failed; social_mpc_node's and scenario_node's warnings say why."""
+
+    # rospy's note when a subscriber reaches a topic its publisher has just dropped (a person
+    # who left): harmless, and frequent with perception:=detectors.
+    IGNORED = "Could not process inbound connection"
+
+    def __init__(self, keep=8):
+        self.lock = threading.Lock()
+        self.lines = collections.deque(maxlen=keep)
+        self.me = rospy.get_name()
+        rospy.Subscriber("/rosout_agg", Log, self.on_log, queue_size=100)
+
+    def on_log(self, msg):
+        if msg.level >= Log.WARN and msg.name != self.me and not msg.msg.startswith(self.IGNORED):
+            with self.lock:
+                self.lines.append("%s: %s" % (msg.name, msg.msg))
+
+    def text(self):
+        with self.lock:
+            return "; ".join(self.lines) if self.lines else "no warnings logged"

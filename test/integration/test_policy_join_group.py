@@ -41,6 +41,7 @@ class Recorder:
 class PolicyJoinGroup(unittest.TestCase):
     def test_the_trained_policy_joins_the_group_live(self):
         recorder = Recorder()
+        warnings = scenario_start.NodeWarnings()
         self.assertTrue(scenario_start.unpause_when_scenario_node_listens("/test_policy_join_group"))
         scenario_start.wait_until_finished(recorder, 150.0)
         with recorder.lock:
@@ -50,7 +51,7 @@ class PolicyJoinGroup(unittest.TestCase):
         print("outcome: success=%s at %.2f s of sim time in state %s (%s); %d commands, %d plans"
               % (status.success, status.header.stamp.to_sec(), status.state, status.reason,
                  len(times), plans))
-        self.assertTrue(status.success, status.reason)
+        self.assertTrue(status.success, "%s (warnings: %s)" % (status.reason, warnings.text()))
         self.assertEqual(plans, 0, "SocialMPC planned: the policy did not drive")
         self.assertGreater(len(times), 20)
         span = times[-1] - times[0]

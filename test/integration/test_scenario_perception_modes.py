@@ -46,6 +46,7 @@ class ScenarioPerceptionModes(unittest.TestCase):
     def test_group_discussion_succeeds_with_this_perception(self):
         pattern = re.compile(rospy.get_param("~person_id_pattern"))
         recorder = Recorder()
+        warnings = scenario_start.NodeWarnings()
         self.assertTrue(
             scenario_start.unpause_when_scenario_node_listens("/test_scenario_perception_modes"))
         scenario_start.wait_until_finished(recorder, 200.0)
@@ -55,7 +56,7 @@ class ScenarioPerceptionModes(unittest.TestCase):
         print("persons reported: %s; largest group: %d members" % (person_ids, largest_group))
         self.assertIsNotNone(status, "no /scenario/status")
         self.assertTrue(status.finished, "not finished in state %s" % status.state)
-        self.assertTrue(status.success, status.reason)
+        self.assertTrue(status.success, "%s (warnings: %s)" % (status.reason, warnings.text()))
         self.assertEqual(status.state, "leave")
         # Paul and Irene at least, and their group (ARI is never a member).
         self.assertGreaterEqual(len(person_ids), 2)
