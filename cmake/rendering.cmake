@@ -31,6 +31,7 @@ add_library(ari_rendering
   src/rendering/render_mesh.cpp
   src/rendering/renderer.cpp
   src/rendering/snapshot_cameras.cpp
+  src/rendering/weight_shifts.cpp
   src/rendering/world_scene.cpp)
 target_include_directories(ari_rendering PUBLIC ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(ari_rendering PUBLIC ari_physics ${OpenCV_LIBS} PRIVATE OpenGL::OpenGL OpenGL::EGL)
@@ -58,6 +59,7 @@ if(CATKIN_ENABLE_TESTING)
       test/rendering/test_motion_blur.cpp
       test/rendering/test_people_crops.cpp
       test/rendering/test_physics_primitives.cpp
+      test/rendering/test_weight_shifts.cpp
       test/rendering/test_renderer.cpp
     LIBRARIES ari_rendering)
   target_compile_definitions(test_rendering PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}"

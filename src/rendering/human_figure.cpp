@@ -47,6 +47,12 @@ constexpr double kHipsStillShare = 0.3;
 constexpr double kSeatedArmPitchRad = 0.4;
 constexpr double kSeatedElbowFlexRad = 1.0;
 constexpr double kSeatFrontM = 0.2;  // hips to the seat's front edge: a chair 0.45 m deep
+// Standing with the weight on one leg (FigurePose::weight_side), the pelvis and the trunk above it
+// move kPelvisShiftM over that leg, about the sideways shift of the centre of pressure between the
+// two legs (Duarte and Zatsiorsky, 1999: 22 mm); the pelvis tips down on the free side by
+// kPelvisDropRad about the hip it rests on, so the free knee bends a little, the feet staying put.
+constexpr double kPelvisShiftM = 0.03;
+constexpr double kPelvisDropRad = 0.07;
 // Gestures while speaking: the upper arm forward by kGestureArmPitchRad and the elbow bent by
 // kGestureElbowFlexRad more than at rest bring the forearm up in front of the trunk, where most
 // conversational gestures are made (McNeill's central gesture space); beats move both by a
@@ -609,7 +615,9 @@ Eigen::Isometry3f HumanFigure::trunk_frame(const FigurePose& pose,
                                            const Eigen::Isometry3f& body) const {
   const double seated = std::clamp(pose.seated, 0.0, 1.0);
   if (seated <= 0.0) {
-    return body;  // the trunk's parts are placed for a standing figure
+    // The trunk's parts are placed for a standing figure, over the leg it rests on.
+    return body *
+           translation(0.0, standing_load(pose) * kPelvisShiftM, loaded_hip_rise(pose, body));
   }
   // The hips leave the seat only once the trunk has leant forward (flexion before extension,
   // the sit-to-stand's phases; docs/cameras.md), and settle on it last when sitting down.
@@ -619,38 +627,96 @@ Eigen::Isometry3f HumanFigure::trunk_frame(const FigurePose& pose,
          translation(0.0, 0.0, -hip_z_);
 }
 
+double HumanFigure::standing_load(const FigurePose& pose) const {
+  return std::clamp(pose.weight_side, -1.0, 1.0) *
+         (1.0 - std::clamp(pose.gait_amplitude, 0.0, 1.0)) *
+         (1.0 - std::clamp(pose.seated, 0.0, 1.0));
+}
+
+double HumanFigure::loaded_hip_rise(const FigurePose& pose, const Eigen::Isometry3f& body) const {
+  const double load = standing_load(pose);
+  if (load == 0.0) {
+    return 0.0;
+  }
+  FigurePose even = pose;
+  even.weight_side = 0.0;
+  const double side = load > 0.0 ? 1.0 : -1.0;
+  const auto [hip, knee, ankle] = leg_frames(even, body, side);
+  // Moved sideways over its foot, the hip rises as far as the straight leg reaches.
+  const Eigen::Vector3f reach =
+      body.linear().transpose() * (ankle.translation() - hip.translation()) -
+      Eigen::Vector3f(0.0f, static_cast<float>(load * kPelvisShiftM), 0.0f);
+  const double leg_m = thigh_m_ + shin_m_;
+  const double horizontal_squared = reach.x() * reach.x() + reach.y() * reach.y();
+  return std::sqrt(std::max(0.0, leg_m * leg_m - horizontal_squared)) + reach.z();
+}
+
 std::array<Eigen::Isometry3f, 3> HumanFigure::leg_frames(const FigurePose& pose,
                                                          const Eigen::Isometry3f& body,
                                                          double side) const {
   const double amplitude = std::clamp(pose.gait_amplitude, 0.0, 1.0);
   const double seated = std::clamp(pose.seated, 0.0, 1.0);
-  const double leg_phase = side > 0.0 ? pose.gait_phase_rad : pose.gait_phase_rad + M_PI;
-  // Standing, the feet are a little apart and the left one a little ahead (a relaxed stance);
-  // the stance fades as the stride takes over, and as the figure sits.
-  const double stance = (1.0 - amplitude) * (1.0 - seated);
-  double hip_pitch =
-      amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
-  double knee_flex = amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
   const Eigen::Vector3f hip_point =
       trunk_frame(pose, body) *
       Eigen::Vector3f(0.0f, static_cast<float>(side * hip_joint_y_), static_cast<float>(hip_z_));
-  if (seated > 0.0) {
-    // Two-link reach (law of cosines) from the hip to the ankle above the foot, which stays on
-    // the floor seated * kSeatToFeetM ahead of the body: the knee bends forward.
-    const Eigen::Vector3f ankle_point =
-        body * Eigen::Vector3f(static_cast<float>(seated * world::kSeatToFeetM),
-                               static_cast<float>(side * hip_joint_y_),
-                               static_cast<float>(kAnkleShare * scale_));
-    const Eigen::Vector3f reach = body.linear().transpose() * (ankle_point - hip_point);
-    const double d = std::min(static_cast<double>(reach.norm()), thigh_m_ + shin_m_);
-    const double knee_inner = std::acos(std::clamp(
-        (thigh_m_ * thigh_m_ + shin_m_ * shin_m_ - d * d) / (2.0 * thigh_m_ * shin_m_), -1.0, 1.0));
-    hip_pitch += thigh_pitch_rad(0.0, 0.0, reach.x(), reach.z());
-    knee_flex += M_PI - knee_inner;
+  const double load = standing_load(pose);
+  if (seated > 0.0 || load != 0.0) {
+    // Where the foot stands with the weight on both legs.
+    FigurePose even = pose;
+    even.seated = 0.0;
+    even.weight_side = 0.0;
+    const Eigen::Vector3f standing_ankle = leg_frames(even, body, side)[2].translation();
+    if (seated > 0.0) {
+      // The foot moves to the floor kSeatToFeetM ahead of the body as the figure sits.
+      const Eigen::Vector3f seated_ankle =
+          body * Eigen::Vector3f(static_cast<float>(world::kSeatToFeetM),
+                                 static_cast<float>(side * hip_joint_y_),
+                                 static_cast<float>(kAnkleShare * scale_));
+      return leg_reaching(
+          body, hip_point,
+          standing_ankle + static_cast<float>(seated) * (seated_ankle - standing_ankle));
+    }
+    // Standing on one leg, the free side's hip drops.
+    const bool free_leg = side * load < 0.0;
+    const double drop =
+        free_leg ? 2.0 * hip_joint_y_ * std::sin(std::abs(load) * kPelvisDropRad) : 0.0;
+    return leg_reaching(body, hip_point - static_cast<float>(drop) * Eigen::Vector3f::UnitZ(),
+                        standing_ankle);
   }
+  // Standing, the feet are a little apart and the left one a little ahead (a relaxed stance);
+  // the stance fades as the stride takes over.
+  const double leg_phase = side > 0.0 ? pose.gait_phase_rad : pose.gait_phase_rad + M_PI;
+  const double stance = 1.0 - amplitude;
+  const double hip_pitch =
+      amplitude * kHipSwingRad * std::sin(leg_phase) + stance * (side > 0.0 ? 0.12 : -0.06);
+  const double knee_flex =
+      amplitude * kKneeFlexRad * std::max(0.0, std::sin(leg_phase + 0.5 * M_PI));
   Eigen::Isometry3f hip = body;
   hip.translation() = hip_point;
   hip = hip * rotation_x(side * stance * kStanceAbductionRad) * rotation_y(-hip_pitch);
+  return leg_with_flat_foot(body, hip, knee_flex);
+}
+
+std::array<Eigen::Isometry3f, 3> HumanFigure::leg_reaching(
+    const Eigen::Isometry3f& body, const Eigen::Vector3f& hip_point,
+    const Eigen::Vector3f& ankle_point) const {
+  // Two-link reach (law of cosines) in the plane through the hip, the ankle and the body's
+  // forward axis: the thigh rolls out towards the ankle and the knee bends forward.
+  const Eigen::Vector3f reach = body.linear().transpose() * (ankle_point - hip_point);
+  const double below = std::hypot(reach.y(), reach.z());
+  const double d = std::min(static_cast<double>(reach.norm()), thigh_m_ + shin_m_);
+  const double knee_inner = std::acos(std::clamp(
+      (thigh_m_ * thigh_m_ + shin_m_ * shin_m_ - d * d) / (2.0 * thigh_m_ * shin_m_), -1.0, 1.0));
+  Eigen::Isometry3f hip = body;
+  hip.translation() = hip_point;
+  hip = hip * rotation_x(std::atan2(reach.y(), -reach.z())) *
+        rotation_y(-thigh_pitch_rad(0.0, 0.0, reach.x(), -below));
+  return leg_with_flat_foot(body, hip, M_PI - knee_inner);
+}
+
+std::array<Eigen::Isometry3f, 3> HumanFigure::leg_with_flat_foot(const Eigen::Isometry3f& body,
+                                                                 const Eigen::Isometry3f& hip,
+                                                                 double knee_flex) const {
   const Eigen::Isometry3f knee = hip * translation(0.0, 0.0, -thigh_m_) * rotation_y(knee_flex);
   // The foot stays flat on its heading whatever the leg does.
   Eigen::Isometry3f ankle = body;

@@ -62,8 +62,12 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     auto found = people_.find(id);
     if (found == people_.end() || found->second.traits != input.traits) {
       // Someone first seen speaking is already gesturing.
-      Person person{input.traits, HumanFigure(appearance_of(input.traits, appearance_seed_)), 0.0,
-                    time_s, input.speaking ? 1.0 : 0.0};
+      Person person{input.traits,
+                    HumanFigure(appearance_of(input.traits, appearance_seed_)),
+                    0.0,
+                    time_s,
+                    input.speaking ? 1.0 : 0.0,
+                    WeightShifts(appearance_seed_, id)};
       found = people_.insert_or_assign(id, std::move(person)).first;
     }
     Person& person = found->second;
@@ -91,6 +95,7 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     posed.pose.mouth_open = input.speaking ? 0.5 + 0.5 * std::sin(syllable) : 0.0;
     posed.pose.gesture = person.gesture;
     posed.pose.gesture_beat = std::sin(0.5 * syllable);
+    posed.pose.weight_side = person.weight_shifts.load_side(std::max(0.0, time_s));
     const size_t index = posed_.size();
     posed.body_label = static_cast<uint16_t>(2 * index + 1);
     posed.face_label = static_cast<uint16_t>(2 * index + 2);

@@ -202,14 +202,18 @@ TEST(HumanFigure, TheHeadHidesWhatFacesAwayFromTheCamera) {
     for (const double turn_deg : {0.0, 45.0, 90.0, 180.0}) {
       PeopleFigures figures;
       figures.update(0.0, {standing_at(id, {0.7, 0.0}, M_PI + turn_deg * kDeg)});
-      const PosedPerson& person = figures.posed()[0];
+      PosedPerson person = figures.posed()[0];
+      // The weight on both legs: the head straight above the feet, 0.7 m from the camera.
+      person.pose.weight_side = 0.0;
+      RenderMesh mesh;
+      person.figure->append_posed(person.pose, person.body_label, person.face_label, mesh);
       const Eigen::Isometry3d X_world_head = person.figure->head_frame(person.pose);
       const Eigen::Isometry3d X_world_optical =
           test::level_camera_facing_x({0.0, 0.0, X_world_head.translation().z()});
       if (turn_deg == 0.0) {
-        std::printf("person %u: %zu triangles\n", id, figures.mesh().vertex_count() / 3);
+        std::printf("person %u: %zu triangles\n", id, mesh.vertex_count() / 3);
       }
-      renderer.set_dynamic_mesh(figures.mesh());
+      renderer.set_dynamic_mesh(mesh);
       renderer.render(model, X_world_optical, options, image);
       const Eigen::Isometry3d X_optical_head = X_world_optical.inverse() * X_world_head;
       int eyes_seen = 0;
@@ -538,6 +542,75 @@ TEST(HumanFigure, StandingUpTheTrunkLeansForwardThenTheHipsRise) {
   }
   FigurePose standing;
   EXPECT_NEAR(previous_head_z, figure.head_frame(standing).translation().z(), 1e-6);
+}
+
+// The vertices of a figure's mesh as points (RenderMesh: position first).
+std::vector<Eigen::Vector3f> points_of(const RenderMesh& mesh) {
+  std::vector<Eigen::Vector3f> points;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const float* at = &mesh.vertices[v * RenderMesh::kFloatsPerVertex];
+    points.emplace_back(at[0], at[1], at[2]);
+  }
+  return points;
+}
+
+std::vector<Eigen::Vector3f> posed_points(const HumanFigure& figure, const FigurePose& pose) {
+  RenderMesh mesh;
+  figure.append_posed(pose, 1.0f, 2.0f, mesh);
+  return points_of(mesh);
+}
+
+TEST(HumanFigure, StandingOnTheLeftLegThePelvisMovesOverItTheRightKneeBendsTheFeetStay) {
+  const HumanFigure figure(appearance_of({3, 40.0, model::Gender::kMale, false}, 5));
+  FigurePose even;  // at the origin, facing +x: the figure's left is +y
+  FigurePose on_left = even;
+  on_left.weight_side = 1.0;
+  const std::vector<Eigen::Vector3f> before = posed_points(figure, even);
+  const std::vector<Eigen::Vector3f> after = posed_points(figure, on_left);
+  ASSERT_EQ(before.size(), after.size());
+  float feet_moved = 0.0f, right_knee_ahead = -1.0f, left_knee_ahead = -1.0f;
+  float right_knee_before = -1.0f, left_knee_before = -1.0f;
+  Eigen::Vector3f upper_body_moved = Eigen::Vector3f::Zero();
+  int upper_body = 0;
+  for (size_t v = 0; v < before.size(); ++v) {
+    if (before[v].z() < 0.025f) {  // the feet: the shins end a little above
+      feet_moved = std::max(feet_moved, (after[v] - before[v]).norm());
+    } else if (before[v].z() > 1.2f) {
+      upper_body_moved += after[v] - before[v];
+      ++upper_body;
+    } else if (before[v].z() > 0.4f && before[v].z() < 0.6f) {  // about the knees
+      float& ahead_after = before[v].y() < 0.0f ? right_knee_ahead : left_knee_ahead;
+      float& ahead_before = before[v].y() < 0.0f ? right_knee_before : left_knee_before;
+      ahead_after = std::max(ahead_after, after[v].x());
+      ahead_before = std::max(ahead_before, before[v].x());
+    }
+  }
+  upper_body_moved /= static_cast<float>(upper_body);
+  std::printf(
+      "[ measured ] on the left leg: feet moved %.4f m at most, shoulders and head by "
+      "(%.3f, %.3f, %.3f) m, the right knee %.3f m further forward, the left %.3f m\n",
+      feet_moved, upper_body_moved.x(), upper_body_moved.y(), upper_body_moved.z(),
+      right_knee_ahead - right_knee_before, left_knee_ahead - left_knee_before);
+  EXPECT_LT(feet_moved, 0.002f);
+  EXPECT_NEAR(upper_body_moved.y(), 0.03f, 0.002f);  // over the left leg
+  EXPECT_NEAR(upper_body_moved.x(), 0.0f, 0.002f);
+  EXPECT_NEAR(upper_body_moved.z(), 0.0f, 0.002f);
+  EXPECT_GT(right_knee_ahead - right_knee_before, 0.02f);          // the free knee bends forward
+  EXPECT_LT(std::abs(left_knee_ahead - left_knee_before), 0.01f);  // the loaded leg stays straight
+
+  // The mirror image on the right leg, and nothing of it while walking or seated.
+  FigurePose on_right = even;
+  on_right.weight_side = -1.0;
+  EXPECT_NEAR(figure.head_frame(on_right).translation().y(),
+              figure.head_frame(even).translation().y() - 0.03, 1e-4);
+  for (const auto& [amplitude, seated] : {std::pair{1.0, 0.0}, std::pair{0.0, 1.0}}) {
+    FigurePose still = even, shifted = even;
+    still.gait_amplitude = shifted.gait_amplitude = amplitude;
+    still.seated = shifted.seated = seated;
+    shifted.weight_side = 1.0;
+    EXPECT_EQ(posed_points(figure, still), posed_points(figure, shifted))
+        << "walking " << amplitude << ", seated " << seated;
+  }
 }
 
 TEST(ImageLabels, ASeatedPersonsBodyAndFaceBoxesAreFound) {

@@ -60,6 +60,9 @@ inline constexpr RngStreams kGroupShift{
 inline constexpr RngStreams kHumanAppearance{"human_appearance",
                                              "rendering::appearance_of, a human's looks by id",
                                              2 * kPerObjectId, kPerObjectId};
+inline constexpr RngStreams kHumanWeightShifts{
+    "human_weight_shifts", "rendering::WeightShifts, a standing human's weight shifts by id",
+    7 * kPerObjectId, kPerObjectId};
 inline constexpr RngStreams kHumanVoice{"human_voice", "audio::voice_for, a human's voice by id",
                                         3 * kPerObjectId, kPerObjectId};
 inline constexpr RngStreams kRoomNoise{
@@ -113,31 +116,19 @@ inline constexpr RngStreams kDialogueEpisodes{
     uint64_t{1} << 41, kPerObjectId};
 
 /// Every block, for the overlap test and the documentation.
-inline constexpr std::array kAll{kHumanVoice,
-                                 kRoomNoise,
-                                 kHumanGaze,
-                                 kHumanReaction,
-                                 kGroupStance,
-                                 kGroupConversation,
-                                 kGroupShift,
-                                 kGroupTurnover,
-                                 kGroupNods,
-                                 kHumanAppearance,
-                                 kImuNoise,
-                                 kCameraSensor,
-                                 kPerceptionTransientIds,
-                                 kPerceptionBodies,
-                                 kPerceptionFaces,
-                                 kPerceptionSpeech,
-                                 kPerceptionPersonIds,
-                                 kPerceptionMatcher,
-                                 kNavEpisodeType,
-                                 kNavWalkers,
-                                 kNavigationEpisodes,
-                                 kRandomGroups,
-                                 kRandomGroupScene,
-                                 kConversation,
-                                 kDialogueEpisodes};
+inline constexpr std::array kAll{kHumanVoice,        kRoomNoise,
+                                 kHumanGaze,         kHumanReaction,
+                                 kGroupStance,       kGroupConversation,
+                                 kGroupShift,        kGroupTurnover,
+                                 kGroupNods,         kHumanAppearance,
+                                 kHumanWeightShifts, kImuNoise,
+                                 kCameraSensor,      kPerceptionTransientIds,
+                                 kPerceptionBodies,  kPerceptionFaces,
+                                 kPerceptionSpeech,  kPerceptionPersonIds,
+                                 kPerceptionMatcher, kNavEpisodeType,
+                                 kNavWalkers,        kNavigationEpisodes,
+                                 kRandomGroups,      kRandomGroupScene,
+                                 kConversation,      kDialogueEpisodes};
 
 }  // namespace rng_streams
 

@@ -30,6 +30,10 @@ struct FigurePose {
   /// of the trunk, the dominant hand more; `gesture_beat` in [-1, 1] moves them in beats.
   double gesture{0.0};
   double gesture_beat{0.0};
+  /// Standing, which leg bears the weight: +1 the figure's left, -1 its right, 0 both
+  /// (WeightShifts); the pelvis moves over that leg and drops on the other side, the free knee
+  /// bends, the feet stay put. Fades as the figure walks or sits.
+  double weight_side{0.0};
 };
 
 /// A person drawn as an articulated solid: feet, lower and upper legs, pelvis, torso, shoulders,
@@ -111,10 +115,24 @@ class HumanFigure {
   /// bending forward; the leg points straight at an ankle out of its reach.
   double thigh_pitch_rad(double hip_z, double hip_x, double ankle_x, double ankle_z) const;
   Eigen::Isometry3f trunk_frame(const FigurePose& pose, const Eigen::Isometry3f& body) const;
+  /// pose.weight_side where the figure stands still, fading to 0 as it walks or sits.
+  double standing_load(const FigurePose& pose) const;
+  /// How far (m) the hips rise as they move over the leg that bears the weight, for it to stay
+  /// straight from the hip to its foot.
+  double loaded_hip_rise(const FigurePose& pose, const Eigen::Isometry3f& body) const;
   /// One leg's hip, knee and ankle frames: the standing stance and stride, or, once the figure
-  /// sits at all, the thigh and shin that reach from the hip to the foot on the floor.
+  /// sits at all or stands on one leg, the thigh and shin that reach from the hip to the foot on
+  /// the floor.
   std::array<Eigen::Isometry3f, 3> leg_frames(const FigurePose& pose, const Eigen::Isometry3f& body,
                                               double side) const;
+  std::array<Eigen::Isometry3f, 3> leg_reaching(const Eigen::Isometry3f& body,
+                                                const Eigen::Vector3f& hip_point,
+                                                const Eigen::Vector3f& ankle_point) const;
+  /// The knee and ankle frames below `hip`, the knee bent by knee_flex, the foot on the body's
+  /// heading.
+  std::array<Eigen::Isometry3f, 3> leg_with_flat_foot(const Eigen::Isometry3f& body,
+                                                      const Eigen::Isometry3f& hip,
+                                                      double knee_flex) const;
   void add_part(Joint joint, bool face, const RenderPrimitive& primitive);
   void build_legs();
   void build_trunk_and_arms();

@@ -10,6 +10,7 @@
 #include "ari_social_sim/physics/person_shape.hpp"
 #include "ari_social_sim/rendering/human_figure.hpp"
 #include "ari_social_sim/rendering/renderer.hpp"
+#include "ari_social_sim/rendering/weight_shifts.hpp"
 #include "ari_social_sim/world/world_snapshot.hpp"
 
 namespace ari_social_sim::rendering {
@@ -40,10 +41,11 @@ struct PosedPerson {
 
 /// Everyone's figure, built once per person (again only when their traits change) and posed each
 /// frame: the dynamic part of the cameras' scene. Also keeps each person's gait phase, which
-/// advances with the distance they walk.
+/// advances with the distance they walk, and their weight shifts while they stand.
 class PeopleFigures {
  public:
-  /// `appearance_seed` with each person's id draws their look (appearance_of).
+  /// `appearance_seed` with each person's id draws their look (appearance_of) and when they
+  /// shift their weight (WeightShifts).
   explicit PeopleFigures(uint64_t appearance_seed = 0);
 
   /// Poses everyone present at sim time `time_s`; people absent from `people` are forgotten.
@@ -68,6 +70,7 @@ class PeopleFigures {
     double gait_phase_rad{0.0};
     double last_time_s{0.0};
     double gesture{0.0};  // FigurePose::gesture, following whether they speak
+    WeightShifts weight_shifts;
   };
 
   uint64_t appearance_seed_;
