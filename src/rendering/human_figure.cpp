@@ -5,6 +5,7 @@
 #include <set>
 
 #include "ari_social_sim/core/angles.hpp"
+#include "ari_social_sim/core/smoothstep.hpp"
 #include "ari_social_sim/world/posture.hpp"
 
 namespace ari_social_sim::rendering {
@@ -105,11 +106,6 @@ Eigen::Isometry3f rotation_y(double angle) {
 }
 Eigen::Isometry3f rotation_x(double angle) {
   return Eigen::Isometry3f(Eigen::AngleAxisf(static_cast<float>(angle), Eigen::Vector3f::UnitX()));
-}
-// 0 below 0, 1 above 1, a smooth S in between.
-double smoothstep(double x) {
-  const double t = std::clamp(x, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
 }
 
 // Positive: forward. Seated fraction in [0, 1].
@@ -621,7 +617,7 @@ Eigen::Isometry3f HumanFigure::trunk_frame(const FigurePose& pose,
   }
   // The hips leave the seat only once the trunk has leant forward (flexion before extension,
   // the sit-to-stand's phases; docs/cameras.md), and settle on it last when sitting down.
-  const double rise = smoothstep((1.0 - seated - kHipsStillShare) / (1.0 - kHipsStillShare));
+  const double rise = core::smoothstep((1.0 - seated - kHipsStillShare) / (1.0 - kHipsStillShare));
   const double hip_z = seated_hip_z(pose) + rise * (hip_z_ - seated_hip_z(pose));
   return body * translation(0.0, 0.0, hip_z) * rotation_y(trunk_lean_rad(seated)) *
          translation(0.0, 0.0, -hip_z_);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ari_social_sim/core/rng_streams.hpp"
+#include "ari_social_sim/core/smoothstep.hpp"
 
 namespace ari_social_sim::rendering {
 namespace {
@@ -23,11 +24,6 @@ constexpr double kFidgetRestS = 2.0;
 double log_normal(core::Rng& rng, double mean, double spread) {
   const double sigma_squared = std::log1p(spread * spread / (mean * mean));
   return std::exp(rng.normal(std::log(mean) - 0.5 * sigma_squared, std::sqrt(sigma_squared)));
-}
-
-double smoothstep(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
 }
 
 }  // namespace
@@ -89,7 +85,7 @@ double WeightShifts::load_side(double time_s) {
     if (change.time_s > time_s) {
       break;
     }
-    load = from + (change.side - from) * smoothstep((time_s - change.time_s) / kMoveS);
+    load = from + (change.side - from) * core::smoothstep((time_s - change.time_s) / kMoveS);
     from = change.side;
   }
   forget_before(time_s);
