@@ -173,6 +173,27 @@ BENCHMARK(BM_HeadCameraTenPeople)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
+// Posing ten figures (the people's mesh of a frame), all standing with their weight on both legs
+// (weight:0) or each on one leg (weight:1, WeightShifts): the cost of the legs' reach to the feet.
+void BM_PoseTenFigures(benchmark::State& state) {
+  std::vector<rendering::HumanFigure> figures;
+  for (uint32_t id = 1; id <= 10; ++id) {
+    figures.emplace_back(rendering::appearance_of({id, 40.0, model::Gender::kFemale, false}, 1));
+  }
+  rendering::FigurePose pose;
+  pose.weight_side = static_cast<double>(state.range(0));
+  rendering::RenderMesh mesh;
+  for (auto _ : state) {
+    mesh.vertices.clear();
+    for (const rendering::HumanFigure& figure : figures) {
+      figure.append_posed(pose, 1.0f, 2.0f, mesh);
+    }
+    benchmark::DoNotOptimize(mesh.vertices.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_PoseTenFigures)->ArgNames({"weight"})->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 // Ten figures with the camera effects: effects:0 none (the renderer's image as drawn), 1 the
 // sensor alone (no anti-aliasing, the default), 2 the sensor with 4-sample anti-aliasing, 3 the
 // sensor with motion blur (one person walking, the others swaying).
