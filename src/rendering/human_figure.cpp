@@ -94,6 +94,12 @@ RenderPrimitive glossy(RenderPrimitive primitive) {
   return primitive;
 }
 
+// Clothes: their folds are drawn in the part's own frame, so they move with it.
+RenderPrimitive cloth(RenderPrimitive primitive) {
+  primitive.surface = Surface::kCloth;
+  return primitive;
+}
+
 Eigen::Vector3f darker(const Eigen::Vector3f& colour, float factor) {
   return colour * factor;
 }
@@ -157,13 +163,13 @@ void HumanFigure::build_legs() {
        {std::array<Joint, 3>{kLeftHip, kLeftKnee, kLeftAnkle},
         std::array<Joint, 3>{kRightHip, kRightKnee, kRightAnkle}}) {
     add_part(hip, false,
-             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * thigh_m_},
-                   {2.0 * thigh_radius, 2.0 * thigh_radius, thigh_m_ + thigh_radius},
-                   look_.trousers, kLimbSegments));
+             cloth(shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * thigh_m_},
+                         {2.0 * thigh_radius, 2.0 * thigh_radius, thigh_m_ + thigh_radius},
+                         look_.trousers, kLimbSegments)));
     add_part(knee, false,
-             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * shin_m_},
-                   {2.0 * shin_radius, 2.0 * shin_radius, shin_m_ + shin_radius},
-                   darker(look_.trousers, 0.95f), kLimbSegments));
+             cloth(shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * shin_m_},
+                         {2.0 * shin_radius, 2.0 * shin_radius, shin_m_ + shin_radius},
+                         darker(look_.trousers, 0.95f), kLimbSegments)));
     const double foot_length = kFootLengthShare * s;
     // From the sole on the floor (when standing) to 2 cm above the ankle.
     const double foot_height = kAnkleShare * s + 0.02;
@@ -180,22 +186,22 @@ void HumanFigure::build_trunk_and_arms() {
   const double hip_width = kHipWidthShare * s * look_.build * (look_.female_build ? 1.05 : 1.0);
   // Pelvis in the trousers' colour, torso and shoulders in the top's.
   add_part(kPelvis, false,
-           shape(PrimitiveShape::kSphere, {0.0, 0.0, hip_z_ + 0.02 * s},
-                 {depth * 0.95, std::max(width, hip_width * 0.9), 0.12 * s}, look_.trousers,
-                 kTrunkSegments));
+           cloth(shape(PrimitiveShape::kSphere, {0.0, 0.0, hip_z_ + 0.02 * s},
+                       {depth * 0.95, std::max(width, hip_width * 0.9), 0.12 * s}, look_.trousers,
+                       kTrunkSegments)));
   const double torso_bottom = hip_z_ + 0.03 * s;
   const double torso_top = shoulder_z_ - 0.04 * s;
   add_part(kPelvis, false,
-           shape(PrimitiveShape::kCylinder, {0.0, 0.0, 0.5 * (torso_bottom + torso_top)},
-                 {depth, width, torso_top - torso_bottom}, look_.top, kTrunkSegments));
+           cloth(shape(PrimitiveShape::kCylinder, {0.0, 0.0, 0.5 * (torso_bottom + torso_top)},
+                       {depth, width, torso_top - torso_bottom}, look_.top, kTrunkSegments)));
   // Chest and seat give the side view its curves: the chest ahead of the waist, the seat behind.
   add_part(kPelvis, false,
-           shape(PrimitiveShape::kSphere, {0.015 * s, 0.0, 0.70 * s},
-                 {depth * 1.15, width * 0.9, 0.22 * s}, look_.top, kTrunkSegments));
+           cloth(shape(PrimitiveShape::kSphere, {0.015 * s, 0.0, 0.70 * s},
+                       {depth * 1.15, width * 0.9, 0.22 * s}, look_.top, kTrunkSegments)));
   add_part(kPelvis, false,
-           shape(PrimitiveShape::kSphere, {-0.02 * s, 0.0, hip_z_ - 0.01 * s},
-                 {depth * 1.1, std::max(width, hip_width * 0.9), 0.16 * s}, look_.trousers,
-                 kTrunkSegments));
+           cloth(shape(PrimitiveShape::kSphere, {-0.02 * s, 0.0, hip_z_ - 0.01 * s},
+                       {depth * 1.1, std::max(width, hip_width * 0.9), 0.16 * s}, look_.trousers,
+                       kTrunkSegments)));
   add_part(kPelvis, false,
            shape(PrimitiveShape::kSphere, {0.0, 0.0, torso_top},
                  {depth * 0.95, 2.0 * (shoulder_joint_y_ + 0.025 * s), 0.09 * s}, look_.top,
@@ -215,18 +221,18 @@ void HumanFigure::build_trunk_and_arms() {
 
   const double upper_arm_radius = 0.031 * s * look_.build;
   const double forearm_radius = 0.025 * s * look_.build;
-  const Eigen::Vector3f forearm_colour = look_.short_sleeves ? look_.skin : look_.top;
   for (const auto& [shoulder, elbow] : {std::array<Joint, 2>{kLeftShoulder, kLeftElbow},
                                         std::array<Joint, 2>{kRightShoulder, kRightElbow}}) {
-    add_part(
-        shoulder, false,
-        shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * upper_arm_m_},
-              {2.0 * upper_arm_radius, 2.0 * upper_arm_radius, upper_arm_m_ + upper_arm_radius},
-              look_.top, kLimbSegments));
-    add_part(elbow, false,
-             shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * forearm_m_},
-                   {2.0 * forearm_radius, 2.0 * forearm_radius, forearm_m_ + forearm_radius},
-                   forearm_colour, kLimbSegments));
+    add_part(shoulder, false,
+             cloth(shape(
+                 PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * upper_arm_m_},
+                 {2.0 * upper_arm_radius, 2.0 * upper_arm_radius, upper_arm_m_ + upper_arm_radius},
+                 look_.top, kLimbSegments)));
+    RenderPrimitive forearm =
+        shape(PrimitiveShape::kCylinder, {0.0, 0.0, -0.5 * forearm_m_},
+              {2.0 * forearm_radius, 2.0 * forearm_radius, forearm_m_ + forearm_radius},
+              look_.short_sleeves ? look_.skin : look_.top, kLimbSegments);
+    add_part(elbow, false, look_.short_sleeves ? forearm : cloth(forearm));
     add_part(elbow, false,
              shape(PrimitiveShape::kSphere, {0.0, 0.0, -forearm_m_ - 0.45 * hand_m_},
                    {0.045 * s, 0.028 * s, hand_m_}, look_.skin, kFeatureSegments));

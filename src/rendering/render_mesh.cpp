@@ -55,17 +55,14 @@ class TriangleWriter {
   void vertex(const Eigen::Vector3d& p_local, const Eigen::Vector3d& n_local) {
     const Eigen::Vector3d p = primitive_.X_world_shape * p_local;
     const Eigen::Vector3d n = (rotation_ * n_local).normalized();
-    const float values[RenderMesh::kFloatsPerVertex] = {static_cast<float>(p.x()),
-                                                        static_cast<float>(p.y()),
-                                                        static_cast<float>(p.z()),
-                                                        static_cast<float>(n.x()),
-                                                        static_cast<float>(n.y()),
-                                                        static_cast<float>(n.z()),
-                                                        primitive_.colour.x(),
-                                                        primitive_.colour.y(),
-                                                        primitive_.colour.z(),
-                                                        static_cast<float>(primitive_.surface),
-                                                        0.0f};
+    const float values[RenderMesh::kFloatsPerVertex] = {
+        static_cast<float>(p.x()),       static_cast<float>(p.y()),
+        static_cast<float>(p.z()),       static_cast<float>(n.x()),
+        static_cast<float>(n.y()),       static_cast<float>(n.z()),
+        primitive_.colour.x(),           primitive_.colour.y(),
+        primitive_.colour.z(),           static_cast<float>(primitive_.surface),
+        static_cast<float>(p_local.x()), static_cast<float>(p_local.y()),
+        static_cast<float>(p_local.z()), 0.0f};
     mesh_.vertices.insert(mesh_.vertices.end(), std::begin(values), std::end(values));
   }
 

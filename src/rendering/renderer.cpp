@@ -29,12 +29,14 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 colour;
 layout(location = 3) in float surface;
 layout(location = 4) in float label;
+layout(location = 5) in vec3 shape_point;
 uniform mat4 world_to_optical;
 uniform mat4 projection;
 // The lamps nearest the camera (Renderer::Impl::kMaxLamps), centres of their emitting faces.
 uniform int lamp_count;
 uniform vec3 lamps[32];
 out vec3 v_world;
+out vec3 v_shape;
 out vec3 v_normal;
 out vec3 v_colour;
 flat out float v_surface;
@@ -80,6 +82,7 @@ void main() {
   light_from_lamps();
   v_floor_open = floor_occlusion(position.xy);  // 1 but for the floor (contact_count 0)
   v_world = position;
+  v_shape = shape_point;
   v_normal = normal;
   v_colour = colour;
   v_surface = surface;
@@ -91,6 +94,7 @@ void main() {
 
 constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 v_world;
+in vec3 v_shape;
 in vec3 v_normal;
 in vec3 v_colour;
 flat in float v_surface;
@@ -112,6 +116,7 @@ const int kWall = 3;
 const int kWood = 4;
 const int kCeiling = 5;
 const int kLamp = 6;
+const int kCloth = 7;
 
 float hash(vec2 p) {
   return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453);
@@ -147,10 +152,25 @@ float wood_grain(vec3 p) {
   return 0.9 + 0.15 * value_noise(vec2((p.x + p.y) * 3.0, p.z * 45.0));
 }
 
-float texture_of(int surface, vec3 p) {
-  if (surface == kFloor) return floor_tiles(p.xy);
-  if (surface == kWall) return wall_paint(p);
-  if (surface == kWood) return wood_grain(p);
+// Cloth hanging on a limb or the trunk, in the part's own frame (its axis z, metres): drape folds
+// along the part, six around it, wandering a little and fading in and out as they go down, and
+// shallow creases across it where the cloth bunches. The folds' valleys see less of the room's
+// light.
+float cloth_folds(vec3 p) {
+  vec2 around = normalize(p.xy + vec2(1e-6, 0.0));
+  float angle = atan(around.y, around.x);
+  float wander = value_noise(around * 1.2 + vec2(p.z * 2.5, 0.0));
+  float depth = value_noise(around * 2.0 + vec2(0.0, p.z * 5.0));
+  float drape = 0.5 + 0.5 * sin(6.0 * angle + 3.0 * wander);
+  float crease = value_noise(around * 0.7 + vec2(p.z * 22.0, 0.0));  // nearly level
+  return 1.0 - 0.16 * depth * drape * drape - 0.08 * smoothstep(0.55, 0.85, crease);
+}
+
+float texture_of(int surface, vec3 world, vec3 shape) {
+  if (surface == kFloor) return floor_tiles(world.xy);
+  if (surface == kWall) return wall_paint(world);
+  if (surface == kWood) return wood_grain(world);
+  if (surface == kCloth) return cloth_folds(shape);
   return 1.0;
 }
 
@@ -173,7 +193,7 @@ float indoor_lighting(int surface, vec3 n, vec3 to_camera, float fill, out float
 
 void main() {
   int surface = int(v_surface + 0.5);
-  vec3 c = v_colour * texture_of(surface, v_world);
+  vec3 c = v_colour * texture_of(surface, v_world, v_shape);
   out_depth = v_depth;
   out_label = v_label;
   if (surface == kLamp) {  // gives light: as bright as the sensor takes
@@ -233,9 +253,9 @@ struct GpuMesh {
     glBindVertexArray(array);
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
     const GLsizei stride = RenderMesh::kFloatsPerVertex * sizeof(float);
-    const int offsets[5] = {0, 3, 6, 9, RenderMesh::kLabelOffset};
-    const int sizes[5] = {3, 3, 3, 1, 1};
-    for (GLuint i = 0; i < 5; ++i) {
+    const int offsets[6] = {0, 3, 6, 9, RenderMesh::kLabelOffset, RenderMesh::kShapePointOffset};
+    const int sizes[6] = {3, 3, 3, 1, 1, 3};
+    for (GLuint i = 0; i < 6; ++i) {
       glEnableVertexAttribArray(i);
       // OpenGL takes a buffer offset as a pointer.
       // NOLINTNEXTLINE(performance-no-int-to-ptr)

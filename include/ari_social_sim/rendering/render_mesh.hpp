@@ -8,12 +8,14 @@
 namespace ari_social_sim::rendering {
 
 /// Triangles ready for the GPU: per vertex the world position, outward unit normal, colour, the
-/// surface (Surface) and a label, interleaved as kFloatsPerVertex floats, three vertices per
-/// triangle. The label is what the renderer's label image holds where the triangle is seen (0:
-/// nothing to label, such as walls and the robot).
+/// surface (Surface), the point in its primitive's own frame (m: textures that move with a part,
+/// such as cloth's folds, are drawn from it) and a label, interleaved as kFloatsPerVertex floats,
+/// three vertices per triangle. The label is what the renderer's label image holds where the
+/// triangle is seen (0: nothing to label, such as walls and the robot).
 struct RenderMesh {
-  static constexpr int kFloatsPerVertex = 11;
-  static constexpr int kLabelOffset = 10;
+  static constexpr int kFloatsPerVertex = 14;
+  static constexpr int kShapePointOffset = 10;
+  static constexpr int kLabelOffset = 13;
   std::vector<float> vertices;
 
   size_t vertex_count() const { return vertices.size() / kFloatsPerVertex; }

@@ -19,7 +19,8 @@ enum class PrimitiveShape {
 /// the light (what keeps the features of dark skin visible); and the room's materials, each with
 /// a procedural texture in world coordinates (the renderer's shader): floor tiles with grout and
 /// speckle, painted walls with a skirting board, wood grain, a ceiling lit by the light it
-/// bounces, and lamps that give light.
+/// bounces, and lamps that give light; and cloth, whose folds are drawn in the primitive's own
+/// frame, so that they move with the part it covers.
 enum class Surface {
   kMatte = 0,
   kFloor = 1,
@@ -28,6 +29,7 @@ enum class Surface {
   kWood = 4,
   kCeiling = 5,
   kLamp = 6,
+  kCloth = 7,
 };
 
 /// One solid in the world frame with a flat colour, textured by its surface.
