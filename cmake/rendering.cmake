@@ -22,6 +22,7 @@ add_library(ari_rendering
   src/rendering/human_appearance.cpp
   src/rendering/human_figure.cpp
   src/rendering/image_labels.cpp
+  src/rendering/lamp_light.cpp
   src/rendering/motion_blur.cpp
   src/rendering/multisample_target.cpp
   src/rendering/people_crops.cpp

@@ -21,17 +21,8 @@ GLuint compile(GLenum stage, const char* source) {
   return shader;
 }
 
-}  // namespace
-
-GLuint link_program(const char* vertex_source, const char* fragment_source) {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source);
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragment_source);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
+void link_or_throw(GLuint program) {
   glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
@@ -39,6 +30,29 @@ GLuint link_program(const char* vertex_source, const char* fragment_source) {
     glGetProgramInfoLog(program, sizeof(log), nullptr, log);
     throw RenderError(std::string("shader linking failed: ") + log);
   }
+}
+
+}  // namespace
+
+GLuint link_program(const char* vertex_source, const char* fragment_source) {
+  const GLuint program = glCreateProgram();
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source);
+  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragment_source);
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  link_or_throw(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  return program;
+}
+
+GLuint link_capture_program(const char* vertex_source, const char* varying) {
+  const GLuint program = glCreateProgram();
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source);
+  glAttachShader(program, vertex);
+  glTransformFeedbackVaryings(program, 1, &varying, GL_INTERLEAVED_ATTRIBS);
+  link_or_throw(program);
+  glDeleteShader(vertex);
   return program;
 }
 

@@ -10,4 +10,8 @@ namespace ari_social_sim::rendering {
 /// Throws RenderError with the compiler's or linker's log when either fails.
 GLuint link_program(const char* vertex_source, const char* fragment_source);
 
+/// A program of a vertex shader alone whose output `varying` is captured by transform feedback
+/// (nothing is rasterised). Throws RenderError as link_program does.
+GLuint link_capture_program(const char* vertex_source, const char* varying);
+
 }  // namespace ari_social_sim::rendering

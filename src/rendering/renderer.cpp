@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "ari_social_sim/rendering/render_mesh.hpp"
 #include "egl_context.hpp"
 #include "gl_program.hpp"
+#include "lamp_light.hpp"
 #include "multisample_target.hpp"
 
 namespace ari_social_sim::rendering {
@@ -19,22 +21,24 @@ namespace {
 
 // Shading is deliberately plain, cheap on llvmpipe: outdoors ambient, a sun and a fill light at
 // the camera; indoors (a scene with lamps) the ceiling's lamps as the light, with their fall-off,
-// a little bounced light and the fill light. The lamps light each vertex (Gouraud shading), and
-// the floor's contact shadows are found per vertex too: looping over lamps and people for every
+// a little bounced light and the fill light. The lamps light each vertex (Gouraud shading: the
+// room's vertices once, as it is set, the people's every frame), and the floor's contact shadows
+// are found per vertex too: looping over lamps and people for every
 // pixel cost more than the rest of a frame on llvmpipe. Large surfaces are split into facets
 // (RenderPrimitive::max_facet_m) over which their light and shadows hardly change.
-constexpr const char* kVertexShader = R"(#version 330 core
+const std::string kVertexShader = std::string(R"(#version 330 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec3 colour;
 layout(location = 3) in float surface;
 layout(location = 4) in float label;
 layout(location = 5) in vec3 shape_point;
+// The lamps' light, lit once (LampLightBake) for the static meshes, whose lamps and vertices do
+// not move; the dynamic mesh's vertices are lit every frame by the lamps nearest the camera.
+layout(location = 6) in vec4 baked_lamp_light;
+uniform bool lamp_light_baked;
 uniform mat4 world_to_optical;
 uniform mat4 projection;
-// The lamps nearest the camera (Renderer::Impl::kMaxLamps), centres of their emitting faces.
-uniform int lamp_count;
-uniform vec3 lamps[32];
 out vec3 v_world;
 out vec3 v_shape;
 out vec3 v_normal;
@@ -49,22 +53,7 @@ out float v_floor_open;
 uniform int contact_count;
 uniform vec3 contacts[16];
 
-// Light from the ceiling's lamp panels at the vertex: each a downward Lambertian emitter
-// (intensity falling with the cosine from straight down), irradiance with the cosine of incidence
-// over the squared distance; and the mean direction it comes from, weighted the same way.
-void light_from_lamps() {
-  v_lamp = 0.0;
-  v_lamp_direction = vec3(0.0, 0.0, 1e-6);
-  for (int i = 0; i < lamp_count; ++i) {
-    vec3 d = lamps[i] - position;
-    float distance2 = max(dot(d, d), 0.04);
-    vec3 l = d * inversesqrt(distance2);
-    float arriving = max(l.z, 0.0) / distance2;
-    v_lamp += arriving * max(dot(normal, l), 0.0);
-    v_lamp_direction += arriving * l;
-  }
-}
-
+)") + kLampLightGlsl + R"(
 // Soft contact shadows (ambient occlusion): the floor around someone's feet sees less of the room
 // and its lamps, darkest under the feet and fading over a few tenths of a metre.
 float floor_occlusion(vec2 p) {
@@ -79,7 +68,12 @@ float floor_occlusion(vec2 p) {
 
 void main() {
   vec4 p = world_to_optical * vec4(position, 1.0);
-  light_from_lamps();
+  vec4 light = baked_lamp_light;
+  if (!lamp_light_baked) {
+    light = lamp_light(position, normal);
+  }
+  v_lamp = light.x;
+  v_lamp_direction = vec3(0.0, 0.0, 1e-6) + light.yzw;
   v_floor_open = floor_occlusion(position.xy);  // 1 but for the floor (contact_count 0)
   v_world = position;
   v_shape = shape_point;
@@ -252,6 +246,7 @@ Eigen::Matrix4f projection_of(const PinholeModel& m, double near_m, double far_m
 struct GpuMesh {
   GLuint array{0};
   GLuint buffer{0};
+  GLuint baked_light{0};
   GLsizei vertex_count{0};
 
   void create() {
@@ -276,6 +271,14 @@ struct GpuMesh {
                  mesh.vertices.data(), GL_DYNAMIC_DRAW);
     vertex_count = static_cast<GLsizei>(mesh.vertex_count());
   }
+  // Gives the vertices a buffer for their lamp light (attribute 6), which LampLightBake fills.
+  void add_baked_light() {
+    glGenBuffers(1, &baked_light);
+    glBindVertexArray(array);
+    glBindBuffer(GL_ARRAY_BUFFER, baked_light);
+    glEnableVertexAttribArray(6);
+    glVertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+  }
   void draw() const { draw(0, vertex_count); }
   void draw(GLint first, GLsizei count) const {
     if (count > 0) {
@@ -285,6 +288,7 @@ struct GpuMesh {
   }
   void destroy() {
     glDeleteBuffers(1, &buffer);
+    glDeleteBuffers(1, &baked_light);  // 0, for meshes without, is ignored
     glDeleteVertexArrays(1, &array);
   }
 };
@@ -361,6 +365,7 @@ struct Renderer::Impl {
   GLint camera_position_location{-1};
   GLint lamp_count_location{-1};
   GLint lamps_location{-1};
+  GLint lamp_light_baked_location{-1};
   GLint contact_count_location{-1};
   GLint contacts_location{-1};
   // The shader's arrays: the nearest lamps light a view, the farther ones add little; the
@@ -372,6 +377,7 @@ struct Renderer::Impl {
   GpuMesh static_mesh;
   GpuMesh floor_mesh;  // the static floors: only their vertices look for contact shadows
   GpuMesh dynamic_mesh;
+  std::unique_ptr<LampLightBake> bake;
   // One framebuffer per image size: a rig alternates between cameras of different sizes.
   std::map<std::pair<int, int>, Framebuffer> framebuffers;
   std::map<std::tuple<int, int, int>, std::unique_ptr<MultisampleTarget>> multisample_targets;
@@ -416,17 +422,21 @@ Renderer::Renderer() : impl_(std::make_unique<Impl>()) {
   impl_->context.make_current();
   const GLubyte* name = glGetString(GL_RENDERER);
   impl_->device_name = name != nullptr ? reinterpret_cast<const char*>(name) : "unknown";
-  impl_->program = link_program(kVertexShader, kFragmentShader);
+  impl_->program = link_program(kVertexShader.c_str(), kFragmentShader);
   impl_->world_to_optical_location = glGetUniformLocation(impl_->program, "world_to_optical");
   impl_->projection_location = glGetUniformLocation(impl_->program, "projection");
   impl_->camera_position_location = glGetUniformLocation(impl_->program, "camera_position");
   impl_->lamp_count_location = glGetUniformLocation(impl_->program, "lamp_count");
   impl_->lamps_location = glGetUniformLocation(impl_->program, "lamps");
+  impl_->lamp_light_baked_location = glGetUniformLocation(impl_->program, "lamp_light_baked");
   impl_->contact_count_location = glGetUniformLocation(impl_->program, "contact_count");
   impl_->contacts_location = glGetUniformLocation(impl_->program, "contacts");
   impl_->static_mesh.create();
+  impl_->static_mesh.add_baked_light();
   impl_->floor_mesh.create();
+  impl_->floor_mesh.add_baked_light();
   impl_->dynamic_mesh.create();
+  impl_->bake = std::make_unique<LampLightBake>();
 }
 
 Renderer::~Renderer() {
@@ -437,6 +447,7 @@ Renderer::~Renderer() {
   impl_->static_mesh.destroy();
   impl_->floor_mesh.destroy();
   impl_->dynamic_mesh.destroy();
+  impl_->bake.reset();
   glDeleteProgram(impl_->program);
 }
 
@@ -459,6 +470,10 @@ void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primiti
   }
   impl_->floor_mesh.upload(mesh_of(floors));
   impl_->static_mesh.upload(mesh_of(others));
+  // Every lamp lights the room; the people, lit every frame, by the kMaxLamps nearest the camera.
+  for (const GpuMesh* mesh : {&impl_->floor_mesh, &impl_->static_mesh}) {
+    impl_->bake->bake(mesh->array, mesh->vertex_count, impl_->lamps, mesh->baked_light);
+  }
 }
 
 void Renderer::set_dynamic_primitives(const std::vector<RenderPrimitive>& primitives) {
@@ -517,12 +532,16 @@ void Renderer::render(const PinholeModel& model, const Eigen::Isometry3d& X_worl
   Impl::upload_nearest(impl_->lamps, camera_position, Impl::kMaxLamps, impl_->lamp_count_location,
                        impl_->lamps_location);
   glUniform1i(impl_->contact_count_location, 0);
+  glUniform1i(impl_->lamp_light_baked_location, 0);
   if (options.only_dynamic) {
     impl_->dynamic_mesh.draw(static_cast<GLint>(options.only_dynamic->first),
                              static_cast<GLsizei>(options.only_dynamic->count));
   } else {
+    glUniform1i(impl_->lamp_light_baked_location, 1);
     impl_->static_mesh.draw();
+    glUniform1i(impl_->lamp_light_baked_location, 0);
     impl_->dynamic_mesh.draw();
+    glUniform1i(impl_->lamp_light_baked_location, 1);
     // The contact shadows' loop runs for the floor's vertices only: its count is theirs alone.
     Impl::upload_nearest(impl_->contacts, camera_position, Impl::kMaxContacts,
                          impl_->contact_count_location, impl_->contacts_location);

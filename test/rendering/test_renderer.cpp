@@ -200,6 +200,41 @@ TEST(Renderer, LampsLightTheFloorUnderThemMost) {
   EXPECT_GT(beside, 0.7 * under);
 }
 
+// The room's vertices are lit by its lamps once, when it is set (LampLightBake); a person's every
+// frame. A wall and a table lit either way look the same.
+TEST(Renderer, TheRoomLitOnceLooksAsLitEveryFrame) {
+  RenderPrimitive lamp = test::box({2.0, 0.0, 2.49}, {0.6, 1.2, 0.02});
+  lamp.surface = Surface::kLamp;
+  RenderPrimitive wall = test::box({4.0, 0.0, 1.5}, {0.2, 6.0, 3.0});
+  wall.surface = Surface::kWall;
+  wall.max_facet_m = 0.25;
+  RenderPrimitive table = test::box({2.5, 0.5, 0.4}, {0.8, 0.8, 0.8});
+  table.surface = Surface::kWood;
+  table.max_facet_m = 0.25;
+  const PinholeModel model = PinholeModel::from_horizontal_fov(320, 240, 90.0 * kDeg);
+  const Eigen::Isometry3d camera = test::level_camera_facing_x({0.0, 0.0, 1.2});
+  RenderedImage once, every_frame;
+  Renderer renderer;
+  renderer.set_static_primitives({floor_slab(), lamp, wall, table});
+  renderer.render(model, camera, ViewOptions{}, once);
+  renderer.set_static_primitives({floor_slab(), lamp});
+  renderer.set_dynamic_primitives({wall, table});
+  renderer.render(model, camera, ViewOptions{}, every_frame);
+  cv::Mat difference;
+  cv::absdiff(once.colour, every_frame.colour, difference);
+  double largest = 0.0;
+  cv::minMaxLoc(difference.reshape(1), nullptr, &largest);
+  const double mean = cv::mean(difference)[0];
+  std::printf(
+      "[ measured ] lit once against lit every frame: largest difference %.0f, mean %.4f "
+      "grey levels\n",
+      largest, mean);
+  // Float rounding of the same sums at most. A bake that failed (the lamps' light left at 0)
+  // would show as the lamp's whole light on the wall and the table
+  // (LampsLightTheFloorUnderThemMost checks the lit-once floor against the lamp's fall-off).
+  EXPECT_LE(largest, 1.0);
+}
+
 TEST(Renderer, PeopleCastSoftContactShadowsOnTheFloor) {
   Renderer renderer;
   renderer.set_static_primitives({floor_slab()});
