@@ -112,8 +112,13 @@ const int kCeiling = 5;
 const int kLamp = 6;
 const int kCloth = 7;
 
+// A pseudo-random value in [0, 1) for a lattice point, by multiplications and fract alone: the
+// sine of the usual one-line hash is a polynomial of some forty operations on llvmpipe, and the
+// floor's and walls' textures take five to eight hashes a pixel.
 float hash(vec2 p) {
-  return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453);
+  p = fract(p * vec2(0.1307, 0.1173));
+  p += dot(p, p.yx + 19.19);
+  return fract(p.x * p.y);
 }
 
 // Value noise in [0, 1], smooth between the integer lattice's random values.
