@@ -101,9 +101,14 @@ void Navigator::follow_relabelled_person(const PerceivedScene& scene) {
   if (person_id == nullptr) {
     return;
   }
+  // Joining a person's group needs them in a group. Perception may track one human twice (an
+  // anonymous body and the person their face was recognised as) and group only one of them.
+  const bool needs_group = std::holds_alternative<GroupOfPersonTarget>(*target_);
   if (const PersonEstimate* person = scene.find_person(*person_id)) {
     target_person_seen_at_ = person->position;
-    return;
+    if (!needs_group || scene.group_of(*person_id) != nullptr) {
+      return;
+    }
   }
   if (!target_person_seen_at_) {
     return;
@@ -112,7 +117,8 @@ void Navigator::follow_relabelled_person(const PerceivedScene& scene) {
   double nearest_m = kReidentifiedWithinM;
   for (const PersonEstimate& person : scene.people) {
     const double distance_m = (person.position - *target_person_seen_at_).norm();
-    if (distance_m <= nearest_m) {
+    const bool usable = !needs_group || scene.group_of(person.id) != nullptr;
+    if (usable && distance_m <= nearest_m) {
       nearest = &person;
       nearest_m = distance_m;
     }

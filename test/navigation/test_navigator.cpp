@@ -403,5 +403,27 @@ TEST(Navigator, FollowsATargetPersonThatThePersonManagerRenames) {
   EXPECT_NE(step.reason.find("person anon_x is not tracked"), std::string::npos) << step.reason;
 }
 
+TEST(Navigator, JoinsTheGroupOfAPersonTrackedTwiceUnderTheIdThatIsGrouped) {
+  // Perception tracks Irene twice: as anon_x (her body, 0.1 m off) and, once her face is
+  // recognised, as human11. ARI set out to join anon_x's group; group detection then groups
+  // human11 instead and leaves anon_x in no group. ARI joins human11's group rather than giving
+  // up after the lost-target timeout (as CI saw: "the group of person anonymous_person_cjaac lost
+  // for 5.1 s (person anonymous_person_cjaac is in no group)").
+  PerceivedScene body_grouped = group_of_three(Eigen::Vector2d::Zero());
+  body_grouped.people[1].id = "anon_x";
+  body_grouped.people[1].position += Eigen::Vector2d(0.1, 0.0);
+  body_grouped.groups = {estimate_group("g1", body_grouped.people, 0.64)};
+  PerceivedScene face_grouped = group_of_three(Eigen::Vector2d::Zero());
+  face_grouped.people.push_back(body_grouped.people[1]);
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
+  navigator.start(GroupOfPersonTarget{"anon_x"}, body_grouped, robot, 0.0);
+  for (double t = 0.5; t <= 10.0; t += 0.5) {
+    const NavigatorStep step = navigator.update(t, robot, face_grouped);
+    ASSERT_EQ(step.state, NavigationState::kActive) << t << ": " << step.reason;
+  }
+  EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "human11");
+}
+
 }  // namespace
 }  // namespace ari_social_sim::navigation
