@@ -42,8 +42,10 @@ def wait_until_finished(recorder, timeout_s):
 
 
 class NodeWarnings:
-    """The last warnings and errors the other nodes logged (/rosout_agg). A scenario's reason says
-    that ARI's navigation failed; social_mpc_node's and scenario_node's warnings say why."""
+    """The last warnings and errors the other nodes logged. A scenario's reason says that ARI's
+    navigation failed; social_mpc_node's and scenario_node's warnings say why. Read from /rosout,
+    where every node publishes its log: rostest starts no rosout node, so /rosout_agg stays
+    silent."""
 
     # rospy's note when a subscriber reaches a topic its publisher has just dropped (a person
     # who left): harmless, and frequent with perception:=detectors.
@@ -53,7 +55,7 @@ class NodeWarnings:
         self.lock = threading.Lock()
         self.lines = collections.deque(maxlen=keep)
         self.me = rospy.get_name()
-        rospy.Subscriber("/rosout_agg", Log, self.on_log, queue_size=100)
+        rospy.Subscriber("/rosout", Log, self.on_log, queue_size=100)
 
     def on_log(self, msg):
         if msg.level >= Log.WARN and msg.name != self.me and not msg.msg.startswith(self.IGNORED):
