@@ -7,29 +7,32 @@
 namespace ari_social_sim::rendering {
 namespace {
 
+// Throws RenderError with the driver's log when a shader did not compile or a program did not
+// link: `get_status` and `get_log` are glGetShaderiv and glGetShaderInfoLog, or the Program pair.
+void check_built(GLuint object, GLenum status, void (*get_status)(GLuint, GLenum, GLint*),
+                 void (*get_log)(GLuint, GLsizei, GLsizei*, GLchar*), const char* failure) {
+  GLint ok = GL_FALSE;
+  get_status(object, status, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048];
+    get_log(object, sizeof(log), nullptr, log);
+    throw RenderError(std::string(failure) + log);
+  }
+}
+
 GLuint compile(GLenum stage, const char* source) {
   const GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    throw RenderError(std::string("shader compilation failed: ") + log);
-  }
+  check_built(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog,
+              "shader compilation failed: ");
   return shader;
 }
 
 void link_or_throw(GLuint program) {
   glLinkProgram(program);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[2048];
-    glGetProgramInfoLog(program, sizeof(log), nullptr, log);
-    throw RenderError(std::string("shader linking failed: ") + log);
-  }
+  check_built(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog,
+              "shader linking failed: ");
 }
 
 }  // namespace
