@@ -12,6 +12,7 @@ add_library(ari_physics
   src/physics/joint_servo.cpp
   src/physics/joint_trajectory.cpp
   src/physics/multibody_layout.cpp
+  src/physics/people_reports.cpp
   src/physics/person_shape.cpp
   src/physics/physics_config.cpp
   src/physics/physics_run_config.cpp
@@ -57,6 +58,7 @@ if(CATKIN_ENABLE_TESTING)
       test/physics/test_physics_config.cpp
       test/physics/test_ari_physics.cpp
       test/physics/test_lean_multibody_solver.cpp
+      test/physics/test_people_reports.cpp
     LIBRARIES ari_physics)
   # The Bullet-level test builds its own worlds with the solver's private headers.
   target_include_directories(test_physics SYSTEM PRIVATE /usr/include/bullet)

@@ -24,6 +24,7 @@
 #include "ari_social_sim/model/tracked_person.hpp"
 #include "ari_social_sim/model/world_file.hpp"
 #include "ari_social_sim/physics/ari_physics.hpp"
+#include "ari_social_sim/physics/people_reports.hpp"
 #include "ari_social_sim/physics/physics_run_config.hpp"
 #include "ari_social_sim/rendering/renderer.hpp"
 #include "ari_social_sim/world/scene.hpp"
@@ -102,7 +103,9 @@ class PhysicsNode {
     diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     declare_inputs();
     cmd_vel_sub_ = nh_.subscribe(kCmdVelTopic, kCheckedInputQueue, &PhysicsNode::on_cmd_vel, this);
-    world_state_sub_ = nh_.subscribe(kWorldStateTopic, 1, &PhysicsNode::on_world_state, this);
+    // Every state: each is drawn over its own world step (PeopleReports).
+    world_state_sub_ = nh_.subscribe(kWorldStateTopic, physics::PeopleReports::kCapacity,
+                                     &PhysicsNode::on_world_state, this);
     for (const auto& controller : physics_->controllers()) {
       controllers_.push_back(
           std::make_unique<ControllerInterface>(nh_, *controller, *physics_, clock_));
@@ -173,7 +176,7 @@ class PhysicsNode {
         clock_.origin_s = now_s - physics_->time_s();
         anchored = true;
       }
-      if (clock_.now_s() + 0.5 * physics_->config().step_s < now_s) {
+      if (clock_.now_s() + 0.5 * physics_->config().step_s < now_s && !awaiting_state(now_s)) {
         advance_to(now_s);
       } else {
         ros::WallDuration(0.0005).sleep();
@@ -181,8 +184,30 @@ class PhysicsNode {
     }
   }
 
+  // world_node publishes its clock's tick to s, then its state at s; roscpp takes the tick on its
+  // own thread, so on a busy machine the clock can reach s before the state has been taken.
+  // Stepping to s then would draw the people of the state before (PeopleReports), a world step
+  // behind what a reader of the images (hri_perception_node's crops) takes them to show: wait for
+  // the state, for at most kMaxStateWait_s of wall time (a world that stopped publishing its
+  // state must not stop the robot).
+  bool awaiting_state(double now_s) {
+    const std::optional<double> newest_s = people_reports_.newest_s();
+    if (!newest_s || *newest_s >= now_s - kSameStamp_s) {
+      state_wait_start_.reset();
+      return false;
+    }
+    const ros::WallTime wall = ros::WallTime::now();
+    if (!state_wait_start_) {
+      state_wait_start_ = wall;
+    }
+    return (wall - *state_wait_start_).toSec() < kMaxStateWait_s;
+  }
+
   void advance_to(double target_s) {
     while (clock_.now_s() + 0.5 * physics_->config().step_s < target_s && ros::ok()) {
+      if (auto people = people_reports_.take_for(clock_.now_s() + physics_->config().step_s)) {
+        physics_->set_people(*people);
+      }
       physics_->step();
       publish_due();
     }
@@ -348,7 +373,7 @@ class PhysicsNode {
       person.seated_fraction = posture_of(human).seated_fraction();
       people.push_back(person);
     }
-    physics_->set_people(people);
+    people_reports_.add(state.header.stamp.toSec(), std::move(people));
   }
 
   // /clock period when this node owns time: fine enough for actionlib and tf, few enough
@@ -358,6 +383,10 @@ class PhysicsNode {
   physics::PhysicsRunConfig config_;
   std::unique_ptr<physics::AriPhysics> physics_;
   SimClock clock_;
+  static constexpr double kSameStamp_s = 1e-6;
+  static constexpr double kMaxStateWait_s = 0.25;
+  physics::PeopleReports people_reports_;
+  std::optional<ros::WallTime> state_wait_start_;
   double next_publish_s_{0.0};
   double next_ground_truth_s_{0.0};
   uint64_t published_imu_count_{0};

@@ -237,13 +237,16 @@ class HriPerceptionNode {
       ROS_WARN_THROTTLE(5.0, "hri_perception_node: waiting for /map before perceiving");
       return;
     }
-    if (!rate_gate_.take(msg->header.stamp.toSec())) {
-      return;
-    }
     const world::WorldSnapshot snapshot = from_msg(*msg);
     if (run_.crops) {
+      // Every state, perceived or not: the head camera draws each one.
       drawn_->add_state(msg->header.stamp.toSec(), snapshot.humans);
-      project_faces(msg->header.stamp);
+    }
+    if (!rate_gate_.take(msg->header.stamp.toSec())) {
+      if (run_.crops) {
+        cut_pending_image();
+      }
+      return;
     }
     const perception::PerceptionFrame& frame = pipeline_.update(snapshot);
     publish(frame, msg->header.stamp);
@@ -251,10 +254,10 @@ class HriPerceptionNode {
       tracked_faces_.clear();
       tracked_bodies_.clear();
       for (const perception::PerceivedFace& face : frame.faces) {
-        tracked_faces_.emplace_back(face.face_id, face.human);
+        tracked_faces_.push_back({face.face_id, face.human, face.roi});
       }
       for (const perception::PerceivedBody& body : frame.bodies) {
-        tracked_bodies_.emplace_back(body.body_id, body.human);
+        tracked_bodies_.push_back({body.body_id, body.human, body.roi});
       }
       tracked_time_s_ = frame.time_s;
       cut_pending_image();
@@ -292,32 +295,6 @@ class HriPerceptionNode {
              kHeadImageTopic, static_cast<unsigned long>(seed), face_size_);
   }
 
-  // With the head camera known: each person's face box in its image now, for the faces' roi, so
-  // that roi and cropped show the same region of the rendered image.
-  void project_faces(const ros::Time& stamp) {
-    projected_faces_.clear();
-    if (!head_camera_ || drawn_->empty()) {
-      return;
-    }
-    std_msgs::Header header;
-    header.stamp = stamp;
-    header.frame_id = head_camera_frame_;
-    const std::optional<Eigen::Isometry3d> X_map_optical = camera_pose(header, kMaxRoiPoseAge_s);
-    if (!X_map_optical) {
-      return;
-    }
-    const rendering::PinholeModel& camera = *head_camera_;
-    for (const auto& [id, box] :
-         rendering::face_boxes(drawn_->pose_at(stamp.toSec()), camera, *X_map_optical)) {
-      perception::ImageRegion roi;
-      roi.xmin = double(box.x) / camera.width;
-      roi.ymin = double(box.y) / camera.height;
-      roi.xmax = double(box.x + box.width) / camera.width;
-      roi.ymax = double(box.y + box.height) / camera.height;
-      projected_faces_[static_cast<model::ObjectId>(id)] = roi;
-    }
-  }
-
   void on_camera_info(const sensor_msgs::CameraInfo::ConstPtr& msg) {
     const std::optional<rendering::PinholeModel> model = pinhole_of(*msg);
     if (!model) {
@@ -325,7 +302,6 @@ class HriPerceptionNode {
       return;
     }
     head_camera_ = model;
-    head_camera_frame_ = msg->header.frame_id;
   }
 
   // Where the camera was at `header`'s stamp; or, when the stamp is not in the buffer, the latest
@@ -369,8 +345,9 @@ class HriPerceptionNode {
   }
 
   // An image waits for the camera's pose at its stamp (robot_state_publisher sends the head's
-  // transforms a little after the physics renders): it is cut when the pose has come, on the
-  // next world state or image, or with the latest pose once it has waited kMaxImageWait_s.
+  // transforms a little after the physics renders) and for the world state it was drawn from
+  // (on a busy machine it can come after the image): it is cut when both have come, on the next
+  // world state or image, or with the latest pose and state once it has waited kMaxImageWait_s.
   void on_image(const sensor_msgs::Image::ConstPtr& msg) {
     pending_image_ = msg;  // one waiting at a time: a newer image replaces it
     cut_pending_image();
@@ -386,7 +363,7 @@ class HriPerceptionNode {
     if (tf_buffer_) {
       X_map_optical = camera_pose(msg->header, waited ? kMaxPoseAge_s : 0.0);
     }
-    if (!X_map_optical && !waited) {
+    if ((!X_map_optical || !drawn_->has_state_for(msg->header.stamp.toSec())) && !waited) {
       return;  // again later
     }
     pending_image_.reset();
@@ -402,22 +379,22 @@ class HriPerceptionNode {
 
   // Whether anyone listens to a crop of the last perceived frame's faces and bodies.
   bool crops_wanted() {
-    for (const auto& [id, human] : tracked_faces_) {
-      FaceTopics& topics = faces_.of(id, tracked_time_s_);
+    for (const TrackedPart& face : tracked_faces_) {
+      FaceTopics& topics = faces_.of(face.id, tracked_time_s_);
       if (wanted(topics.cropped) || wanted(topics.aligned)) {
         return true;
       }
     }
-    for (const auto& [id, human] : tracked_bodies_) {
-      if (wanted(bodies_.of(id, tracked_time_s_).cropped)) {
+    for (const TrackedPart& body : tracked_bodies_) {
+      if (wanted(bodies_.of(body.id, tracked_time_s_).cropped)) {
         return true;
       }
     }
     return false;
   }
 
-  // The crops of one image, the camera at X_map_optical, for the last perceived frame's faces
-  // and bodies.
+  // The faces' roi and the crops of one image, the camera at X_map_optical, for the last perceived
+  // frame's faces and bodies.
   void cut(const sensor_msgs::Image& msg, const Eigen::Isometry3d& X_map_optical) {
     if (!head_camera_ || drawn_->empty() || tracked_time_s_ < 0.0 ||
         (tracked_faces_.empty() && tracked_bodies_.empty())) {
@@ -430,8 +407,11 @@ class HriPerceptionNode {
                         head_camera_->height);
       return;
     }
+    const std::vector<rendering::PosedPerson>& posed_people =
+        drawn_->pose_at(msg.header.stamp.toSec());
+    publish_face_rois(posed_people, X_map_optical, msg.header);
     if (!crops_wanted()) {
-      return;  // no-one listens: no conversion, no projection
+      return;  // no-one listens: no conversion
     }
     const cv::Mat image = bgr_of(msg);
     if (image.empty()) {
@@ -440,16 +420,16 @@ class HriPerceptionNode {
       return;
     }
     std::map<model::ObjectId, const rendering::PosedPerson*> posed;
-    for (const rendering::PosedPerson& person : drawn_->pose_at(msg.header.stamp.toSec())) {
+    for (const rendering::PosedPerson& person : posed_people) {
       posed[static_cast<model::ObjectId>(person.id)] = &person;
     }
     const rendering::CameraView view{image, *head_camera_, X_map_optical};
-    for (const auto& [id, human] : tracked_faces_) {
-      const auto found = posed.find(human);
+    for (const TrackedPart& face : tracked_faces_) {
+      const auto found = posed.find(face.human);
       if (found == posed.end()) {
         continue;
       }
-      FaceTopics& topics = faces_.of(id, tracked_time_s_);
+      FaceTopics& topics = faces_.of(face.id, tracked_time_s_);
       const std::optional<rendering::FaceImages> images = rendering::face_images(
           *found->second, view, face_size_, {wanted(topics.cropped), wanted(topics.aligned)});
       if (images && !images->cropped.empty()) {
@@ -459,9 +439,9 @@ class HriPerceptionNode {
         topics.aligned.publish(image_msg(images->aligned, msg.header));
       }
     }
-    for (const auto& [id, human] : tracked_bodies_) {
-      const auto found = posed.find(human);
-      BodyTopics& topics = bodies_.of(id, tracked_time_s_);
+    for (const TrackedPart& body : tracked_bodies_) {
+      const auto found = posed.find(body.human);
+      BodyTopics& topics = bodies_.of(body.id, tracked_time_s_);
       if (found == posed.end() || !wanted(topics.cropped)) {
         continue;
       }
@@ -470,6 +450,25 @@ class HriPerceptionNode {
       }
     }
   }
+  // ~crops: each face's roi as the head image shows it, with the image's header, as a detector
+  // publishes it with its crops (the model's box where the image has no face of theirs).
+  void publish_face_rois(const std::vector<rendering::PosedPerson>& posed,
+                         const Eigen::Isometry3d& X_map_optical, const std_msgs::Header& header) {
+    const rendering::PinholeModel& camera = *head_camera_;
+    const std::map<uint32_t, rendering::PixelBox> boxes =
+        rendering::face_boxes(posed, camera, X_map_optical);
+    for (const TrackedPart& face : tracked_faces_) {
+      perception::ImageRegion roi = face.roi;
+      if (const auto box = boxes.find(static_cast<uint32_t>(face.human)); box != boxes.end()) {
+        roi.xmin = double(box->second.x) / camera.width;
+        roi.ymin = double(box->second.y) / camera.height;
+        roi.xmax = double(box->second.x + box->second.width) / camera.width;
+        roi.ymax = double(box->second.y + box->second.height) / camera.height;
+      }
+      faces_.of(face.id, tracked_time_s_).roi.publish(roi_msg(roi, 1.0, header));
+    }
+  }
+
   void publish(const perception::PerceptionFrame& frame, const ros::Time& stamp) {
     std_msgs::Header header;
     header.stamp = stamp;
@@ -485,10 +484,10 @@ class HriPerceptionNode {
     }
     for (const perception::PerceivedFace& face : frame.faces) {
       FaceTopics& topics = faces_.of(face.face_id, now_s);
-      // ~crops: where the rendered face is, as in the cropped image; otherwise the model's box.
-      const auto projected = projected_faces_.find(face.human);
-      topics.roi.publish(
-          roi_msg(projected != projected_faces_.end() ? projected->second : face.roi, 1.0, header));
+      // ~crops: the roi comes with the head image's crops, once that camera is known.
+      if (!run_.crops || !head_camera_) {
+        topics.roi.publish(roi_msg(face.roi, 1.0, header));
+      }
       topics.expression.publish(expression_msg(face, header));
       topics.softbiometrics.publish(softbiometrics_msg(face, header));
       std_msgs::Bool mask;
@@ -609,18 +608,21 @@ class HriPerceptionNode {
   std::map<perception::ProxemicSpace, std::vector<std::string>> sent_in_space_;
 
   // ~crops
-  // How far from an image's stamp the camera's pose may be, once it has waited for its own; and
-  // from a world state's, for the faces' roi (the head's transforms come ~0.1 s late).
+  // How far from an image's stamp the camera's pose may be, once it has waited for its own (the
+  // head's transforms come ~0.1 s late).
   static constexpr double kMaxPoseAge_s = 0.1;
-  static constexpr double kMaxRoiPoseAge_s = 0.5;
   static constexpr double kMaxImageWait_s = 0.5;
   sensor_msgs::Image::ConstPtr pending_image_;
   std::optional<rendering::DrawnPeople> drawn_;
-  // The last perceived frame's faces and bodies, with the human each belongs to.
-  std::vector<std::pair<std::string, model::ObjectId>> tracked_faces_, tracked_bodies_;
+  // The last perceived frame's faces and bodies: their id, the human each belongs to and the
+  // model's roi.
+  struct TrackedPart {
+    std::string id;
+    model::ObjectId human;
+    perception::ImageRegion roi;
+  };
+  std::vector<TrackedPart> tracked_faces_, tracked_bodies_;
   double tracked_time_s_{-1.0};
-  std::map<model::ObjectId, perception::ImageRegion> projected_faces_;  // this state's
-  std::string head_camera_frame_;
   int face_size_{kDefaultFaceSize};
   std::optional<rendering::PinholeModel> head_camera_;
   std::unique_ptr<RenewingTfBuffer> tf_buffer_;

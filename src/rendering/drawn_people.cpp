@@ -24,6 +24,10 @@ void DrawnPeople::add_state(double time_s, std::vector<world::HumanSnapshot> hum
   }
 }
 
+bool DrawnPeople::has_state_for(double time_s) const {
+  return !states_.empty() && states_.back().first >= time_s - kSameTime_s;
+}
+
 const std::vector<PosedPerson>& DrawnPeople::pose_at(double time_s) {
   size_t next = 0;  // the first state stamped no earlier than the image, else the last
   while (next + 1 < states_.size() && states_[next].first < time_s - kSameTime_s) {

@@ -43,25 +43,32 @@ def wait_until_finished(recorder, timeout_s):
 
 class NodeWarnings:
     """The last warnings and errors the other nodes logged. A scenario's reason says that ARI's
-    navigation failed; social_mpc_node's and scenario_node's warnings say why. Read from /rosout,
-    where every node publishes its log: rostest starts no rosout node, so /rosout_agg stays
-    silent."""
+    navigation failed; scenario_node's and social_mpc_node's warnings say why, so theirs come
+    first (CI shows only the start of a failure's message). Read from /rosout, where every node
+    publishes its log: rostest starts no rosout node, so /rosout_agg stays silent."""
 
-    # rospy's note when a subscriber reaches a topic its publisher has just dropped (a person
-    # who left): harmless, and frequent with perception:=detectors.
-    IGNORED = "Could not process inbound connection"
+    # The ROS transport's notes when a connection drops as its other end goes (a person who left,
+    # a tool that asked once): harmless, frequent with perception:=detectors, and long enough to
+    # push the cause out of CI's view. rospy's, then roscpp's.
+    IGNORED = ("Could not process inbound connection", "Inbound TCP/IP connection failed")
+    # The nodes that say why ARI did not get where it was going.
+    FIRST = ("/scenario_node", "/social_mpc_node")
 
     def __init__(self, keep=8):
         self.lock = threading.Lock()
         self.lines = collections.deque(maxlen=keep)
+        self.first_lines = collections.deque(maxlen=keep)
         self.me = rospy.get_name()
         rospy.Subscriber("/rosout", Log, self.on_log, queue_size=100)
 
     def on_log(self, msg):
-        if msg.level >= Log.WARN and msg.name != self.me and not msg.msg.startswith(self.IGNORED):
-            with self.lock:
-                self.lines.append("%s: %s" % (msg.name, msg.msg))
+        if msg.level < Log.WARN or msg.name == self.me or msg.msg.startswith(self.IGNORED):
+            return
+        with self.lock:
+            lines = self.first_lines if msg.name in self.FIRST else self.lines
+            lines.append("%s: %s" % (msg.name, msg.msg))
 
     def text(self):
         with self.lock:
-            return "; ".join(self.lines) if self.lines else "no warnings logged"
+            lines = list(self.first_lines) + list(self.lines)
+        return "; ".join(lines) if lines else "no warnings logged"

@@ -222,9 +222,8 @@ class HeadCrops(unittest.TestCase):
             # Searched in the body box's top half (the check below wants its top tenth).
             bx, by, bw, bh = body_box
             face_box, error = locate_face(image, bgr_of(face), (bx, by, bw, max(30, bh // 2)))
-            # The ROI of the world state of the image's stamp (the head camera renders on world
-            # steps; before its first camera_info the node publishes its model's ROI, by the last
-            # crops it has it).
+            # The ROI published with the crops, from the same image (before its first
+            # camera_info the node publishes its model's ROI, by the last crops it has it).
             rois = [r for r in self.rois if abs((r.header.stamp - face.header.stamp).to_sec()) < 1e-3]
             if not rois:
                 continue

@@ -30,6 +30,9 @@ class DrawnPeople {
   /// world was reset) starts the history afresh.
   void add_state(double time_s, std::vector<world::HumanSnapshot> humans);
   bool empty() const { return states_.empty(); }
+  /// Whether the world state an image stamped `time_s` was drawn from has come (one stamped no
+  /// earlier): until then pose_at would pose an older state, a world step behind the image.
+  bool has_state_for(double time_s) const;
 
   /// Poses the figures as the physics drew them in an image stamped `time_s` (empty() must be
   /// false). The physics receives the world state stamped s with the clock's tick to s, before
