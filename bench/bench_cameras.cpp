@@ -53,6 +53,7 @@ rendering::RenderMesh figures_at(double t_s, size_t count, rendering::PeopleFigu
     person.pose = placements[i].pose;
     person.face_yaw_rad = placements[i].face_yaw;
     person.velocity_mps = i == 2 ? Eigen::Vector2d(0.0, 1.2) : Eigen::Vector2d::Zero();
+    person.walked_m = person.velocity_mps.norm() * t_s;
     person.speaking = i == 0;
     people.push_back(person);
   }

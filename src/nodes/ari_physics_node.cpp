@@ -371,6 +371,7 @@ class PhysicsNode {
       person.emotion = static_cast<model::Emotion>(human.emotion);
       person.speaking = human.speech.is_speaking;
       person.seated_fraction = posture_of(human).seated_fraction();
+      person.walked_m = human.walked_distance;
       people.push_back(person);
     }
     people_reports_.add(state.header.stamp.toSec(), std::move(people));

@@ -607,6 +607,11 @@ void AriPhysics::Engine::move_people(double dt) {
         core::angle_difference(expected_theta, person.state.pose.theta) / kPersonCatchUpS;
     person.state.pose.position += dt * person.state.velocity_mps;
     person.state.pose.theta += dt * person.state.angular_velocity_rps;
+    // The gait goes on from the report's as the world's would: walking on at its speed.
+    if (person.reported.seated_fraction == 0.0) {
+      person.state.walked_m =
+          person.reported.walked_m + (since + dt) * person.reported.velocity_mps.norm();
+    }
     person.motion->setWorldTransform(to_bt(planar_pose(person.state.pose)));
   }
 }

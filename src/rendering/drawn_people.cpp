@@ -42,6 +42,9 @@ const std::vector<PosedPerson>& DrawnPeople::pose_at(double time_s) {
     FigureInput input = figure_input_of(human);
     input.pose.position += ahead_s * human.velocity_mps;
     input.pose.theta += ahead_s * human.angular_velocity_rps;
+    if (input.seated == 0.0) {
+      input.walked_m += ahead_s * human.velocity_mps.norm();
+    }
     people.push_back(input);
   }
   figures_time_s_ = std::max(figures_time_s_, time_s);

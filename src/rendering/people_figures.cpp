@@ -35,6 +35,7 @@ FigureInput figure_input_of(const world::HumanSnapshot& human) {
   input.head_pitch_rad = human.head_pitch_rad;
   input.speaking = human.speech.is_speaking;
   input.seated = human.posture.seated_fraction();
+  input.walked_m = human.walked_m;
   return input;
 }
 
@@ -47,6 +48,7 @@ FigureInput figure_input_of(const physics::PersonState& person) {
   input.head_pitch_rad = person.head_pitch_rad;
   input.speaking = person.speaking;
   input.seated = person.seated_fraction;
+  input.walked_m = person.walked_m;
   return input;
 }
 
@@ -62,12 +64,8 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     auto found = people_.find(id);
     if (found == people_.end() || found->second.traits != input.traits) {
       // Someone first seen speaking is already gesturing.
-      Person person{input.traits,
-                    HumanFigure(appearance_of(input.traits, appearance_seed_)),
-                    0.0,
-                    time_s,
-                    input.speaking ? 1.0 : 0.0,
-                    WeightShifts(appearance_seed_, id)};
+      Person person{input.traits, HumanFigure(appearance_of(input.traits, appearance_seed_)),
+                    time_s, input.speaking ? 1.0 : 0.0, WeightShifts(appearance_seed_, id)};
       found = people_.insert_or_assign(id, std::move(person)).first;
     }
     Person& person = found->second;
@@ -75,9 +73,6 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     const double speed = input.seated > 0.0 ? 0.0 : input.velocity_mps.norm();
     const double dt = std::max(0.0, time_s - person.last_time_s);
     person.last_time_s = time_s;
-    const double stride = kStrideShare * person.figure.appearance().height_m;
-    person.gait_phase_rad =
-        std::fmod(person.gait_phase_rad + 2.0 * M_PI * speed * dt / stride, 2.0 * M_PI);
     person.gesture += ((input.speaking ? 1.0 : 0.0) - person.gesture) *
                       (1.0 - std::exp(-dt / kGestureTimeConstantS));
 
@@ -87,7 +82,8 @@ void PeopleFigures::update(double time_s, const std::vector<FigureInput>& people
     posed.pose.body = input.pose;
     posed.pose.head_yaw_rad = input.face_yaw_rad;
     posed.pose.head_pitch_rad = input.head_pitch_rad;
-    posed.pose.gait_phase_rad = person.gait_phase_rad;
+    const double stride = kStrideShare * person.figure.appearance().height_m;
+    posed.pose.gait_phase_rad = 2.0 * M_PI * std::fmod(input.walked_m, stride) / stride;
     posed.pose.seated = input.seated;
     posed.pose.gait_amplitude =
         speed < kStandingSpeedMps ? 0.0 : std::min(1.0, speed / kBriskSpeedMps);

@@ -25,6 +25,8 @@ using namespace ari_social_sim;
 constexpr int kUsageError = 2;
 // Picks the people's looks; fixed so that the pictures stay the same from run to run.
 constexpr uint64_t kAppearanceSeed = 1;
+// How long the pictures' walkers have walked: half a second, mid-stride.
+constexpr double kWalkedS = 0.5;
 
 constexpr const char* kUsage = R"(Usage:
   render_cameras --world WORLD_YAML --out DIR [--overwrite]
@@ -118,6 +120,7 @@ rendering::FigureInput person(uint32_t id, double age, model::Gender gender, boo
   input.pose = pose;
   input.face_yaw_rad = face_yaw;
   input.velocity_mps = velocity;
+  input.walked_m = kWalkedS * velocity.norm();
   input.speaking = speaking;
   return input;
 }
@@ -235,8 +238,8 @@ int render(const Job& job) {
   rendering::CameraFrame frame;
   for (const Shot& shot : shots()) {
     rendering::PeopleFigures figures(kAppearanceSeed);
-    // Half a second of walking so that walkers are mid-stride.
-    for (double t = 0.0; t <= 0.5; t += 0.05) {
+    // Half a second so that speakers gesture (walkers have walked for kWalkedS).
+    for (double t = 0.0; t <= kWalkedS; t += 0.05) {
       figures.update(t, shot.people);
     }
     rig.set_dynamic_mesh(figures.mesh());

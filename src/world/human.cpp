@@ -190,6 +190,9 @@ void Human::sync_from_body(double dt_s) {
   pose_.position = {position.x, position.y};
   const b2Vec2 velocity = body()->GetLinearVelocity();
   velocity_ = {velocity.x, velocity.y};
+  if (posture_.seated_fraction() == 0.0) {
+    walked_m_ += velocity_.norm() * dt_s;
+  }
   ARI_DCHECK(pose_.position.allFinite() && velocity_.allFinite() && std::isfinite(pose_.theta));
 }
 

@@ -68,6 +68,7 @@ WorldSnapshot WorldSnapshot::of(const Simulation& simulation) {
     h.head_pitch_rad = human->head_pitch_rad(snapshot.time_s);
     h.speech = snapshot_of(human->speech());
     h.posture = human->posture();
+    h.walked_m = human->walked_m();
     snapshot.humans.push_back(std::move(h));
   }
   for (const GroupNavigation* group : simulation.groups()) {

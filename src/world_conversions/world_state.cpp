@@ -107,6 +107,7 @@ WorldState to_msg(const world::WorldSnapshot& snapshot, const std::string& frame
     h.posture = human.posture.posture == world::Posture::kSitting ? HumanState::POSTURE_SITTING
                                                                   : HumanState::POSTURE_STANDING;
     h.posture_progress = static_cast<float>(human.posture.progress);
+    h.walked_distance = human.walked_m;
     msg.humans.push_back(std::move(h));
   }
   for (const world::GroupSnapshot& group : snapshot.groups) {
@@ -201,6 +202,7 @@ world::WorldSnapshot from_msg(const WorldState& msg) {
     human.head_pitch_rad = h.head_pitch;
     human.speech = from_msg(h.speech);
     human.posture = posture_of(h);
+    human.walked_m = h.walked_distance;
     snapshot.humans.push_back(std::move(human));
   }
   for (const GroupState& g : msg.groups) {
@@ -323,6 +325,9 @@ std::optional<InputProblem> input_problem(const WorldState& msg) {
     check.that(h.posture_progress >= 0.0f && h.posture_progress <= 1.0f,
                field + ".posture_progress",
                core::number_text(h.posture_progress) + ", not in [0, 1]");
+    check.that(h.walked_distance >= 0.0 && std::isfinite(h.walked_distance),
+               field + ".walked_distance",
+               core::number_text(h.walked_distance) + ", not a finite distance of 0 m or more");
   }
   for (size_t i = 0; i < msg.groups.size(); ++i) {
     const std::string field = "groups[" + std::to_string(i) + "]";

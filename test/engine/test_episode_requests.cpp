@@ -135,6 +135,7 @@ TEST(EpisodeRequests, TheInProcessCommandsLeaveTheWorldAsTheWorldsApiDoes) {
     EXPECT_EQ(a.speech.previous_act, b.speech.previous_act) << "human " << b.id;
     EXPECT_EQ(a.posture.posture, b.posture.posture) << "human " << b.id;
     EXPECT_EQ(a.posture.progress, b.posture.progress) << "human " << b.id;
+    EXPECT_EQ(a.walked_m, b.walked_m) << "human " << b.id;
   }
   // Zoe walked her 4 m east and looks at Ana; Ana walked north out of group 1, which was dropped;
   // group 2 is Max and Luc.

@@ -19,10 +19,17 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
   auto simulation = world::build_simulation(scene, world::SimulationConfig{});
   simulation->say(20, "INFORM", "over there by the window");
   simulation->set_human_reaction(21, world::ReactionProfile::kAvoid);
+  // Patient 30 walks to reception: the length of her path, step by step.
+  double path_m = 0.0;
   for (int i = 0; i < 30; ++i) {
+    const Eigen::Vector2d before = world::WorldSnapshot::of(*simulation).humans[5].pose.position;
     simulation->step();
+    path_m += (world::WorldSnapshot::of(*simulation).humans[5].pose.position - before).norm();
   }
   const world::WorldSnapshot truth = world::WorldSnapshot::of(*simulation);
+  ASSERT_EQ(truth.humans[5].id, 30u);
+  EXPECT_GT(path_m, 0.5);
+  EXPECT_NEAR(truth.humans[5].walked_m, path_m, 0.01 * path_m);
   const world::WorldSnapshot back = from_msg(to_msg(truth, "map"));
   EXPECT_EQ(back.time_s, truth.time_s);
   EXPECT_EQ(back.step, truth.step);
@@ -52,7 +59,9 @@ TEST(WorldStateConversion, SnapshotSurvivesTheMessage) {
     EXPECT_EQ(b.speech.is_speaking, a.speech.is_speaking);
     EXPECT_EQ(b.speech.start_s, a.speech.start_s);
     EXPECT_EQ(b.speech.words_per_minute, a.speech.words_per_minute);
+    EXPECT_EQ(b.walked_m, a.walked_m);
   }
+
   EXPECT_TRUE(back.humans[2].speech.is_speaking);  // human 20
   // Human 21 avoids ARI.
   EXPECT_EQ(back.humans[3].reaction, world::ReactionProfile::kAvoid);
@@ -121,6 +130,10 @@ TEST(WorldStateInput, EveryNumberTheConsumersUseMustBeFiniteAndEnumsKnown) {
        "humans[1].motion_mode: 200, not one of 0..3"},
       {[&](WorldState& m) { m.humans[0].gaze.direction = nan; },
        "humans[0].gaze.direction: nan, not a finite number"},
+      {[&](WorldState& m) { m.humans[2].walked_distance = -0.5; },
+       "humans[2].walked_distance: -0.5, not a finite distance of 0 m or more"},
+      {[&](WorldState& m) { m.humans[0].walked_distance = nan; },
+       "humans[0].walked_distance: nan, not a finite distance of 0 m or more"},
       {[&](WorldState& m) { m.humans[1].reaction = "shy"; },
        "humans[1].reaction: 'shy', not one of ignore, yield, curious, avoid or block"},
       {[&](WorldState& m) { m.groups.at(0).ospace_radius = nan; },

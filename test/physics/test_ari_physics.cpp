@@ -41,6 +41,27 @@ TEST(AriPhysics, StandsStillOnItsWheels) {
   EXPECT_EQ(physics.diagnostics().nan_resets, 0u);
 }
 
+// A person's walked distance goes on from their report at their reported speed, as
+// rendering::DrawnPeople takes it to (the cameras' gait phase); a seated person's stays.
+TEST(AriPhysics, PeopleWalkOnTheirWalkedDistanceFromTheirReport) {
+  AriPhysics physics(ari(), walled_floor(), {{0.0, 0.0}, 0.0}, PhysicsConfig{});
+  PersonState walker;
+  walker.id = 10;
+  walker.pose = {{2.0, 2.0}, 0.0};
+  walker.velocity_mps = {0.6, 0.8};  // 1 m/s
+  walker.walked_m = 3.0;
+  PersonState sitter = walker;
+  sitter.id = 11;
+  sitter.pose.position.y() = -2.0;
+  sitter.seated_fraction = 0.5;  // sitting down: the feet stay put
+  physics.set_people({walker, sitter});
+  run(physics, 0.2);
+  const std::vector<PersonState> people = physics.people_states();
+  ASSERT_EQ(people.size(), 2u);
+  EXPECT_NEAR(people[0].walked_m, 3.2, 1e-9);
+  EXPECT_EQ(people[1].walked_m, 3.0);
+}
+
 TEST(AriPhysics, StaysParked) {
   // Ten seconds without commands after settling: the wheels hold their angles (odometry does not
   // move) and the base stays within a millimetre and a milliradian of where it stood.

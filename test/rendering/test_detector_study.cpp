@@ -97,6 +97,9 @@ class StudyScenes {
     figures_ = PeopleFigures(seed);
     const double walked_s = rng.uniform(0.0, 1.5);
     figures_.update(0.0, people);
+    for (FigureInput& person : people) {
+      person.walked_m = walked_s * person.velocity_mps.norm();
+    }
     figures_.update(walked_s, people);
     rig_.set_dynamic_mesh(figures_.mesh());
     CameraFrame image;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "ari_social_sim/rendering/drawn_people.hpp"
 
 namespace ari_social_sim::rendering {
@@ -51,6 +53,31 @@ TEST(DrawnPeople, AnImageShowsTheNextStateWalkedOnFromThePreviousStamp) {
   // Later than the last state: the last, walked on from the stamp before it.
   const PosedPerson& later = only(drawn.pose_at(1.2));
   EXPECT_NEAR(later.pose.body.position.y(), -0.4, 1e-12);
+}
+
+// The gait phase is the walked distance, walked on as the position is, in strides of 0.8 of
+// stature: whoever poses the figure from the same state (the physics, ~crops) poses it alike.
+TEST(DrawnPeople, TheGaitIsTheWalkedDistanceWalkedOn) {
+  DrawnPeople drawn(1);
+  world::HumanSnapshot human = walker(4, {2.0, 0.0}, {0.0, 1.0}, 0.0);
+  human.walked_m = 3.0;
+  drawn.add_state(1.0, {human});
+  const PosedPerson& person = only(drawn.pose_at(1.05));
+  const double stride = 0.8 * person.figure->appearance().height_m;
+  EXPECT_NEAR(person.pose.gait_phase_rad, 2.0 * M_PI * std::fmod(3.1, stride) / stride, 1e-9);
+  // Posed again later from an earlier image: the same phase (no state of its own in the figures).
+  drawn.pose_at(1.2);
+  EXPECT_NEAR(only(drawn.pose_at(1.05)).pose.gait_phase_rad,
+              2.0 * M_PI * std::fmod(3.1, stride) / stride, 1e-9);
+}
+
+TEST(DrawnPeople, AnImageWaitsForAStateStampedNoEarlier) {
+  DrawnPeople drawn(1);
+  EXPECT_FALSE(drawn.has_state_for(1.0));
+  drawn.add_state(1.0, {walker(4, {2.0, 0.0}, {1.0, 0.0}, 0.0)});
+  EXPECT_TRUE(drawn.has_state_for(0.98));
+  EXPECT_TRUE(drawn.has_state_for(1.0));
+  EXPECT_FALSE(drawn.has_state_for(1.02));  // drawn from the state of 1.05, not here yet
 }
 
 TEST(DrawnPeople, AnImageBeforeEveryStateIsNotWalkedBackwards) {

@@ -71,7 +71,8 @@ TEST(FigureRegions, BoxesHoldTheRenderedFaceAndBody) {
     person.velocity_mps = c.velocity_mps;
     PeopleFigures figures(1);
     figures.update(0.0, {person});
-    figures.update(0.4, {person});  // a gait phase other than the first
+    person.walked_m = 0.4 * c.velocity_mps.norm();  // a gait phase other than the first
+    figures.update(0.4, {person});
     renderer.set_dynamic_mesh(figures.mesh());
     RenderedImage image;
     ViewOptions options;
@@ -129,8 +130,8 @@ TEST(FigureRegions, StrideBoxHoldsAWalkerWhateverTheirGaitPhase) {
   renderer.set_static_primitives({});
   const PinholeModel model = PinholeModel::from_horizontal_fov(1280, 960, 62.2 * kDeg);
   const Eigen::Isometry3d X_world_optical = test::level_camera_facing_x({0.0, 0.0, 1.4});
-  // Walking across the view, 2.5 m ahead: the renderer's figures have walked for a while (their
-  // gait phase advanced), ours start now.
+  // Walking across the view, 2.5 m ahead: the renderer's figure has walked for a while (its gait
+  // phase advanced), ours is guessed at the first phase.
   FigureInput person;
   person.traits.id = 3;
   person.pose = {{2.5, -0.3}, M_PI / 2};
@@ -139,8 +140,9 @@ TEST(FigureRegions, StrideBoxHoldsAWalkerWhateverTheirGaitPhase) {
   for (const double walked_s : {0.13, 0.29, 0.47, 0.61}) {
     SCOPED_TRACE(walked_s);
     PeopleFigures drawn(1), ours(1);
-    drawn.update(0.0, {person});
-    drawn.update(walked_s, {person});
+    FigureInput walked_on = person;
+    walked_on.walked_m = 1.3 * walked_s;
+    drawn.update(walked_s, {walked_on});
     ours.update(0.0, {person});
     renderer.set_dynamic_mesh(drawn.mesh());
     RenderedImage image;

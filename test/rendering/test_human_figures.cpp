@@ -166,7 +166,8 @@ TEST(HumanFigure, RenderedFigureIsAsTallAsTheStatureAndStridesWhenWalking) {
     person.velocity_mps = {0.0, speed};
     PeopleFigures figures;
     figures.update(0.0, {person});
-    figures.update(0.4, {person});  // a quarter stride on: legs apart
+    person.walked_m = 0.4 * speed;  // a quarter stride on: legs apart
+    figures.update(0.4, {person});
     renderer.set_dynamic_mesh(figures.mesh());
     renderer.render(model, X_world_optical, options, image);
     const cv::Rect box = cv::boundingRect(image.labels > 0);

@@ -46,6 +46,7 @@ struct PersonState {
   model::Emotion emotion{model::Emotion::kNeutral};
   bool speaking{false};
   double seated_fraction{0.0};  // 0 standing, 1 seated (world::PostureState::seated_fraction)
+  double walked_m{0.0};         // world::HumanSnapshot::walked_m, walked on to now
 };
 
 /// A person's 3D shape at one instant, for collisions and rendering.

@@ -23,7 +23,8 @@ struct FigureInput {
   double face_yaw_rad{0.0};                               // gaze direction, map frame
   double head_pitch_rad{0.0};                             // positive: down (a nod)
   bool speaking{false};
-  double seated{0.0};  // 0 standing, 1 seated (world::PostureState::seated_fraction)
+  double seated{0.0};    // 0 standing, 1 seated (world::PostureState::seated_fraction)
+  double walked_m{0.0};  // on foot so far (world::HumanSnapshot::walked_m): the gait's phase
 };
 
 FigureInput figure_input_of(const world::HumanSnapshot& human);
@@ -40,8 +41,9 @@ struct PosedPerson {
 };
 
 /// Everyone's figure, built once per person (again only when their traits change) and posed each
-/// frame: the dynamic part of the cameras' scene. Also keeps each person's gait phase, which
-/// advances with the distance they walk, and their weight shifts while they stand.
+/// frame: the dynamic part of the cameras' scene. A person's gait phase follows the distance they
+/// have walked (FigureInput::walked_m), so that whoever poses them from the same world state
+/// poses them alike; they shift their weight while they stand.
 class PeopleFigures {
  public:
   /// `appearance_seed` with each person's id draws their look (appearance_of) and when they
@@ -67,7 +69,6 @@ class PeopleFigures {
   struct Person {
     HumanTraits traits;
     HumanFigure figure;
-    double gait_phase_rad{0.0};
     double last_time_s{0.0};
     double gesture{0.0};  // FigurePose::gesture, following whether they speak
     WeightShifts weight_shifts;

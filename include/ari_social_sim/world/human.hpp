@@ -181,6 +181,11 @@ class Human : public Object {
   /// Null until a profile other than kIgnore was set.
   const RobotReaction* reaction() const { return reaction_; }
 
+  /// How far the human has walked on foot since entering the world (not while seated or changing
+  /// posture): every camera's figure of them takes its gait phase from it, so that a reader of
+  /// the images (hri_perception_node's crops) poses them as drawn.
+  double walked_m() const { return walked_m_; }
+
   void apply_motion(const StepContext& context) override;
   void sync_from_body(double dt_s) override;
 
@@ -208,6 +213,7 @@ class Human : public Object {
   std::optional<GazeEvent> conversation_gaze_;
   std::optional<HeadNod> nod_;
   PostureState posture_;
+  double walked_m_{0.0};
 };
 
 }  // namespace ari_social_sim::world

@@ -54,6 +54,7 @@ struct HumanSnapshot {
   double head_pitch_rad{0.0};  // positive: down; a nod (docs/world.md "Conversation")
   SpeechSnapshot speech;
   PostureState posture;  // standing or sitting, and how far a change into it has got
+  double walked_m{0.0};  // on foot, since entering the world: where the figures' gait is
 };
 
 struct AriSnapshot {
