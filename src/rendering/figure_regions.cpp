@@ -50,13 +50,6 @@ double PixelBox::iou(const PixelBox& other) const {
   return total > 0.0 ? overlap / total : 0.0;
 }
 
-PixelBox PixelBox::united(const PixelBox& other) const {
-  const int x0 = std::min(x, other.x), y0 = std::min(y, other.y);
-  const int x1 = std::max(x + width, other.x + other.width);
-  const int y1 = std::max(y + height, other.y + other.height);
-  return {x0, y0, x1 - x0, y1 - y0};
-}
-
 std::optional<PixelBox> projected_box(const PinholeModel& model,
                                       const Eigen::Isometry3d& X_optical_frame,
                                       const std::vector<Eigen::Vector3d>& points) {
@@ -115,26 +108,12 @@ std::optional<PixelBox> body_region(const RenderMesh& mesh, const VertexRange& v
   return bounds.box(model);
 }
 
-std::optional<PixelBox> stride_body_region(const HumanFigure& figure, const FigurePose& pose,
-                                           const PinholeModel& model,
-                                           const Eigen::Isometry3d& X_world_optical) {
-  constexpr int kGaitSamples = 8;
+std::optional<PixelBox> posed_body_region(const HumanFigure& figure, const FigurePose& pose,
+                                          const PinholeModel& model,
+                                          const Eigen::Isometry3d& X_world_optical) {
   RenderMesh mesh;
-  std::optional<PixelBox> all;
-  for (int i = 0; i <= (pose.gait_amplitude > 0.0 ? kGaitSamples : 0); ++i) {
-    FigurePose sample = pose;
-    if (i > 0) {
-      sample.gait_phase_rad = 2.0 * M_PI * (i - 1) / kGaitSamples;
-    }
-    mesh.vertices.clear();
-    figure.append_posed(sample, 0.0f, 0.0f, mesh);
-    const std::optional<PixelBox> box =
-        body_region(mesh, VertexRange{0, mesh.vertex_count()}, model, X_world_optical);
-    if (box) {
-      all = all ? all->united(*box) : *box;
-    }
-  }
-  return all;
+  figure.append_posed(pose, 0.0f, 0.0f, mesh);
+  return body_region(mesh, VertexRange{0, mesh.vertex_count()}, model, X_world_optical);
 }
 
 std::optional<std::array<Eigen::Vector2d, 2>> eye_pixels(const HumanFigure& figure,

@@ -39,7 +39,7 @@ std::optional<FaceImages> face_images(const PosedPerson& person, const CameraVie
 
 std::optional<cv::Mat> body_image(const PosedPerson& person, const CameraView& view) {
   const std::optional<PixelBox> box =
-      stride_body_region(*person.figure, person.pose, view.camera, view.X_map_optical);
+      posed_body_region(*person.figure, person.pose, view.camera, view.X_map_optical);
   if (!box) {
     return std::nullopt;
   }

@@ -102,7 +102,7 @@ TEST(PeopleCrops, OnlyTheWantedFaceImagesAreMade) {
 TEST(PeopleCrops, TheBodyIsCutAtTheImagesResolution) {
   const Scene scene({2.5, 0.3});
   const std::optional<PixelBox> box =
-      stride_body_region(*scene.person().figure, scene.person().pose, kCamera, kCameraPose);
+      posed_body_region(*scene.person().figure, scene.person().pose, kCamera, kCameraPose);
   ASSERT_TRUE(box);
   const cv::Mat image = coordinate_image();
   const std::optional<cv::Mat> body = body_image(scene.person(), {image, kCamera, kCameraPose});

@@ -27,8 +27,6 @@ struct PixelBox {
   bool empty() const { return width <= 0 || height <= 0; }
   /// Intersection over union; 0 when either box is empty.
   double iou(const PixelBox& other) const;
-  /// The smallest box holding both.
-  PixelBox united(const PixelBox& other) const;
   bool contains(int u, int v) const { return u >= x && u < x + width && v >= y && v < y + height; }
   /// Whether the box, clipped to a width x height image, meets its border: what it bounds is
   /// cut off there.
@@ -66,14 +64,10 @@ std::optional<PixelBox> body_region(const RenderMesh& mesh, const VertexRange& v
                                     const PinholeModel& model,
                                     const Eigen::Isometry3d& X_world_optical);
 
-/// The body's box whatever the phase of its stride: the union of the body boxes of `figure`
-/// posed at `pose` and at `pose` with its gait phase replaced by each of eight phases around the
-/// cycle. For a figure someone else draws, whose gait phase is not known here (PeopleFigures
-/// advances it from when it first drew the person); for a person standing still (no gait
-/// amplitude) the box of `pose`.
-std::optional<PixelBox> stride_body_region(const HumanFigure& figure, const FigurePose& pose,
-                                           const PinholeModel& model,
-                                           const Eigen::Isometry3d& X_world_optical);
+/// The body box (body_region) of `figure` posed at `pose`, for a figure posed outside a mesh.
+std::optional<PixelBox> posed_body_region(const HumanFigure& figure, const FigurePose& pose,
+                                          const PinholeModel& model,
+                                          const Eigen::Isometry3d& X_world_optical);
 
 /// The images of the figure's eyes (HumanFigure::eyes), right eye first; nullopt when either is
 /// behind the camera. Not clipped: an eye may lie outside the image.

@@ -46,7 +46,7 @@ struct FaceImages {
 std::optional<FaceImages> face_images(const PosedPerson& person, const CameraView& view,
                                       int face_size, FaceImagesWanted wanted);
 
-/// `person`'s body as cut from the image, whatever the phase of their stride (stride_body_region);
+/// `person`'s body as cut from the image: the box of their posed figure (posed_body_region);
 /// nullopt when their body is not in the image.
 std::optional<cv::Mat> body_image(const PosedPerson& person, const CameraView& view);
 
