@@ -39,8 +39,8 @@ class DrawnPeople {
   /// it steps (and renders) from the previous state's stamp s_prev to s, and walks the people on
   /// from their state at s by their velocity times the time since it received it (ari_physics,
   /// step 4): an image stamped in (s_prev, s] shows the state s walked on by time_s - s_prev, one
-  /// world step ahead of the truth at time_s. The figures' time never goes backwards: the gait
-  /// advances with it.
+  /// world step ahead of the truth at time_s, their walked distance (the gait's phase) walked on
+  /// alike. The figures' time never goes backwards: the gestures follow speech with it.
   const std::vector<PosedPerson>& pose_at(double time_s);
 
  private:
