@@ -191,8 +191,7 @@ class PhysicsNode {
   // the state, for at most kMaxStateWait_s of wall time (a world that stopped publishing its
   // state must not stop the robot).
   bool awaiting_state(double now_s) {
-    const std::optional<double> newest_s = people_reports_.newest_s();
-    if (!newest_s || *newest_s >= now_s - kSameStamp_s) {
+    if (people_reports_.has_report_for(now_s)) {
       state_wait_start_.reset();
       return false;
     }
@@ -384,7 +383,6 @@ class PhysicsNode {
   physics::PhysicsRunConfig config_;
   std::unique_ptr<physics::AriPhysics> physics_;
   SimClock clock_;
-  static constexpr double kSameStamp_s = 1e-6;
   static constexpr double kMaxStateWait_s = 0.25;
   physics::PeopleReports people_reports_;
   std::optional<ros::WallTime> state_wait_start_;

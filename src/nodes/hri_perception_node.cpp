@@ -237,15 +237,17 @@ class HriPerceptionNode {
       ROS_WARN_THROTTLE(5.0, "hri_perception_node: waiting for /map before perceiving");
       return;
     }
+    const bool perceived = rate_gate_.take(msg->header.stamp.toSec());
+    if (!perceived && !run_.crops) {
+      return;
+    }
     const world::WorldSnapshot snapshot = from_msg(*msg);
     if (run_.crops) {
       // Every state, perceived or not: the head camera draws each one.
       drawn_->add_state(msg->header.stamp.toSec(), snapshot.humans);
     }
-    if (!rate_gate_.take(msg->header.stamp.toSec())) {
-      if (run_.crops) {
-        cut_pending_image();
-      }
+    if (!perceived) {
+      cut_pending_image();  // ~crops only
       return;
     }
     const perception::PerceptionFrame& frame = pipeline_.update(snapshot);

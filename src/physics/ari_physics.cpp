@@ -20,6 +20,7 @@
 #include "ari_social_sim/core/rng_streams.hpp"
 #include "ari_social_sim/physics/ari_controllers.hpp"
 #include "ari_social_sim/physics/multibody_layout.hpp"
+#include "ari_social_sim/world/walked_distance.hpp"
 #include "joint_servo.hpp"
 #include "lean_multibody_solver.hpp"
 
@@ -608,10 +609,8 @@ void AriPhysics::Engine::move_people(double dt) {
     person.state.pose.position += dt * person.state.velocity_mps;
     person.state.pose.theta += dt * person.state.angular_velocity_rps;
     // The gait goes on from the report's as the world's would: walking on at its speed.
-    if (person.reported.seated_fraction == 0.0) {
-      person.state.walked_m =
-          person.reported.walked_m + (since + dt) * person.reported.velocity_mps.norm();
-    }
+    person.state.walked_m = world::walked_on(person.reported.walked_m, person.reported.velocity_mps,
+                                             person.reported.seated_fraction, since + dt);
     person.motion->setWorldTransform(to_bt(planar_pose(person.state.pose)));
   }
 }

@@ -19,6 +19,10 @@ void PeopleReports::add(double time_s, std::vector<PersonState> people) {
   }
 }
 
+bool PeopleReports::has_report_for(double time_s) const {
+  return !newest_s_ || *newest_s_ >= time_s - kSameTime_s;
+}
+
 std::optional<std::vector<PersonState>> PeopleReports::take_for(double step_end_s) {
   // Keep the newest even when it is older than the step: it is the best there is.
   while (reports_.size() > 1 && reports_.front().first < step_end_s - kSameTime_s) {

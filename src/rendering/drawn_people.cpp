@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "ari_social_sim/world/walked_distance.hpp"
+
 namespace ari_social_sim::rendering {
 
 namespace {
@@ -42,9 +44,7 @@ const std::vector<PosedPerson>& DrawnPeople::pose_at(double time_s) {
     FigureInput input = figure_input_of(human);
     input.pose.position += ahead_s * human.velocity_mps;
     input.pose.theta += ahead_s * human.angular_velocity_rps;
-    if (input.seated == 0.0) {
-      input.walked_m += ahead_s * human.velocity_mps.norm();
-    }
+    input.walked_m = world::walked_on(input.walked_m, human.velocity_mps, input.seated, ahead_s);
     people.push_back(input);
   }
   figures_time_s_ = std::max(figures_time_s_, time_s);

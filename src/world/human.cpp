@@ -10,6 +10,7 @@
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/world/human_navigation.hpp"
 #include "ari_social_sim/world/step_motion.hpp"
+#include "ari_social_sim/world/walked_distance.hpp"
 
 namespace ari_social_sim::world {
 
@@ -190,9 +191,7 @@ void Human::sync_from_body(double dt_s) {
   pose_.position = {position.x, position.y};
   const b2Vec2 velocity = body()->GetLinearVelocity();
   velocity_ = {velocity.x, velocity.y};
-  if (posture_.seated_fraction() == 0.0) {
-    walked_m_ += velocity_.norm() * dt_s;
-  }
+  walked_m_ = walked_on(walked_m_, velocity_, posture_.seated_fraction(), dt_s);
   ARI_DCHECK(pose_.position.allFinite() && velocity_.allFinite() && std::isfinite(pose_.theta));
 }
 

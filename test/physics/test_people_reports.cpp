@@ -46,7 +46,8 @@ TEST(PeopleReports, APhysicsBehindTheWorldDrawsEachStateOverItsOwnStep) {
 
 TEST(PeopleReports, EachReportIsHandedOutOnce) {
   PeopleReports reports;
-  EXPECT_FALSE(reports.take_for(0.01));  // nothing yet
+  EXPECT_TRUE(reports.has_report_for(0.01));  // a world that never reported holds nothing up
+  EXPECT_FALSE(reports.take_for(0.01));       // nothing yet
   reports.add(0.05, person_at(1.0));
   ASSERT_TRUE(reports.take_for(0.01));
   EXPECT_FALSE(reports.take_for(0.02));  // the same report, already in force
@@ -66,7 +67,8 @@ TEST(PeopleReports, APhysicsAheadOfTheWorldTakesTheNewestThereIs) {
   const auto next = reports.take_for(0.16);
   ASSERT_TRUE(next);
   EXPECT_EQ(x_of(*next), 3.0);
-  EXPECT_EQ(reports.newest_s(), 0.15);
+  EXPECT_TRUE(reports.has_report_for(0.15));
+  EXPECT_FALSE(reports.has_report_for(0.16));
 }
 
 TEST(PeopleReports, AResetWorldStartsAfresh) {
@@ -76,7 +78,8 @@ TEST(PeopleReports, AResetWorldStartsAfresh) {
   ASSERT_TRUE(reports.take_for(5.01));
   // Reset to 0: the states from before are dropped and the new one is handed out.
   reports.add(0.05, person_at(7.0));
-  EXPECT_EQ(reports.newest_s(), 0.05);
+  EXPECT_TRUE(reports.has_report_for(0.05));
+  EXPECT_FALSE(reports.has_report_for(0.1));
   const auto people = reports.take_for(0.01);
   ASSERT_TRUE(people);
   EXPECT_EQ(x_of(*people), 7.0);

@@ -31,8 +31,9 @@ class PeopleReports {
   /// report was already handed out, or nothing was ever queued.
   std::optional<std::vector<PersonState>> take_for(double step_end_s);
 
-  /// The stamp of the newest report queued; nullopt before the first.
-  std::optional<double> newest_s() const { return newest_s_; }
+  /// Whether the report for the physics' time `time_s` has come (one stamped no earlier), or none
+  /// ever did: stepping to `time_s` without it would draw the report before.
+  bool has_report_for(double time_s) const;
 
  private:
   std::deque<std::pair<double, std::vector<PersonState>>> reports_;
