@@ -106,7 +106,11 @@ void Navigator::follow_relabelled_person(const PerceivedScene& scene) {
   const bool needs_group = std::holds_alternative<GroupOfPersonTarget>(*target_);
   if (const PersonEstimate* person = scene.find_person(*person_id)) {
     target_person_seen_at_ = person->position;
-    if (!needs_group || scene.group_of(*person_id) != nullptr) {
+    const GroupEstimate* group = scene.group_of(*person_id);
+    if (group != nullptr) {
+      target_members_ = group->members;
+    }
+    if (!needs_group || group != nullptr) {
       return;
     }
   }
@@ -123,10 +127,42 @@ void Navigator::follow_relabelled_person(const PerceivedScene& scene) {
       nearest_m = distance_m;
     }
   }
+  if (nearest == nullptr && needs_group) {
+    nearest = newcomer_in_target_group(scene);
+  }
   if (nearest != nullptr) {
     *person_id = nearest->id;
     target_person_seen_at_ = nearest->position;
   }
+}
+
+const PersonEstimate* Navigator::newcomer_in_target_group(const PerceivedScene& scene) const {
+  const auto remembered = [&](const std::string& id) {
+    return std::find(target_members_.begin(), target_members_.end(), id) != target_members_.end();
+  };
+  const PersonEstimate* nearest = nullptr;
+  double nearest_m = 0.0;
+  for (const GroupEstimate& group : scene.groups) {
+    const auto kept =
+        static_cast<size_t>(std::count_if(group.members.begin(), group.members.end(), remembered));
+    // Every other member is still there and nobody is missing: the target's place is taken by
+    // an id the group did not have, the target's new one. A group that shrank lost the target.
+    if (kept + 1 < target_members_.size() || group.members.size() < target_members_.size()) {
+      continue;
+    }
+    for (const std::string& id : group.members) {
+      const PersonEstimate* person = scene.find_person(id);
+      if (person == nullptr || remembered(id)) {
+        continue;
+      }
+      const double distance_m = (person->position - *target_person_seen_at_).norm();
+      if (nearest == nullptr || distance_m < nearest_m) {
+        nearest = person;
+        nearest_m = distance_m;
+      }
+    }
+  }
+  return nearest;
 }
 
 void Navigator::cancel() {

@@ -425,5 +425,30 @@ TEST(Navigator, JoinsTheGroupOfAPersonTrackedTwiceUnderTheIdThatIsGrouped) {
   EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "human11");
 }
 
+TEST(Navigator, JoinsTheGroupOfALostTargetWhoseFaceTrackTookTheirPlace) {
+  // ARI joins anon_x's group; the person manager then ends anon_x's track, and human11, the same
+  // person under the track of her recognised face, is grouped in her place 0.8 m from anon_x's
+  // last estimate, farther than a relabelling moves a track (as CI saw: "the group of person
+  // anonymous_person_hgdeb lost for 5.0 s (person anonymous_person_hgdeb is not tracked)").
+  PerceivedScene body_tracked = group_of_three(Eigen::Vector2d::Zero());
+  const Eigen::Vector2d face_position = body_tracked.people[1].position;
+  body_tracked.people[1].id = "anon_x";
+  // 0.8 m farther from the group's centre (at 5, 5), as a body track's depth errs.
+  body_tracked.people[1].position += 0.8 * (face_position - Eigen::Vector2d(5.0, 5.0)).normalized();
+  body_tracked.groups = {estimate_group("g1", body_tracked.people, 0.64)};
+  PerceivedScene face_tracked = group_of_three(Eigen::Vector2d::Zero());
+  face_tracked.groups[0].id = "g2";
+  ASSERT_NEAR((face_position - body_tracked.people[1].position).norm(), 0.8, 1e-9);
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
+  navigator.start(GroupOfPersonTarget{"anon_x"}, body_tracked, robot, 0.0);
+  for (double t = 0.5; t <= 10.0; t += 0.5) {
+    const NavigatorStep step = navigator.update(t, robot, face_tracked);
+    ASSERT_EQ(step.state, NavigationState::kActive) << t << ": " << step.reason;
+  }
+  EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "human11");
+  // A group that shrank lost its member instead: FollowsATargetPersonThatThePersonManagerRenames.
+}
+
 }  // namespace
 }  // namespace ari_social_sim::navigation

@@ -80,6 +80,12 @@ class Navigator : public GoalController {
   /// their tracks (hri_person_manager's anonymous persons), and the person is still there.
   void follow_relabelled_person(const PerceivedScene& scene);
   static constexpr double kReidentifiedWithinM = 0.5;
+  /// When nobody is within kReidentifiedWithinM of a lost target whose group ARI joins: the
+  /// member nearest to where the target was last seen, of a group that kept every other member
+  /// of the target's last group and is no smaller, among the ids that group did not have. The
+  /// person manager ended the target's track while their face's track stays grouped in their
+  /// place, farther than a relabelling moves a track; nullptr when no group qualifies.
+  const PersonEstimate* newcomer_in_target_group(const PerceivedScene& scene) const;
   /// True when base_footprint at `robot` is within goal_tolerance of the goal, and, for a join,
   /// at most join_shortfall_tolerance short of it along the goal's heading (toward the centre).
   bool at_goal_position(const core::Pose2& robot) const;
@@ -101,7 +107,8 @@ class Navigator : public GoalController {
   std::unique_ptr<GeodesicField> geodesic_;
   std::vector<CostDisc> field_discs_;  // the discs geodesic_ was built with
   double target_seen_s_{0.0};
-  std::vector<std::string> target_members_;               // of a group target, when last reported
+  // Of a group target, or of the group the target person was last seen in.
+  std::vector<std::string> target_members_;
   std::optional<Eigen::Vector2d> target_person_seen_at_;  // of a person's target, when last seen
   bool aligning_{false};                // at the goal position, turning to the goal heading
   std::optional<double> jump_since_s_;  // since when the goal finder wants a distant new goal
