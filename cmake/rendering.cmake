@@ -15,6 +15,7 @@ add_library(ari_rendering
   src/rendering/drawn_people.cpp
   src/rendering/egl_context.cpp
   src/rendering/figure_regions.cpp
+  src/rendering/floor_shade.cpp
   src/rendering/fisheye_renderer.cpp
   src/rendering/frame_motion.cpp
   src/rendering/furniture.cpp
@@ -54,6 +55,7 @@ if(CATKIN_ENABLE_TESTING)
       test/rendering/test_doorways.cpp
       test/rendering/test_drawn_people.cpp
       test/rendering/test_figure_regions.cpp
+      test/rendering/test_floor_shade.cpp
       test/rendering/test_fisheye_renderer.cpp
       test/rendering/test_furniture.cpp
       test/rendering/test_human_figures.cpp

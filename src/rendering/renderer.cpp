@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ari_social_sim/rendering/floor_shade.hpp"
 #include "ari_social_sim/rendering/render_mesh.hpp"
 #include "egl_context.hpp"
 #include "gl_program.hpp"
@@ -473,7 +474,9 @@ void Renderer::set_static_primitives(const std::vector<RenderPrimitive>& primiti
               .cast<float>());
     }
   }
-  impl_->floor_mesh.upload(mesh_of(floors));
+  RenderMesh floor = mesh_of(floors);
+  shade_floor(floor_occluders_of(others), floor);
+  impl_->floor_mesh.upload(floor);
   impl_->static_mesh.upload(mesh_of(others));
   // Every lamp lights the room; the people, lit every frame, by the kMaxLamps nearest the camera.
   for (const GpuMesh* mesh : {&impl_->floor_mesh, &impl_->static_mesh}) {

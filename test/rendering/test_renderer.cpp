@@ -216,15 +216,28 @@ TEST(Renderer, TheRoomLitOnceLooksAsLitEveryFrame) {
   RenderedImage once, every_frame;
   Renderer renderer;
   renderer.set_static_primitives({floor_slab(), lamp, wall, table});
-  renderer.render(model, camera, ViewOptions{}, once);
+  ViewOptions with_depth;
+  with_depth.depth = true;
+  renderer.render(model, camera, with_depth, once);
   renderer.set_static_primitives({floor_slab(), lamp});
   renderer.set_dynamic_primitives({wall, table});
   renderer.render(model, camera, ViewOptions{}, every_frame);
+  // The floor is left out: a static table shades it (FloorShade), one drawn every frame does not.
+  cv::Mat off_floor(model.height, model.width, CV_8U);
+  for (int v = 0; v < model.height; ++v) {
+    for (int u = 0; u < model.width; ++u) {
+      const double height_m = 1.2 - once.depth.at<float>(v, u) * (v - model.cy) / model.fy;
+      off_floor.at<uint8_t>(v, u) = height_m > 0.01 ? 255 : 0;
+    }
+  }
   cv::Mat difference;
   cv::absdiff(once.colour, every_frame.colour, difference);
   double largest = 0.0;
-  cv::minMaxLoc(difference.reshape(1), nullptr, &largest);
-  const double mean = cv::mean(difference)[0];
+  cv::Mat off_floor_rgb;
+  cv::merge(std::vector<cv::Mat>(3, off_floor), off_floor_rgb);
+  cv::minMaxLoc(difference.reshape(1), nullptr, &largest, nullptr, nullptr,
+                off_floor_rgb.reshape(1));
+  const double mean = cv::mean(difference, off_floor)[0];
   std::printf(
       "[ measured ] lit once against lit every frame: largest difference %.0f, mean %.4f "
       "grey levels\n",
@@ -260,6 +273,34 @@ TEST(Renderer, PeopleCastSoftContactShadowsOnTheFloor) {
   // Beside the feet the floor sees less light; a metre and a half away the shadow is gone.
   EXPECT_LT(near_after, 0.95 * near_before);
   EXPECT_NEAR(far_after, far_before, 0.5);
+}
+
+TEST(Renderer, FurnitureOfTheRoomShadesTheFloorRoundIt) {
+  // A cabinet 0.3 m square standing on the floor, seen from 3.5 m above: as part of the room it
+  // darkens the floor round its foot (FloorShade); drawn every frame (as a person is), it does not.
+  const RenderPrimitive cabinet = test::box({0.0, 0.0, 0.3}, {0.3, 0.3, 0.6});
+  const PinholeModel model = PinholeModel::from_horizontal_fov(640, 480, 90.0 * kDeg);
+  const Eigen::Isometry3d X_world_optical = camera_looking_down({0.0, 0.0, 3.5});
+  Renderer renderer;
+  RenderedImage unshaded, shaded;
+  renderer.set_static_primitives({floor_slab()});
+  renderer.set_dynamic_primitives({cabinet});
+  renderer.render(model, X_world_optical, ViewOptions{}, unshaded);
+  renderer.set_static_primitives({floor_slab(), cabinet});
+  renderer.set_dynamic_primitives({});
+  renderer.render(model, X_world_optical, ViewOptions{}, shaded);
+  const auto ring = [&](const RenderedImage& image, double inner, double outer) {
+    return floor_brightness(image, model, X_world_optical, {0.0, 0.0}, inner, outer);
+  };
+  // The rays through the cabinet's top meet the floor under it: the rings start past its corners.
+  const double near_unshaded = ring(unshaded, 0.26, 0.32), near_shaded = ring(shaded, 0.26, 0.32);
+  const double far_unshaded = ring(unshaded, 1.5, 1.7), far_shaded = ring(shaded, 1.5, 1.7);
+  std::printf(
+      "[ measured ] floor 0.26-0.32 m from the cabinet's centre %.1f -> %.1f, 1.5-1.7 m "
+      "%.1f -> %.1f\n",
+      near_unshaded, near_shaded, far_unshaded, far_shaded);
+  EXPECT_LT(near_shaded, 0.95 * near_unshaded);
+  EXPECT_NEAR(far_shaded, far_unshaded, 0.5);
 }
 
 // What cloth's folds do to a cylinder's pixels: its image over the same cylinder's in matte (both

@@ -14,6 +14,7 @@ namespace ari_social_sim::rendering {
 /// triangle is seen (0: nothing to label, such as walls and the robot).
 struct RenderMesh {
   static constexpr int kFloatsPerVertex = 14;
+  static constexpr int kColourOffset = 6;
   static constexpr int kShapePointOffset = 10;
   static constexpr int kLabelOffset = 13;
   std::vector<float> vertices;
