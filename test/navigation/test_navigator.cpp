@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 #include "ari_social_sim/core/angles.hpp"
 #include "ari_social_sim/navigation/navigation_errors.hpp"
@@ -403,6 +404,24 @@ TEST(Navigator, FollowsATargetPersonThatThePersonManagerRenames) {
   EXPECT_NE(step.reason.find("person anon_x is not tracked"), std::string::npos) << step.reason;
 }
 
+// ARI sets out from afar to join the group of `person` in `at_start`, then sees `after` for 10 s,
+// twice the lost-target timeout: the id of the person whose group it still joins, or "" (with a
+// test failure) if it gave up.
+std::string group_joined_for_10_s(const PerceivedScene& at_start, const std::string& person,
+                                  const PerceivedScene& after) {
+  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
+  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
+  navigator.start(GroupOfPersonTarget{person}, at_start, robot, 0.0);
+  for (double t = 0.5; t <= 10.0; t += 0.5) {
+    const NavigatorStep step = navigator.update(t, robot, after);
+    if (step.state != NavigationState::kActive) {
+      ADD_FAILURE() << "not joining at " << t << " s: " << step.reason;
+      return "";
+    }
+  }
+  return std::get<GroupOfPersonTarget>(*navigator.target()).person_id;
+}
+
 TEST(Navigator, JoinsTheGroupOfAPersonTrackedTwiceUnderTheIdThatIsGrouped) {
   // Perception tracks Irene twice: as anon_x (her body, 0.1 m off) and, once her face is
   // recognised, as human11. ARI set out to join anon_x's group; group detection then groups
@@ -415,14 +434,7 @@ TEST(Navigator, JoinsTheGroupOfAPersonTrackedTwiceUnderTheIdThatIsGrouped) {
   body_grouped.groups = {estimate_group("g1", body_grouped.people, 0.64)};
   PerceivedScene face_grouped = group_of_three(Eigen::Vector2d::Zero());
   face_grouped.people.push_back(body_grouped.people[1]);
-  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
-  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
-  navigator.start(GroupOfPersonTarget{"anon_x"}, body_grouped, robot, 0.0);
-  for (double t = 0.5; t <= 10.0; t += 0.5) {
-    const NavigatorStep step = navigator.update(t, robot, face_grouped);
-    ASSERT_EQ(step.state, NavigationState::kActive) << t << ": " << step.reason;
-  }
-  EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "human11");
+  EXPECT_EQ(group_joined_for_10_s(body_grouped, "anon_x", face_grouped), "human11");
 }
 
 TEST(Navigator, JoinsTheGroupOfALostTargetWhoseFaceTrackTookTheirPlace) {
@@ -439,14 +451,7 @@ TEST(Navigator, JoinsTheGroupOfALostTargetWhoseFaceTrackTookTheirPlace) {
   PerceivedScene face_tracked = group_of_three(Eigen::Vector2d::Zero());
   face_tracked.groups[0].id = "g2";
   ASSERT_NEAR((face_position - body_tracked.people[1].position).norm(), 0.8, 1e-9);
-  Navigator navigator(NavigationConfig{}, test::room_map(8.0));
-  const RobotObservation robot{test::pose(1.5, 1.5, 0.0)};
-  navigator.start(GroupOfPersonTarget{"anon_x"}, body_tracked, robot, 0.0);
-  for (double t = 0.5; t <= 10.0; t += 0.5) {
-    const NavigatorStep step = navigator.update(t, robot, face_tracked);
-    ASSERT_EQ(step.state, NavigationState::kActive) << t << ": " << step.reason;
-  }
-  EXPECT_EQ(std::get<GroupOfPersonTarget>(*navigator.target()).person_id, "human11");
+  EXPECT_EQ(group_joined_for_10_s(body_tracked, "anon_x", face_tracked), "human11");
   // A group that shrank lost its member instead: FollowsATargetPersonThatThePersonManagerRenames.
 }
 
