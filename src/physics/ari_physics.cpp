@@ -601,13 +601,17 @@ void AriPhysics::Engine::move_people(double dt) {
         person.reported.pose.position + since * person.reported.velocity_mps;
     const double expected_theta =
         person.reported.pose.theta + since * person.reported.angular_velocity_rps;
-    person.state.velocity_mps =
+    const Eigen::Vector2d glide_mps =
         person.reported.velocity_mps + (expected - person.state.pose.position) / kPersonCatchUpS;
-    person.state.angular_velocity_rps =
+    const double turn_rps =
         person.reported.angular_velocity_rps +
         core::angle_difference(expected_theta, person.state.pose.theta) / kPersonCatchUpS;
-    person.state.pose.position += dt * person.state.velocity_mps;
-    person.state.pose.theta += dt * person.state.angular_velocity_rps;
+    person.state.pose.position += dt * glide_mps;
+    person.state.pose.theta += dt * turn_rps;
+    // The glide is the body's way of keeping up; what they do is the world's walk, whose speed
+    // sets the figure's stride as it does in rendering::DrawnPeople.
+    person.state.velocity_mps = person.reported.velocity_mps;
+    person.state.angular_velocity_rps = person.reported.angular_velocity_rps;
     // The gait goes on from the report's as the world's would: walking on at its speed.
     person.state.walked_m = world::walked_on(person.reported.walked_m, person.reported.velocity_mps,
                                              person.reported.seated_fraction, since + dt);

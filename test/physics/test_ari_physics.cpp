@@ -42,13 +42,17 @@ TEST(AriPhysics, StandsStillOnItsWheels) {
 }
 
 // A person's walked distance goes on from their report at their reported speed, as
-// rendering::DrawnPeople takes it to (the cameras' gait phase); a seated person's stays.
+// rendering::DrawnPeople takes it to (the cameras' gait phase); a seated person's stays. Their
+// velocity stays the reported one (the stride's length) while their body glides to catch up.
 TEST(AriPhysics, PeopleWalkOnTheirWalkedDistanceFromTheirReport) {
   AriPhysics physics(ari(), walled_floor(), {{0.0, 0.0}, 0.0}, PhysicsConfig{});
   PersonState walker;
   walker.id = 10;
   walker.pose = {{2.0, 2.0}, 0.0};
   walker.velocity_mps = {0.6, 0.8};  // 1 m/s
+  walker.walked_m = 3.0;
+  physics.set_people({walker});
+  walker.pose.position.x() += 0.1;  // the next report 0.1 m ahead: the body glides to it
   walker.walked_m = 3.0;
   PersonState sitter = walker;
   sitter.id = 11;
@@ -60,6 +64,7 @@ TEST(AriPhysics, PeopleWalkOnTheirWalkedDistanceFromTheirReport) {
   ASSERT_EQ(people.size(), 2u);
   EXPECT_NEAR(people[0].walked_m, 3.2, 1e-9);
   EXPECT_EQ(people[1].walked_m, 3.0);
+  EXPECT_NEAR((people[0].velocity_mps - walker.velocity_mps).norm(), 0.0, 1e-12);
 }
 
 TEST(AriPhysics, StaysParked) {

@@ -66,7 +66,8 @@ class AriPhysics {
   const StaticScene& scene() const;
   /// The people's shapes now (after their motion since the last set_people).
   std::vector<PersonShape> people() const;
-  /// The people as set_people had them, at the positions their bodies have glided to.
+  /// The people as set_people had them, at the positions their bodies have glided to, with the
+  /// velocities and walked distances of their walk (not of the glide's catch-up).
   std::vector<PersonState> people_states() const;
   /// Pose in the map frame of any URDF link or frame (base_footprint, head_front_camera_color_
   /// optical_frame, ...). Throws core::RequestError for an unknown name.
