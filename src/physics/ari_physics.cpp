@@ -606,12 +606,10 @@ void AriPhysics::Engine::move_people(double dt) {
     const double turn_rps =
         person.reported.angular_velocity_rps +
         core::angle_difference(expected_theta, person.state.pose.theta) / kPersonCatchUpS;
+    // The glide moves the body only: the state keeps the report's velocities (set_people), the
+    // world's walk, whose speed sets the figure's stride as it does in rendering::DrawnPeople.
     person.state.pose.position += dt * glide_mps;
     person.state.pose.theta += dt * turn_rps;
-    // The glide is the body's way of keeping up; what they do is the world's walk, whose speed
-    // sets the figure's stride as it does in rendering::DrawnPeople.
-    person.state.velocity_mps = person.reported.velocity_mps;
-    person.state.angular_velocity_rps = person.reported.angular_velocity_rps;
     // The gait goes on from the report's as the world's would: walking on at its speed.
     person.state.walked_m = world::walked_on(person.reported.walked_m, person.reported.velocity_mps,
                                              person.reported.seated_fraction, since + dt);

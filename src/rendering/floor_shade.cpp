@@ -1,6 +1,5 @@
 #include "ari_social_sim/rendering/floor_shade.hpp"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -30,14 +29,13 @@ bool shades_floor(const RenderPrimitive& primitive) {
   }
 }
 
-// The floor-plan footprint of an upright primitive: its frame's yaw and its extents along its own
-// x and y (a prism's outline's bounds).
+// The floor-plan footprint of an upright primitive: its frame's x axis and its extents along its
+// own x and y (a prism's outline's bounds).
 FloorOccluder footprint_of(const RenderPrimitive& primitive) {
   FloorOccluder occluder;
   const Eigen::Vector3d centre = primitive.X_world_shape.translation();
-  const Eigen::Vector3d x_axis = primitive.X_world_shape.linear().col(0);
   occluder.centre = centre.head<2>();
-  occluder.yaw = std::atan2(x_axis.y(), x_axis.x());
+  occluder.x_axis = primitive.X_world_shape.linear().col(0).head<2>().normalized();
   occluder.half_size = 0.5 * primitive.size.head<2>();
   if (primitive.shape == PrimitiveShape::kPrism && !primitive.outline.empty()) {
     Eigen::Vector2d low = primitive.outline.front(), high = low;
@@ -45,7 +43,9 @@ FloorOccluder footprint_of(const RenderPrimitive& primitive) {
       low = low.cwiseMin(point);
       high = high.cwiseMax(point);
     }
-    occluder.centre += Eigen::Rotation2Dd(occluder.yaw) * (0.5 * (low + high));
+    const Eigen::Vector2d middle = 0.5 * (low + high);
+    const Eigen::Vector2d y_axis(-occluder.x_axis.y(), occluder.x_axis.x());
+    occluder.centre += middle.x() * occluder.x_axis + middle.y() * y_axis;
     occluder.half_size = 0.5 * (high - low);
   }
   occluder.round =
@@ -54,21 +54,30 @@ FloorOccluder footprint_of(const RenderPrimitive& primitive) {
   return occluder;
 }
 
-// The share of the light an occluder leaves at `distance_m` from its footprint.
+// The share of the light an occluder leaves at `distance_m` from its footprint: its darkest shade
+// fading as a Gaussian of the distance over its fade length.
 double openness_past(const FloorOccluder& occluder, double distance_m) {
+  // Past three fade lengths under 1e-4 of the light is missing: most of the floor is that far
+  // from most of the furniture, and the exponential is the cost of shading it.
+  constexpr double kFadesToNoShade = 3.0;
   const double h = occluder.underside_m;
-  if (h < kOnTheFloorM) {
-    return 1.0 - kFootShade * std::exp(-std::pow(distance_m / kFootReachM, 2));
+  const bool on_the_floor = h < kOnTheFloorM;
+  const double fades = distance_m / (on_the_floor ? kFootReachM : 0.5 * h);
+  if (fades > kFadesToNoShade) {
+    return 1.0;
   }
-  const double r2 = occluder.half_size.x() * occluder.half_size.y();  // the disc of equal area / pi
-  const double covered = std::min(0.6, 2.0 * r2 / (r2 + h * h));
-  return 1.0 - covered * std::exp(-std::pow(distance_m / (0.5 * h), 2));
+  // R^2: the area over pi of a round footprint, or of the ellipse inscribed in a box's.
+  const double r2 = occluder.half_size.x() * occluder.half_size.y();
+  const double darkest = on_the_floor ? kFootShade : std::min(0.6, 2.0 * r2 / (r2 + h * h));
+  return 1.0 - darkest * std::exp(-fades * fades);
 }
 
 }  // namespace
 
 double FloorOccluder::distance_to(const Eigen::Vector2d& point) const {
-  const Eigen::Vector2d local = Eigen::Rotation2Dd(-yaw) * (point - centre);
+  const Eigen::Vector2d offset = point - centre;
+  const Eigen::Vector2d local(offset.dot(x_axis),
+                              x_axis.x() * offset.y() - x_axis.y() * offset.x());
   if (round) {
     const Eigen::Vector2d scaled = local.cwiseQuotient(half_size);
     const double norm = scaled.norm();

@@ -12,7 +12,7 @@ namespace ari_social_sim::rendering {
 /// the floor under and around it.
 struct FloorOccluder {
   Eigen::Vector2d centre{Eigen::Vector2d::Zero()};
-  double yaw{0.0};
+  Eigen::Vector2d x_axis{Eigen::Vector2d::UnitX()};    // the footprint's own x, a unit vector
   Eigen::Vector2d half_size{Eigen::Vector2d::Zero()};  // m; for a round one, its radii
   bool round{false};
   double underside_m{0.0};  // 0 for what stands on the floor
