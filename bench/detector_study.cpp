@@ -355,7 +355,7 @@ class Study {
          {std::pair{"alt2", &found.alt2}, std::pair{"default", &found.frontal_default}}) {
       for (const cv::Rect& window : *detections) {
         if (detections_on_people({window}, labels) == 1) {
-          save_crop(rgb, {window.x, window.y, window.width, window.height},
+          save_crop(rgb, box_of(window),
                     "false_" + frame + "_" + name + "_at_" + std::to_string(window.x) + "_" +
                         std::to_string(window.y) + ".png");
         }
@@ -363,11 +363,12 @@ class Study {
     }
   }
 
-  void save_crop(const cv::Mat& rgb, const rendering::PixelBox& face,
+  // A crop twice the size of `box` (a face or a detection window) around it.
+  void save_crop(const cv::Mat& rgb, const rendering::PixelBox& box,
                  const std::string& name) const {
-    const cv::Rect around = cv::Rect(face.x - face.width / 2, face.y - face.height / 2,
-                                     2 * face.width, 2 * face.height) &
-                            cv::Rect(0, 0, rgb.cols, rgb.rows);
+    const cv::Rect around =
+        cv::Rect(box.x - box.width / 2, box.y - box.height / 2, 2 * box.width, 2 * box.height) &
+        cv::Rect(0, 0, rgb.cols, rgb.rows);
     cv::Mat crop;
     cv::cvtColor(rgb(around), crop, cv::COLOR_RGB2BGR);
     const std::string file = misses_dir_ + "/" + name;
