@@ -110,6 +110,36 @@ TEST(HumanAppearance, HairDarkensWithSkinTone) {
   EXPECT_NEAR(static_cast<double>(all_red) / kPeople, 0.023, 0.006);
 }
 
+// Eye colour goes with skin tone as hair does: brown for nearly everyone of the darker tones and a
+// quarter of the lightest, blue-grey for over half of the lightest; over all tones brown about
+// three quarters (70-79 % of the world's people).
+TEST(HumanAppearance, EyesAreBrownForTheDarkerTones) {
+  constexpr int kPeople = 12000;
+  std::array<int, 7> people{}, brown{}, blue{};
+  for (uint32_t id = 0; id < kPeople; ++id) {
+    const HumanAppearance look = appearance_of({id, 30.0, model::Gender::kMale, false}, 5);
+    ++people[look.skin_tone];
+    // Brown irises are red over green and blue; blue-grey ones blue over red; green-hazel ones
+    // green over red.
+    const Eigen::Vector3f& iris = look.iris;
+    brown[look.skin_tone] += iris.x() > iris.y() && iris.x() > iris.z() ? 1 : 0;
+    blue[look.skin_tone] += iris.z() > iris.x() ? 1 : 0;
+  }
+  const auto share = [&](const std::array<int, 7>& counts, int tone) {
+    return static_cast<double>(counts[tone]) / people[tone];
+  };
+  EXPECT_EQ(brown[6], people[6]);
+  EXPECT_GT(share(brown, 5), 0.97);
+  EXPECT_NEAR(share(brown, 1), 0.25, 0.03);
+  EXPECT_NEAR(share(blue, 1), 0.55, 0.03);
+  EXPECT_EQ(blue[5] + blue[6], 0);
+  int all_brown = 0;
+  for (int tone = 1; tone <= 6; ++tone) {
+    all_brown += brown[tone];
+  }
+  EXPECT_NEAR(static_cast<double>(all_brown) / kPeople, 0.735, 0.02);
+}
+
 // Grey hairs come with middle age, later and fewer with darker skin, as Panhard et al. (2012)
 // counted in 4,192 people: at 50, 6-23 % had half their hair grey; between 45 and 65, 74 % had
 // grey hairs, 27 % of their hair on average.

@@ -56,7 +56,8 @@ struct HumanAppearance {
 ///   - Head: 0.13 of an adult's stature (chin to crown), up to 0.21 for a toddler.
 ///   - Skin: six tones from light to dark in about equal shares; hair colour darkening with skin
 ///     tone; grey hairs from middle age, later and fewer with darker skin (Panhard et al. 2012);
-///     clothes from everyday colours.
+///     brown eyes for nearly all of the darker tones, light eyes mostly with the lightest
+///     (Katsara and Nothnagel 2019); clothes from everyday colours.
 ///   - Handedness: one in ten left-handed (Papadatou-Pastou et al. 2020: 10.6 %).
 HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed);
 
