@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -133,10 +134,7 @@ TEST(HumanAppearance, EyesAreBrownForTheDarkerTones) {
   EXPECT_NEAR(share(brown, 1), 0.25, 0.03);
   EXPECT_NEAR(share(blue, 1), 0.55, 0.03);
   EXPECT_EQ(blue[5] + blue[6], 0);
-  int all_brown = 0;
-  for (int tone = 1; tone <= 6; ++tone) {
-    all_brown += brown[tone];
-  }
+  const int all_brown = std::accumulate(brown.begin(), brown.end(), 0);
   EXPECT_NEAR(static_cast<double>(all_brown) / kPeople, 0.735, 0.02);
 }
 
