@@ -12,7 +12,6 @@ add_library(ari_rendering
   src/rendering/camera_sensor.cpp
   src/rendering/depth_image.cpp
   src/rendering/doorways.cpp
-  src/rendering/wall_fittings.cpp
   src/rendering/drawn_people.cpp
   src/rendering/egl_context.cpp
   src/rendering/figure_regions.cpp
@@ -54,7 +53,6 @@ if(CATKIN_ENABLE_TESTING)
       test/rendering/test_camera_rig.cpp
       test/rendering/test_depth_image.cpp
       test/rendering/test_doorways.cpp
-      test/rendering/test_wall_fittings.cpp
       test/rendering/test_drawn_people.cpp
       test/rendering/test_figure_regions.cpp
       test/rendering/test_floor_shade.cpp

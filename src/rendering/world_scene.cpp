@@ -5,7 +5,6 @@
 
 #include "ari_social_sim/rendering/doorways.hpp"
 #include "ari_social_sim/rendering/furniture.hpp"
-#include "ari_social_sim/rendering/wall_fittings.hpp"
 
 namespace ari_social_sim::rendering {
 namespace {
@@ -55,31 +54,6 @@ void add_ceiling(const model::WorldDescription& world, const SceneStyle& style, 
   }
 }
 
-// A world object's outline extruded from the floor to `height`.
-RenderPrimitive extruded(const model::StaticObject& object, double height,
-                         const Eigen::Vector3f& colour, Surface surface) {
-  const Eigen::Isometry3d X = upright_pose(object.pose.position, 0.5 * height, object.pose.theta);
-  switch (object.type) {
-    case model::ShapeType::kCircle:
-      return solid(PrimitiveShape::kCylinder, X,
-                   Eigen::Vector3d(2.0 * object.radius_m, 2.0 * object.radius_m, height), colour,
-                   surface);
-    case model::ShapeType::kPolygon: {
-      // Polygon vertices are in the map frame; the prism's frame sits on their centroid.
-      RenderPrimitive prism =
-          solid(PrimitiveShape::kPrism, upright_pose(object.pose.position, 0.5 * height, 0.0),
-                Eigen::Vector3d(1.0, 1.0, height), colour, surface);
-      for (const Eigen::Vector2d& point : object.points) {
-        prism.outline.emplace_back(point - object.pose.position);
-      }
-      return prism;
-    }
-    default:  // walls and boxes
-      return solid(PrimitiveShape::kBox, X,
-                   Eigen::Vector3d(object.size.x(), object.size.y(), height), colour, surface);
-  }
-}
-
 }  // namespace
 
 std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
@@ -99,8 +73,6 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
     out.insert(out.end(), parts.begin(), parts.end());
   }
 
-  // What stands on the floor, apart: the walls' fittings keep clear of it.
-  std::vector<RenderPrimitive> furniture;
   for (const model::StaticObject& object : world.objects) {
     const bool is_wall = object.type == model::ShapeType::kWall;
     // The world file's height (the physics collides with the same solid); the style's for
@@ -108,21 +80,40 @@ std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription&
     const double height = object.height_m > 0.0
                               ? object.height_m
                               : (is_wall ? style.wall_height_m : style.furniture_height_m);
-    if (is_wall) {
-      out.push_back(extruded(object, height, kWallColour, Surface::kWall));
-    } else if (std::optional<std::vector<RenderPrimitive>> parts =
-                   furniture_of(object, height, world)) {
-      furniture.insert(furniture.end(), parts->begin(), parts->end());
-    } else {
-      furniture.push_back(extruded(object, height, kFurnitureColour, Surface::kWood));
+    const Eigen::Vector3f colour = is_wall ? kWallColour : kFurnitureColour;
+    const Surface surface = is_wall ? Surface::kWall : Surface::kWood;
+    if (!is_wall) {
+      if (std::optional<std::vector<RenderPrimitive>> parts = furniture_of(object, height, world)) {
+        out.insert(out.end(), parts->begin(), parts->end());
+        continue;
+      }
+    }
+    const Eigen::Isometry3d X = upright_pose(object.pose.position, 0.5 * height, object.pose.theta);
+    switch (object.type) {
+      case model::ShapeType::kWall:
+      case model::ShapeType::kBox:
+        out.push_back(solid(PrimitiveShape::kBox, X,
+                            Eigen::Vector3d(object.size.x(), object.size.y(), height), colour,
+                            surface));
+        break;
+      case model::ShapeType::kCircle:
+        out.push_back(solid(PrimitiveShape::kCylinder, X,
+                            Eigen::Vector3d(2.0 * object.radius_m, 2.0 * object.radius_m, height),
+                            colour, surface));
+        break;
+      case model::ShapeType::kPolygon: {
+        // Polygon vertices are in the map frame; the prism's frame sits on their centroid.
+        RenderPrimitive prism =
+            solid(PrimitiveShape::kPrism, upright_pose(object.pose.position, 0.5 * height, 0.0),
+                  Eigen::Vector3d(1.0, 1.0, height), colour, surface);
+        for (const Eigen::Vector2d& point : object.points) {
+          prism.outline.emplace_back(point - object.pose.position);
+        }
+        out.push_back(prism);
+        break;
+      }
     }
   }
-  if (style.wall_fittings) {
-    const std::vector<RenderPrimitive> fittings =
-        wall_fittings_of(world, style.wall_height_m, furniture);
-    out.insert(out.end(), fittings.begin(), fittings.end());
-  }
-  out.insert(out.end(), furniture.begin(), furniture.end());
   // The lamps light each vertex: boxes' faces in facets over which their light hardly changes.
   for (RenderPrimitive& primitive : out) {
     if (primitive.shape == PrimitiveShape::kBox) {

@@ -14,13 +14,12 @@ struct SceneStyle {
   double wall_height_m{2.5};
   double furniture_height_m{0.75};
   bool ceiling{true};          // over a world with walls: its rooms are indoors
-  bool wall_fittings{true};    // closed doors, pictures and notice boards (wall_fittings.hpp)
   double lamp_spacing_m{3.0};  // ceiling lamps on a square grid
   Eigen::Vector2d lamp_size_m{0.6, 1.2};
 };
 
-/// The floor (tiled), walls, furniture of a world, extruded upwards from z = 0, the walls'
-/// fittings, and over a world with walls a ceiling at the walls' top with lamps.
+/// The floor (tiled), walls, furniture of a world, extruded upwards from z = 0, and over a world
+/// with walls a ceiling at the walls' top with lamps.
 std::vector<RenderPrimitive> static_primitives_of(const model::WorldDescription& world,
                                                   const SceneStyle& style);
 
