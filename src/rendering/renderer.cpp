@@ -139,11 +139,13 @@ float floor_tiles(vec2 xy) {
   return grout * (0.96 + 0.06 * hash(floor(tile))) * (0.97 + 0.05 * value_noise(xy * 40.0));
 }
 
-// Paint with a faint roller texture over a dark skirting board and, to 1 m, the darker wall
-// protection (dado) of hospital walls, which trolleys and chairs would otherwise scuff.
+// Paint with a faint roller texture over a grey skirting board and, to 1 m, the charcoal wall
+// protection (dado) of hospital walls, which trolleys and chairs would otherwise scuff. The dado
+// gives a frame dark greys that the darkest faces share, so that a global histogram equalisation
+// spreads their greys rather than crushing them into the bottom few levels.
 float wall_paint(vec3 p) {
   vec2 uv = vec2(p.x + p.y, p.z);
-  float skirting = p.z < 0.1 ? 0.55 : (p.z < 1.0 ? 0.62 : 1.0);
+  float skirting = p.z < 0.1 ? 0.55 : (p.z < 1.0 ? 0.40 : 1.0);
   return skirting * (0.96 + 0.04 * value_noise(uv * 5.0) + 0.03 * value_noise(uv * 70.0));
 }
 
