@@ -91,6 +91,15 @@ double grey_share(double age_years, int tone, double quantile) {
   return std::clamp((age_years - onset) / kYearsToAllGrey, 0.0, 1.0);
 }
 
+// How far the hairline has moved back from a young adult's, in head heights. Men's recedes at the
+// temples and front with age, and balding grows more common (Hamilton 1951; Norwood 1975: about
+// a third of men balding at 50); women's front hairline mostly stays. The amounts are ours: from
+// 25 to 65, up to 0.04 of the head's height (about 9 mm) for men and 0.02 for women.
+double hairline_recession(double age_years, bool female_build) {
+  const double progress = std::clamp((age_years - 25.0) / 40.0, 0.0, 1.0);
+  return (female_build ? 0.02 : 0.04) * progress;
+}
+
 // Pigmented and grey hairs side by side: their light adds up (linear light, display gamma 2.2).
 Eigen::Vector3f greyed(const Eigen::Vector3f& pigmented, double grey) {
   const auto linear = [](const Eigen::Vector3f& c) { return c.array().pow(2.2f).matrix(); };
@@ -149,6 +158,7 @@ HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed) {
   look.skin = kSkinTones[tone];
   look.skin_tone = static_cast<int>(tone) + 1;
   look.hair_grey_share = grey_share(traits.age_years, look.skin_tone, rng.uniform());
+  look.hairline_recession = hairline_recession(traits.age_years, look.female_build);
   look.hair =
       greyed(pick_by_tone(kHairColours, kHairByTone, look.skin_tone, rng), look.hair_grey_share);
   const bool bald = !look.female_build && traits.age_years > 35.0 && rng.bernoulli(0.2);

@@ -340,8 +340,9 @@ std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
     add_part(kHead, false, shape(PrimitiveShape::kSphere, centre, diameters, look_.hair, segments));
   };
   if (look_.hair_style != HairStyle::kBald) {
-    add(Eigen::Vector3d(-0.01 * h, 0.0, 0.15 * h), Eigen::Vector3d(0.75, 0.76, 0.8) * h,
-        kHeadSegments);
+    // The front cap sits back as far as the hairline has receded.
+    add(Eigen::Vector3d((-0.01 - look_.hairline_recession) * h, 0.0, 0.15 * h),
+        Eigen::Vector3d(0.75, 0.76, 0.8) * h, kHeadSegments);
     add(Eigen::Vector3d(-0.19 * h, 0.0, 0.08 * h), Eigen::Vector3d(0.55, 0.74, 0.82) * h,
         kHeadSegments);
   } else {

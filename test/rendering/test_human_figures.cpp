@@ -177,6 +177,24 @@ TEST(HumanAppearance, HairGreysFromMiddleAgeLaterWithDarkerSkin) {
   EXPECT_GT(lighter_at_85, 0.95 * kPeople);
 }
 
+// The hairline recedes from 25 to 65, men's to 0.04 of the head's height and women's to 0.02;
+// nobody's look draws anything for it, so the rest of a look does not change with age.
+TEST(HumanAppearance, TheHairlineRecedesWithAgeFurtherForMen) {
+  const auto look_at = [](double age, model::Gender gender) {
+    return appearance_of({7, age, gender, false}, 11);
+  };
+  for (const model::Gender gender : {model::Gender::kMale, model::Gender::kFemale}) {
+    const double most = gender == model::Gender::kMale ? 0.04 : 0.02;
+    EXPECT_DOUBLE_EQ(look_at(20.0, gender).hairline_recession, 0.0);
+    EXPECT_DOUBLE_EQ(look_at(25.0, gender).hairline_recession, 0.0);
+    EXPECT_NEAR(look_at(45.0, gender).hairline_recession, 0.5 * most, 1e-12);
+    EXPECT_NEAR(look_at(65.0, gender).hairline_recession, most, 1e-12);
+    EXPECT_NEAR(look_at(90.0, gender).hairline_recession, most, 1e-12);
+    EXPECT_EQ(look_at(70.0, gender).skin, look_at(30.0, gender).skin);
+    EXPECT_EQ(look_at(70.0, gender).top, look_at(30.0, gender).top);
+  }
+}
+
 // A person seen from the side 10 m away covers the image rows of their stature, plus at most 3 %
 // (hair, and the perspective of their near side).
 TEST(HumanFigure, RenderedFigureIsAsTallAsTheStatureAndStridesWhenWalking) {

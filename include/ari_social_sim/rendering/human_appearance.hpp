@@ -40,6 +40,7 @@ struct HumanAppearance {
   int skin_tone{2};  // which of the six tones `skin` is: 1 the lightest, 6 the darkest
   Eigen::Vector3f hair{0.24f, 0.16f, 0.10f};  // the colour seen: pigmented and grey hairs mixed
   double hair_grey_share{0.0};                // the share of grey hairs, 0-1
+  double hairline_recession{0.0};  // how far back the hairline has moved, in head heights
   Eigen::Vector3f iris{0.25f, 0.16f, 0.10f};
   Eigen::Vector3f top{0.2f, 0.35f, 0.75f};
   Eigen::Vector3f trousers{0.15f, 0.18f, 0.28f};
@@ -57,7 +58,8 @@ struct HumanAppearance {
 ///   - Skin: six tones from light to dark in about equal shares; hair colour darkening with skin
 ///     tone; grey hairs from middle age, later and fewer with darker skin (Panhard et al. 2012);
 ///     brown eyes for nearly all of the darker tones, light eyes mostly with the lightest
-///     (Katsara and Nothnagel 2019); clothes from everyday colours.
+///     (Katsara and Nothnagel 2019); a hairline that recedes with age, further for men
+///     (Hamilton 1951, Norwood 1975); clothes from everyday colours.
 ///   - Handedness: one in ten left-handed (Papadatou-Pastou et al. 2020: 10.6 %).
 HumanAppearance appearance_of(const HumanTraits& traits, uint64_t seed);
 
