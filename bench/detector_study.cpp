@@ -6,8 +6,8 @@
 // cascade, the cascades on the image and on its histogram-equalised copies: global
 // (cv::equalizeHist, the usual first step before a cascade) and local (CLAHE, clip limit 2 on 8 x 8
 // tiles, the values of OpenCV's tutorial). Scored against the images' labels: recall overall and by
-// skin tone (faces cut by the image's border left out), false detections on turned heads and in
-// frames that show nobody. Prints Markdown tables.
+// skin tone (faces cut by the image's border left out), false detections on turned heads (and the
+// boxes among them that match a face) and in frames that show nobody. Prints Markdown tables.
 //
 // usage: detector_study [--frames N] [--every SECONDS] [--episode-frames N] [--scenarios a,b,...]
 //                       [--misses DIR] [--faces-only]
@@ -317,6 +317,8 @@ class Study {
     if (every_face_turned(labels)) {
       alt2_turned_[e].add(detections_on_people(found.alt2, labels));
       default_turned_[e].add(detections_on_people(found.frontal_default, labels));
+      alt2_turned_faces_[e].add(detections_on_faces(found.alt2, labels));
+      default_turned_faces_[e].add(detections_on_faces(found.frontal_default, labels));
     }
     if (labels.empty()) {
       alt2_empty_[e].add(static_cast<int>(found.alt2.size()));
@@ -397,8 +399,8 @@ class Study {
   // Indexed as kPreprocessingNames.
   std::array<Recall, kPreprocessings> alt2_recall_, default_recall_, profile_recall_,
       profile_centred_;
-  std::array<FalseRate, kPreprocessings> alt2_turned_, default_turned_, alt2_empty_, default_empty_,
-      profile_empty_;
+  std::array<FalseRate, kPreprocessings> alt2_turned_, default_turned_, alt2_turned_faces_,
+      default_turned_faces_, alt2_empty_, default_empty_, profile_empty_;
 };
 
 void print_recall(const char* detector, const char* who, const Recall& r) {
@@ -456,6 +458,10 @@ void Study::print() const {
                 alt2_turned_[e]);
     print_false(("frontal default" + p).c_str(), "every face turned > 45 deg (on people)",
                 default_turned_[e]);
+    print_false(("frontal alt2" + p).c_str(), "of them, boxes on a face (IoU >= 0.5)",
+                alt2_turned_faces_[e]);
+    print_false(("frontal default" + p).c_str(), "of them, boxes on a face (IoU >= 0.5)",
+                default_turned_faces_[e]);
     print_false(("frontal alt2" + p).c_str(), "nobody in view", alt2_empty_[e]);
     print_false(("frontal default" + p).c_str(), "nobody in view", default_empty_[e]);
     print_false(("profile" + p).c_str(), "nobody in view", profile_empty_[e]);

@@ -160,19 +160,20 @@ float triangle_wave(float x) {
 }
 
 // Cloth hanging on a limb or the trunk, in the part's own frame (its axis z, metres): drape folds
-// along the part, six around it, deepening and fading as they go down, and shallow creases across
-// it where the cloth bunches; the folds' valleys see less of the room's light. Polynomials and
-// triangle waves, no transcendental function: llvmpipe pays for each on every cloth pixel, and
-// value noise (four sines a sample) made the ten-person head frame 1.17x slower. The folds' cosine
-// of six times the angle around the axis is Chebyshev's T6 of the angle's cosine.
+// along the part, six around it, deepening and fading as they go down; the folds' valleys see less
+// of the room's light. No creases across the part: rings of them every 14 cm, a dark line between
+// two bright bands, were where the default frontal cascade fired on sleeves and shirts once
+// `equalizeHist` or CLAHE had stretched them (docs/cameras.md, "Clothes without creases").
+// Polynomials and triangle waves, no transcendental function: llvmpipe pays for each on every
+// cloth pixel. The folds' cosine of six times the angle around the axis is Chebyshev's T6 of the
+// angle's cosine.
 float cloth_folds(vec3 p) {
   vec2 around = p.xy * inversesqrt(max(dot(p.xy, p.xy), 1e-8));
   float c2 = around.x * around.x;
   float cos6 = ((32.0 * c2 - 48.0) * c2 + 18.0) * c2 - 1.0;
   float drape = 0.5 + 0.5 * cos6;
   float depth = 0.3 + 0.7 * triangle_wave(1.1 * p.z + 0.3 * around.y);
-  float crease = triangle_wave(7.0 * p.z + 0.4 * around.x + 0.25 * around.y);
-  return 1.0 - 0.18 * depth * drape * drape - 0.08 * smoothstep(0.8, 1.0, crease);
+  return 1.0 - 0.18 * depth * drape * drape;
 }
 
 float texture_of(int surface, vec3 world, vec3 shape) {

@@ -96,6 +96,19 @@ inline int detections_on_people(const std::vector<cv::Rect>& detections,
       }));
 }
 
+/// Of those, the boxes that match a labelled face (IoU >= 0.5): on turned heads, a frontal cascade
+/// boxing a face at the edge of the poses it was trained on, rather than a window on an ear, an
+/// eye, hair or clothes.
+inline int detections_on_faces(const std::vector<cv::Rect>& detections,
+                               const std::vector<PersonLabel>& labels) {
+  return static_cast<int>(
+      std::count_if(detections.begin(), detections.end(), [&](const cv::Rect& d) {
+        return std::any_of(labels.begin(), labels.end(), [&](const PersonLabel& label) {
+          return label.face_box && box_of(d).iou(*label.face_box) >= kMatchIou;
+        });
+      }));
+}
+
 /// Detection rate in bins of one quantity, printed as a Markdown table.
 class RateTable {
  public:

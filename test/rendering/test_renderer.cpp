@@ -367,8 +367,7 @@ TEST(Renderer, ClothFoldsShadeThePartAndTurnWithIt) {
       "[ measured ] cloth over matte: mean %.3f, sd %.3f, darkest %.3f; after a half turn, "
       "from behind %.4f apart, from the front %.4f\n",
       mean[0], spread[0], darkest, same_folds, other_folds);
-  // Folds darken the cloth by up to a quarter (the display value by about a tenth) and vary
-  // across it.
+  // Folds darken the cloth by up to a fifth and vary across it.
   EXPECT_LT(darkest, 0.93);
   EXPECT_GT(mean[0], 0.85);
   EXPECT_GT(spread[0], 0.01);
