@@ -84,16 +84,24 @@ inline PixelBox person_drawn_in_hog_window(const cv::Rect& window) {
   return {window.x + side, window.y + top, window.width - 2 * side, window.height - 2 * top};
 }
 
+/// The detections for which `hits(detection, label)` holds for some label.
+template <typename Hits>
+int detections_where(const std::vector<cv::Rect>& detections,
+                     const std::vector<PersonLabel>& labels, Hits hits) {
+  return static_cast<int>(
+      std::count_if(detections.begin(), detections.end(), [&](const cv::Rect& d) {
+        return std::any_of(labels.begin(), labels.end(),
+                           [&](const PersonLabel& label) { return hits(d, label); });
+      }));
+}
+
 /// The detections that fall on someone (their centre in a person's box): on turned heads when
 /// every face is turned. Those on the room (tiles, furniture) are the empty frames' count.
 inline int detections_on_people(const std::vector<cv::Rect>& detections,
                                 const std::vector<PersonLabel>& labels) {
-  return static_cast<int>(
-      std::count_if(detections.begin(), detections.end(), [&](const cv::Rect& d) {
-        return std::any_of(labels.begin(), labels.end(), [&](const PersonLabel& label) {
-          return label.body_box.contains(d.x + d.width / 2, d.y + d.height / 2);
-        });
-      }));
+  return detections_where(detections, labels, [](const cv::Rect& d, const PersonLabel& label) {
+    return label.body_box.contains(d.x + d.width / 2, d.y + d.height / 2);
+  });
 }
 
 /// Of those, the boxes that match a labelled face (IoU >= 0.5): on turned heads, a frontal cascade
@@ -101,12 +109,9 @@ inline int detections_on_people(const std::vector<cv::Rect>& detections,
 /// eye, hair or clothes.
 inline int detections_on_faces(const std::vector<cv::Rect>& detections,
                                const std::vector<PersonLabel>& labels) {
-  return static_cast<int>(
-      std::count_if(detections.begin(), detections.end(), [&](const cv::Rect& d) {
-        return std::any_of(labels.begin(), labels.end(), [&](const PersonLabel& label) {
-          return label.face_box && box_of(d).iou(*label.face_box) >= kMatchIou;
-        });
-      }));
+  return detections_where(detections, labels, [](const cv::Rect& d, const PersonLabel& label) {
+    return label.face_box && box_of(d).iou(*label.face_box) >= kMatchIou;
+  });
 }
 
 /// Detection rate in bins of one quantity, printed as a Markdown table.
