@@ -30,6 +30,10 @@ namespace ari_social_sim::nodes {
 namespace {
 
 constexpr const char* kArrayFrame = "torso_mic_front_link";
+// Chunks come in bursts when this node catches up with the world (after a lag, or when a paused
+// world is stepped many steps at once); a queue of 10, as the real driver's, would drop all but
+// the last ten of a burst. This holds a minute of audio per subscriber.
+constexpr uint32_t kChunkQueue = 1000;
 
 AudioData audio_msg(const std::vector<int16_t>& samples) {
   AudioData msg;
@@ -47,9 +51,9 @@ class AudioNode {
   AudioNode(const audio::AudioRunConfig& run, const world::Scene& scene)
       : run_(run), walls_(audio::walls_of(scene.world)), seed_(run.seed.value_or(scene.seed)) {
     for (size_t c = 0; c < channels_.size(); ++c) {
-      channels_[c] = nh_.advertise<AudioData>("/audio/channel" + std::to_string(c), 10);
+      channels_[c] = nh_.advertise<AudioData>("/audio/channel" + std::to_string(c), kChunkQueue);
     }
-    raw_ = nh_.advertise<AudioData>("/audio/raw", 10);
+    raw_ = nh_.advertise<AudioData>("/audio/raw", kChunkQueue);
     voice_ = nh_.advertise<std_msgs::Bool>("/audio/voice_detected", 1, /*latch=*/true);
     direction_ = nh_.advertise<std_msgs::Int32>("/audio/sound_direction", 1, /*latch=*/true);
     localization_ =
