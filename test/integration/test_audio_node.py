@@ -43,7 +43,12 @@ def chunks_through(time_s):
 
 
 def chunk_at(time_s):
+    """The index of the chunk that holds the sample at time_s."""
     return int(time_s * SAMPLE_RATE_HZ) // CHUNK_SAMPLES
+
+
+def world_steps(seconds):
+    return int(math.ceil(seconds / WORLD_STEP_S - 1e-9))
 
 
 class AudioNodeTest(unittest.TestCase):
@@ -80,22 +85,21 @@ class AudioNodeTest(unittest.TestCase):
             time.sleep(0.005)
 
     def step(self, seconds):
-        answer = self.step_world(steps=int(math.ceil(seconds / WORLD_STEP_S - 1e-9)))
+        answer = self.step_world(steps=world_steps(seconds))
         self.assertTrue(answer.success, answer.message)
         return answer.sim_time
 
     def step_with_audio(self, seconds):
         """Steps one world step at a time, each once its audio has arrived, as a running world."""
-        time_s = None
-        for _ in range(int(math.ceil(seconds / WORLD_STEP_S - 1e-9))):
-            time_s = self.step(WORLD_STEP_S)
-            self.wait_for_audio_through(time_s)
-        return time_s
+        for _ in range(world_steps(seconds)):
+            self.wait_for_audio_through(self.step(WORLD_STEP_S))
 
     def wait_for_audio_through(self, time_s):
         expected = chunks_through(time_s)
         self.wait_until(lambda: all(len(self.chunks[c]) >= expected for c in range(6)),
                         "%d chunks on every channel" % expected)
+
+    def received_chunks(self):
         with self.lock:
             return {c: list(self.chunks[c]) for c in range(6)}
 
@@ -106,7 +110,8 @@ class AudioNodeTest(unittest.TestCase):
         self.say.wait_for_service(CATCH_UP_WALL_S)
 
         quiet_until = self.step(4.0)
-        chunks = self.wait_for_audio_through(quiet_until)
+        self.wait_for_audio_through(quiet_until)
+        chunks = self.received_chunks()
         for channel, received in chunks.items():
             self.assertEqual(len(received), chunks_through(quiet_until),
                              "channel %d: chunks in %.2f s" % (channel, quiet_until))
@@ -124,11 +129,11 @@ class AudioNodeTest(unittest.TestCase):
         spoken = self.say(speaker_id=10, act="QUESTION:TOILET",
                           content="excuse me where is the toilet please")
         self.assertTrue(spoken.success, spoken.message)
-        finished_at = self.step_with_audio(spoken.duration + 2.0)
-        chunks = self.wait_for_audio_through(finished_at)
-        # The voice's end is published with the chunk after it, long before the last chunk.
-        self.wait_until(lambda: len(self.voice) > voice_before and not self.voice[-1],
-                        "the voice's end on /audio/voice_detected")
+        self.step_with_audio(spoken.duration + 2.0)
+        chunks = self.received_chunks()
+        # voice_detected changes twice, as she starts and as she ends, long before the last chunk.
+        self.wait_until(lambda: len(self.voice) >= voice_before + 2,
+                        "the voice's start and end on /audio/voice_detected")
         with self.lock:
             voice = self.voice[voice_before:]
             directions = self.directions[directions_before:]
@@ -140,6 +145,7 @@ class AudioNodeTest(unittest.TestCase):
         self.assertGreater(loud, -45.0)
         self.assertLess(max(rms_dbfs(m) for m in playback), -80.0)
         self.assertIn(True, voice, "no voice detected")
+        self.assertFalse(voice[-1], "the voice is still detected after the question")
         self.assertGreater(len(directions), 5)
         median = statistics.median(directions)
         print("sound_direction while she spoke: median %d deg of %d, Clara at %.1f deg" %
