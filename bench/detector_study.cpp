@@ -17,7 +17,8 @@
 //                     scenario's frames come from several seeds (1, 2, ...)
 //   --misses: write a crop of each face a frontal cascade misses on the image as it is into DIR
 //             (which must exist), named by scenario, seed, sim time, person, skin tone and
-//             cascade; and a crop of each frontal detection on a turned head ("false_...")
+//             cascade; and a crop of each frontal detection on a turned head ("false_...", with
+//             the turn of the face under it)
 //   --faces-only: the face cascades alone, without HOG (about 2 s a frame at native resolution),
 //                 to measure a change to the faces quickly
 
@@ -52,6 +53,9 @@ using rendering::PersonLabel;
 
 constexpr double kHogScale = 0.35;  // test_detector_study's scale (docs/cameras.md)
 constexpr int kSkinTones = 6;
+// Faces turned this far or more are the profile cascade's (the 60-90 degrees); a frontal
+// window on such a head is false wherever it lies.
+constexpr double kTurnedPastFrontalDeg = 60.0;
 // What the cascades run on: the grey image as it is, equalised globally, equalised locally.
 constexpr int kPreprocessings = 3;
 constexpr const char* kPreprocessingNames[kPreprocessings] = {"", ", equalizeHist", ", CLAHE"};
@@ -246,7 +250,9 @@ class Study {
   // The faces the frontal cascades' recall counts (within 25 deg of the camera) and the profile
   // cascade's (turned 60-90 deg).
   static bool frontal_face(const PersonLabel& label) { return label.face_yaw_deg <= 25.0; }
-  static bool turned_face(const PersonLabel& label) { return label.face_yaw_deg >= 60.0; }
+  static bool turned_face(const PersonLabel& label) {
+    return label.face_yaw_deg >= kTurnedPastFrontalDeg;
+  }
 
   // The person box a HOG window is scored with.
   using PersonInWindow = rendering::PixelBox (*)(const cv::Rect&);
@@ -319,6 +325,10 @@ class Study {
       default_turned_[e].add(detections_on_people(found.frontal_default, labels));
       alt2_turned_faces_[e].add(detections_on_faces(found.alt2, labels));
       default_turned_faces_[e].add(detections_on_faces(found.frontal_default, labels));
+      alt2_turned_away_[e].add(
+          detections_on_people_turned(found.alt2, labels, kTurnedPastFrontalDeg));
+      default_turned_away_[e].add(
+          detections_on_people_turned(found.frontal_default, labels, kTurnedPastFrontalDeg));
     }
     if (labels.empty()) {
       alt2_empty_[e].add(static_cast<int>(found.alt2.size()));
@@ -356,13 +366,24 @@ class Study {
     for (const auto& [name, detections] :
          {std::pair{"alt2", &found.alt2}, std::pair{"default", &found.frontal_default}}) {
       for (const cv::Rect& window : *detections) {
-        if (detections_on_people({window}, labels) == 1) {
+        const PersonLabel* under = person_under(window, labels);
+        if (under != nullptr) {
           save_crop(rgb, box_of(window),
                     "false_" + frame + "_" + name + "_at_" + std::to_string(window.x) + "_" +
-                        std::to_string(window.y) + ".png");
+                        std::to_string(window.y) + "_yaw" +
+                        std::to_string(static_cast<int>(under->face_yaw_deg)) + ".png");
         }
       }
     }
+  }
+
+  // The person whose box holds the window's centre (as detections_on_people counts), if any.
+  static const PersonLabel* person_under(const cv::Rect& window,
+                                         const std::vector<PersonLabel>& labels) {
+    const auto under = std::find_if(labels.begin(), labels.end(), [&](const PersonLabel& label) {
+      return detections_on_people({window}, {label}) == 1;
+    });
+    return under == labels.end() ? nullptr : &*under;
   }
 
   // A crop twice the size of `box` (a face or a detection window) around it.
@@ -400,7 +421,8 @@ class Study {
   std::array<Recall, kPreprocessings> alt2_recall_, default_recall_, profile_recall_,
       profile_centred_;
   std::array<FalseRate, kPreprocessings> alt2_turned_, default_turned_, alt2_turned_faces_,
-      default_turned_faces_, alt2_empty_, default_empty_, profile_empty_;
+      default_turned_faces_, alt2_turned_away_, default_turned_away_, alt2_empty_, default_empty_,
+      profile_empty_;
 };
 
 void print_recall(const char* detector, const char* who, const Recall& r) {
@@ -462,6 +484,10 @@ void Study::print() const {
                 alt2_turned_faces_[e]);
     print_false(("frontal default" + p).c_str(), "of them, boxes on a face (IoU >= 0.5)",
                 default_turned_faces_[e]);
+    print_false(("frontal alt2" + p).c_str(), "of them, on someone turned 60 deg or more",
+                alt2_turned_away_[e]);
+    print_false(("frontal default" + p).c_str(), "of them, on someone turned 60 deg or more",
+                default_turned_away_[e]);
     print_false(("frontal alt2" + p).c_str(), "nobody in view", alt2_empty_[e]);
     print_false(("frontal default" + p).c_str(), "nobody in view", default_empty_[e]);
     print_false(("profile" + p).c_str(), "nobody in view", profile_empty_[e]);

@@ -416,10 +416,12 @@ void HumanFigure::add_eyes() {
                      Eigen::Vector3f(0.9f, 0.88f, 0.84f));
     add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.04, 0.06, 0.06) * h, 0.016 * h,
                      look_.iris * 0.5f);
-    // The upper lid over the eye's top half: skin in the brow's shadow, a little darker than the
-    // skin. Darker (0.6), it read as a second brow under the first, and the default frontal
-    // cascade took the pair for eyes on the near side of turned heads.
-    add_face_feature(kHead, y, 0.018 * h, Eigen::Vector3d(0.06, 0.15, 0.04) * h, 0.02 * h,
+    // The upper lid from the eye's top half up to its crease: skin in the brow's shadow, a little
+    // darker than the skin. Darker (0.6), it read as a second brow under the first. Ending lower
+    // (0.04 of the head tall), it left a band of the dark socket between lid and brow, which from
+    // the side stacked under the brow as a second bar; the default frontal cascade took either
+    // pair for eyes on the near side of turned heads.
+    add_face_feature(kHead, y, 0.022 * h, Eigen::Vector3d(0.06, 0.15, 0.05) * h, 0.02 * h,
                      darker(look_.skin, 0.8f));
     // The outer corner with the lashes, what marks the eye in profile.
     add_face_feature(kHead, y + side * 0.065 * h, 0.005 * h, Eigen::Vector3d(0.08, 0.08, 0.06) * h,

@@ -114,6 +114,17 @@ inline int detections_on_faces(const std::vector<cv::Rect>& detections,
   });
 }
 
+/// Of those, the detections on someone whose face turns `min_yaw_deg` or more from the camera
+/// (over 90: facing away): windows on heads turned past the frontal poses, rather than on a face
+/// at their edge.
+inline int detections_on_people_turned(const std::vector<cv::Rect>& detections,
+                                       const std::vector<PersonLabel>& labels, double min_yaw_deg) {
+  return detections_where(detections, labels, [=](const cv::Rect& d, const PersonLabel& label) {
+    return label.face_yaw_deg >= min_yaw_deg &&
+           label.body_box.contains(d.x + d.width / 2, d.y + d.height / 2);
+  });
+}
+
 /// Detection rate in bins of one quantity, printed as a Markdown table.
 class RateTable {
  public:
