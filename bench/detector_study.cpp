@@ -53,8 +53,8 @@ using rendering::PersonLabel;
 
 constexpr double kHogScale = 0.35;  // test_detector_study's scale (docs/cameras.md)
 constexpr int kSkinTones = 6;
-// Faces turned this far or more are the profile cascade's (the 60-90 degrees); a frontal
-// window on such a head is false wherever it lies.
+// Faces turned this far or more are the profile cascade's (its recall counts 60-90 degrees); a
+// frontal window on such a head is false wherever it lies.
 constexpr double kTurnedPastFrontalDeg = 60.0;
 // What the cascades run on: the grey image as it is, equalised globally, equalised locally.
 constexpr int kPreprocessings = 3;
@@ -377,11 +377,11 @@ class Study {
     }
   }
 
-  // The person whose box holds the window's centre (as detections_on_people counts), if any.
+  // The first person the window falls on, if any.
   static const PersonLabel* person_under(const cv::Rect& window,
                                          const std::vector<PersonLabel>& labels) {
     const auto under = std::find_if(labels.begin(), labels.end(), [&](const PersonLabel& label) {
-      return detections_on_people({window}, {label}) == 1;
+      return on_person(window, label);
     });
     return under == labels.end() ? nullptr : &*under;
   }

@@ -95,13 +95,17 @@ int detections_where(const std::vector<cv::Rect>& detections,
       }));
 }
 
-/// The detections that fall on someone (their centre in a person's box): on turned heads when
-/// every face is turned. Those on the room (tiles, furniture) are the empty frames' count.
+/// Whether a detection falls on the person: its centre in their box.
+inline bool on_person(const cv::Rect& detection, const PersonLabel& label) {
+  return label.body_box.contains(detection.x + detection.width / 2,
+                                 detection.y + detection.height / 2);
+}
+
+/// The detections that fall on someone: on turned heads when every face is turned. Those on the
+/// room (tiles, furniture) are the empty frames' count.
 inline int detections_on_people(const std::vector<cv::Rect>& detections,
                                 const std::vector<PersonLabel>& labels) {
-  return detections_where(detections, labels, [](const cv::Rect& d, const PersonLabel& label) {
-    return label.body_box.contains(d.x + d.width / 2, d.y + d.height / 2);
-  });
+  return detections_where(detections, labels, on_person);
 }
 
 /// Of those, the boxes that match a labelled face (IoU >= 0.5): on turned heads, a frontal cascade
@@ -120,8 +124,7 @@ inline int detections_on_faces(const std::vector<cv::Rect>& detections,
 inline int detections_on_people_turned(const std::vector<cv::Rect>& detections,
                                        const std::vector<PersonLabel>& labels, double min_yaw_deg) {
   return detections_where(detections, labels, [=](const cv::Rect& d, const PersonLabel& label) {
-    return label.face_yaw_deg >= min_yaw_deg &&
-           label.body_box.contains(d.x + d.width / 2, d.y + d.height / 2);
+    return label.face_yaw_deg >= min_yaw_deg && on_person(d, label);
   });
 }
 
