@@ -411,18 +411,21 @@ void HumanFigure::add_eyes() {
     add_face_feature(kHead, y, 0.02 * h, Eigen::Vector3d(0.1, 0.22, 0.15) * h, 0.006 * h,
                      darker(look_.skin, 0.4f));
     // The white stands less out of the skin than the iris, under the lid: turned 45 to 60
-    // degrees, the far eye then shows less white and reads less as a frontal eye.
+    // degrees, the far eye then shows less white and reads less as a frontal eye. It is an
+    // off-white in the lid's and the brow's shade (0.7 of white, as cameras see the sclera
+    // indoors); drawn near white (0.9), it gave the eyes a contrast no real face has under
+    // ceiling lamps, on which the default frontal cascade took turned heads for faces.
     add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.06, 0.13, 0.06) * h, 0.008 * h,
-                     Eigen::Vector3f(0.9f, 0.88f, 0.84f));
+                     Eigen::Vector3f(0.72f, 0.7f, 0.67f));
     add_face_feature(kHead, y, 0.0, Eigen::Vector3d(0.04, 0.06, 0.06) * h, 0.016 * h,
                      look_.iris * 0.5f);
     // The upper lid from the eye's top half up to its crease: skin in the brow's shadow, a little
-    // darker than the skin. Darker (0.6), it read as a second brow under the first. Ending lower
-    // (0.04 of the head tall), it left a band of the dark socket between lid and brow, which from
-    // the side stacked under the brow as a second bar; the default frontal cascade took either
-    // pair for eyes on the near side of turned heads.
+    // darker than the skin (0.9). Darker (0.6, then 0.8), it read as a second brow under the
+    // first, most under ceiling lamps. Ending lower (0.04 of the head tall), it left a band of the
+    // dark socket between lid and brow, which from the side stacked under the brow as a second
+    // bar; the default frontal cascade took either pair for eyes on the near side of turned heads.
     add_face_feature(kHead, y, 0.022 * h, Eigen::Vector3d(0.06, 0.15, 0.05) * h, 0.02 * h,
-                     darker(look_.skin, 0.8f));
+                     darker(look_.skin, 0.9f));
     // The outer corner with the lashes, what marks the eye in profile.
     add_face_feature(kHead, y + side * 0.065 * h, 0.005 * h, Eigen::Vector3d(0.08, 0.08, 0.06) * h,
                      0.012 * h, darker(look_.skin, 0.3f));
@@ -460,12 +463,13 @@ void HumanFigure::add_nose() {
   const Eigen::Vector3d along = (tip - root).normalized();
   const Eigen::Vector3d out(-along.z(), 0.0, along.x());
   // The bridge is the front of a deep ellipsoid along root to tip, which fills the nose down to the
-  // face in profile.
+  // face in profile. Its skin is a little lighter (1.1): the lamps' highlight on it does the rest.
+  // Lighter (1.2), the bright line between the eyes kept turned heads looking frontal.
   constexpr double kBridgeDepth = 0.16;
   RenderPrimitive bridge =
       glossy(shape(PrimitiveShape::kSphere, Eigen::Vector3d::Zero(),
                    Eigen::Vector3d(kBridgeDepth * h, 0.09 * h, (tip - root).norm() + 0.03 * h),
-                   lighter(skin, 1.2f), kFeatureSegments));
+                   lighter(skin, 1.1f), kFeatureSegments));
   bridge.X_world_shape =
       Eigen::Translation3d(0.5 * (root + tip) - 0.5 * kBridgeDepth * h * out) *
       Eigen::AngleAxisd(std::atan2(along.x(), along.z()), Eigen::Vector3d::UnitY());
