@@ -53,8 +53,12 @@ using rendering::PersonLabel;
 
 constexpr double kHogScale = 0.35;  // test_detector_study's scale (docs/cameras.md)
 constexpr int kSkinTones = 6;
-// Faces turned this far or more are the profile cascade's (its recall counts 60-90 degrees); a
-// frontal window on such a head is false wherever it lies.
+// The frontal cascades' recall counts faces within kFrontalWithinDeg of the camera; their false
+// detections are counted in frames where every face is turned more than kEveryFaceTurnedDeg.
+// Faces turned kTurnedPastFrontalDeg or more (up to 90) are the profile cascade's; a frontal
+// window on such a head is false wherever it lies.
+constexpr double kFrontalWithinDeg = 25.0;
+constexpr double kEveryFaceTurnedDeg = 45.0;
 constexpr double kTurnedPastFrontalDeg = 60.0;
 // What the cascades run on: the grey image as it is, equalised globally, equalised locally.
 constexpr int kPreprocessings = 3;
@@ -212,8 +216,9 @@ class Study {
   // Frames whose frontal detections on people are all false.
   static bool every_face_turned(const std::vector<PersonLabel>& labels) {
     return !labels.empty() &&
-           std::all_of(labels.begin(), labels.end(),
-                       [](const PersonLabel& label) { return label.face_yaw_deg > 45.0; });
+           std::all_of(labels.begin(), labels.end(), [](const PersonLabel& label) {
+             return label.face_yaw_deg > kEveryFaceTurnedDeg;
+           });
   }
 
   FaceDetections detect_faces(const cv::Mat& grey, const Needs& needs) {
@@ -247,9 +252,10 @@ class Study {
     return near_unmasked(label) && !cut_by_border(label, image);
   }
 
-  // The faces the frontal cascades' recall counts (within 25 deg of the camera) and the profile
-  // cascade's (turned 60-90 deg).
-  static bool frontal_face(const PersonLabel& label) { return label.face_yaw_deg <= 25.0; }
+  // The faces the frontal cascades' recall counts and the profile cascade's.
+  static bool frontal_face(const PersonLabel& label) {
+    return label.face_yaw_deg <= kFrontalWithinDeg;
+  }
   static bool turned_face(const PersonLabel& label) {
     return label.face_yaw_deg >= kTurnedPastFrontalDeg;
   }
@@ -441,6 +447,11 @@ void print_recall(const char* detector, const char* who, const Recall& r) {
   std::printf(" %+.1f |\n", gap);
 }
 
+// "25 deg", or with `upper` "60-90 deg": the study's angles as its tables name them.
+std::string degrees(double angle_deg, const char* upper = "") {
+  return std::to_string(static_cast<int>(angle_deg)) + upper + " deg";
+}
+
 void print_false(const char* detector, const char* frames, const FalseRate& f) {
   std::printf("| %s | %s | %d in %d | %.3f |\n", detector, frames, f.detections, f.frames,
               f.frames > 0 ? double(f.detections) / f.frames : 0.0);
@@ -448,9 +459,9 @@ void print_false(const char* detector, const char* frames, const FalseRate& f) {
 
 void Study::print() const {
   std::printf(
-      "\n%d frames; not scored, cut by the image's border: %d faces within 25 deg, %d "
-      "turned 60-90 deg\n\n",
-      frames_, cut_frontal_, cut_turned_);
+      "\n%d frames; not scored, cut by the image's border: %d faces within %.0f deg, %d "
+      "turned %.0f-90 deg\n\n",
+      frames_, cut_frontal_, kFrontalWithinDeg, cut_turned_, kTurnedPastFrontalDeg);
   std::printf(
       "| detector | who | found | recall | tone 1 | tone 2 | tone 3 | tone 4 | tone 5 | tone 6 | "
       "tone 1 - tone 6 (points) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -461,12 +472,13 @@ void Study::print() const {
   }
   for (int e = 0; e < kPreprocessings; ++e) {
     const std::string p = kPreprocessingNames[e];
-    const char* frontal = "unmasked faces within 25 deg, 0.8-3 m";
-    const char* turned = "unmasked faces turned 60-90 deg, 0.8-3 m";
-    print_recall(("frontal alt2" + p).c_str(), frontal, alt2_recall_[e]);
-    print_recall(("frontal default" + p).c_str(), frontal, default_recall_[e]);
-    print_recall(("profile, IoU >= 0.5" + p).c_str(), turned, profile_recall_[e]);
-    print_recall(("profile, centred" + p).c_str(), turned, profile_centred_[e]);
+    const std::string frontal = "unmasked faces within " + degrees(kFrontalWithinDeg) + ", 0.8-3 m";
+    const std::string turned =
+        "unmasked faces turned " + degrees(kTurnedPastFrontalDeg, "-90") + ", 0.8-3 m";
+    print_recall(("frontal alt2" + p).c_str(), frontal.c_str(), alt2_recall_[e]);
+    print_recall(("frontal default" + p).c_str(), frontal.c_str(), default_recall_[e]);
+    print_recall(("profile, IoU >= 0.5" + p).c_str(), turned.c_str(), profile_recall_[e]);
+    print_recall(("profile, centred" + p).c_str(), turned.c_str(), profile_centred_[e]);
   }
   std::printf("\n| detector | frames | detections | per frame |\n|---|---|---|---|\n");
   if (!faces_only_) {
@@ -474,20 +486,20 @@ void Study::print() const {
     print_false("HOG, native, Python sample", "nobody in view", hog_padded_empty_);
     print_false("HOG, 0.35 of the image", "nobody in view", hog_scaled_empty_);
   }
+  const std::string every_face_turned =
+      "every face turned > " + degrees(kEveryFaceTurnedDeg) + " (on people)";
+  const std::string turned_away =
+      "of them, on someone turned " + degrees(kTurnedPastFrontalDeg) + " or more";
   for (int e = 0; e < kPreprocessings; ++e) {
     const std::string p = kPreprocessingNames[e];
-    print_false(("frontal alt2" + p).c_str(), "every face turned > 45 deg (on people)",
-                alt2_turned_[e]);
-    print_false(("frontal default" + p).c_str(), "every face turned > 45 deg (on people)",
-                default_turned_[e]);
+    print_false(("frontal alt2" + p).c_str(), every_face_turned.c_str(), alt2_turned_[e]);
+    print_false(("frontal default" + p).c_str(), every_face_turned.c_str(), default_turned_[e]);
     print_false(("frontal alt2" + p).c_str(), "of them, boxes on a face (IoU >= 0.5)",
                 alt2_turned_faces_[e]);
     print_false(("frontal default" + p).c_str(), "of them, boxes on a face (IoU >= 0.5)",
                 default_turned_faces_[e]);
-    print_false(("frontal alt2" + p).c_str(), "of them, on someone turned 60 deg or more",
-                alt2_turned_away_[e]);
-    print_false(("frontal default" + p).c_str(), "of them, on someone turned 60 deg or more",
-                default_turned_away_[e]);
+    print_false(("frontal alt2" + p).c_str(), turned_away.c_str(), alt2_turned_away_[e]);
+    print_false(("frontal default" + p).c_str(), turned_away.c_str(), default_turned_away_[e]);
     print_false(("frontal alt2" + p).c_str(), "nobody in view", alt2_empty_[e]);
     print_false(("frontal default" + p).c_str(), "nobody in view", default_empty_[e]);
     print_false(("profile" + p).c_str(), "nobody in view", profile_empty_[e]);

@@ -84,10 +84,18 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(detector_study ari_engine ari_rendering opencv_objdetect)
   target_compile_definitions(detector_study PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   set_target_properties(detector_study PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
-  # Its options are checked before any rendering (test_detector_study runs it with bad ones).
+  # lone_heads: the frontal cascades on lone turned heads, a quicker measure of a face change
+  # (docs/cameras.md, "Eyes and nose bridge toned down"); about 10 minutes on one core.
+  add_executable(lone_heads bench/lone_heads.cpp)
+  target_link_libraries(lone_heads ari_rendering opencv_objdetect)
+  target_compile_definitions(lone_heads PRIVATE ARI_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  set_target_properties(lone_heads PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
+  # Their options are checked before any rendering (test_detector_study runs both with bad ones).
   add_dependencies(test_detector_study detector_study)
+  add_dependencies(test_detector_study lone_heads)
   target_compile_definitions(test_detector_study PRIVATE
-    ARI_DETECTOR_STUDY_BIN="$<TARGET_FILE:detector_study>")
+    ARI_DETECTOR_STUDY_BIN="$<TARGET_FILE:detector_study>"
+    ARI_LONE_HEADS_BIN="$<TARGET_FILE:lone_heads>")
 endif()
 
 add_executable(render_cameras src/tools/render_cameras.cpp)

@@ -325,15 +325,36 @@ TEST(DetectorStudy, ProfileCascadeFindsTurnedFacesAndTheFrontalOneDoesNot) {
 }  // namespace
 }  // namespace ari_social_sim::rendering
 
-// The study over the shipped scenarios (bench/detector_study) refuses bad options before it
-// renders anything, naming the option and what it expects.
-TEST(DetectorStudy, TheScenarioStudyRefusesBadOptions) {
-  using ari_social_sim::tools::test::expect_refused;
-  using ari_social_sim::tools::test::run_program;
-  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--misses /nonexistent/crops"),
-                 "--misses: expected an existing directory, got '/nonexistent/crops'");
-  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--frames 0"),
-                 "--frames: expected a finite number in [1, 100000], got '0'");
-  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--misses"), "--misses");
-  expect_refused(run_program(ARI_DETECTOR_STUDY_BIN, "--shots 3"), "unknown option '--shots'");
+// The study over the shipped scenarios (bench/detector_study) and the lone heads' probe
+// (bench/lone_heads) refuse bad options before they render anything, naming the option and what
+// it expects.
+TEST(DetectorStudy, TheStudyProgramsRefuseBadOptions) {
+  struct Refusal {
+    const char* program;
+    const char* arguments;
+    const char* message;
+  };
+  const Refusal refusals[] = {
+      {ARI_DETECTOR_STUDY_BIN, "--misses /nonexistent/crops",
+       "--misses: expected an existing directory, got '/nonexistent/crops'"},
+      {ARI_DETECTOR_STUDY_BIN, "--frames 0",
+       "--frames: expected a finite number in [1, 100000], got '0'"},
+      {ARI_DETECTOR_STUDY_BIN, "--misses", "--misses"},
+      {ARI_DETECTOR_STUDY_BIN, "--shots 3", "unknown option '--shots'"},
+      {ARI_LONE_HEADS_BIN, "--people 0", "--people: expected an integer in [1, 10000], got '0'"},
+      {ARI_LONE_HEADS_BIN, "--turns 20,x",
+       "--turns: expected a finite number in [0, 180], got 'x'"},
+      {ARI_LONE_HEADS_BIN, "--distances 9",
+       "--distances: expected a finite number in [0.5, 5], got '9'"},
+      {ARI_LONE_HEADS_BIN, "--camera 1", "--camera: expected X,Y, got '1'"},
+      {ARI_LONE_HEADS_BIN, "--world /nonexistent/world.yaml", "--world"},
+      {ARI_LONE_HEADS_BIN, "--views", "--views"},
+      {ARI_LONE_HEADS_BIN, "--shots 3", "--shots: unknown option"},
+  };
+  for (const Refusal& refusal : refusals) {
+    SCOPED_TRACE(std::string(refusal.program) + " " + refusal.arguments);
+    ari_social_sim::tools::test::expect_refused(
+        ari_social_sim::tools::test::run_program(refusal.program, refusal.arguments),
+        refusal.message);
+  }
 }
