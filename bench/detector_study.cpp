@@ -18,6 +18,7 @@
 //   --misses: write a crop of each face a frontal cascade misses on the image as it is into DIR
 //             (which must exist), named by scenario, seed, sim time, person, skin tone and
 //             cascade; and a crop of each frontal detection on a turned head ("false_...", with
+//             the preprocessing, "_equalizeHist" or "_CLAHE", when not the image as it is, and
 //             the turn of the face under it)
 //   --faces-only: the face cascades alone, without HOG (about 2 s a frame at native resolution),
 //                 to measure a change to the faces quickly
@@ -63,6 +64,7 @@ constexpr double kTurnedPastFrontalDeg = 60.0;
 // What the cascades run on: the grey image as it is, equalised globally, equalised locally.
 constexpr int kPreprocessings = 3;
 constexpr const char* kPreprocessingNames[kPreprocessings] = {"", ", equalizeHist", ", CLAHE"};
+constexpr const char* kPreprocessingTags[kPreprocessings] = {"", "_equalizeHist", "_CLAHE"};
 
 struct Options {
   int frames_per_scenario{210};
@@ -177,7 +179,9 @@ class Study {
     }
     if (!misses_dir_.empty()) {
       save_frontal_misses(faces[0], labels, rgb, frame);
-      save_turned_detections(faces[0], labels, rgb, frame);
+      for (int e = 0; e < kPreprocessings; ++e) {
+        save_turned_detections(faces[e], labels, rgb, frame + kPreprocessingTags[e]);
+      }
     }
     ++frames_;
   }
@@ -363,7 +367,7 @@ class Study {
   }
 
   // A crop twice the window's size around each frontal detection on someone when every face is
-  // turned: what the turned-heads rate counts.
+  // turned: what the turned-heads rate counts. `frame` names the preprocessing too.
   void save_turned_detections(const FaceDetections& found, const std::vector<PersonLabel>& labels,
                               const cv::Mat& rgb, const std::string& frame) const {
     if (!every_face_turned(labels)) {
