@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "../test/common/detector_scoring.hpp"
+#include "../test/rendering/render_test_scenes.hpp"
 #include "ari_social_sim/core/command_line.hpp"
 #include "ari_social_sim/core/error.hpp"
 #include "ari_social_sim/model/world_file.hpp"
@@ -142,16 +143,6 @@ RenderMesh lone_person(int id, double distance_m, double turn_deg, const Options
   return mesh;
 }
 
-// A level camera looking east (optical z) from `position`.
-Eigen::Isometry3d camera_looking_east(const Eigen::Vector3d& position) {
-  Eigen::Isometry3d X_world_optical = Eigen::Isometry3d::Identity();
-  X_world_optical.linear().col(0) = -Eigen::Vector3d::UnitY();
-  X_world_optical.linear().col(1) = -Eigen::Vector3d::UnitZ();
-  X_world_optical.linear().col(2) = Eigen::Vector3d::UnitX();
-  X_world_optical.translation() = position;
-  return X_world_optical;
-}
-
 void save_view(const cv::Mat& rgb, const cv::Rect& window, const std::string& path) {
   const cv::Rect around = cv::Rect(window.x - window.width / 4, window.y - window.height / 4,
                                    window.width * 3 / 2, window.height * 3 / 2) &
@@ -159,7 +150,10 @@ void save_view(const cv::Mat& rgb, const cv::Rect& window, const std::string& pa
   cv::Mat crop;
   cv::cvtColor(rgb(around), crop, cv::COLOR_RGB2BGR);
   cv::rectangle(crop, window - around.tl(), {0, 0, 255}, 1);
-  cv::imwrite(path, crop);
+  if (!cv::imwrite(path, crop)) {
+    std::fprintf(stderr, "lone_heads: cannot write %s\n", path.c_str());
+    std::exit(1);
+  }
 }
 
 class LoneHeads {
@@ -196,21 +190,21 @@ class LoneHeads {
     const double turn_deg = options_.turns_deg[t];
     double head_z = 0.0;
     renderer_.set_dynamic_mesh(lone_person(id, distance_m, turn_deg, options_, head_z));
-    renderer_.render(model_,
-                     camera_looking_east({options_.camera.x(), options_.camera.y(), head_z}),
-                     ViewOptions(), image_);
+    renderer_.render(
+        model_, test::level_camera_facing_x({options_.camera.x(), options_.camera.y(), head_z}),
+        ViewOptions(), image_);
     sensor_.restart(options_.seed);
     sensor_.expose(image_.colour);
     cv::Mat grey, equalised;
     cv::cvtColor(image_.colour, grey, cv::COLOR_RGB2GRAY);
     cv::equalizeHist(grey, equalised);
-    const cv::Mat region = grey(kHeadRegion).clone(), equalised_region = equalised(kHeadRegion);
+    const cv::Mat region = grey(kHeadRegion).clone();
+    const cv::Mat equalised_region = equalised(kHeadRegion).clone();
     const std::vector<cv::Rect> default_windows = detector_scoring::cascade_faces(default_, region);
     counts.views[0][t] += !detector_scoring::cascade_faces(alt2_, region).empty();
     counts.views[1][t] += !default_windows.empty();
-    counts.views[2][t] += !detector_scoring::cascade_faces(alt2_, equalised_region.clone()).empty();
-    counts.views[3][t] +=
-        !detector_scoring::cascade_faces(default_, equalised_region.clone()).empty();
+    counts.views[2][t] += !detector_scoring::cascade_faces(alt2_, equalised_region).empty();
+    counts.views[3][t] += !detector_scoring::cascade_faces(default_, equalised_region).empty();
     if (!options_.views_dir.empty() && turn_deg >= kTurnedFromDeg && !default_windows.empty()) {
       char name[96];
       std::snprintf(name, sizeof name, "/person%02d_%.1fm_turn%02.0f.png", id, distance_m,
