@@ -354,10 +354,10 @@ std::vector<HumanFigure::Ellipsoid> HumanFigure::add_hair() {
     add(Eigen::Vector3d(0.06 * h, side * 0.3 * h, 0.05 * h), Eigen::Vector3d(0.14, 0.1, 0.26) * h,
         kFeatureSegments);
   }
-  // Long hair falls from the crown to the shoulders as one volume, a little wider and deeper than
-  // the back cap it covers. Hung from the nape (its top 0.1 of the head above the eyes), it showed
-  // from behind as a second ball under the crown's with a dark crease between, on which the
-  // frontal cascades with equalizeHist fired.
+  // Long hair falls from the crown to the shoulders as one volume, about as wide and deep as the
+  // back cap, whose lower half it covers. Hung from the nape (its top 0.1 of the head above the
+  // eyes), it showed from behind as a second ball under the crown's with a dark crease between, on
+  // which the frontal cascades with equalizeHist fired.
   if (look_.hair_style == HairStyle::kLong) {
     add(Eigen::Vector3d(-0.45 * r.x(), 0.0, -0.25 * h),
         Eigen::Vector3d(1.3 * r.x(), 2.0 * r.y() * 1.08, 1.5 * h), kHeadSegments);
