@@ -76,10 +76,13 @@ class PointHeadLostFrame(unittest.TestCase):
         cls.broadcaster = tf2_ros.TransformBroadcaster()
 
     def send_and_wait(self, client, goal, timeout_s=5.0):
-        """Sends `goal`; returns its final state, text and the wall time it took."""
+        """Sends `goal`; returns its final state, text and the wall time it took, once its
+        result has come too: status and result are separate topics, and the status can come
+        first."""
         start = time.monotonic()
         client.send_goal(goal)
-        self.assertTrue(wait_wall(lambda: client.get_state() in TERMINAL, timeout_s),
+        self.assertTrue(wait_wall(lambda: client.get_state() in TERMINAL
+                                  and client.get_result() is not None, timeout_s),
                         "no result within %.1f s of wall time" % timeout_s)
         return client.get_state(), client.get_goal_status_text(), time.monotonic() - start
 
