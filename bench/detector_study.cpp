@@ -332,13 +332,15 @@ class Study {
         profile_centred_[e].add(label, any_centred(found.profile, *label.face_box));
       }
     }
-    if (every_face_turned(labels, kTurnedPastFrontalDeg)) {
-      alt2_profiles_only_[e].add(detections_on_people(found.alt2, labels));
-      default_profiles_only_[e].add(detections_on_people(found.frontal_default, labels));
-    }
     if (every_face_turned(labels, kEveryFaceTurnedDeg)) {
-      alt2_turned_[e].add(detections_on_people(found.alt2, labels));
-      default_turned_[e].add(detections_on_people(found.frontal_default, labels));
+      const int alt2_on_people = detections_on_people(found.alt2, labels);
+      const int default_on_people = detections_on_people(found.frontal_default, labels);
+      alt2_turned_[e].add(alt2_on_people);
+      default_turned_[e].add(default_on_people);
+      if (every_face_turned(labels, kTurnedPastFrontalDeg)) {
+        alt2_profiles_only_[e].add(alt2_on_people);
+        default_profiles_only_[e].add(default_on_people);
+      }
       alt2_turned_faces_[e].add(detections_on_faces(found.alt2, labels));
       default_turned_faces_[e].add(detections_on_faces(found.frontal_default, labels));
       alt2_turned_away_[e].add(
