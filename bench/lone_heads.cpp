@@ -1,13 +1,13 @@
-// The frontal face cascades on lone heads turned from the camera (docs/cameras.md, "Eyes and nose
-// bridge toned down"): a quicker measure of a change to the faces than detector_study, whose
-// turned heads come few to a frame. Each of the first N people of PeopleFigures stands alone in a
-// world (by default the 6 x 6 m room, with walls, ceiling and lamps), `distance` east of a level
-// 1280 x 960 camera of 62.2 degrees at the height of their head, with the default camera effects,
-// and turns their face from it by each of the turns; odd people's faces look to the image's
-// right, even people's to its left (the cascades are not symmetric: the default one fires more on
-// faces looking to the image's left). Each cascade runs on the 600 x 600 pixels round the head, on
-// the image as it is and after equalizeHist of the whole frame, as detector_study runs it. Prints a
-// Markdown table of the views with a window at each turn.
+// The frontal face cascades on lone heads turned from the camera (docs/detector_study_log.md, "Eyes
+// and nose bridge toned down"): a quicker measure of a change to the faces than detector_study,
+// whose turned heads come few to a frame. Each of the first N people of PeopleFigures stands alone
+// in a world (by default the 6 x 6 m room, with walls, ceiling and lamps), `distance` east of a
+// level 1280 x 960 camera of 62.2 degrees at the height of their head, with the default camera
+// effects, and turns their face from it by each of the turns; odd people's faces look to the
+// image's right, even people's to its left (the cascades are not symmetric: the default one fires
+// more on faces looking to the image's left). Each cascade runs on the 600 x 600 pixels round the
+// head, on the image as it is and after equalizeHist of the whole frame, as detector_study runs it.
+// Prints a Markdown table of the views with a window at each turn.
 //
 // usage: lone_heads [--people N] [--distances a,b,...] [--turns a,b,...] [--world FILE]
 //                   [--camera X,Y] [--seed N] [--views DIR]

@@ -163,7 +163,8 @@ float triangle_wave(float x) {
 // along the part, six around it, deepening and fading as they go down; the folds' valleys see less
 // of the room's light. No creases across the part: rings of them every 14 cm, a dark line between
 // two bright bands, were where the default frontal cascade fired on sleeves and shirts once
-// `equalizeHist` or CLAHE had stretched them (docs/cameras.md, "Clothes without creases").
+// `equalizeHist` or CLAHE had stretched them (docs/detector_study_log.md, "Clothes without
+// creases").
 // Polynomials and triangle waves, no transcendental function: llvmpipe pays for each on every
 // cloth pixel. The folds' cosine of six times the angle around the axis is Chebyshev's T6 of the
 // angle's cosine.
