@@ -8,7 +8,8 @@
 // tiles, the values of OpenCV's tutorial). Scored against the images' labels: recall overall and by
 // skin tone (faces cut by the image's border left out), false detections on turned heads (frames
 // whose faces all turn more than 45 degrees, the boxes among them that match a face, and frames
-// whose faces all turn more than 60) and in frames that show nobody. Prints Markdown tables.
+// whose faces all turn more than 60) and in frames that show nobody, and how often each frontal
+// cascade fires on a face as the face turns from the camera. Prints Markdown tables.
 //
 // usage: detector_study [--frames N] [--every SECONDS] [--episode-frames N] [--scenarios a,b,...]
 //                       [--misses DIR] [--faces-only]
@@ -63,6 +64,10 @@ constexpr int kSkinTones = 6;
 constexpr double kFrontalWithinDeg = 25.0;
 constexpr double kEveryFaceTurnedDeg = 45.0;
 constexpr double kTurnedPastFrontalDeg = 60.0;
+// The turns the frontal cascades' curve counts faces in, bounds of its bins (labels give a face
+// box to faces turned less than 90 degrees only).
+constexpr std::array<double, 8> kTurnBinsDeg = {0, 15, 25, 35, 45, 55, 65, 90};
+constexpr int kTurnBins = static_cast<int>(kTurnBinsDeg.size()) - 1;
 // What the cascades run on: the grey image as it is, equalised globally, equalised locally.
 constexpr int kPreprocessings = 3;
 constexpr const char* kPreprocessingNames[kPreprocessings] = {"", ", equalizeHist", ", CLAHE"};
@@ -149,6 +154,18 @@ struct FalseRate {
   }
 };
 
+// Faces with a window centred on them, of the faces in each bin of turn (kTurnBinsDeg).
+struct TurnCurve {
+  std::array<int, kTurnBins> found{}, total{};
+
+  void add(double turn_deg, bool hit) {
+    const auto upper = std::upper_bound(kTurnBinsDeg.begin() + 1, kTurnBinsDeg.end() - 1, turn_deg);
+    const int bin = static_cast<int>(upper - kTurnBinsDeg.begin()) - 1;
+    found[bin] += hit ? 1 : 0;
+    ++total[bin];
+  }
+};
+
 // What each face cascade found in one image, with and without equalisation.
 struct FaceDetections {
   std::vector<cv::Rect> alt2, frontal_default, profile;
@@ -191,6 +208,8 @@ class Study {
   void print() const;
 
  private:
+  void print_turn_curves() const;
+
   static void load(cv::CascadeClassifier& cascade, const char* file) {
     if (!cascade.load(file)) {
       std::fprintf(stderr, "detector_study: cannot load %s (Debian's opencv-data)\n", file);
@@ -211,7 +230,8 @@ class Study {
       needs.hog =
           needs.hog || (fully_visible(label) && label.distance_m >= 2.0 && label.distance_m <= 6.0);
       if (near_unmasked_face(label, image)) {
-        needs.frontal = needs.frontal || frontal_face(label);
+        // Every such face is on the frontal cascades' curve of turns.
+        needs.frontal = true;
         needs.profile = needs.profile || turned_face(label);
       }
     }
@@ -324,6 +344,9 @@ class Study {
       if (!near_unmasked_face(label, image)) {
         continue;
       }
+      alt2_by_turn_[e].add(label.face_yaw_deg, any_centred(found.alt2, *label.face_box));
+      default_by_turn_[e].add(label.face_yaw_deg,
+                              any_centred(found.frontal_default, *label.face_box));
       if (frontal_face(label)) {
         alt2_recall_[e].add(label, any_overlaps(found.alt2, *label.face_box));
         default_recall_[e].add(label, any_overlaps(found.frontal_default, *label.face_box));
@@ -438,6 +461,7 @@ class Study {
   // Indexed as kPreprocessingNames.
   std::array<Recall, kPreprocessings> alt2_recall_, default_recall_, profile_recall_,
       profile_centred_;
+  std::array<TurnCurve, kPreprocessings> alt2_by_turn_, default_by_turn_;
   std::array<FalseRate, kPreprocessings> alt2_turned_, default_turned_, alt2_turned_faces_,
       default_turned_faces_, alt2_turned_away_, default_turned_away_, alt2_profiles_only_,
       default_profiles_only_, alt2_empty_, default_empty_, profile_empty_;
@@ -464,9 +488,41 @@ std::string degrees(double angle_deg, const char* upper = "") {
   return std::to_string(static_cast<int>(angle_deg)) + upper + " deg";
 }
 
+void print_turn_curve(const char* cascade, const TurnCurve& curve) {
+  std::printf("| %s |", cascade);
+  for (int bin = 0; bin < kTurnBins; ++bin) {
+    std::printf(" %.0f %% (%d) |", Recall::rate(curve.found[bin], curve.total[bin]),
+                curve.found[bin]);
+  }
+  std::printf("\n");
+}
+
 void print_false(const char* detector, const char* frames, const FalseRate& f) {
   std::printf("| %s | %s | %d in %d | %.3f |\n", detector, frames, f.detections, f.frames,
               f.frames > 0 ? double(f.detections) / f.frames : 0.0);
+}
+
+// Each frontal cascade's share of unmasked faces 0.8-3 m away with a window centred on them, by
+// the face's turn: what it does between the faces its recall counts and those it should leave.
+void Study::print_turn_curves() const {
+  std::printf("\n| frontal cascade, window centred on the face |");
+  for (int bin = 0; bin < kTurnBins; ++bin) {
+    std::printf(" %.0f-%.0f deg |", kTurnBinsDeg[bin], kTurnBinsDeg[bin + 1]);
+  }
+  std::printf("\n|---|");
+  for (int bin = 0; bin < kTurnBins; ++bin) {
+    std::printf("---:|");
+  }
+  std::printf("\n| faces |");
+  for (int bin = 0; bin < kTurnBins; ++bin) {
+    std::printf(" %d |", alt2_by_turn_[0].total[bin]);
+  }
+  std::printf("\n");
+  for (int e = 0; e < kPreprocessings; ++e) {
+    const std::string p = kPreprocessingNames[e];
+    print_turn_curve(("alt2" + p).c_str(), alt2_by_turn_[e]);
+    print_turn_curve(("default" + p).c_str(), default_by_turn_[e]);
+  }
 }
 
 void Study::print() const {
@@ -492,6 +548,7 @@ void Study::print() const {
     print_recall(("profile, IoU >= 0.5" + p).c_str(), turned.c_str(), profile_recall_[e]);
     print_recall(("profile, centred" + p).c_str(), turned.c_str(), profile_centred_[e]);
   }
+  print_turn_curves();
   std::printf("\n| detector | frames | detections | per frame |\n|---|---|---|---|\n");
   if (!faces_only_) {
     print_false("HOG, native", "nobody in view", hog_native_empty_);
